@@ -1,0 +1,40 @@
+# geardyn's two commands (README): `make demo` and `make test`. Both set up what is missing
+# (Debian packages, configure, build) first, so they work on a fresh clone.
+BUILD_DIR ?= build
+CTEST_JOBS ?= $(shell nproc)
+
+.PHONY: all setup demo test test-long sanitize fuzz bench format clean
+
+all: setup
+
+setup:
+	bash scripts/setup.sh
+
+demo: setup
+	bash scripts/demo.sh
+
+# The default suite: unit + validation + examples + CLI + Python (everything but label `long`).
+test: setup
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(CTEST_JOBS) -LE long
+
+test-long: setup
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(CTEST_JOBS) -L long
+
+sanitize:
+	bash scripts/sanitize.sh
+
+fuzz:
+	bash scripts/fuzz.sh
+
+bench:
+	bash scripts/setup.sh --deps
+	cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DGEARDYN_BUILD_BENCHMARKS=ON \
+	  -DGEARDYN_BUILD_TESTS=OFF -DGEARDYN_BUILD_PYTHON=OFF
+	cmake --build build-bench
+	build-bench/bin/geardyn_bench
+
+format:
+	git ls-files '*.h' '*.cpp' '*.h.in' | grep -v '\.in$$' | xargs clang-format -i
+
+clean:
+	rm -rf $(BUILD_DIR) build-asan build-fuzz build-bench results

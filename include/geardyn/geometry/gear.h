@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// One involute cylindrical gear (spur or helical), cut by a standard basic rack: the data that
+/// define it. Everything derived from it lives in GearPair, since the operating geometry depends
+/// on the mating gear and the centre distance.
+
+#include <string>
+
+namespace geardyn {
+
+/// The defining data of one external involute gear. SI units; angles in radians.
+/// Defaults are those of the standard basic rack (ISO 53 profile A) and of steel.
+struct GearSpec {
+  int teeth = 0;                       ///< number of teeth z [-], >= 3
+  double normal_module = 0.0;          ///< normal module m_n [m]
+  double normal_pressure_angle = 0.0;  ///< normal pressure angle α_n [rad], in (0, 45°)
+  double helix_angle = 0.0;    ///< helix angle β at the reference circle [rad]; > 0 right hand
+  double face_width = 0.0;     ///< face width b [m]
+  double profile_shift = 0.0;  ///< profile shift coefficient x [-]
+  double addendum_coefficient = 1.0;      ///< h_a* [-]: addendum h_a = h_a* m_n (before shift)
+  double dedendum_coefficient = 1.25;     ///< h_f* = h_a* + c* [-]: dedendum h_f = h_f* m_n
+  double root_fillet_coefficient = 0.38;  ///< ρ_fP* [-]: tip radius of the generating rack / m_n
+  double tip_radius_modification = 0.0;  ///< Δr_a [m] added to the tip radius (< 0: tip shortening)
+  double bore_diameter = 0.0;            ///< bore diameter of the gear body [m]
+  double youngs_modulus = 206e9;         ///< Young's modulus E [Pa]
+  double poisson_ratio = 0.3;            ///< Poisson's ratio ν [-]
+  double density = 7850.0;               ///< density ρ [kg/m³]
+
+  /// Depth below the reference line at which the straight flank of the generating rack (basic
+  /// rack counterpart, ISO 53) ends and its tip rounding begins:
+  /// h_FfP = (h_f* − ρ_fP* (1 − sin α_n)) m_n [m]; 1.0 m_n for the standard rack (1.25, 0.38).
+  double rackStraightFlankDepth() const;
+
+  /// Checks every field against its allowed range and throws InputError naming
+  /// `<name>.<config key>` (e.g. "pinion.teeth"; just the key when name is empty), the value
+  /// and the range.
+  void validate(const std::string& name) const;
+};
+
+}  // namespace geardyn

@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// The schema of one command's TOML configuration: every key with its type, SI unit, default,
+/// allowed range or choices and a description. The loader (config.h) validates against it, the
+/// CLI prints it (`geardyn schema COMMAND`), and docs/config/*.md is generated from it.
+
+#include <deque>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace geardyn::io {
+
+/// The TOML type a key takes.
+enum class ValueKind { kInteger, kReal, kBoolean, kString, kRealList };
+
+/// One configuration key. `path` is dotted: "section.key" or "section.sub.key".
+struct KeySpec {
+  std::string path;
+  ValueKind kind = ValueKind::kReal;
+  std::string unit;         ///< SI unit ("m", "Pa", "kg/m^3") or the unit in the key's name ("deg")
+  std::string description;  ///< one line, for messages and the reference
+  nlohmann::ordered_json default_value;  ///< null when the key has no default
+  bool required = false;  ///< absent and no default: an error when true, null when false
+  std::optional<double> minimum;
+  bool minimum_exclusive = false;
+  std::optional<double> maximum;
+  bool maximum_exclusive = false;
+  std::vector<std::string> choices;  ///< allowed strings (kString), empty: any
+
+  /// What is allowed, in words: "an integer >= 3", "a number in (0, 45)", "one of "a", "b"".
+  std::string allowedText() const;
+  /// The section part of the path ("pinion" for "pinion.teeth"; "" for a top-level key).
+  std::string section() const;
+  /// The last component of the path ("teeth").
+  std::string name() const;
+};
+
+/// Fluent setter for the KeySpec just added to a schema.
+class KeyBuilder {
+ public:
+  explicit KeyBuilder(KeySpec& spec) : spec_(&spec) {}
+  KeyBuilder& unit(std::string unit);
+  KeyBuilder& doc(std::string description);
+  KeyBuilder& required();
+  KeyBuilder& optional();  ///< no default; absent means "not given" (null in the resolved config)
+  KeyBuilder& defaultValue(nlohmann::ordered_json value);
+  KeyBuilder& min(double value);          ///< value >= min
+  KeyBuilder& greaterThan(double value);  ///< value > bound
+  KeyBuilder& max(double value);          ///< value <= max
+  KeyBuilder& lessThan(double value);     ///< value < bound
+  KeyBuilder& positive() { return greaterThan(0.0); }
+  KeyBuilder& choices(std::vector<std::string> allowed);
+
+ private:
+  KeySpec* spec_;
+};
+
+/// A section (TOML table) of the schema.
+struct SectionSpec {
+  std::string path;
+  std::string description;
+};
+
+/// The configuration schema of one command.
+class ConfigSchema {
+ public:
+  ConfigSchema(std::string command, std::string description);
+
+  /// Declares a section; keys may only be added to declared sections (or the top level).
+  void section(std::string path, std::string description);
+
+  KeyBuilder integer(const std::string& path);
+  KeyBuilder real(const std::string& path);
+  KeyBuilder boolean(const std::string& path);
+  KeyBuilder string(const std::string& path);
+  KeyBuilder realList(const std::string& path);
+
+  const std::string& command() const noexcept { return command_; }
+  const std::string& description() const noexcept { return description_; }
+  const std::deque<KeySpec>& keys() const noexcept { return keys_; }
+  const std::vector<SectionSpec>& sections() const noexcept { return sections_; }
+  const KeySpec* findKey(const std::string& path) const;
+  const SectionSpec* findSection(const std::string& path) const;
+  /// Full paths of the keys in a section (for suggestions).
+  std::vector<std::string> keyNamesIn(const std::string& section) const;
+
+  /// The configuration reference of this command as Markdown (one table per section).
+  std::string referenceMarkdown() const;
+
+ private:
+  KeyBuilder add(const std::string& path, ValueKind kind);
+
+  std::string command_;
+  std::string description_;
+  std::vector<SectionSpec> sections_;
+  std::deque<KeySpec> keys_;  // declaration order; a deque keeps KeyBuilder pointers valid
+};
+
+}  // namespace geardyn::io

@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Configuration and results of gear-pair geometry: the [pinion], [gear] and [pair] sections
+/// (shared by every command that needs a gear pair), the GearPairSpec they describe, and the
+/// JSON / CSV form of a GearPair.
+
+#include <nlohmann/json.hpp>
+
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/io/config.h"
+#include "geardyn/io/config_schema.h"
+#include "geardyn/io/csv_table.h"
+
+namespace geardyn::io {
+
+/// Adds the [pinion], [gear] and [pair] sections to a schema.
+void addGearPairSections(ConfigSchema& schema);
+
+/// The schema of `geardyn geometry`.
+ConfigSchema geometrySchema();
+
+/// The gear pair a configuration with the sections of addGearPairSections describes.
+GearPairSpec gearPairSpecFromConfig(const Config& config);
+
+/// Headline numbers of a gear pair (summary.json "results"): pair quantities, then one object
+/// per member. SI units; angles in rad with a `_deg` companion.
+nlohmann::ordered_json toJson(const GearPair& pair);
+
+/// One row per member (pinion, gear) with the per-gear quantities; units in the column names.
+CsvTable memberTable(const GearPair& pair);
+
+}  // namespace geardyn::io

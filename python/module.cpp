@@ -1,0 +1,30 @@
+/// The compiled part of the Python package: `geardyn._geardyn`. One bind_<module>.cpp per
+/// library module (STYLE.md); the pure-Python layer in python/geardyn/ re-exports it.
+
+#include <pybind11/pybind11.h>
+
+#include "geardyn/error.h"
+#include "geardyn/version.h"
+
+namespace py = pybind11;
+
+namespace geardyn::python {
+void bindGeometry(py::module_& m);
+void bindIo(py::module_& m);
+}  // namespace geardyn::python
+
+PYBIND11_MODULE(_geardyn, m) {
+  m.doc() = "geardyn: gear-pair and geared-rotor dynamics (compiled core)";
+  m.attr("__version__") = geardyn::kVersion;
+  // InputError derives from std::invalid_argument, which pybind11 maps to ValueError.
+  // IoError (a file that cannot be read or written) becomes OSError.
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const geardyn::IoError& io_error) {
+      PyErr_SetString(PyExc_OSError, io_error.what());
+    }
+  });
+  geardyn::python::bindGeometry(m);
+  geardyn::python::bindIo(m);
+}

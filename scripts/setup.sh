@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# geardyn setup: install the Debian packages the project needs (idempotent: only what is missing,
+# `apt-get update` only when something is missing), then configure and build in Release.
+#
+#   scripts/setup.sh            packages + configure + build (build/)
+#   scripts/setup.sh --deps     packages only
+#
+# Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), GEARDYN_CMAKE_ARGS (extra).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$here"
+
+# One list, so that the README, CI and developers agree on what geardyn needs.
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libeigen3-dev libfftw3-dev libboost-dev
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev libhdf5-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${#missing[@]} Debian package(s): ${missing[*]}" >&2
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "setup: all ${#packages[@]} Debian packages present" >&2
+fi
+
+[ "${1:-}" = "--deps" ] && exit 0
+
+build_dir="${BUILD_DIR:-build}"
+build_type="${BUILD_TYPE:-Release}"
+generator=()
+[ -f "$build_dir/CMakeCache.txt" ] || generator=(-G Ninja)
+# Debian's interpreter is pinned: the first python3 on PATH may lack numpy/pytest.
+cmake -S . -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE="$build_type" \
+  -DPython3_EXECUTABLE=/usr/bin/python3 ${GEARDYN_CMAKE_ARGS:-} >/dev/null
+cmake --build "$build_dir" -j "$(nproc)"

@@ -1,0 +1,213 @@
+#include "geardyn/io/config_schema.h"
+
+#include <fmt/format.h>
+
+#include "geardyn/error.h"
+
+namespace geardyn::io {
+namespace {
+
+std::string kindName(ValueKind kind) {
+  switch (kind) {
+    case ValueKind::kInteger:
+      return "integer";
+    case ValueKind::kReal:
+      return "number";
+    case ValueKind::kBoolean:
+      return "boolean";
+    case ValueKind::kString:
+      return "string";
+    case ValueKind::kRealList:
+      return "list of numbers";
+  }
+  return "?";
+}
+
+std::string article(ValueKind kind) {
+  return kind == ValueKind::kInteger   ? "an integer"
+         : kind == ValueKind::kReal    ? "a number"
+         : kind == ValueKind::kBoolean ? "true or false"
+         : kind == ValueKind::kString  ? "a string"
+                                       : "a list of numbers";
+}
+
+std::string parentOf(const std::string& path) {
+  const auto dot = path.rfind('.');
+  return dot == std::string::npos ? std::string() : path.substr(0, dot);
+}
+
+}  // namespace
+
+std::string KeySpec::section() const {
+  return parentOf(path);
+}
+
+std::string KeySpec::name() const {
+  const auto dot = path.rfind('.');
+  return dot == std::string::npos ? path : path.substr(dot + 1);
+}
+
+std::string KeySpec::allowedText() const {
+  std::string text = article(kind);
+  if (kind == ValueKind::kRealList) text += " each";
+  if (minimum && maximum) {
+    text += fmt::format(" in {}{:g}, {:g}{}", minimum_exclusive ? "(" : "[", *minimum, *maximum,
+                        maximum_exclusive ? ")" : "]");
+  } else if (minimum) {
+    text += fmt::format(" {} {:g}", minimum_exclusive ? ">" : ">=", *minimum);
+  } else if (maximum) {
+    text += fmt::format(" {} {:g}", maximum_exclusive ? "<" : "<=", *maximum);
+  }
+  if (!choices.empty()) {
+    text = "one of";
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+      text += fmt::format("{} \"{}\"", i ? "," : "", choices[i]);
+    }
+  }
+  if (kind == ValueKind::kReal || kind == ValueKind::kRealList) {
+    if (!unit.empty() && unit != "-") text += " [" + unit + "]";
+  }
+  return text;
+}
+
+KeyBuilder& KeyBuilder::unit(std::string unit) {
+  spec_->unit = std::move(unit);
+  return *this;
+}
+KeyBuilder& KeyBuilder::doc(std::string description) {
+  spec_->description = std::move(description);
+  return *this;
+}
+KeyBuilder& KeyBuilder::required() {
+  spec_->required = true;
+  spec_->default_value = nullptr;
+  return *this;
+}
+KeyBuilder& KeyBuilder::optional() {
+  spec_->required = false;
+  spec_->default_value = nullptr;
+  return *this;
+}
+KeyBuilder& KeyBuilder::defaultValue(nlohmann::ordered_json value) {
+  spec_->required = false;
+  spec_->default_value = std::move(value);
+  return *this;
+}
+KeyBuilder& KeyBuilder::min(double value) {
+  spec_->minimum = value;
+  spec_->minimum_exclusive = false;
+  return *this;
+}
+KeyBuilder& KeyBuilder::greaterThan(double value) {
+  spec_->minimum = value;
+  spec_->minimum_exclusive = true;
+  return *this;
+}
+KeyBuilder& KeyBuilder::max(double value) {
+  spec_->maximum = value;
+  spec_->maximum_exclusive = false;
+  return *this;
+}
+KeyBuilder& KeyBuilder::lessThan(double value) {
+  spec_->maximum = value;
+  spec_->maximum_exclusive = true;
+  return *this;
+}
+KeyBuilder& KeyBuilder::choices(std::vector<std::string> allowed) {
+  spec_->choices = std::move(allowed);
+  return *this;
+}
+
+ConfigSchema::ConfigSchema(std::string command, std::string description)
+    : command_(std::move(command)), description_(std::move(description)) {}
+
+void ConfigSchema::section(std::string path, std::string description) {
+  const std::string parent = parentOf(path);
+  if (!parent.empty() && !findSection(parent)) {
+    throw std::logic_error("schema: section " + path + " declared before its parent");
+  }
+  sections_.push_back({std::move(path), std::move(description)});
+}
+
+KeyBuilder ConfigSchema::add(const std::string& path, ValueKind kind) {
+  const std::string parent = parentOf(path);
+  if (!parent.empty() && !findSection(parent)) {
+    throw std::logic_error("schema: key " + path + " in undeclared section " + parent);
+  }
+  if (findKey(path)) throw std::logic_error("schema: key " + path + " declared twice");
+  KeySpec& spec = keys_.emplace_back();
+  spec.path = path;
+  spec.kind = kind;
+  return KeyBuilder(spec);
+}
+
+KeyBuilder ConfigSchema::integer(const std::string& path) {
+  return add(path, ValueKind::kInteger);
+}
+KeyBuilder ConfigSchema::real(const std::string& path) {
+  return add(path, ValueKind::kReal);
+}
+KeyBuilder ConfigSchema::boolean(const std::string& path) {
+  return add(path, ValueKind::kBoolean);
+}
+KeyBuilder ConfigSchema::string(const std::string& path) {
+  return add(path, ValueKind::kString);
+}
+KeyBuilder ConfigSchema::realList(const std::string& path) {
+  return add(path, ValueKind::kRealList);
+}
+
+const KeySpec* ConfigSchema::findKey(const std::string& path) const {
+  for (const KeySpec& key : keys_) {
+    if (key.path == path) return &key;
+  }
+  return nullptr;
+}
+
+const SectionSpec* ConfigSchema::findSection(const std::string& path) const {
+  for (const SectionSpec& section : sections_) {
+    if (section.path == path) return &section;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> ConfigSchema::keyNamesIn(const std::string& section) const {
+  std::vector<std::string> names;
+  for (const KeySpec& key : keys_) {
+    if (key.section() == section) names.push_back(key.path);
+  }
+  return names;
+}
+
+std::string ConfigSchema::referenceMarkdown() const {
+  std::string out = fmt::format("# `geardyn {}` configuration\n\n{}\n\n", command_, description_);
+  out += "Generated by `geardyn schema " + command_ +
+         "` from the schema in the source; do not edit by hand.\n"
+         "Units are SI unless the key's name says otherwise (`_deg`, `_rpm`). Unknown keys are "
+         "errors.\n";
+  const auto table_for = [&](const std::string& section, const std::string& title,
+                             const std::string& description) {
+    std::string rows;
+    for (const KeySpec& key : keys_) {
+      if (key.section() != section) continue;
+      const std::string default_text = key.required                  ? "required"
+                                       : key.default_value.is_null() ? "(not set)"
+                                                                     : key.default_value.dump();
+      rows += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", key.name(), kindName(key.kind),
+                          key.unit.empty() ? "-" : key.unit, default_text, key.allowedText(),
+                          key.description);
+    }
+    if (rows.empty()) return;
+    out += fmt::format("\n## {}\n\n", title);
+    if (!description.empty()) out += description + "\n\n";
+    out += "| key | type | unit | default | allowed | description |\n";
+    out += "|---|---|---|---|---|---|\n" + rows;
+  };
+  table_for("", "Top level", "");
+  for (const SectionSpec& section : sections_) {
+    table_for(section.path, "[" + section.path + "]", section.description);
+  }
+  return out;
+}
+
+}  // namespace geardyn::io

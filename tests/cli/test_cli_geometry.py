@@ -1,0 +1,153 @@
+"""The geardyn executable: help, version, result files, exit codes and error messages."""
+
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
+SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+RAO_RIG = SOURCE / "examples" / "geometry_rao2023_rig.toml"
+
+VALID = """
+[pinion]
+teeth = 25
+module = 0.003
+face_width = 0.02
+
+[gear]
+teeth = 30
+module = 0.003
+face_width = 0.02
+"""
+
+
+def run(*args, cwd=None):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=60)
+
+
+def write(tmp_path, text, name="pair.toml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_version_and_help():
+    version = run("--version")
+    assert version.returncode == 0 and version.stdout.startswith("geardyn 0.")
+    help_ = run("--help")
+    assert help_.returncode == 0 and "geometry" in help_.stdout and "Exit codes" in help_.stdout
+    sub = run("geometry", "--help")
+    assert sub.returncode == 0
+    for option in ("--out", "--set", "--threads", "--quiet"):
+        assert option in sub.stdout
+
+
+def test_no_command_is_a_usage_error():
+    assert run().returncode == 2
+    assert run("frobnicate", "x.toml").returncode == 2
+
+
+def test_rao_rig_end_to_end(tmp_path):
+    out = tmp_path / "rig"
+    result = run("geometry", RAO_RIG, "--out", out)
+    assert result.returncode == 0, result.stderr
+    assert "undercut" in result.stderr  # the 16-tooth pinion is (slightly) undercut
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["geardyn_version"].startswith("0.")
+    assert summary["command"] == "geometry"
+    assert summary["status"] == "ok"
+    assert summary["seed"] is None
+    assert summary["files"] == ["gears.csv"]
+    # The resolved configuration has every default filled in.
+    assert summary["config"]["gear"]["addendum_coefficient"] == 1.0
+    assert summary["config"]["pair"]["centre_distance"] == 0.051125
+    results = summary["results"]
+    assert results["contact_ratio_transverse"] == pytest.approx(1.57692, abs=1e-4)
+    assert 2e3 * results["pinion"]["base_radius"] == pytest.approx(30.07016, abs=1e-5)
+    assert 2e3 * results["gear"]["base_radius"] == pytest.approx(65.77848, abs=1e-5)
+    assert 2e3 * results["pinion"]["active_profile_start_radius"] == pytest.approx(30.09285, abs=1e-5)
+    assert results["mesh_frequency"] == pytest.approx(16 * 970 / 60)
+    lines = (out / "gears.csv").read_text().splitlines()
+    assert lines[0].startswith("member,teeth,pitch_radius_m,base_radius_m")
+    assert lines[1].startswith("pinion,16,") and lines[2].startswith("gear,35,")
+    assert not [p for p in out.iterdir() if ".tmp" in p.name]
+
+
+def test_default_output_folder_is_results_config_stem(tmp_path):
+    config = write(tmp_path, VALID, "my_pair.toml")
+    result = run("geometry", config, "--quiet", cwd=tmp_path)
+    assert result.returncode == 0 and result.stdout == ""
+    assert (tmp_path / "results" / "my_pair" / "summary.json").is_file()
+
+
+def test_set_overrides_are_recorded(tmp_path):
+    config = write(tmp_path, VALID)
+    result = run("geometry", config, "--out", tmp_path / "o", "--set", "pinion.teeth=20",
+                 "--set", "pair.speed_rpm=600")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["config"]["pinion"]["teeth"] == 20
+    assert summary["results"]["mesh_frequency"] == pytest.approx(200.0)
+
+
+def edited(old, new, text=VALID):
+    assert old in text
+    return text.replace(old, new, 1)
+
+
+BAD_INPUTS = [
+    (edited("teeth = 25", "teeth = 0"), "pinion.teeth = 0"),
+    (edited("teeth = 25", "teeth = 3.5"), "pinion.teeth = 3.5: expected an integer"),
+    (edited("module = 0.003\nface", "module = -0.003\nface"), "pinion.module = -0.003"),
+    (edited("teeth = 30", "teeth = 30\npressure_angle_deg = 0"), "gear.pressure_angle_deg = 0"),
+    (edited("teeth = 30", "teeth = 30\npressure_angle_deg = 45"), "gear.pressure_angle_deg = 45"),
+    (edited("teeth = 30", "teeth = 30\naddendum_coefficient = 0.5",
+            edited("teeth = 25", "teeth = 25\naddendum_coefficient = 0.5")),
+     "cannot mesh continuously"),
+    (edited("module = 0.003\nface", "modul = 0.003\nface"), 'did you mean "pinion.module"?'),
+    (edited("face_width = 0.02\n", "\n"), "pinion.face_width: missing required key"),
+    (edited("face_width = 0.02\n", 'face_width = "wide"\n'), 'pinion.face_width = "wide": expected a number'),
+    (edited("face_width = 0.02\n", "face_width = nan\n"), "pinion.face_width = nan: must be finite"),
+    (edited("face_width = 0.02\n", "face_width = inf\n"), "pinion.face_width = inf: must be finite"),
+    (VALID + "\n[pair]\ncentre_distance = 0.07\n", "pair.centre_distance = 0.07: must exceed"),
+    (edited("teeth = 30", "teeth = = 30"), "pair.toml line 8"),
+]
+
+
+@pytest.mark.parametrize("text, expected", BAD_INPUTS, ids=[e for _, e in BAD_INPUTS])
+def test_bad_input_exits_2_naming_the_key(tmp_path, text, expected):
+    config = write(tmp_path, text)
+    result = run("geometry", config, "--out", tmp_path / "o")
+    assert result.returncode == 2, result.stderr
+    assert expected in result.stderr
+    assert "Traceback" not in result.stderr and "terminate" not in result.stderr
+    assert not (tmp_path / "o" / "summary.json").exists()
+
+
+def test_bad_override_exits_2(tmp_path):
+    config = write(tmp_path, VALID)
+    result = run("geometry", config, "--set", "pinion.modul=0.002")
+    assert result.returncode == 2 and 'did you mean "pinion.module"?' in result.stderr
+
+
+def test_missing_config_file_exits_2():
+    result = run("geometry", "/nonexistent/pair.toml")
+    assert result.returncode == 2 and "no such configuration file" in result.stderr
+
+
+def test_unwritable_output_exits_3(tmp_path):
+    config = write(tmp_path, VALID)
+    blocker = tmp_path / "blocker"
+    blocker.write_text("a file where a folder should be")
+    result = run("geometry", config, "--out", blocker / "out")
+    assert result.returncode == 3 and "I/O error" in result.stderr
+
+
+def test_schema_reference_in_docs_is_current():
+    result = run("schema", "geometry")
+    assert result.returncode == 0
+    committed = (SOURCE / "docs" / "config" / "geometry.md").read_text()
+    assert result.stdout == committed, "regenerate: build/bin/geardyn schema geometry > docs/config/geometry.md"
