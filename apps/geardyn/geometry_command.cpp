@@ -7,7 +7,9 @@
 #include "command.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
+#include "plotting.h"
 
 namespace geardyn::cli {
 
@@ -24,7 +26,13 @@ int runGeometry(const io::Config& config, const CommandOptions& options) {
 
   io::ResultWriter writer(options.resultFolder());
   writer.writeCsv("gears.csv", io::memberTable(pair));
-  const auto summary_path = writer.writeSummary(summary);
+  writer.writeCsv("tooth_profiles.csv", io::toothProfileTable(pair));
+  auto summary_path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    // The plotter reads summary.json; the summary is written again to list the plots.
+    for (const auto& file : drawPlots("geometry", writer.folder())) writer.recordFile(file);
+    summary_path = writer.writeSummary(summary);
+  }
 
   const auto mm = [](double metres) { return metres * 1e3; };
   std::string text = fmt::format(

@@ -2,6 +2,9 @@
 
 #include <numbers>
 
+#include "geardyn/geometry/tooth_profile.h"
+#include "geardyn/io/output_section.h"
+
 namespace geardyn::io {
 namespace {
 
@@ -139,6 +142,7 @@ ConfigSchema geometrySchema() {
                       "contact, contact ratios, backlash, validity checks, mass properties.");
   schema.string("title").optional().doc("free text describing the study");
   addGearPairSections(schema);
+  addOutputSection(schema);
   return schema;
 }
 
@@ -203,6 +207,17 @@ CsvTable memberTable(const GearPair& pair) {
   };
   add("pinion", pair.pinion(), pair.spec().pinion.teeth);
   add("gear", pair.gear(), pair.spec().gear.teeth);
+  return table;
+}
+
+CsvTable toothProfileTable(const GearPair& pair) {
+  CsvTable table({"member", "x_m", "y_m"});
+  for (Member member : {Member::kPinion, Member::kGear}) {
+    const std::string name = member == Member::kPinion ? "pinion" : "gear";
+    for (const auto& p : computeToothProfile(pair, member).points) {
+      table.addRow({name, p.x(), p.y()});
+    }
+  }
   return table;
 }
 

@@ -10,6 +10,8 @@ import pytest
 CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
 SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 RAO_RIG = SOURCE / "examples" / "geometry_rao2023_rig.toml"
+# Plots need the Python package in the build (not in the sanitizer build).
+PLOTS = os.environ.get("GEARDYN_PLOTS", "1") == "1"
 
 VALID = """
 [pinion]
@@ -60,7 +62,9 @@ def test_rao_rig_end_to_end(tmp_path):
     assert summary["command"] == "geometry"
     assert summary["status"] == "ok"
     assert summary["seed"] is None
-    assert summary["files"] == ["gears.csv"]
+    assert summary["files"] == ["gears.csv", "tooth_profiles.csv"] + (["mesh.png"] if PLOTS else [])
+    if PLOTS:
+        assert (out / "mesh.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     # The resolved configuration has every default filled in.
     assert summary["config"]["gear"]["addendum_coefficient"] == 1.0
     assert summary["config"]["pair"]["centre_distance"] == 0.051125
@@ -78,9 +82,21 @@ def test_rao_rig_end_to_end(tmp_path):
 
 def test_default_output_folder_is_results_config_stem(tmp_path):
     config = write(tmp_path, VALID, "my_pair.toml")
-    result = run("geometry", config, "--quiet", cwd=tmp_path)
+    result = run("geometry", config, "--quiet", "--set", "output.plots=false", cwd=tmp_path)
     assert result.returncode == 0 and result.stdout == ""
-    assert (tmp_path / "results" / "my_pair" / "summary.json").is_file()
+    folder = tmp_path / "results" / "my_pair"
+    assert (folder / "summary.json").is_file()
+    assert sorted(p.name for p in folder.iterdir()) == ["gears.csv", "summary.json", "tooth_profiles.csv"]
+
+
+def test_missing_plotter_is_a_warning_not_a_failure(tmp_path):
+    config = write(tmp_path, VALID)
+    env = dict(os.environ, GEARDYN_PYTHON="/nonexistent/python3")
+    result = subprocess.run([CLI, "geometry", str(config), "--out", str(tmp_path / "o")],
+                            capture_output=True, text=True, env=env, timeout=60)
+    assert result.returncode == 0
+    assert "warning: plots skipped" in result.stderr
+    assert json.loads((tmp_path / "o" / "summary.json").read_text())["files"] == ["gears.csv", "tooth_profiles.csv"]
 
 
 def test_set_overrides_are_recorded(tmp_path):

@@ -72,6 +72,18 @@ def test_bad_input_raises_value_error_naming_the_argument():
         geardyn.GearPair.from_config("/nonexistent.toml")
 
 
+def test_plot_geometry_writes_a_png(tmp_path):
+    import subprocess
+    cli = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
+    subprocess.run([cli, "geometry", str(RAO_RIG), "--out", str(tmp_path), "--quiet",
+                    "--set", "output.plots=false"], check=True, capture_output=True)
+    import geardyn.plot
+    written = geardyn.plot.plot_geometry(tmp_path)
+    assert [p.name for p in written] == ["mesh.png"]
+    assert (tmp_path / "mesh.png").read_bytes()[:4] == b"\x89PNG"
+    assert not [p for p in tmp_path.iterdir() if ".tmp" in p.name]
+
+
 def test_load_config_resolves_defaults_and_reference_lists_keys():
     config = geardyn.load_config("geometry", str(RAO_RIG))
     assert config["pinion"]["dedendum_coefficient"] == 1.25

@@ -29,4 +29,8 @@ nlohmann::ordered_json toJson(const GearPair& pair);
 /// One row per member (pinion, gear) with the per-gear quantities; units in the column names.
 CsvTable memberTable(const GearPair& pair);
 
+/// Half a tooth of each member (see ToothProfile): columns member, x_m, y_m, in the member's
+/// frame (centre at the origin, tooth centreline along +y).
+CsvTable toothProfileTable(const GearPair& pair);
+
 }  // namespace geardyn::io

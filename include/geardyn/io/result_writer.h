@@ -36,6 +36,8 @@ class ResultWriter {
   /// Writes `name` (e.g. "gears.csv") atomically and records it for the summary.
   void writeCsv(const std::string& name, const CsvTable& table);
   void writeText(const std::string& name, const std::string& content);
+  /// Records a file that something else wrote into the folder (e.g. a plot).
+  void recordFile(const std::string& name) { files_.push_back(name); }
 
   /// Writes summary.json (atomically) listing every file written so far; call it last, so that
   /// a summary on disk means the run's files are complete. Returns its path.
