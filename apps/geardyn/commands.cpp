@@ -2,15 +2,21 @@
 
 #include "command.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/stiffness_io.h"
 
 namespace geardyn::cli {
 
 int runGeometry(const io::Config& config, const CommandOptions& options);
+int runStiffness(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
        io::geometrySchema, runGeometry},
+      {"stiffness",
+       "mesh stiffness over a mesh period: API, step, Fourier, potential energy, ISO 6336; "
+       "statistics, Fourier coefficients, loaded transmission error",
+       io::stiffnessSchema, runStiffness},
   };
 }
 

@@ -123,7 +123,64 @@ def plot_geometry(result_dir):
     return [_save_atomically(figure, folder / "mesh.png")]
 
 
-PLOTTERS = {"geometry": plot_geometry}
+def _read_columns(path):
+    """A CSV table as {column: [floats or strings]}."""
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    columns = {}
+    for name in rows[0].keys() if rows else []:
+        values = [row[name] for row in rows]
+        try:
+            columns[name] = [float(v) for v in values]
+        except ValueError:
+            columns[name] = values
+    return columns
+
+
+def plot_stiffness(result_dir):
+    """mesh_stiffness.png: k over two mesh periods for every model (as Visnadi 2021, Fig. 1),
+    with the pairs of the primary model; and the static transmission error when computed."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    results = summary["results"]
+    table = _read_columns(folder / "mesh_stiffness.csv")
+    phase = table["mesh_fraction"]
+    primary = results["mesh_stiffness"]["model"]
+    two = [p for p in phase] + [p + 1.0 for p in phase]
+
+    def twice(values):
+        return list(values) + list(values)
+
+    has_ste = "ste_m" in table
+    figure, axes = plt.subplots(2 if has_ste else 1, 1, figsize=(9, 7 if has_ste else 4.8), squeeze=False)
+    ax = axes[0][0]
+    ax.plot(two, [k / 1e8 for k in twice(table["k_total"])], lw=1.6, label=primary)
+    for name in [c for c in table if c.startswith("k_pair_")]:
+        ax.plot(two, [k / 1e8 for k in twice(table[name])], lw=0.7, ls="--",
+                label=f"{primary}, pair {name.rsplit('_', 1)[1]}")
+    for name in [c for c in table if c.startswith("k_") and c not in ("k_total",) and not c.startswith("k_pair_")]:
+        ax.plot(two, [k / 1e8 for k in twice(table[name])], lw=1.1, label=name[2:])
+    ax.set_xlabel("mesh phase [mesh periods]")
+    ax.set_ylabel("mesh stiffness [1e8 N/m]")
+    ax.set_xlim(0, 2)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    title = summary.get("config", {}).get("title") or "mesh stiffness"
+    ax.set_title(f"{title}\ncontact ratio {results['mesh_stiffness']['contact_ratio']:.4f}", fontsize=9)
+    if has_ste:
+        ax = axes[1][0]
+        ax.plot(two, [d * 1e6 for d in twice(table["ste_m"])], color="black", lw=1.2)
+        ax.set_xlabel("mesh phase [mesh periods]")
+        ax.set_ylabel("loaded STE [um]")
+        ax.set_xlim(0, 2)
+        ax.grid(alpha=0.3)
+        force = results["static_transmission_error"]["force"]
+        ax.set_title(f"static transmission error at F = {force:g} N ({primary})", fontsize=9)
+    figure.tight_layout()
+    return [_save_atomically(figure, folder / "mesh_stiffness.png")]
+
+
+PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness}
 
 
 def main(argv=None):

@@ -61,6 +61,8 @@ class Resolver {
   nlohmann::ordered_json convert(const KeySpec& spec, const toml::node& node) const;
   void checkRange(const KeySpec& spec, double value, const toml::node& node,
                   const std::string& shown) const;
+  void checkChoice(const KeySpec& spec, const std::string& value, const toml::node& node,
+                   const std::string& shown) const;
 
   const ConfigSchema& schema_;
   std::string source_;
@@ -193,6 +195,21 @@ void Resolver::checkRange(const KeySpec& spec, double value, const toml::node& n
   }
 }
 
+void Resolver::checkChoice(const KeySpec& spec, const std::string& value, const toml::node& node,
+                           const std::string& shown) const {
+  if (spec.choices.empty() ||
+      std::find(spec.choices.begin(), spec.choices.end(), value) != spec.choices.end()) {
+    return;
+  }
+  std::string hint;
+  if (auto match = closestMatch(value, spec.choices)) {
+    hint = fmt::format("; did you mean \"{}\"?", *match);
+  }
+  throw InputError(spec.path, shown,
+                   fmt::format("must be {} ({}; {}){}", spec.allowedText(), spec.description,
+                               where(spec.path, node), hint));
+}
+
 nlohmann::ordered_json Resolver::convert(const KeySpec& spec, const toml::node& node) const {
   const std::string shown = describeNode(node);
   const auto wrong_type = [&]() {
@@ -241,18 +258,20 @@ nlohmann::ordered_json Resolver::convert(const KeySpec& spec, const toml::node& 
     case ValueKind::kString: {
       const auto* s = node.as_string();
       if (!s) throw wrong_type();
-      const std::string value = s->get();
-      if (!spec.choices.empty() &&
-          std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
-        std::string hint;
-        if (auto match = closestMatch(value, spec.choices)) {
-          hint = fmt::format("; did you mean \"{}\"?", *match);
-        }
-        throw InputError(spec.path, shown,
-                         fmt::format("must be {} ({}; {}){}", spec.allowedText(), spec.description,
-                                     where(spec.path, node), hint));
+      checkChoice(spec, s->get(), node, shown);
+      return s->get();
+    }
+    case ValueKind::kStringList: {
+      const auto* array = node.as_array();
+      if (!array) throw wrong_type();
+      nlohmann::ordered_json list = nlohmann::ordered_json::array();
+      for (const toml::node& element : *array) {
+        const auto* s = element.as_string();
+        if (!s) throw wrong_type();
+        checkChoice(spec, s->get(), node, "\"" + s->get() + "\"");
+        list.push_back(s->get());
       }
-      return value;
+      return list;
     }
     case ValueKind::kRealList: {
       const auto* array = node.as_array();
@@ -330,6 +349,9 @@ std::string Config::string(const std::string& path) const {
 }
 std::vector<double> Config::realList(const std::string& path) const {
   return at(path).get<std::vector<double>>();
+}
+std::vector<std::string> Config::stringList(const std::string& path) const {
+  return at(path).get<std::vector<std::string>>();
 }
 std::optional<double> Config::optionalReal(const std::string& path) const {
   const auto& value = at(path);

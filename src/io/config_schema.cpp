@@ -19,16 +19,28 @@ std::string kindName(ValueKind kind) {
       return "string";
     case ValueKind::kRealList:
       return "list of numbers";
+    case ValueKind::kStringList:
+      return "list of strings";
   }
   return "?";
 }
 
 std::string article(ValueKind kind) {
-  return kind == ValueKind::kInteger   ? "an integer"
-         : kind == ValueKind::kReal    ? "a number"
-         : kind == ValueKind::kBoolean ? "true or false"
-         : kind == ValueKind::kString  ? "a string"
-                                       : "a list of numbers";
+  switch (kind) {
+    case ValueKind::kInteger:
+      return "an integer";
+    case ValueKind::kReal:
+      return "a number";
+    case ValueKind::kBoolean:
+      return "true or false";
+    case ValueKind::kString:
+      return "a string";
+    case ValueKind::kRealList:
+      return "a list of numbers";
+    case ValueKind::kStringList:
+      return "a list of strings";
+  }
+  return "?";
 }
 
 std::string parentOf(const std::string& path) {
@@ -59,7 +71,7 @@ std::string KeySpec::allowedText() const {
     text += fmt::format(" {} {:g}", maximum_exclusive ? "<" : "<=", *maximum);
   }
   if (!choices.empty()) {
-    text = "one of";
+    text = kind == ValueKind::kStringList ? "a list of" : "one of";
     for (std::size_t i = 0; i < choices.size(); ++i) {
       text += fmt::format("{} \"{}\"", i ? "," : "", choices[i]);
     }
@@ -155,6 +167,9 @@ KeyBuilder ConfigSchema::string(const std::string& path) {
 }
 KeyBuilder ConfigSchema::realList(const std::string& path) {
   return add(path, ValueKind::kRealList);
+}
+KeyBuilder ConfigSchema::stringList(const std::string& path) {
+  return add(path, ValueKind::kStringList);
 }
 
 const KeySpec* ConfigSchema::findKey(const std::string& path) const {

@@ -162,8 +162,9 @@ def test_unwritable_output_exits_3(tmp_path):
     assert result.returncode == 3 and "I/O error" in result.stderr
 
 
-def test_schema_reference_in_docs_is_current():
-    result = run("schema", "geometry")
+@pytest.mark.parametrize("command", ["geometry", "stiffness"])
+def test_schema_reference_in_docs_is_current(command):
+    result = run("schema", command)
     assert result.returncode == 0
-    committed = (SOURCE / "docs" / "config" / "geometry.md").read_text()
-    assert result.stdout == committed, "regenerate: build/bin/geardyn schema geometry > docs/config/geometry.md"
+    committed = (SOURCE / "docs" / "config" / f"{command}.md").read_text()
+    assert result.stdout == committed, f"regenerate: build/bin/geardyn schema {command} > docs/config/{command}.md"

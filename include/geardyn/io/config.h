@@ -34,6 +34,7 @@ class Config {
   bool boolean(const std::string& path) const;
   std::string string(const std::string& path) const;
   std::vector<double> realList(const std::string& path) const;
+  std::vector<std::string> stringList(const std::string& path) const;
   std::optional<double> optionalReal(const std::string& path) const;
 
  private:

@@ -13,7 +13,7 @@
 namespace geardyn::io {
 
 /// The TOML type a key takes.
-enum class ValueKind { kInteger, kReal, kBoolean, kString, kRealList };
+enum class ValueKind { kInteger, kReal, kBoolean, kString, kRealList, kStringList };
 
 /// One configuration key. `path` is dotted: "section.key" or "section.sub.key".
 struct KeySpec {
@@ -27,7 +27,7 @@ struct KeySpec {
   bool minimum_exclusive = false;
   std::optional<double> maximum;
   bool maximum_exclusive = false;
-  std::vector<std::string> choices;  ///< allowed strings (kString), empty: any
+  std::vector<std::string> choices;  ///< allowed strings (kString, kStringList), empty: any
 
   /// What is allowed, in words: "an integer >= 3", "a number in (0, 45)", "one of "a", "b"".
   std::string allowedText() const;
@@ -76,6 +76,7 @@ class ConfigSchema {
   KeyBuilder boolean(const std::string& path);
   KeyBuilder string(const std::string& path);
   KeyBuilder realList(const std::string& path);
+  KeyBuilder stringList(const std::string& path);  ///< choices apply to every element
 
   const std::string& command() const noexcept { return command_; }
   const std::string& description() const noexcept { return description_; }

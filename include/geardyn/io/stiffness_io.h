@@ -1,0 +1,69 @@
+#pragma once
+/// \file
+/// Configuration and results of `geardyn stiffness`: the [mesh_stiffness] section and its
+/// per-model subsections, building the requested models for a gear pair, and their JSON / CSV
+/// forms (summary statistics, Fourier coefficients, curves over one mesh period, loaded static
+/// transmission error).
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/io/config.h"
+#include "geardyn/io/config_schema.h"
+#include "geardyn/io/csv_table.h"
+#include "geardyn/stiffness/iso6336_stiffness.h"
+#include "geardyn/stiffness/mesh_stiffness.h"
+#include "geardyn/stiffness/potential_energy_stiffness.h"
+
+namespace geardyn::io {
+
+/// The model names `[mesh_stiffness] models` accepts.
+const std::vector<std::string>& meshStiffnessModelNames();
+
+/// Adds [mesh_stiffness] and its model subsections ([mesh_stiffness.api], .step, .fourier,
+/// .potential_energy, .iso6336) to a schema.
+void addMeshStiffnessSections(ConfigSchema& schema);
+
+/// The schema of `geardyn stiffness`: gear pair, mesh stiffness, output.
+ConfigSchema stiffnessSchema();
+
+PotentialEnergyOptions potentialEnergyOptionsFromConfig(const Config& config);
+Iso6336Options iso6336OptionsFromConfig(const Config& config);
+
+/// The models a configuration asks for, in its order (the first is the primary one), built for
+/// a pair. Models derived from others (step levels, Fourier fit) build their source once.
+struct MeshStiffnessModels {
+  std::vector<std::shared_ptr<const MeshStiffness>> models;
+  std::vector<std::string> warnings;
+};
+MeshStiffnessModels buildMeshStiffnessModels(const Config& config, const GearPair& pair);
+
+/// The loaded static transmission error along the line of action at phase φ,
+/// δ(φ) = F / k(φ) + e(φ) with e a Fourier series in mesh orders [m].
+struct TransmissionErrorSpec {
+  double force = 0.0;              ///< transmitted force along the line of action F [N]
+  std::vector<double> amplitudes;  ///< e_i [m], i = 1, 2, ... (mesh orders)
+  std::vector<double> phases;      ///< [rad]
+  double at(const MeshStiffness& k, double phase) const;
+};
+TransmissionErrorSpec transmissionErrorFromConfig(const Config& config);
+
+/// results.mesh_stiffness (the primary model) and results.models (every model): mean, min, max,
+/// std, contact ratio, Fourier coefficients; plus the API directional matrix, the ISO factors
+/// and the static transmission error where they apply.
+nlohmann::ordered_json stiffnessResultsJson(const Config& config, const GearPair& pair,
+                                            const MeshStiffnessModels& models);
+
+/// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [time_s,] k_total (primary), k_pair_1..n
+/// (primary), k_<model> for the others, [ste_m].
+CsvTable stiffnessCurveTable(const Config& config, const GearPair& pair,
+                             const MeshStiffnessModels& models);
+
+/// fourier.csv from results.models (stiffnessResultsJson): model, order, cosine, sine,
+/// amplitude, phase_rad, relative_amplitude; order 0 holds the mean.
+CsvTable fourierTable(const nlohmann::ordered_json& results_models);
+
+}  // namespace geardyn::io
