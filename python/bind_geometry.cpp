@@ -158,6 +158,12 @@ void bindGeometry(py::module_& m) {
       .def_property_readonly("contact_ratio_transverse", &GearPair::contactRatioTransverse, "[-]")
       .def_property_readonly("overlap_ratio", &GearPair::overlapRatio, "[-]")
       .def_property_readonly("contact_ratio_total", &GearPair::contactRatioTotal, "[-]")
+      .def_property_readonly("effective_face_width", &GearPair::effectiveFaceWidth,
+                             "common face width [m]")
+      .def_property_readonly(
+          "pinion_spec", [](const GearPair& p) { return p.spec().pinion; }, "the pinion's Gear")
+      .def_property_readonly(
+          "gear_spec", [](const GearPair& p) { return p.spec().gear; }, "the gear's Gear")
       .def_property_readonly("mesh_frequency", &GearPair::meshFrequency, "[Hz] or None")
       .def_property_readonly("warnings", &GearPair::warnings, "design warnings (sentences)")
       .def(

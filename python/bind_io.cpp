@@ -6,6 +6,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/config.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/stiffness_io.h"
 
 namespace py = pybind11;
 
@@ -14,7 +15,8 @@ namespace {
 
 io::ConfigSchema schemaOf(const std::string& command) {
   if (command == "geometry") return io::geometrySchema();
-  throw InputError("command", command, "must be one of: geometry");
+  if (command == "stiffness") return io::stiffnessSchema();
+  throw InputError("command", command, "must be one of: geometry, stiffness");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ namespace py = pybind11;
 namespace geardyn::python {
 void bindGeometry(py::module_& m);
 void bindIo(py::module_& m);
+void bindStiffness(py::module_& m);
 }  // namespace geardyn::python
 
 PYBIND11_MODULE(_geardyn, m) {
@@ -27,4 +28,5 @@ PYBIND11_MODULE(_geardyn, m) {
   });
   geardyn::python::bindGeometry(m);
   geardyn::python::bindIo(m);
+  geardyn::python::bindStiffness(m);
 }

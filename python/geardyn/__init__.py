@@ -1,7 +1,7 @@
 """geardyn: gear-pair and geared-rotor dynamics.
 
 From gear geometry to mesh stiffness, dynamic response, spectra and identification. The compiled
-core lives in ``geardyn._geardyn``; this package re-exports it and adds plotting helpers.
+core lives in ``geardyn._geardyn``; this package re-exports it and adds helpers (``plot``).
 
 >>> import geardyn
 >>> pinion = geardyn.Gear(teeth=25, module=3e-3, face_width=0.02)
@@ -11,12 +11,75 @@ core lives in ``geardyn._geardyn``; this package re-exports it and adds plotting
 """
 
 from ._geardyn import (  # noqa: F401  (re-exported API)
+    ConstantMeshStiffness,
+    FourierMeshStiffness,
     Gear,
     GearGeometry,
     GearPair,
+    MeshStiffness,
+    PotentialEnergyMeshStiffness,
+    StepMeshStiffness,
     __version__,
+    api_directional_stiffness,
+    api_mesh_stiffness,
     config_reference,
+    iso6336_stiffness,
     load_config,
 )
 
-__all__ = ["Gear", "GearGeometry", "GearPair", "__version__", "config_reference", "load_config"]
+MESH_STIFFNESS_MODELS = ("potential_energy", "api", "step", "fourier", "iso6336")
+
+
+def mesh_stiffness(pair, model="potential_energy", **options):
+    """A mesh-stiffness model of a GearPair, by name, as in ``[mesh_stiffness] models``.
+
+    - ``"potential_energy"``: options of PotentialEnergyMeshStiffness (root, foundation_arm,
+      foundation, pinion_hub_radius, gear_hub_radius, slices, helical_cos2_beta_b, table_points).
+    - ``"api"``: the API constant for the pair's face width and helix angle.
+    - ``"iso6336"``: ISO 6336-1 c_gamma_alpha * b (options c_m, material_factor).
+    - ``"step"``: ``levels="potential_energy"`` (default; zone means of that model, taking its
+      options as ``source_options``), ``"api"``, ``"iso6336"`` or ``k_min=..., k_max=...``.
+    - ``"fourier"``: ``order`` harmonics (default 1) fitted to the potential-energy model, with
+      ``mean="fit" | "api" | "iso6336"`` or a number [N/m].
+
+    Returns a MeshStiffness: call it with mesh phases; ``.summary(order)`` gives statistics.
+    """
+    eps = pair.contact_ratio_total
+    beta_deg = pair.pinion_spec.helix_angle_deg
+    if model == "potential_energy":
+        return PotentialEnergyMeshStiffness(pair, **options)
+    if model == "api":
+        _no_options(model, options)
+        return ConstantMeshStiffness("api", api_mesh_stiffness(pair.effective_face_width, beta_deg), eps)
+    if model == "iso6336":
+        return ConstantMeshStiffness("iso6336", iso6336_stiffness(pair, **options)["mesh_stiffness"], eps)
+    if model == "step":
+        levels = options.pop("levels", "potential_energy")
+        if "k_min" in options or "k_max" in options:
+            return StepMeshStiffness(k_min=options.pop("k_min"), k_max=options.pop("k_max"), contact_ratio=eps)
+        source_options = options.pop("source_options", {})
+        _no_options(model, options)
+        if levels == "potential_energy":
+            return StepMeshStiffness.from_model(PotentialEnergyMeshStiffness(pair, **source_options))
+        return StepMeshStiffness.from_mean(mesh_stiffness(pair, levels)(0.0), eps)
+    if model == "fourier":
+        order = options.pop("order", 1)
+        mean = options.pop("mean", "fit")
+        source_options = options.pop("source_options", {})
+        _no_options(model, options)
+        value = 0.0 if mean == "fit" else (mean if isinstance(mean, (int, float)) else mesh_stiffness(pair, mean)(0.0))
+        return FourierMeshStiffness.fit(PotentialEnergyMeshStiffness(pair, **source_options), order, value)
+    raise ValueError(f"model = {model!r}: must be one of {', '.join(MESH_STIFFNESS_MODELS)}")
+
+
+def _no_options(model, options):
+    if options:
+        raise ValueError(f"model {model!r} takes no option(s) {', '.join(sorted(options))}")
+
+
+__all__ = [
+    "ConstantMeshStiffness", "FourierMeshStiffness", "Gear", "GearGeometry", "GearPair",
+    "MeshStiffness", "PotentialEnergyMeshStiffness", "StepMeshStiffness", "__version__",
+    "api_directional_stiffness", "api_mesh_stiffness", "config_reference", "iso6336_stiffness",
+    "load_config", "mesh_stiffness", "MESH_STIFFNESS_MODELS",
+]

@@ -24,7 +24,8 @@ double inverseInvolute(double value) {
     const double t = std::tan(alpha);
     const double step = (t - alpha - value) / (t * t);
     alpha -= step;
-    if (std::abs(step) <= 1e-16 * alpha) break;
+    if (std::abs(step) <= 1e-15 * alpha)
+      break;  // quadratic convergence: one more step is round-off
   }
   return alpha;
 }

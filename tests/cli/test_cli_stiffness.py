@@ -1,0 +1,81 @@
+"""geardyn stiffness: the Visnadi examples end to end, output files, bad input."""
+
+import csv
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
+SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+SPUR = SOURCE / "examples" / "stiffness_visnadi2021_spur.toml"
+HELICAL = SOURCE / "examples" / "stiffness_visnadi2021_helical.toml"
+PLOTS = os.environ.get("GEARDYN_PLOTS", "1") == "1"
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=120)
+
+
+def test_visnadi_spur_end_to_end(tmp_path):
+    result = run("stiffness", SPUR, "--out", tmp_path, "--set", "mesh_stiffness.transmitted_force=2000")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    k = summary["results"]["mesh_stiffness"]
+    assert k["model"] == "potential_energy"
+    assert k["mean"] == pytest.approx(3.164e8, rel=5e-4)
+    assert k["min"] == pytest.approx(2.151e8, rel=5e-4)
+    assert k["max"] == pytest.approx(3.787e8, rel=5e-4)
+    assert k["contact_ratio"] == pytest.approx(1.6325826, abs=1e-7)
+    assert len(k["fourier"]["amplitude"]) == 10
+    models = summary["results"]["models"]
+    assert list(models) == ["potential_energy", "api", "step", "fourier", "iso6336"]
+    assert models["api"]["mean"] == pytest.approx(2.41140e8, rel=1e-12)
+    assert models["api"]["directional_matrix"][0][1] == pytest.approx(-7.750090e7, rel=1e-6)
+    assert models["step"]["mean"] == pytest.approx(2.41140e8, rel=1e-12)  # levels = "api"
+    assert models["fourier"]["mean"] == pytest.approx(2.41140e8, rel=1e-12)
+    assert k["mean"] > models["api"]["mean"]  # the paper's finding
+    ste = summary["results"]["static_transmission_error"]
+    assert ste["mean"] == pytest.approx(2000 / 3.0e8, rel=0.2)
+    with open(tmp_path / "mesh_stiffness.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert len(rows) == 1000
+    assert list(rows[0])[:6] == ["roll_angle_rad", "mesh_fraction", "time_s", "k_total", "k_pair_1", "k_pair_2"]
+    assert "k_iso6336" in rows[0] and "ste_m" in rows[0]
+    row = rows[317]
+    assert float(row["k_total"]) == pytest.approx(float(row["k_pair_1"]) + float(row["k_pair_2"]), rel=1e-14)
+    assert float(row["ste_m"]) == pytest.approx(2000 / float(row["k_total"]), rel=1e-14)
+    fourier = (tmp_path / "fourier.csv").read_text().splitlines()
+    assert fourier[0].startswith("model,order,cosine_n_per_m")
+    assert len(fourier) == 1 + 5 * 11
+    expected = ["mesh_stiffness.csv", "fourier.csv"] + (["mesh_stiffness.png"] if PLOTS else [])
+    assert summary["files"] == expected
+
+
+def test_visnadi_helical_mean_above_api(tmp_path):
+    result = run("stiffness", HELICAL, "--out", tmp_path, "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    models = json.loads((tmp_path / "summary.json").read_text())["results"]["models"]
+    assert models["potential_energy"]["mean"] > models["api"]["mean"]
+    assert models["api"]["mean"] == pytest.approx(12.057 * 20 * 1e6 * 0.9961946981 ** 2, rel=1e-6)
+    assert models["potential_energy"]["contact_ratio"] > 1.8  # transverse + overlap
+
+
+@pytest.mark.parametrize("override, expected", [
+    ("mesh_stiffness.models=[\"potential_energy\", \"apii\"]", 'did you mean "api"?'),
+    ("mesh_stiffness.step.levels=given", "mesh_stiffness.step.k_min: required when"),
+    ("mesh_stiffness.positions=3", "mesh_stiffness.positions = 3: must be an integer in [8, 1e+06]"),
+    ("mesh_stiffness.potential_energy.root=curved", 'must be one of "straight", "trochoid"'),
+    ("mesh_stiffness.fourier.amplitudes=[0.5, -0.1]", "must be a list of numbers each >= 0"),
+    ("pinion.bore_diameter=0", "fillet-foundation model (Sainsot 2004) needs the radius"),
+    ("mesh_stiffness.transmitted_force=-5", "mesh_stiffness.transmitted_force = -5"),
+    ("mesh_stiffness.error_amplitudes=[1e-6]", "need one phase per amplitude"),
+])
+def test_bad_input_exits_2(tmp_path, override, expected):
+    models = "mesh_stiffness.models=[\"potential_energy\", \"step\"]"
+    extra = [] if override.startswith("mesh_stiffness.models") else ["--set", models]
+    result = run("stiffness", SPUR, "--out", tmp_path, "--set", override, *extra)
+    assert result.returncode == 2, result.stderr
+    assert expected in result.stderr
