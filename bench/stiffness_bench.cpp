@@ -8,24 +8,12 @@
 
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
+#include "support/reference_pairs.h"
 
 namespace {
 
 geardyn::GearPair visnadiPair(double helix_deg) {
-  geardyn::GearPairSpec spec;
-  for (geardyn::GearSpec* g : {&spec.pinion, &spec.gear}) {
-    g->normal_module = 3e-3;
-    g->normal_pressure_angle = 20.0 * std::numbers::pi / 180.0;
-    g->face_width = 20e-3;
-    g->youngs_modulus = 200e9;
-    g->poisson_ratio = 0.3;
-    g->bore_diameter = 30e-3;
-  }
-  spec.pinion.teeth = 25;
-  spec.gear.teeth = 30;
-  spec.pinion.helix_angle = helix_deg * std::numbers::pi / 180.0;
-  spec.gear.helix_angle = -spec.pinion.helix_angle;
-  return geardyn::GearPair(spec);
+  return geardyn::GearPair(geardyn::testing::visnadiPairSpec(helix_deg));
 }
 
 /// Prepare the model and evaluate one mesh period at 1000 positions (the target).

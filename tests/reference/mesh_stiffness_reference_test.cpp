@@ -7,6 +7,7 @@
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
 #include "support/numeric_assertions.h"
+#include "support/reference_pairs.h"
 
 namespace geardyn {
 namespace {
@@ -50,17 +51,7 @@ TEST(MeshStiffnessReference, VisnadiPairPotentialEnergyAgainstAnIndependentImple
   // implementation of Ma 2014 + Sainsot (straight root, u_f on the force line) gives max
   // 3.787e8, min 2.151e8, mean 3.164e8 N/m (shared/reference/mesh_stiffness.md). The issue asks
   // for 10 %; we agree to the reference's 4 digits (5e-4 relative covers its rounding).
-  GearPairSpec spec;
-  for (GearSpec* g : {&spec.pinion, &spec.gear}) {
-    g->normal_module = 3e-3;
-    g->normal_pressure_angle = 20 * kDegree;
-    g->face_width = 20e-3;
-    g->youngs_modulus = 200e9;
-    g->poisson_ratio = 0.3;
-    g->bore_diameter = 30e-3;
-  }
-  spec.pinion.teeth = 25;
-  spec.gear.teeth = 30;
+  const GearPairSpec spec = testing::visnadiPairSpec();
   const GearPair pair(spec);
   const auto s = summarizeMeshStiffness(PotentialEnergyMeshStiffness(pair), 0);
   EXPECT_CLOSE(s.max, 3.787e8, 5e-4);

@@ -13,6 +13,7 @@
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
 #include "support/numeric_assertions.h"
+#include "support/reference_pairs.h"
 
 namespace geardyn {
 namespace {
@@ -21,20 +22,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDegree = kPi / 180;
 
 GearPairSpec visnadiPair(double helix_deg = 0.0, double module = 3e-3) {
-  GearPairSpec spec;
-  for (GearSpec* g : {&spec.pinion, &spec.gear}) {
-    g->normal_module = module;
-    g->normal_pressure_angle = 20 * kDegree;
-    g->face_width = 20e-3 * module / 3e-3;
-    g->youngs_modulus = 200e9;
-    g->poisson_ratio = 0.3;
-    g->bore_diameter = 30e-3 * module / 3e-3;
-  }
-  spec.pinion.teeth = 25;
-  spec.gear.teeth = 30;
-  spec.pinion.helix_angle = helix_deg * kDegree;
-  spec.gear.helix_angle = -helix_deg * kDegree;
-  return spec;
+  return testing::visnadiPairSpec(helix_deg, module);
 }
 
 /// Beam energies integrated directly along the tooth, parametrised by the radius r of the
