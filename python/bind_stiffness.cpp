@@ -173,6 +173,10 @@ void bindStiffness(py::module_& m) {
                              "[m] from T1")
       .def_property_readonly("warnings", &PotentialEnergyMeshStiffness::warnings);
 
+  m.def("mesh_phase_from_roll_angle", &meshPhaseFromRollAngle, py::arg("roll_angle"),
+        py::arg("pinion_teeth"), "mesh phase of a pinion roll angle [rad]: theta z1 / (2 pi)");
+  m.def("roll_angle_from_mesh_phase", &rollAngleFromMeshPhase, py::arg("phase"),
+        py::arg("pinion_teeth"), "pinion roll angle [rad] of a mesh phase");
   m.def(
       "api_mesh_stiffness",
       [](double face_width, double helix_angle_deg) {

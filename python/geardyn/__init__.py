@@ -25,6 +25,8 @@ from ._geardyn import (  # noqa: F401  (re-exported API)
     config_reference,
     iso6336_stiffness,
     load_config,
+    mesh_phase_from_roll_angle,
+    roll_angle_from_mesh_phase,
 )
 
 MESH_STIFFNESS_MODELS = ("potential_energy", "api", "step", "fourier", "iso6336")
@@ -81,5 +83,6 @@ __all__ = [
     "ConstantMeshStiffness", "FourierMeshStiffness", "Gear", "GearGeometry", "GearPair",
     "MeshStiffness", "PotentialEnergyMeshStiffness", "StepMeshStiffness", "__version__",
     "api_directional_stiffness", "api_mesh_stiffness", "config_reference", "iso6336_stiffness",
-    "load_config", "mesh_stiffness", "MESH_STIFFNESS_MODELS",
+    "load_config", "mesh_stiffness", "MESH_STIFFNESS_MODELS", "mesh_phase_from_roll_angle",
+    "roll_angle_from_mesh_phase",
 ]

@@ -171,6 +171,16 @@ void addMeshStiffnessSections(ConfigSchema& schema) {
       .unit("deg")
       .defaultValue(nlohmann::ordered_json::array())
       .doc("phase per mesh order of e(φ) = Σ e_i cos(2π i φ − φ_i)");
+  schema.realList("mesh_stiffness.error_table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc("e(φ) as a table too: mesh phases, ascending in [0, 1) (periodic, linear)");
+  schema.realList("mesh_stiffness.error_table_values")
+      .unit("m")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc("e at error_table_phases (added to the Fourier series)");
 
   schema.section("mesh_stiffness.api", "API constant stiffness (Visnadi eqs. 1–6).");
   schema.string("mesh_stiffness.api.loading")
@@ -359,15 +369,42 @@ TransmissionErrorSpec transmissionErrorFromConfig(const Config& config) {
         fmt::format("need one phase per amplitude ({} amplitudes)", spec.amplitudes.size()));
   }
   for (double& p : spec.phases) p *= kDegree;
+  spec.table_phases = config.realList("mesh_stiffness.error_table_phases");
+  spec.table_values = config.realList("mesh_stiffness.error_table_values");
+  if (spec.table_phases.size() != spec.table_values.size()) {
+    throw InputError("mesh_stiffness.error_table_values",
+                     fmt::format("{} values", spec.table_values.size()),
+                     fmt::format("need one value per phase ({} phases)", spec.table_phases.size()));
+  }
+  for (std::size_t i = 1; i < spec.table_phases.size(); ++i) {
+    if (!(spec.table_phases[i] > spec.table_phases[i - 1])) {
+      throw InputError("mesh_stiffness.error_table_phases",
+                       fmt::format("{:g}", spec.table_phases[i]),
+                       "the phases must increase strictly");
+    }
+  }
   return spec;
 }
 
-double TransmissionErrorSpec::at(const MeshStiffness& k, double phase) const {
+double TransmissionErrorSpec::error(double phase) const {
   double e = 0.0;
   for (std::size_t i = 0; i < amplitudes.size(); ++i) {
     e += amplitudes[i] * std::cos(2.0 * std::numbers::pi * (i + 1) * phase - phases[i]);
   }
-  return force / k.stiffness(phase) + e;
+  if (!table_phases.empty()) {
+    // Periodic linear interpolation: after the last point the table wraps to the first (+ 1).
+    const double p = wrapPhase(phase);
+    const std::size_t n = table_phases.size();
+    const auto upper = std::upper_bound(table_phases.begin(), table_phases.end(), p);
+    const std::size_t hi = static_cast<std::size_t>(upper - table_phases.begin()) % n;
+    const std::size_t lo = (hi + n - 1) % n;
+    const double x0 = table_phases[lo];
+    const double x1 = table_phases[hi] <= x0 ? table_phases[hi] + 1.0 : table_phases[hi];
+    const double x = p < x0 ? p + 1.0 : p;
+    const double w = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
+    e += table_values[lo] + w * (table_values[hi] - table_values[lo]);
+  }
+  return e;
 }
 
 nlohmann::ordered_json stiffnessResultsJson(const Config& config, const GearPair& pair,

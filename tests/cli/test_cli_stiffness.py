@@ -79,3 +79,23 @@ def test_bad_input_exits_2(tmp_path, override, expected):
     result = run("stiffness", SPUR, "--out", tmp_path, "--set", override, *extra)
     assert result.returncode == 2, result.stderr
     assert expected in result.stderr
+
+
+def test_transmission_error_with_a_geometric_error_table(tmp_path):
+    # Step stiffness 1e8 / 2e8 N/m, F = 1000 N, e(φ) a triangle 0 → 2 µm → 0 over the period:
+    # δ = F/k + e, checked at a few phases by hand.
+    result = run("stiffness", SPUR, "--out", tmp_path, "--set", "output.plots=false",
+                 "--set", "mesh_stiffness.models=[\"step\"]", "--set", "mesh_stiffness.step.levels=given",
+                 "--set", "mesh_stiffness.step.k_min=1e8", "--set", "mesh_stiffness.step.k_max=2e8",
+                 "--set", "mesh_stiffness.transmitted_force=1000",
+                 "--set", "mesh_stiffness.error_table_phases=[0.0, 0.5]",
+                 "--set", "mesh_stiffness.error_table_values=[0.0, 2e-6]")
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "mesh_stiffness.csv", newline="") as handle:
+        rows = {round(float(r["mesh_fraction"]), 3): float(r["ste_m"]) for r in csv.DictReader(handle)}
+    assert rows[0.25] == pytest.approx(5e-6 + 1e-6, rel=1e-12)   # k_max (double contact)
+    assert rows[0.75] == pytest.approx(1e-5 + 1e-6, rel=1e-12)   # k_min, e back down to 1 µm
+    assert rows[0.63] == pytest.approx(5e-6 + 2e-6 * (1 - 0.13 / 0.5), rel=1e-12)
+    bad = run("stiffness", SPUR, "--out", tmp_path / "bad", "--set", "mesh_stiffness.error_table_phases=[0.5, 0.2]",
+              "--set", "mesh_stiffness.error_table_values=[0.0, 1e-6]", "--set", "mesh_stiffness.transmitted_force=1")
+    assert bad.returncode == 2 and "must increase strictly" in bad.stderr

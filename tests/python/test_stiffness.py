@@ -38,6 +38,15 @@ def test_call_accepts_numbers_and_arrays_and_is_periodic():
         k("not a phase")
 
 
+def test_roll_angle_and_time():
+    pair = visnadi_pair()
+    k = geardyn.mesh_stiffness(pair)
+    theta = geardyn.roll_angle_from_mesh_phase(0.4, 25)
+    assert theta == pytest.approx(0.4 * 2 * math.pi / 25)
+    assert geardyn.mesh_phase_from_roll_angle(theta, 25) == pytest.approx(0.4)
+    assert k(geardyn.mesh_phase_from_roll_angle(theta + 2 * math.pi / 25, 25)) == pytest.approx(k(0.4), rel=1e-12)
+
+
 def test_every_model_by_name():
     pair = visnadi_pair()
     means = {m: geardyn.mesh_stiffness(pair, m).summary(1)["mean"] for m in geardyn.MESH_STIFFNESS_MODELS}
