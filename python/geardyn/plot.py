@@ -26,6 +26,9 @@ def _save_atomically(figure, path):
     os.close(handle)
     try:
         figure.savefig(temporary, format="png", dpi=130)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)  # mkstemp makes 0600; results are ordinary files
         os.replace(temporary, path)
     finally:
         if os.path.exists(temporary):
