@@ -170,7 +170,7 @@ void addMeshStiffnessSections(ConfigSchema& schema) {
   schema.realList("mesh_stiffness.error_phases_deg")
       .unit("deg")
       .defaultValue(nlohmann::ordered_json::array())
-      .doc("phase per mesh order of e(φ) = Σ e_i cos(2π i φ − φ_i)");
+      .doc("phase per mesh order of e(φ) = Σ e_i cos(2π i φ + φ_i)");
   schema.realList("mesh_stiffness.error_table_phases")
       .unit("-")
       .min(0.0)
@@ -361,50 +361,16 @@ MeshStiffnessModels buildMeshStiffnessModels(const Config& config, const GearPai
 TransmissionErrorSpec transmissionErrorFromConfig(const Config& config) {
   TransmissionErrorSpec spec;
   spec.force = config.real("mesh_stiffness.transmitted_force");
-  spec.amplitudes = config.realList("mesh_stiffness.error_amplitudes");
-  spec.phases = config.realList("mesh_stiffness.error_phases_deg");
-  if (spec.phases.size() != spec.amplitudes.size()) {
-    throw InputError(
-        "mesh_stiffness.error_phases_deg", fmt::format("{} values", spec.phases.size()),
-        fmt::format("need one phase per amplitude ({} amplitudes)", spec.amplitudes.size()));
-  }
-  for (double& p : spec.phases) p *= kDegree;
-  spec.table_phases = config.realList("mesh_stiffness.error_table_phases");
-  spec.table_values = config.realList("mesh_stiffness.error_table_values");
-  if (spec.table_phases.size() != spec.table_values.size()) {
-    throw InputError("mesh_stiffness.error_table_values",
-                     fmt::format("{} values", spec.table_values.size()),
-                     fmt::format("need one value per phase ({} phases)", spec.table_phases.size()));
-  }
-  for (std::size_t i = 1; i < spec.table_phases.size(); ++i) {
-    if (!(spec.table_phases[i] > spec.table_phases[i - 1])) {
-      throw InputError("mesh_stiffness.error_table_phases",
-                       fmt::format("{:g}", spec.table_phases[i]),
-                       "the phases must increase strictly");
-    }
+  std::vector<double> phases = config.realList("mesh_stiffness.error_phases_deg");
+  for (double& p : phases) p *= kDegree;
+  spec.error.addFourier(config.realList("mesh_stiffness.error_amplitudes"), phases,
+                        "mesh_stiffness.error");
+  const auto table_phases = config.realList("mesh_stiffness.error_table_phases");
+  if (!table_phases.empty() || !config.realList("mesh_stiffness.error_table_values").empty()) {
+    spec.error.addTable(table_phases, config.realList("mesh_stiffness.error_table_values"),
+                        "mesh_stiffness.error");
   }
   return spec;
-}
-
-double TransmissionErrorSpec::error(double phase) const {
-  double e = 0.0;
-  for (std::size_t i = 0; i < amplitudes.size(); ++i) {
-    e += amplitudes[i] * std::cos(2.0 * std::numbers::pi * (i + 1) * phase - phases[i]);
-  }
-  if (!table_phases.empty()) {
-    // Periodic linear interpolation: after the last point the table wraps to the first (+ 1).
-    const double p = wrapPhase(phase);
-    const std::size_t n = table_phases.size();
-    const auto upper = std::upper_bound(table_phases.begin(), table_phases.end(), p);
-    const std::size_t hi = static_cast<std::size_t>(upper - table_phases.begin()) % n;
-    const std::size_t lo = (hi + n - 1) % n;
-    const double x0 = table_phases[lo];
-    const double x1 = table_phases[hi] <= x0 ? table_phases[hi] + 1.0 : table_phases[hi];
-    const double x = p < x0 ? p + 1.0 : p;
-    const double w = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
-    e += table_values[lo] + w * (table_values[hi] - table_values[lo]);
-  }
-  return e;
 }
 
 nlohmann::ordered_json stiffnessResultsJson(const Config& config, const GearPair& pair,

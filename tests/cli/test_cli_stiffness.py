@@ -71,7 +71,7 @@ def test_visnadi_helical_mean_above_api(tmp_path):
     ("mesh_stiffness.fourier.amplitudes=[0.5, -0.1]", "must be a list of numbers each >= 0"),
     ("pinion.bore_diameter=0", "fillet-foundation model (Sainsot 2004) needs the radius"),
     ("mesh_stiffness.transmitted_force=-5", "mesh_stiffness.transmitted_force = -5"),
-    ("mesh_stiffness.error_amplitudes=[1e-6]", "need one phase per amplitude"),
+    ("mesh_stiffness.error_amplitudes=[1e-6]", "mesh_stiffness.error.phases = 0 values: need one phase per amplitude"),
 ])
 def test_bad_input_exits_2(tmp_path, override, expected):
     models = "mesh_stiffness.models=[\"potential_energy\", \"step\"]"
@@ -98,4 +98,4 @@ def test_transmission_error_with_a_geometric_error_table(tmp_path):
     assert rows[0.63] == pytest.approx(5e-6 + 2e-6 * (1 - 0.13 / 0.5), rel=1e-12)
     bad = run("stiffness", SPUR, "--out", tmp_path / "bad", "--set", "mesh_stiffness.error_table_phases=[0.5, 0.2]",
               "--set", "mesh_stiffness.error_table_values=[0.0, 1e-6]", "--set", "mesh_stiffness.transmitted_force=1")
-    assert bad.returncode == 2 and "must increase strictly" in bad.stderr
+    assert bad.returncode == 2 and "mesh_stiffness.error.table_phases[1] = 0.2: the phases must increase strictly" in bad.stderr

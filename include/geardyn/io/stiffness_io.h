@@ -14,6 +14,7 @@
 #include "geardyn/io/config.h"
 #include "geardyn/io/config_schema.h"
 #include "geardyn/io/csv_table.h"
+#include "geardyn/models/transmission_error.h"
 #include "geardyn/stiffness/iso6336_stiffness.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
@@ -42,18 +43,13 @@ struct MeshStiffnessModels {
 MeshStiffnessModels buildMeshStiffnessModels(const Config& config, const GearPair& pair);
 
 /// The loaded static transmission error along the line of action at phase φ,
-/// δ(φ) = F / k(φ) + e(φ), with the geometric error / profile-modification term e given as a
-/// Fourier series in mesh orders and/or a table over one mesh period [m].
+/// δ(φ) = F / k(φ) + e(φ), with the geometric error / profile-modification term e a Fourier
+/// series in mesh orders, e = Σ e_i cos(2π i φ + φ_i), and/or a table over one period [m].
 struct TransmissionErrorSpec {
-  double force = 0.0;                ///< transmitted force along the line of action F [N]
-  std::vector<double> amplitudes;    ///< e_i [m], i = 1, 2, ... (mesh orders)
-  std::vector<double> phases;        ///< [rad]
-  std::vector<double> table_phases;  ///< ascending mesh phases in [0, 1)
-  std::vector<double> table_values;  ///< e at those phases [m]
-  /// e(φ): the Fourier series plus the table (periodic, linear between points) [m].
-  double error(double phase) const;
+  double force = 0.0;       ///< transmitted force along the line of action F [N]
+  TransmissionError error;  ///< e(φ) [m]
   double at(const MeshStiffness& k, double phase) const {
-    return force / k.stiffness(phase) + error(phase);
+    return force / k.stiffness(phase) + error.value(phase);
   }
 };
 TransmissionErrorSpec transmissionErrorFromConfig(const Config& config);

@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// A periodic excitation over the mesh period — the static transmission error or gear error
+/// e(φ) — as a sum of a Fourier series in mesh orders, a rectangular wave and a table.
+/// Convention (issue #4, config [model.transmission_error]):
+///   e(φ) = Σ_r a_r cos(2π r φ + φ_r) + rectangular + table,   φ the mesh phase.
+
+#include <string>
+#include <vector>
+
+namespace geardyn {
+
+class TransmissionError {
+ public:
+  /// Zero everywhere.
+  TransmissionError() = default;
+
+  /// Adds Σ a_r cos(2π r φ + φ_r), r = 1, 2, ...: amplitudes [m] (any sign) and phases [rad]
+  /// of equal length. Throws InputError naming `key` for mismatched or non-finite values.
+  void addFourier(std::vector<double> amplitudes, std::vector<double> phases,
+                  const std::string& key = "transmission_error");
+  /// Adds a rectangular wave: `amplitude` for φ in [start, start + duty) (mod 1), 0 elsewhere;
+  /// duty in (0, 1).
+  void addRectangular(double amplitude, double duty, double start,
+                      const std::string& key = "transmission_error");
+  /// Adds a table over one period: ascending phases in [0, 1), values [m]; periodic linear
+  /// interpolation (after the last point it runs to the first point + 1).
+  void addTable(std::vector<double> phases, std::vector<double> values,
+                const std::string& key = "transmission_error");
+
+  double value(double phase) const;
+  /// de/dφ [m per mesh period] (the rectangular wave's jumps contribute nothing).
+  double derivative(double phase) const;
+  bool isZero() const noexcept;
+
+ private:
+  std::vector<double> amplitudes_, phases_;
+  double rect_amplitude_ = 0.0, rect_duty_ = 0.0, rect_start_ = 0.0;
+  std::vector<double> table_phases_, table_values_;
+};
+
+}  // namespace geardyn

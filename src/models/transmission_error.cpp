@@ -1,0 +1,133 @@
+#include "geardyn/models/transmission_error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/stiffness/mesh_stiffness.h"
+
+namespace geardyn {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+void requireFinite(const std::vector<double>& values, const std::string& key) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i])) {
+      throw InputError(fmt::format("{}[{}]", key, i), fmt::format("{}", values[i]),
+                       "must be finite");
+    }
+  }
+}
+
+}  // namespace
+
+void TransmissionError::addFourier(std::vector<double> amplitudes, std::vector<double> phases,
+                                   const std::string& key) {
+  if (amplitudes.size() != phases.size()) {
+    throw InputError(
+        key + ".phases", fmt::format("{} values", phases.size()),
+        fmt::format("need one phase per amplitude ({} amplitudes)", amplitudes.size()));
+  }
+  requireFinite(amplitudes, key + ".amplitudes");
+  requireFinite(phases, key + ".phases");
+  if (amplitudes.size() > amplitudes_.size()) {
+    amplitudes_.resize(amplitudes.size(), 0.0);
+    phases_.resize(amplitudes.size(), 0.0);
+  }
+  // Sum harmonic by harmonic (a cos(x + p) + b cos(x + q) is again one harmonic).
+  for (std::size_t r = 0; r < amplitudes.size(); ++r) {
+    const double re = amplitudes_[r] * std::cos(phases_[r]) + amplitudes[r] * std::cos(phases[r]);
+    const double im = amplitudes_[r] * std::sin(phases_[r]) + amplitudes[r] * std::sin(phases[r]);
+    amplitudes_[r] = std::hypot(re, im);
+    phases_[r] = std::atan2(im, re);
+  }
+}
+
+void TransmissionError::addRectangular(double amplitude, double duty, double start,
+                                       const std::string& key) {
+  if (!std::isfinite(amplitude))
+    throw InputError(key + ".rectangular_amplitude", fmt::format("{}", amplitude),
+                     "must be finite");
+  if (!(duty > 0.0 && duty < 1.0)) {
+    throw InputError(key + ".rectangular_duty", fmt::format("{:g}", duty), "must be in (0, 1)");
+  }
+  if (!std::isfinite(start))
+    throw InputError(key + ".rectangular_start", fmt::format("{}", start), "must be finite");
+  rect_amplitude_ = amplitude;
+  rect_duty_ = duty;
+  rect_start_ = wrapPhase(start);
+}
+
+void TransmissionError::addTable(std::vector<double> phases, std::vector<double> values,
+                                 const std::string& key) {
+  if (phases.size() != values.size()) {
+    throw InputError(key + ".table_values", fmt::format("{} values", values.size()),
+                     fmt::format("need one value per phase ({} phases)", phases.size()));
+  }
+  requireFinite(phases, key + ".table_phases");
+  requireFinite(values, key + ".table_values");
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    if (phases[i] < 0.0 || phases[i] >= 1.0 || (i > 0 && !(phases[i] > phases[i - 1]))) {
+      throw InputError(fmt::format("{}.table_phases[{}]", key, i), fmt::format("{:g}", phases[i]),
+                       "the phases must increase strictly within [0, 1)");
+    }
+  }
+  table_phases_ = std::move(phases);
+  table_values_ = std::move(values);
+}
+
+bool TransmissionError::isZero() const noexcept {
+  for (double a : amplitudes_) {
+    if (a != 0.0) return false;
+  }
+  return rect_amplitude_ == 0.0 && table_phases_.empty();
+}
+
+double TransmissionError::value(double phase) const {
+  double e = 0.0;
+  for (std::size_t r = 0; r < amplitudes_.size(); ++r) {
+    e += amplitudes_[r] * std::cos(kTwoPi * (r + 1) * phase + phases_[r]);
+  }
+  if (rect_amplitude_ != 0.0 && wrapPhase(phase - rect_start_) < rect_duty_) e += rect_amplitude_;
+  if (!table_phases_.empty()) {
+    const double p = wrapPhase(phase);
+    const std::size_t n = table_phases_.size();
+    const std::size_t hi =
+        static_cast<std::size_t>(std::upper_bound(table_phases_.begin(), table_phases_.end(), p) -
+                                 table_phases_.begin()) %
+        n;
+    const std::size_t lo = (hi + n - 1) % n;
+    const double x0 = table_phases_[lo];
+    const double x1 = table_phases_[hi] <= x0 ? table_phases_[hi] + 1.0 : table_phases_[hi];
+    const double x = p < x0 ? p + 1.0 : p;
+    const double w = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
+    e += table_values_[lo] + w * (table_values_[hi] - table_values_[lo]);
+  }
+  return e;
+}
+
+double TransmissionError::derivative(double phase) const {
+  double d = 0.0;
+  for (std::size_t r = 0; r < amplitudes_.size(); ++r) {
+    d -= amplitudes_[r] * kTwoPi * (r + 1) * std::sin(kTwoPi * (r + 1) * phase + phases_[r]);
+  }
+  if (table_phases_.size() > 1) {
+    const double p = wrapPhase(phase);
+    const std::size_t n = table_phases_.size();
+    const std::size_t hi =
+        static_cast<std::size_t>(std::upper_bound(table_phases_.begin(), table_phases_.end(), p) -
+                                 table_phases_.begin()) %
+        n;
+    const std::size_t lo = (hi + n - 1) % n;
+    const double x0 = table_phases_[lo];
+    const double x1 = table_phases_[hi] <= x0 ? table_phases_[hi] + 1.0 : table_phases_[hi];
+    d += (table_values_[hi] - table_values_[lo]) / (x1 - x0);
+  }
+  return d;
+}
+
+}  // namespace geardyn
