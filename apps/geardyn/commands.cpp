@@ -2,12 +2,14 @@
 
 #include "command.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stiffness_io.h"
 
 namespace geardyn::cli {
 
 int runGeometry(const io::Config& config, const CommandOptions& options);
 int runStiffness(const io::Config& config, const CommandOptions& options);
+int runSimulate(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
@@ -17,6 +19,10 @@ std::vector<Command> allCommands() {
        "mesh stiffness over a mesh period: API, step, Fourier, potential energy, ISO 6336; "
        "statistics, Fourier coefficients, loaded transmission error",
        io::stiffnessSchema, runStiffness},
+      {"simulate",
+       "time integration of the gear-pair model (Newmark, Dormand-Prince) to its steady state: "
+       "transmission error, mesh force, harmonics, contact loss",
+       io::simulateSchema, runSimulate},
   };
 }
 

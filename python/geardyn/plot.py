@@ -183,7 +183,32 @@ def plot_stiffness(result_dir):
     return [_save_atomically(figure, folder / "mesh_stiffness.png")]
 
 
-PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness}
+def plot_simulate(result_dir):
+    """time_response.png: relative deflection y = x - e and the mesh force over the steady
+    periods written out, with the mean force for reference."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    table = _read_columns(folder / "time_response.csv")
+    results = summary["results"]
+    si = results["model"]["units"] == "SI"
+    t = table["t"]
+    figure, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
+    axes[0].plot(t, [y * (1e6 if si else 1.0) for y in table["y"]], lw=1.0)
+    axes[0].set_ylabel("y = x - e [um]" if si else "y = x - e [-]")
+    axes[1].plot(t, table["mesh_force"], lw=1.0, color="tab:red", label="mesh force")
+    axes[1].axhline(results["model"]["mean_force"], color="0.4", lw=0.8, ls="--", label="mean load F")
+    axes[1].set_ylabel("mesh force [N]" if si else "mesh force [-]")
+    axes[1].set_xlabel("t [s]" if si else "t1 = omega_n t [-]")
+    axes[1].legend(fontsize=8)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    title = summary.get("config", {}).get("title") or "gear-pair time response"
+    axes[0].set_title(f"{title}\n{results['status']}: {results['message']}", fontsize=9)
+    figure.tight_layout()
+    return [_save_atomically(figure, folder / "time_response.png")]
+
+
+PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate}
 
 
 def main(argv=None):

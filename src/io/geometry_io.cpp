@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "geardyn/error.h"
 #include "geardyn/geometry/tooth_profile.h"
 #include "geardyn/io/output_section.h"
 
@@ -10,11 +11,14 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-void addGearSection(ConfigSchema& schema, const std::string& name, const std::string& role) {
+void addGearSection(ConfigSchema& schema, const std::string& name, const std::string& role,
+                    bool required) {
   schema.section(name, "The " + role + ": an external involute cylindrical gear.");
   const auto key = [&](const char* field) { return name + "." + field; };
-  schema.integer(key("teeth")).min(3).required().doc("number of teeth z");
-  schema.real(key("module")).unit("m").positive().required().doc("normal module m_n");
+  // The keys without a default: required, or optional when the gear pair itself is optional.
+  const auto need = [&](KeyBuilder builder) { required ? builder.required() : builder.optional(); };
+  need(schema.integer(key("teeth")).min(3).doc("number of teeth z"));
+  need(schema.real(key("module")).unit("m").positive().doc("normal module m_n"));
   schema.real(key("pressure_angle_deg"))
       .unit("deg")
       .greaterThan(0.0)
@@ -27,7 +31,7 @@ void addGearSection(ConfigSchema& schema, const std::string& name, const std::st
       .max(60.0)
       .defaultValue(0.0)
       .doc("helix angle β at the reference circle; > 0 right hand, opposite hands in a pair");
-  schema.real(key("face_width")).unit("m").positive().required().doc("face width b");
+  need(schema.real(key("face_width")).unit("m").positive().doc("face width b"));
   schema.real(key("profile_shift"))
       .unit("-")
       .min(-2.0)
@@ -79,6 +83,13 @@ void addGearSection(ConfigSchema& schema, const std::string& name, const std::st
 
 GearSpec gearSpecFromConfig(const Config& config, const std::string& name) {
   const auto key = [&](const char* field) { return name + "." + field; };
+  for (const char* field : {"teeth", "module", "face_width"}) {
+    if (!config.has(key(field))) {
+      throw InputError(key(field), "",
+                       "missing: a gear pair needs [pinion] and [gear] with teeth, "
+                       "module and face_width");
+    }
+  }
   GearSpec gear;
   gear.teeth = static_cast<int>(config.integer(key("teeth")));
   gear.normal_module = config.real(key("module"));
@@ -118,9 +129,13 @@ nlohmann::ordered_json memberJson(const GearGeometry& g, int teeth) {
 
 }  // namespace
 
-void addGearPairSections(ConfigSchema& schema) {
-  addGearSection(schema, "pinion", "pinion (member 1, usually the smaller gear)");
-  addGearSection(schema, "gear", "gear (member 2)");
+bool hasGearPair(const Config& config) {
+  return config.has("pinion.teeth");
+}
+
+void addGearPairSections(ConfigSchema& schema, bool required) {
+  addGearSection(schema, "pinion", "pinion (member 1, usually the smaller gear)", required);
+  addGearSection(schema, "gear", "gear (member 2)", required);
   schema.section("pair", "How the two gears are mounted and run.");
   schema.real("pair.centre_distance")
       .unit("m")

@@ -182,6 +182,10 @@ void addMeshStiffnessSections(ConfigSchema& schema) {
       .defaultValue(nlohmann::ordered_json::array())
       .doc("e at error_table_phases (added to the Fourier series)");
 
+  addMeshStiffnessModelSections(schema);
+}
+
+void addMeshStiffnessModelSections(ConfigSchema& schema) {
   schema.section("mesh_stiffness.api", "API constant stiffness (Visnadi eqs. 1–6).");
   schema.string("mesh_stiffness.api.loading")
       .choices({"down", "up"})
@@ -339,6 +343,16 @@ Iso6336Options iso6336OptionsFromConfig(const Config& config) {
                      "web_width and rim_thickness go together (ISO eq. 78); give both or neither");
   }
   return o;
+}
+
+std::shared_ptr<const MeshStiffness> buildMeshStiffnessModel(const std::string& name,
+                                                             const Config& config,
+                                                             const GearPair& pair,
+                                                             std::vector<std::string>& warnings) {
+  ModelFactory factory(config, pair);
+  auto model = factory.make(name);
+  warnings.insert(warnings.end(), factory.warnings.begin(), factory.warnings.end());
+  return model;
 }
 
 MeshStiffnessModels buildMeshStiffnessModels(const Config& config, const GearPair& pair) {

@@ -13,8 +13,13 @@
 
 namespace geardyn::io {
 
-/// Adds the [pinion], [gear] and [pair] sections to a schema.
-void addGearPairSections(ConfigSchema& schema);
+/// Adds the [pinion], [gear] and [pair] sections to a schema. With `required` false the gear
+/// keys that are otherwise required become optional (for commands that need a gear pair only
+/// for some choices); hasGearPair then says whether one was given.
+void addGearPairSections(ConfigSchema& schema, bool required = true);
+
+/// Whether a configuration describes a gear pair (pinion.teeth given).
+bool hasGearPair(const Config& config);
 
 /// The schema of `geardyn geometry`.
 ConfigSchema geometrySchema();

@@ -28,6 +28,10 @@ const std::vector<std::string>& meshStiffnessModelNames();
 /// .potential_energy, .iso6336) to a schema.
 void addMeshStiffnessSections(ConfigSchema& schema);
 
+/// Adds only the per-model subsections ([mesh_stiffness.api], .step, .fourier,
+/// .potential_energy, .iso6336); the caller declares [mesh_stiffness] itself.
+void addMeshStiffnessModelSections(ConfigSchema& schema);
+
 /// The schema of `geardyn stiffness`: gear pair, mesh stiffness, output.
 ConfigSchema stiffnessSchema();
 
@@ -41,6 +45,13 @@ struct MeshStiffnessModels {
   std::vector<std::string> warnings;
 };
 MeshStiffnessModels buildMeshStiffnessModels(const Config& config, const GearPair& pair);
+
+/// One model by name, configured by the [mesh_stiffness.<name>] subsections; appends the
+/// model's warnings.
+std::shared_ptr<const MeshStiffness> buildMeshStiffnessModel(const std::string& name,
+                                                             const Config& config,
+                                                             const GearPair& pair,
+                                                             std::vector<std::string>& warnings);
 
 /// The loaded static transmission error along the line of action at phase φ,
 /// δ(φ) = F / k(φ) + e(φ), with the geometric error / profile-modification term e a Fourier

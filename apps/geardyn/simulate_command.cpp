@@ -1,0 +1,64 @@
+/// `geardyn simulate CONFIG`: time integration of the gear-pair model to its steady state.
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "command.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/result_writer.h"
+#include "geardyn/io/simulate_io.h"
+#include "plotting.h"
+
+namespace geardyn::cli {
+
+int runSimulate(const io::Config& config, const CommandOptions& options) {
+  const io::GearPairModelBuild build = io::buildGearPairModel(config);
+  for (const auto& warning : build.warnings) std::cerr << "warning: " << warning << "\n";
+  const GearPairModel model(build.spec);
+  const TimeResponse response = solveTimeResponse(model, io::timeResponseOptionsFromConfig(config));
+  const io::TimeResponseChannels channels = io::channelsOf(model, response);
+
+  io::RunSummary summary;
+  summary.command = "simulate";
+  summary.config_source = options.config_file.string();
+  summary.config = config.resolved();
+  summary.warnings = build.warnings;
+  summary.status = toString(response.status);
+  summary.results = io::timeResponseResultsJson(
+      build, model, response, channels, static_cast<int>(config.integer("solver.harmonics")));
+
+  io::ResultWriter writer(options.resultFolder());
+  writer.writeCsv("time_response.csv", io::timeResponseTable(channels));
+  auto summary_path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    for (const auto& file : drawPlots("simulate", writer.folder())) writer.recordFile(file);
+    summary_path = writer.writeSummary(summary);
+  }
+
+  std::string text = fmt::format(
+      "gear pair, {} stiffness, f_m / f_n = {:.4g}, zeta = {:.3g}\n", model.meshStiffness().model(),
+      summary.results["model"]["frequency_ratio"].get<double>(), build.damping_ratio);
+  text += fmt::format("  {}\n", response.message);
+  if (summary.results.contains("mesh_force")) {
+    const auto& f = summary.results["mesh_force"];
+    text += fmt::format(
+        "  mesh force: mean {:.6g}, peak to peak {:.6g}, dynamic factor {:.4g}, contact loss "
+        "{:.1f} %\n",
+        f["mean"].get<double>(), f["peak_to_peak"].get<double>(),
+        summary.results["dynamic_factor"].is_null()
+            ? 0.0
+            : summary.results["dynamic_factor"].get<double>(),
+        100.0 * summary.results["contact_loss_fraction"].get<double>());
+  }
+  text += fmt::format("results: {}\n", summary_path.string());
+  report(options, text);
+  if (!response.converged()) {
+    std::cerr << "geardyn simulate: " << toString(response.status) << ": " << response.message
+              << "\n";
+    return kExitNumericalFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace geardyn::cli

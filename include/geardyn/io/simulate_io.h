@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// Configuration and results of `geardyn simulate`: the [model] (type "gear_pair"), its
+/// [model.stiffness] and [model.transmission_error], [excitation] and [solver] sections; the
+/// GearPairModel and TimeResponseOptions they describe; and the results of a time response.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geardyn/io/config.h"
+#include "geardyn/io/config_schema.h"
+#include "geardyn/io/csv_table.h"
+#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/solvers/time_response.h"
+
+namespace geardyn::io {
+
+/// Adds [model], [model.stiffness], [model.transmission_error] and [excitation].
+void addGearPairModelSections(ConfigSchema& schema);
+/// Adds [solver] (time integration).
+void addTimeSolverSection(ConfigSchema& schema);
+
+/// The schema of `geardyn simulate`.
+ConfigSchema simulateSchema();
+
+/// The model a configuration describes, with the quantities derived on the way.
+struct GearPairModelBuild {
+  GearPairModelSpec spec;
+  double mean_stiffness = 0.0;     ///< k̄ over a mesh period [N/m] (1 when nondimensional)
+  double damping_ratio = 0.0;      ///< ζ = c / (2 √(k̄ m))
+  double natural_frequency = 0.0;  ///< ω_n = √(k̄/m) [rad/s] (1 when nondimensional)
+  bool nondimensional = false;
+  std::vector<std::string> warnings;
+};
+GearPairModelBuild buildGearPairModel(const Config& config);
+
+TimeResponseOptions timeResponseOptionsFromConfig(const Config& config);
+
+/// The time response with derived channels: y = x − e, mesh force k g(y), k.
+struct TimeResponseChannels {
+  std::vector<double> t, x, v, y, force, k;
+};
+TimeResponseChannels channelsOf(const GearPairModel& model, const TimeResponse& response);
+
+/// results: status, periods, the statistics of y and the mesh force, harmonic amplitudes by
+/// mesh order, contact-loss fraction, dynamic factor.
+nlohmann::ordered_json timeResponseResultsJson(const GearPairModelBuild& build,
+                                               const GearPairModel& model,
+                                               const TimeResponse& response,
+                                               const TimeResponseChannels& channels, int harmonics);
+
+/// time_response.csv: t, x, v, y, mesh_force, k.
+CsvTable timeResponseTable(const TimeResponseChannels& channels);
+
+}  // namespace geardyn::io

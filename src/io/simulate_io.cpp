@@ -1,0 +1,529 @@
+#include "geardyn/io/simulate_io.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/stiffness_io.h"
+#include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "geardyn/stiffness/step_stiffness.h"
+
+namespace geardyn::io {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using Json = nlohmann::ordered_json;
+
+Json statistics(const std::vector<double>& values, int samples_per_period, int harmonics) {
+  const std::size_t n = values.size();
+  double mean = 0.0, square = 0.0, lo = values.front(), hi = values.front();
+  for (double v : values) {
+    mean += v;
+    square += v * v;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  mean /= n;
+  const double rms = std::sqrt(square / n);
+  double variance = 0.0;
+  for (double v : values) variance += (v - mean) * (v - mean);
+  // Amplitude of mesh order r over whole periods: (2/N) |Σ v_j exp(−2πi r j / M)|.
+  std::vector<double> amplitudes;
+  for (int r = 1; r <= harmonics; ++r) {
+    std::complex<double> sum = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      sum += values[j] * std::polar(1.0, -kTwoPi * r * static_cast<double>(j) / samples_per_period);
+    }
+    amplitudes.push_back(2.0 * std::abs(sum) / n);
+  }
+  return Json{{"mean", mean},
+              {"rms", rms},
+              {"std", std::sqrt(variance / n)},
+              {"min", lo},
+              {"max", hi},
+              {"peak_to_peak", hi - lo},
+              {"harmonic_amplitudes", amplitudes}};
+}
+
+}  // namespace
+
+void addGearPairModelSections(ConfigSchema& schema) {
+  schema.section(
+      "model", "The dynamic model: a single-DOF gear pair along the line of action (Gelman 2005).");
+  schema.string("model.type").choices({"gear_pair"}).defaultValue("gear_pair").doc("model type");
+  schema.string("model.units")
+      .choices({"SI", "nondimensional"})
+      .defaultValue("SI")
+      .doc("SI, or Gelman's nondimensional form (m = 1, c = 2ζ, k̄ = 1, F = a, time ω_n t)");
+  schema.real("model.mass")
+      .unit("kg")
+      .positive()
+      .optional()
+      .doc("equivalent mass m (or inertias and base radii)");
+  schema.real("model.pinion_inertia")
+      .unit("kg m^2")
+      .positive()
+      .optional()
+      .doc("polar inertia I₁ (default: [pinion] body)");
+  schema.real("model.gear_inertia")
+      .unit("kg m^2")
+      .positive()
+      .optional()
+      .doc("polar inertia I₂ (default: [gear] body)");
+  schema.real("model.pinion_base_radius")
+      .unit("m")
+      .positive()
+      .optional()
+      .doc("R₁ (default: from [pinion])");
+  schema.real("model.gear_base_radius")
+      .unit("m")
+      .positive()
+      .optional()
+      .doc("R₂ (default: from [gear])");
+  schema.real("model.damping_ratio").unit("-").min(0.0).optional().doc("ζ = c / (2 √(k̄ m))");
+  schema.real("model.damping")
+      .unit("N s/m")
+      .min(0.0)
+      .optional()
+      .doc("c (instead of damping_ratio)");
+  schema.real("model.mean_force").unit("N").optional().doc("F = T₁/R₁ (nondimensional: a = F/F₀)");
+  schema.real("model.pinion_torque").unit("N m").optional().doc("T₁ (instead of mean_force)");
+  schema.string("model.contact")
+      .choices({"linear", "one_sided", "backlash"})
+      .defaultValue("linear")
+      .doc("contact law g(y) of the relative deflection y = x − e");
+  schema.real("model.backlash")
+      .unit("m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("half clearance b (contact = \"backlash\")");
+
+  schema.section("model.stiffness", "Mesh stiffness k(t).");
+  schema.string("model.stiffness.type")
+      .choices({"fourier", "step", "potential_energy", "api", "iso6336"})
+      .defaultValue("fourier")
+      .doc(
+          "given Fourier series or step, or a model of the gear pair ([mesh_stiffness.*] options)");
+  schema.real("model.stiffness.mean")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("k̄ (fourier; step from a mean); nondimensional default 1");
+  schema.realList("model.stiffness.cos")
+      .unit("-")
+      .defaultValue(Json::array())
+      .doc("k = k̄ (1 + Σ cos_i cos(iΩt) + sin_i sin(iΩt))");
+  schema.realList("model.stiffness.sin").unit("-").defaultValue(Json::array()).doc("see cos");
+  schema.real("model.stiffness.k_min")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("step: stiffness with n pairs");
+  schema.real("model.stiffness.k_max")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("step: stiffness with n + 1 pairs");
+  schema.real("model.stiffness.contact_ratio")
+      .unit("-")
+      .min(1.0)
+      .optional()
+      .doc("step/fourier without a gear pair");
+
+  schema.section("model.transmission_error", "Static transmission error / gear error e(t).");
+  schema.realList("model.transmission_error.amplitudes")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("e = Σ a_r cos(rΩt + φ_r), r = 1, 2, ...");
+  schema.realList("model.transmission_error.phases")
+      .unit("rad")
+      .defaultValue(Json::array())
+      .doc("φ_r");
+  schema.real("model.transmission_error.rectangular_amplitude")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("rectangular wave: value on its duty part");
+  schema.real("model.transmission_error.rectangular_duty")
+      .unit("-")
+      .greaterThan(0.0)
+      .lessThan(1.0)
+      .defaultValue(0.5)
+      .doc("fraction of the mesh period");
+  schema.real("model.transmission_error.rectangular_start")
+      .unit("-")
+      .defaultValue(0.0)
+      .doc("mesh phase where it starts");
+  schema.realList("model.transmission_error.table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(Json::array())
+      .doc("table: mesh phases in [0, 1)");
+  schema.realList("model.transmission_error.table_values")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("table: e at those phases");
+
+  schema.section("excitation", "Speed.");
+  schema.real("excitation.mesh_frequency")
+      .unit("Hz")
+      .min(0.0)
+      .optional()
+      .doc("f_m (nondimensional: Ω = ω_m/ω_n)");
+  schema.real("excitation.speed_rpm")
+      .unit("rpm")
+      .min(0.0)
+      .optional()
+      .doc("pinion speed (f_m = z₁ n₁ / 60)");
+  schema.real("excitation.initial_phase").unit("-").defaultValue(0.0).doc("mesh phase at t = 0");
+}
+
+void addTimeSolverSection(ConfigSchema& schema) {
+  schema.section("solver", "Time integration to the periodic steady state.");
+  schema.string("solver.method")
+      .choices({"newmark", "dormand_prince"})
+      .defaultValue("newmark")
+      .doc("integrator");
+  schema.string("solver.newmark")
+      .choices({"average_acceleration", "linear_acceleration", "custom"})
+      .defaultValue("average_acceleration")
+      .doc("Newmark preset (custom: beta, gamma)");
+  schema.real("solver.beta")
+      .unit("-")
+      .greaterThan(0.0)
+      .max(0.5)
+      .defaultValue(0.25)
+      .doc("Newmark β (custom)");
+  schema.real("solver.gamma")
+      .unit("-")
+      .min(0.5)
+      .max(1.0)
+      .defaultValue(0.5)
+      .doc("Newmark γ (custom)");
+  schema.integer("solver.steps_per_period")
+      .min(4)
+      .max(10000000)
+      .defaultValue(512)
+      .doc("Newmark steps per mesh period");
+  schema.integer("solver.output_points_per_period")
+      .min(4)
+      .max(1000000)
+      .defaultValue(128)
+      .doc("samples per period in the output");
+  schema.real("solver.relative_tolerance")
+      .unit("-")
+      .positive()
+      .defaultValue(1e-9)
+      .doc("Dormand–Prince");
+  schema.real("solver.absolute_tolerance")
+      .unit("-")
+      .positive()
+      .defaultValue(1e-12)
+      .doc("Dormand–Prince, relative to the static deflection");
+  schema.real("solver.steady_tolerance")
+      .unit("-")
+      .positive()
+      .defaultValue(1e-7)
+      .doc("steady when consecutive periods differ by less (relative)");
+  schema.integer("solver.min_periods")
+      .min(2)
+      .defaultValue(3)
+      .doc("periods before checking for steady state");
+  schema.integer("solver.max_periods")
+      .min(2)
+      .max(100000000)
+      .defaultValue(5000)
+      .doc("give up after this many periods (status max_periods)");
+  schema.integer("solver.output_periods")
+      .min(1)
+      .max(100000)
+      .defaultValue(4)
+      .doc("steady periods written out");
+  schema.integer("solver.harmonics").min(0).max(1000).defaultValue(10).doc("mesh orders reported");
+  schema.string("solver.start")
+      .choices({"static", "rest"})
+      .defaultValue("static")
+      .doc("initial state: static deflection, or x = v = 0");
+}
+
+ConfigSchema simulateSchema() {
+  ConfigSchema schema("simulate",
+                      "Time integration of the gear-pair model to its periodic steady state: "
+                      "dynamic transmission error, mesh force, harmonics, contact loss.");
+  schema.string("title").optional().doc("free text describing the study");
+  addGearPairModelSections(schema);
+  addTimeSolverSection(schema);
+  addGearPairSections(schema, false);
+  schema.section("mesh_stiffness",
+                 "Options of the mesh-stiffness models (when [model.stiffness] type names one).");
+  addMeshStiffnessModelSections(schema);
+  addOutputSection(schema);
+  return schema;
+}
+
+GearPairModelBuild buildGearPairModel(const Config& config) {
+  GearPairModelBuild b;
+  b.nondimensional = config.string("model.units") == "nondimensional";
+  std::optional<GearPair> pair;
+  if (hasGearPair(config)) pair.emplace(gearPairSpecFromConfig(config));
+
+  // Stiffness.
+  const std::string type = config.string("model.stiffness.type");
+  const double contact_ratio = config.has("model.stiffness.contact_ratio")
+                                   ? config.real("model.stiffness.contact_ratio")
+                               : pair ? pair->contactRatioTotal()
+                                      : 1.0;
+  if (type == "fourier") {
+    const auto c = config.realList("model.stiffness.cos");
+    const auto s = config.realList("model.stiffness.sin");
+    if (c.size() != s.size()) {
+      throw InputError("model.stiffness.sin", fmt::format("{} values", s.size()),
+                       fmt::format("need one sine per cosine coefficient ({})", c.size()));
+    }
+    double mean = b.nondimensional ? 1.0 : 0.0;
+    if (config.has("model.stiffness.mean")) mean = config.real("model.stiffness.mean");
+    if (mean <= 0.0)
+      throw InputError("model.stiffness.mean", "", "required for type = \"fourier\" [N/m]");
+    std::vector<double> amplitudes, phases;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      // cos_i cos x + sin_i sin x = A cos(x − φ) with A = √(cos² + sin²), φ = atan2(sin, cos).
+      amplitudes.push_back(std::hypot(c[i], s[i]));
+      phases.push_back(std::atan2(s[i], c[i]));
+    }
+    b.spec.stiffness =
+        std::make_shared<FourierMeshStiffness>(mean, amplitudes, phases, contact_ratio);
+  } else if (type == "step") {
+    if (config.has("model.stiffness.k_min") && config.has("model.stiffness.k_max")) {
+      b.spec.stiffness =
+          std::make_shared<StepMeshStiffness>(config.real("model.stiffness.k_min"),
+                                              config.real("model.stiffness.k_max"), contact_ratio);
+    } else if (config.has("model.stiffness.mean") || b.nondimensional) {
+      const double mean =
+          config.has("model.stiffness.mean") ? config.real("model.stiffness.mean") : 1.0;
+      b.spec.stiffness =
+          std::make_shared<StepMeshStiffness>(StepMeshStiffness::fromMean(mean, contact_ratio));
+    } else {
+      throw InputError("model.stiffness.k_min", "",
+                       "type = \"step\" needs k_min and k_max, or mean [N/m]");
+    }
+  } else {
+    if (!pair) {
+      throw InputError("model.stiffness.type", "\"" + type + "\"",
+                       "computes the stiffness from the gears: give [pinion], [gear] (and [pair])");
+    }
+    b.spec.stiffness = buildMeshStiffnessModel(type, config, *pair, b.warnings);
+  }
+  b.mean_stiffness = summarizeMeshStiffness(*b.spec.stiffness, 0).mean;
+
+  // Mass.
+  const auto base_radius = [&](const char* key, bool pinion) {
+    if (config.has(key)) return config.real(key);
+    if (pair) return pinion ? pair->pinion().base_radius : pair->gear().base_radius;
+    throw InputError(key, "", "required (or give [pinion] and [gear])");
+  };
+  if (b.nondimensional) {
+    if (config.has("model.mass")) {
+      throw InputError("model.mass", fmt::format("{:g}", config.real("model.mass")),
+                       "not used in nondimensional units (m = 1): remove it");
+    }
+    b.spec.mass = 1.0;
+  } else if (config.has("model.mass")) {
+    b.spec.mass = config.real("model.mass");
+  } else {
+    const bool given = config.has("model.pinion_inertia") && config.has("model.gear_inertia");
+    if (!given && !pair) {
+      throw InputError("model.mass", "",
+                       "required: the equivalent mass, or pinion_inertia and gear_inertia with the "
+                       "base radii, or [pinion] and [gear]");
+    }
+    const double i1 = config.has("model.pinion_inertia") ? config.real("model.pinion_inertia")
+                                                         : pair->pinion().polar_inertia;
+    const double i2 = config.has("model.gear_inertia") ? config.real("model.gear_inertia")
+                                                       : pair->gear().polar_inertia;
+    b.spec.mass = equivalentMass(i1, base_radius("model.pinion_base_radius", true), i2,
+                                 base_radius("model.gear_base_radius", false));
+  }
+  b.natural_frequency = std::sqrt(b.mean_stiffness / b.spec.mass);
+
+  // Damping.
+  const bool ratio = config.has("model.damping_ratio"), absolute = config.has("model.damping");
+  if (ratio == absolute) {
+    throw InputError(
+        "model.damping_ratio", "",
+        ratio ? "give damping_ratio or damping, not both" : "required (or model.damping)");
+  }
+  b.damping_ratio =
+      ratio ? config.real("model.damping_ratio")
+            : config.real("model.damping") / (2.0 * std::sqrt(b.mean_stiffness * b.spec.mass));
+  b.spec.damping = ratio ? 2.0 * b.damping_ratio * std::sqrt(b.mean_stiffness * b.spec.mass)
+                         : config.real("model.damping");
+  if (b.damping_ratio >= 1.0) {
+    b.warnings.push_back(fmt::format(
+        "damping ratio ζ = {:.3g} >= 1: the mesh is overdamped (typical gear meshes: 0.02–0.1)",
+        b.damping_ratio));
+  }
+
+  // Load.
+  if (config.has("model.mean_force") == config.has("model.pinion_torque")) {
+    throw InputError("model.mean_force", "",
+                     config.has("model.mean_force") ? "give mean_force or pinion_torque, not both"
+                                                    : "required (or model.pinion_torque)");
+  }
+  b.spec.mean_force =
+      config.has("model.mean_force")
+          ? config.real("model.mean_force")
+          : config.real("model.pinion_torque") / base_radius("model.pinion_base_radius", true);
+
+  b.spec.contact = config.string("model.contact") == "linear"      ? ContactLaw::kLinear
+                   : config.string("model.contact") == "one_sided" ? ContactLaw::kOneSided
+                                                                   : ContactLaw::kBacklash;
+  b.spec.backlash = config.real("model.backlash");
+  if (b.spec.contact != ContactLaw::kBacklash && b.spec.backlash > 0.0) {
+    b.warnings.push_back("model.backlash is ignored unless model.contact = \"backlash\"");
+  }
+
+  // Speed.
+  if (config.has("excitation.mesh_frequency") == config.has("excitation.speed_rpm")) {
+    throw InputError("excitation.mesh_frequency", "",
+                     config.has("excitation.speed_rpm")
+                         ? "give mesh_frequency or speed_rpm, not both"
+                         : "required (or excitation.speed_rpm)");
+  }
+  if (config.has("excitation.mesh_frequency")) {
+    const double f = config.real("excitation.mesh_frequency");
+    b.spec.mesh_frequency = b.nondimensional ? f / kTwoPi : f;  // Ω in rad per unit t₁
+  } else {
+    if (!pair)
+      throw InputError("excitation.speed_rpm", "", "needs [pinion] teeth; or give mesh_frequency");
+    if (b.nondimensional)
+      throw InputError("excitation.speed_rpm", "",
+                       "not available in nondimensional units: give mesh_frequency (Ω)");
+    b.spec.mesh_frequency = pair->spec().pinion.teeth * config.real("excitation.speed_rpm") / 60.0;
+  }
+  b.spec.initial_phase = config.real("excitation.initial_phase");
+
+  // Transmission error.
+  const std::string te = "model.transmission_error";
+  b.spec.transmission_error.addFourier(config.realList(te + ".amplitudes"),
+                                       config.realList(te + ".phases"), te);
+  if (config.real(te + ".rectangular_amplitude") != 0.0) {
+    b.spec.transmission_error.addRectangular(config.real(te + ".rectangular_amplitude"),
+                                             config.real(te + ".rectangular_duty"),
+                                             config.real(te + ".rectangular_start"), te);
+  }
+  if (!config.realList(te + ".table_phases").empty() ||
+      !config.realList(te + ".table_values").empty()) {
+    b.spec.transmission_error.addTable(config.realList(te + ".table_phases"),
+                                       config.realList(te + ".table_values"), te);
+  }
+
+  // Time step against the mesh and natural periods.
+  const int steps = static_cast<int>(config.integer("solver.steps_per_period"));
+  if (config.string("solver.method") == "newmark" && b.spec.mesh_frequency > 0.0) {
+    const double h = 1.0 / (b.spec.mesh_frequency * steps);
+    const double natural_period = kTwoPi / b.natural_frequency;
+    if (h > natural_period / 10.0) {
+      const int needed =
+          static_cast<int>(std::ceil(10.0 / (b.spec.mesh_frequency * natural_period)));
+      b.warnings.push_back(
+          fmt::format("time step {:.3g} is larger than a tenth of the natural period {:.3g}: raise "
+                      "solver.steps_per_period to at least {} for accuracy",
+                      h, natural_period, needed));
+    }
+  }
+  return b;
+}
+
+TimeResponseOptions timeResponseOptionsFromConfig(const Config& config) {
+  TimeResponseOptions o;
+  o.method = config.string("solver.method") == "newmark" ? TimeIntegrator::kNewmark
+                                                         : TimeIntegrator::kDormandPrince;
+  const std::string preset = config.string("solver.newmark");
+  o.newmark = preset == "average_acceleration" ? NewmarkParameters::averageAcceleration()
+              : preset == "linear_acceleration"
+                  ? NewmarkParameters::linearAcceleration()
+                  : NewmarkParameters{config.real("solver.beta"), config.real("solver.gamma")};
+  o.steps_per_period = static_cast<int>(config.integer("solver.steps_per_period"));
+  o.output_points_per_period = static_cast<int>(config.integer("solver.output_points_per_period"));
+  o.relative_tolerance = config.real("solver.relative_tolerance");
+  o.absolute_tolerance = config.real("solver.absolute_tolerance");
+  o.steady_tolerance = config.real("solver.steady_tolerance");
+  o.min_periods = static_cast<int>(config.integer("solver.min_periods"));
+  o.max_periods = static_cast<int>(config.integer("solver.max_periods"));
+  o.output_periods = static_cast<int>(config.integer("solver.output_periods"));
+  o.start_from_static = config.string("solver.start") == "static";
+  return o;
+}
+
+TimeResponseChannels channelsOf(const GearPairModel& model, const TimeResponse& response) {
+  TimeResponseChannels c;
+  c.t = response.t;
+  c.x = response.x;
+  c.v = response.v;
+  for (std::size_t j = 0; j < response.t.size(); ++j) {
+    const double t = response.t[j];
+    c.y.push_back(response.x[j] - model.error(t));
+    c.force.push_back(model.meshForce(t, response.x[j]));
+    c.k.push_back(model.stiffness(t));
+  }
+  return c;
+}
+
+nlohmann::ordered_json timeResponseResultsJson(const GearPairModelBuild& build,
+                                               const GearPairModel& model,
+                                               const TimeResponse& response,
+                                               const TimeResponseChannels& channels,
+                                               int harmonics) {
+  Json results;
+  results["status"] = toString(response.status);
+  results["steady_state"] = response.converged();
+  results["message"] = response.message;
+  results["periods"] = response.periods;
+  results["last_change"] = response.last_change;
+  results["steps"] = response.steps;
+  results["max_newton_iterations"] = response.max_newton_iterations;
+  results["newton_failures"] = response.newton_failures;
+  const double omega_m = kTwoPi * model.meshFrequency();
+  results["model"] = {{"units", build.nondimensional ? "nondimensional" : "SI"},
+                      {"mass", model.mass()},
+                      {"damping", model.damping()},
+                      {"damping_ratio", build.damping_ratio},
+                      {"mean_stiffness", build.mean_stiffness},
+                      {"natural_frequency", build.natural_frequency},
+                      {"mesh_frequency", model.meshFrequency()},
+                      {"frequency_ratio", omega_m / build.natural_frequency},
+                      {"mean_force", model.meanForce()},
+                      {"stiffness_model", model.meshStiffness().model()}};
+  if (channels.t.empty()) return results;
+  const int m = static_cast<int>(std::lround(response.period / (channels.t[1] - channels.t[0])));
+  results["relative_deflection"] = statistics(channels.y, m, harmonics);
+  results["mesh_force"] = statistics(channels.force, m, harmonics);
+  double peak = 0.0;
+  int lost = 0;
+  for (std::size_t j = 0; j < channels.t.size(); ++j) {
+    peak = std::max(peak, std::abs(channels.force[j]));
+    double slope = 0.0;
+    model.contactLaw(channels.y[j], &slope);
+    lost += slope == 0.0;
+  }
+  results["dynamic_factor"] =
+      model.meanForce() != 0.0 ? Json(peak / std::abs(model.meanForce())) : Json(nullptr);
+  results["contact_loss_fraction"] = static_cast<double>(lost) / channels.t.size();
+  return results;
+}
+
+CsvTable timeResponseTable(const TimeResponseChannels& c) {
+  CsvTable table({"t", "x", "v", "y", "mesh_force", "k"});
+  for (std::size_t j = 0; j < c.t.size(); ++j)
+    table.addRow({c.t[j], c.x[j], c.v[j], c.y[j], c.force[j], c.k[j]});
+  return table;
+}
+
+}  // namespace geardyn::io
