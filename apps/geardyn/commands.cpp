@@ -3,6 +3,7 @@
 #include "command.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/simulate_io.h"
+#include "geardyn/io/stats_io.h"
 #include "geardyn/io/stiffness_io.h"
 
 namespace geardyn::cli {
@@ -10,6 +11,7 @@ namespace geardyn::cli {
 int runGeometry(const io::Config& config, const CommandOptions& options);
 int runStiffness(const io::Config& config, const CommandOptions& options);
 int runSimulate(const io::Config& config, const CommandOptions& options);
+int runStats(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
@@ -23,6 +25,10 @@ std::vector<Command> allCommands() {
        "time integration of the gear-pair model (Newmark, Dormand-Prince) to its steady state: "
        "transmission error, mesh force, harmonics, contact loss",
        io::simulateSchema, runSimulate},
+      {"stats",
+       "statistics of the dynamic mean excitation (Gelman 2005): mean excitation ratio R from "
+       "the model or from moments, with a simulated check",
+       io::statsSchema, runStats},
   };
 }
 

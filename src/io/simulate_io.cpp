@@ -120,7 +120,10 @@ void addGearPairModelSections(ConfigSchema& schema) {
       .unit("-")
       .defaultValue(Json::array())
       .doc("k = k̄ (1 + Σ cos_i cos(iΩt) + sin_i sin(iΩt))");
-  schema.realList("model.stiffness.sin").unit("-").defaultValue(Json::array()).doc("see cos");
+  schema.realList("model.stiffness.sin")
+      .unit("-")
+      .defaultValue(Json::array())
+      .doc("see cos (empty: zeros)");
   schema.real("model.stiffness.k_min")
       .unit("N/m")
       .positive()
@@ -281,8 +284,10 @@ GearPairModelBuild buildGearPairModel(const Config& config) {
                                : pair ? pair->contactRatioTotal()
                                       : 1.0;
   if (type == "fourier") {
-    const auto c = config.realList("model.stiffness.cos");
-    const auto s = config.realList("model.stiffness.sin");
+    auto c = config.realList("model.stiffness.cos");
+    auto s = config.realList("model.stiffness.sin");
+    if (s.empty()) s.assign(c.size(), 0.0);  // only cosines given
+    if (c.empty()) c.assign(s.size(), 0.0);
     if (c.size() != s.size()) {
       throw InputError("model.stiffness.sin", fmt::format("{} values", s.size()),
                        fmt::format("need one sine per cosine coefficient ({})", c.size()));

@@ -1,0 +1,120 @@
+"""geardyn simulate and geardyn stats end to end: results, exit codes, bad input."""
+
+import csv
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
+SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+EXAMPLES = SOURCE / "examples"
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=120)
+
+
+def test_simulate_backlash_example(tmp_path):
+    result = run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml", "--out", tmp_path,
+                 "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["status"] == "converged"
+    r = summary["results"]
+    assert r["steady_state"] is True
+    assert r["model"]["mass"] == 1.589
+    # Linear contact throughout: the mean mesh force is the transmitted load (the time average of
+    # m x'' and c (x' - e') vanishes over a period).
+    assert r["mesh_force"]["mean"] == pytest.approx(1418.4, rel=1e-6)
+    assert r["contact_loss_fraction"] == 0.0
+    assert len(r["mesh_force"]["harmonic_amplitudes"]) == 10
+    with open(tmp_path / "time_response.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert list(rows[0]) == ["t", "x", "v", "y", "mesh_force", "k"]
+    assert len(rows) == 4 * 128
+    row = rows[77]
+    # Backlash law above the clearance: force = k (y - b).
+    assert float(row["mesh_force"]) == pytest.approx(float(row["k"]) * (float(row["y"]) - 1e-4), rel=1e-9)
+
+
+def test_simulate_contact_loss_and_newton(tmp_path):
+    result = run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml", "--out", tmp_path,
+                 "--set", "output.plots=false", "--set", "model.transmission_error.amplitudes=[6e-6]",
+                 "--set", "excitation.mesh_frequency=2700", "--set", "solver.max_periods=3000")
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["results"]["newton_failures"] == 0
+    assert summary["results"]["contact_loss_fraction"] > 0.0
+    assert result.returncode in (0, 1)  # steady or not (impacting regimes may be non-periodic)
+    assert (result.returncode == 0) == (summary["status"] == "converged")
+
+
+def test_simulate_unstable_exits_1_with_status(tmp_path):
+    config = tmp_path / "mathieu.toml"
+    config.write_text("""
+[model]
+units = "nondimensional"
+damping_ratio = 0.01
+mean_force = 1.0
+[model.stiffness]
+cos = [0.3]
+[excitation]
+mesh_frequency = 2.0
+[solver]
+max_periods = 3000
+[output]
+plots = false
+""")
+    result = run("simulate", config, "--out", tmp_path / "o")
+    assert result.returncode == 1
+    assert "diverged" in result.stderr
+    assert json.loads((tmp_path / "o" / "summary.json").read_text())["status"] == "diverged"
+
+
+@pytest.mark.parametrize("override, expected", [
+    ("model.mass=-1", "model.mass = -1: must be a number > 0 [kg]"),
+    ("model.damping=10", "model.damping_ratio: give damping_ratio or damping, not both"),
+    ("model.transmission_error.phases=[0.0, 1.0]", "need one phase per amplitude"),
+    ("model.stiffness.type=potential_energy", "computes the stiffness from the gears"),
+    ("model.stiffness.mean=nan", "model.stiffness.mean = nan: must be finite"),
+    ("solver.output_points_per_period=100", "must be a multiple of solver.output_points_per_period"),
+    ("model.contact=backlahs", 'did you mean "backlash"?'),
+])
+def test_simulate_bad_input_exits_2(tmp_path, override, expected):
+    result = run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml", "--out", tmp_path, "--set", override)
+    assert result.returncode == 2, result.stderr
+    assert expected in result.stderr
+
+
+def test_simulate_warns_about_coarse_steps(tmp_path):
+    result = run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml", "--out", tmp_path,
+                 "--set", "output.plots=false", "--set", "solver.steps_per_period=8",
+                 "--set", "solver.output_points_per_period=4")
+    assert "larger than a tenth of the natural period" in result.stderr
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("stats_gelman2005_case1_a025", 1.215), ("stats_gelman2005_case1_a075", 1.0475),
+    ("stats_gelman2005_case2_a150", 0.896)])
+def test_stats_paper_cases(tmp_path, name, expected):
+    result = run("stats", EXAMPLES / f"{name}.toml", "--out", tmp_path)
+    assert result.returncode == 0, result.stderr
+    stats = json.loads((tmp_path / "summary.json").read_text())["results"]["mean_excitation"]
+    assert stats["ratio"] == pytest.approx(expected, abs=1e-12)
+    assert ("greater" in stats["classification"]) == (expected > 1)
+
+
+def test_stats_simulated_check(tmp_path):
+    result = run("stats", EXAMPLES / "stats_gear_pair_simulated.toml", "--out", tmp_path)
+    assert result.returncode == 0, result.stderr
+    results = json.loads((tmp_path / "summary.json").read_text())["results"]
+    assert results["mean_excitation"]["dynamic_mean_excitation"] == pytest.approx(0.83, rel=1e-12)
+    assert abs(results["simulation"]["relative_difference"]) < 1e-3
+
+
+def test_stats_moments_need_their_keys(tmp_path):
+    result = run("stats", EXAMPLES / "stats_gelman2005_case1_a025.toml", "--out", tmp_path,
+                 "--set", "stats.r_ke=1.5")
+    assert result.returncode == 2 and "stats.r_ke = 1.5" in result.stderr
