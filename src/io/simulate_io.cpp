@@ -261,6 +261,11 @@ ConfigSchema simulateSchema() {
                       "Time integration of the gear-pair model to its periodic steady state: "
                       "dynamic transmission error, mesh force, harmonics, contact loss.");
   schema.string("title").optional().doc("free text describing the study");
+  addGearPairDynamicsSections(schema);
+  return schema;
+}
+
+void addGearPairDynamicsSections(ConfigSchema& schema) {
   addGearPairModelSections(schema);
   addTimeSolverSection(schema);
   addGearPairSections(schema, false);
@@ -268,7 +273,6 @@ ConfigSchema simulateSchema() {
                  "Options of the mesh-stiffness models (when [model.stiffness] type names one).");
   addMeshStiffnessModelSections(schema);
   addOutputSection(schema);
-  return schema;
 }
 
 GearPairModelBuild buildGearPairModel(const Config& config) {

@@ -48,13 +48,7 @@ ConfigSchema statsSchema() {
       .defaultValue(0.0)
       .doc("moments: mean of de/dt₁ (eq. 14: 0)");
   schema.real("stats.zeta").unit("-").min(0.0).defaultValue(0.0).doc("moments: damping ratio");
-  addGearPairModelSections(schema);
-  addTimeSolverSection(schema);
-  addGearPairSections(schema, false);
-  schema.section("mesh_stiffness",
-                 "Options of the mesh-stiffness models (when [model.stiffness] type names one).");
-  addMeshStiffnessModelSections(schema);
-  addOutputSection(schema);
+  addGearPairDynamicsSections(schema);
   return schema;
 }
 

@@ -22,6 +22,10 @@ void addGearPairModelSections(ConfigSchema& schema);
 /// Adds [solver] (time integration).
 void addTimeSolverSection(ConfigSchema& schema);
 
+/// Everything a gear-pair dynamics command reads: the model sections, [solver], the optional
+/// gear pair ([pinion], [gear], [pair]), the mesh-stiffness model options and [output].
+void addGearPairDynamicsSections(ConfigSchema& schema);
+
 /// The schema of `geardyn simulate`.
 ConfigSchema simulateSchema();
 
