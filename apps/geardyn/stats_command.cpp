@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <thread>
 
 #include "command.h"
+#include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
+#include "plotting.h"
 
 namespace geardyn::cli {
 
@@ -17,6 +20,7 @@ int runStats(const io::Config& config, const CommandOptions& options) {
   summary.config_source = options.config_file.string();
   summary.config = config.resolved();
   int exit_code = kExitOk;
+  std::vector<std::pair<std::string, io::CsvTable>> monte_carlo_tables;
 
   MeanExcitation stats;
   if (config.string("stats.source") == "moments") {
@@ -29,6 +33,19 @@ int runStats(const io::Config& config, const CommandOptions& options) {
                             : config.has("stats.baseload") ? config.real("stats.baseload")
                                                            : model.meanForce();
     stats = meanExcitationFromModel(model, baseload);
+    if (config.integer("monte_carlo.samples") > 0) {
+      const int threads =
+          options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+      const MonteCarloOptions mc = io::monteCarloOptionsFromConfig(config, baseload, threads);
+      const auto samples = runMeanExcitationMonteCarlo(model, mc);
+      summary.seed = mc.seed;
+      summary.results["monte_carlo"] = io::monteCarloJson(mc, samples);
+      monte_carlo_tables.emplace_back("monte_carlo.csv", io::monteCarloTable(samples));
+      monte_carlo_tables.emplace_back(
+          "histogram.csv",
+          io::histogramTable(samples,
+                             static_cast<int>(config.integer("monte_carlo.histogram_bins"))));
+    }
     if (config.boolean("stats.simulate")) {
       if (model.contact() != ContactLaw::kLinear) {
         summary.warnings.push_back(
@@ -57,7 +74,12 @@ int runStats(const io::Config& config, const CommandOptions& options) {
   summary.results["mean_excitation"] = io::toJson(stats);
 
   io::ResultWriter writer(options.resultFolder());
-  const auto path = writer.writeSummary(summary);
+  for (const auto& [name, table] : monte_carlo_tables) writer.writeCsv(name, table);
+  auto path = writer.writeSummary(summary);
+  if (!monte_carlo_tables.empty() && io::outputOptionsFromConfig(config).plots) {
+    for (const auto& file : drawPlots("stats", writer.folder())) writer.recordFile(file);
+    path = writer.writeSummary(summary);
+  }
   std::string text =
       fmt::format("mean excitation ratio R = {:.6g} (eq. 15: {:.6g}, eq. 11: {:.6g})\n",
                   stats.ratio, stats.ratio_eq15, stats.ratio_eq11);
@@ -70,6 +92,15 @@ int runStats(const io::Config& config, const CommandOptions& options) {
     text += fmt::format("  simulated mean of k y: {:.8g} (relative difference {:.2g})\n",
                         summary.results["simulation"]["dynamic_mean_excitation"].get<double>(),
                         summary.results["simulation"]["relative_difference"].get<double>());
+  }
+  if (summary.results.contains("monte_carlo")) {
+    const auto& r = summary.results["monte_carlo"]["ratio"];
+    text += fmt::format(
+        "  Monte Carlo, {} samples: R mean {:.6g}, std {:.3g}, 5/50/95 % {:.5g} / {:.5g} / "
+        "{:.5g}\n",
+        summary.results["monte_carlo"]["samples"].get<int>(), r["mean"].get<double>(),
+        r["std"].get<double>(), r["q05"].get<double>(), r["q50"].get<double>(),
+        r["q95"].get<double>());
   }
   text += fmt::format("results: {}\n", path.string());
   report(options, text);

@@ -208,7 +208,30 @@ def plot_simulate(result_dir):
     return [_save_atomically(figure, folder / "time_response.png")]
 
 
-PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate}
+def plot_stats(result_dir):
+    """mean_excitation_ratio.png: histogram of the Monte Carlo mean excitation ratio R with its
+    5/50/95 % quantiles and the deterministic R."""
+    folder = pathlib.Path(result_dir)
+    results = json.loads((folder / "summary.json").read_text())["results"]
+    table = _read_columns(folder / "histogram.csv")
+    low, high, count = table["ratio_low"], table["ratio_high"], table["count"]
+    figure, ax = plt.subplots(figsize=(8, 4.5))
+    ax.bar(low, count, width=[h - l for l, h in zip(low, high)], align="edge", color="tab:blue", alpha=0.7)
+    mc = results["monte_carlo"]["ratio"]
+    for key, style in (("q05", ":"), ("q50", "--"), ("q95", ":")):
+        ax.axvline(mc[key], color="black", ls=style, lw=1, label=f"{key[1:]} %: {mc[key]:.5g}")
+    ax.axvline(results["mean_excitation"]["ratio"], color="tab:red", lw=1.5,
+               label=f"without random errors: {results['mean_excitation']['ratio']:.5g}")
+    ax.set_xlabel("mean excitation ratio R")
+    ax.set_ylabel("samples")
+    ax.legend(fontsize=8)
+    ax.set_title(f"Monte Carlo, {results['monte_carlo']['samples']} samples (seed {results['monte_carlo']['seed']})", fontsize=9)
+    figure.tight_layout()
+    return [_save_atomically(figure, folder / "mean_excitation_ratio.png")]
+
+
+PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
+            "stats": plot_stats}
 
 
 def main(argv=None):

@@ -48,6 +48,45 @@ ConfigSchema statsSchema() {
       .defaultValue(0.0)
       .doc("moments: mean of de/dt₁ (eq. 14: 0)");
   schema.real("stats.zeta").unit("-").min(0.0).defaultValue(0.0).doc("moments: damping ratio");
+  schema.section("monte_carlo",
+                 "Random per-tooth errors: the distribution of R (source = \"model\").");
+  schema.integer("monte_carlo.samples")
+      .min(0)
+      .max(100000000)
+      .defaultValue(0)
+      .doc("number of samples (0: no Monte Carlo)");
+  schema.integer("monte_carlo.seed")
+      .min(0)
+      .defaultValue(1)
+      .doc("random seed (results are bit-identical for a seed, whatever --threads)");
+  schema.integer("monte_carlo.teeth")
+      .min(1)
+      .optional()
+      .doc("mesh periods per sample (default: pinion teeth, else 1)");
+  schema.real("monte_carlo.pitch_error_std")
+      .unit("m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("σ of the per-tooth pitch error (nondimensional: in x₀)");
+  schema.real("monte_carlo.profile_error_std")
+      .unit("m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("σ of the per-tooth profile slope error over a mesh period");
+  schema.real("monte_carlo.stiffness_std")
+      .unit("-")
+      .min(0.0)
+      .lessThan(0.3)
+      .defaultValue(0.0)
+      .doc("σ of the per-tooth stiffness factor (mean 1)");
+  schema.boolean("monte_carlo.random_phase")
+      .defaultValue(true)
+      .doc("random phase of the gear error relative to the stiffness");
+  schema.integer("monte_carlo.histogram_bins")
+      .min(2)
+      .max(10000)
+      .defaultValue(30)
+      .doc("bins of histogram.csv");
   addGearPairDynamicsSections(schema);
   return schema;
 }
@@ -69,6 +108,74 @@ nlohmann::ordered_json toJson(const MeanExcitation& s) {
           {"ratio_eq11", s.ratio_eq11},
           {"classification",
            "dynamic mean excitation " + s.classification() + " the transmitted mean load"}};
+}
+
+MonteCarloOptions monteCarloOptionsFromConfig(const Config& config, double baseload, int threads) {
+  MonteCarloOptions o;
+  o.samples = static_cast<int>(config.integer("monte_carlo.samples"));
+  o.seed = static_cast<std::uint64_t>(config.integer("monte_carlo.seed"));
+  o.teeth = config.has("monte_carlo.teeth") ? static_cast<int>(config.integer("monte_carlo.teeth"))
+            : hasGearPair(config)           ? static_cast<int>(config.integer("pinion.teeth"))
+                                            : 1;
+  o.pitch_error_std = config.real("monte_carlo.pitch_error_std");
+  o.profile_error_std = config.real("monte_carlo.profile_error_std");
+  o.stiffness_std = config.real("monte_carlo.stiffness_std");
+  o.random_phase = config.boolean("monte_carlo.random_phase");
+  o.baseload = baseload;
+  o.threads = threads;
+  return o;
+}
+
+nlohmann::ordered_json monteCarloJson(const MonteCarloOptions& options,
+                                      const std::vector<MonteCarloSample>& samples) {
+  std::vector<double> ratio, load;
+  for (const auto& s : samples) {
+    ratio.push_back(s.ratio);
+    load.push_back(s.dynamic_mean_excitation);
+  }
+  const auto json = [](const Distribution& d, double scale) {
+    return nlohmann::ordered_json{{"mean", d.mean * scale}, {"std", d.std * scale},
+                                  {"q05", d.q05 * scale},   {"q50", d.q50 * scale},
+                                  {"q95", d.q95 * scale},   {"min", d.min * scale},
+                                  {"max", d.max * scale}};
+  };
+  const Distribution l = describe(load);
+  return {{"samples", options.samples},
+          {"seed", options.seed},
+          {"teeth", options.teeth},
+          {"ratio", json(describe(ratio), 1.0)},
+          {"dynamic_mean_excitation", json(l, 1.0)},
+          {"dynamic_mean_load", json(l, options.baseload)}};
+}
+
+CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples) {
+  CsvTable table(
+      {"sample", "ratio", "dynamic_mean_excitation", "r_ke", "d_k", "d_e", "delta_m1_ef", "phase"});
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const auto& s = samples[i];
+    table.addRow({static_cast<long long>(i), s.ratio, s.dynamic_mean_excitation, s.r_ke, s.d_k,
+                  s.d_e, s.delta_m1_ef, s.phase});
+  }
+  return table;
+}
+
+CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins) {
+  double lo = samples.front().ratio, hi = lo;
+  for (const auto& s : samples) {
+    lo = std::min(lo, s.ratio);
+    hi = std::max(hi, s.ratio);
+  }
+  if (hi <= lo) hi = lo + 1e-12;
+  std::vector<long long> counts(bins, 0);
+  for (const auto& s : samples) {
+    const int b = std::min(bins - 1, static_cast<int>((s.ratio - lo) / (hi - lo) * bins));
+    ++counts[b];
+  }
+  CsvTable table({"ratio_low", "ratio_high", "count"});
+  for (int b = 0; b < bins; ++b) {
+    table.addRow({lo + (hi - lo) * b / bins, lo + (hi - lo) * (b + 1) / bins, counts[b]});
+  }
+  return table;
 }
 
 MeanExcitation meanExcitationFromConfigMoments(const Config& config) {

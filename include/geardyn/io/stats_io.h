@@ -7,7 +7,9 @@
 
 #include "geardyn/io/config.h"
 #include "geardyn/io/config_schema.h"
+#include "geardyn/io/csv_table.h"
 #include "geardyn/stats/mean_excitation.h"
+#include "geardyn/stats/monte_carlo.h"
 
 namespace geardyn::io {
 
@@ -16,6 +18,16 @@ ConfigSchema statsSchema();
 
 /// Every statistic of a MeanExcitation, by the paper's names.
 nlohmann::ordered_json toJson(const MeanExcitation& s);
+
+/// [monte_carlo] options for a model (teeth default: [pinion] teeth, else 1).
+MonteCarloOptions monteCarloOptionsFromConfig(const Config& config, double baseload, int threads);
+
+/// results.monte_carlo: the distributions of R and L_d (also in newtons: L_d F₀).
+nlohmann::ordered_json monteCarloJson(const MonteCarloOptions& options,
+                                      const std::vector<MonteCarloSample>& samples);
+/// monte_carlo.csv (one row per sample) and histogram.csv (of R).
+CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples);
+CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins);
 
 /// The moments of [stats] when source = "moments".
 MeanExcitation meanExcitationFromConfigMoments(const Config& config);
