@@ -25,6 +25,8 @@ int runStats(const io::Config& config, const CommandOptions& options) {
   MeanExcitation stats;
   if (config.string("stats.source") == "moments") {
     stats = io::meanExcitationFromConfigMoments(config);
+  } else if (config.string("stats.source") == "csv") {
+    stats = io::meanExcitationFromConfigCsv(config);
   } else {
     const io::GearPairModelBuild build = io::buildGearPairModel(config);
     summary.warnings = build.warnings;

@@ -435,6 +435,12 @@ GearPairModelBuild buildGearPairModel(const Config& config) {
 
   // Time step against the mesh and natural periods.
   const int steps = static_cast<int>(config.integer("solver.steps_per_period"));
+  if (config.string("solver.method") == "newmark" && steps < 10) {
+    b.warnings.push_back(
+        fmt::format("time step = mesh period / {} is larger than a tenth of the mesh period: raise "
+                    "solver.steps_per_period to at least 10 (128 or more for the harmonics)",
+                    steps));
+  }
   if (config.string("solver.method") == "newmark" && b.spec.mesh_frequency > 0.0) {
     const double h = 1.0 / (b.spec.mesh_frequency * steps);
     const double natural_period = kTwoPi / b.natural_frequency;

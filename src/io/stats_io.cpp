@@ -1,6 +1,9 @@
 #include "geardyn/io/stats_io.h"
 
+#include <fmt/format.h>
+
 #include "geardyn/error.h"
+#include "geardyn/io/csv_reader.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/output_section.h"
 #include "geardyn/io/simulate_io.h"
@@ -16,9 +19,22 @@ ConfigSchema statsSchema() {
   schema.string("title").optional().doc("free text describing the study");
   schema.section("stats", "What to compute.");
   schema.string("stats.source")
-      .choices({"model", "moments"})
+      .choices({"model", "moments", "csv"})
       .defaultValue("model")
-      .doc("statistics of the [model] curves, or the moments given below (as in the paper)");
+      .doc(
+          "statistics of the [model] curves, of a CSV record (csv_file), or the moments given "
+          "below (as in the paper)");
+  schema.string("stats.csv_file")
+      .optional()
+      .doc(
+          "csv: a table with K [N/m] and E_f [m] sampled evenly over whole mesh periods (e.g. "
+          "mesh_stiffness.csv of geardyn stiffness)");
+  schema.string("stats.csv_stiffness_column")
+      .defaultValue("k_total")
+      .doc("csv: column of the mesh stiffness K");
+  schema.string("stats.csv_error_column")
+      .defaultValue("ste_m")
+      .doc("csv: column of the static transmission error E_f = E + F/K");
   schema.real("stats.baseload")
       .unit("N")
       .positive()
@@ -31,7 +47,8 @@ ConfigSchema statsSchema() {
       .doc(
           "also simulate the steady state and report the time average of k·y (= L_d for a linear "
           "contact)");
-  schema.real("stats.a").unit("-").positive().optional().doc("moments: normalised load a = F/F₀");
+  schema.real("stats.a").unit("-").positive().optional().doc(
+      "moments, csv: normalised load a = F/F₀");
   schema.real("stats.m1_k").unit("-").defaultValue(1.0).doc("moments: mean of k = K/K̄");
   schema.real("stats.m1_ef").unit("-").optional().doc("moments: mean of e_f (or delta_m1_ef)");
   schema.real("stats.delta_m1_ef").unit("-").optional().doc("moments: Δm₁(e_f) = m₁(e_f) − a");
@@ -47,7 +64,7 @@ ConfigSchema statsSchema() {
       .unit("-")
       .defaultValue(0.0)
       .doc("moments: mean of de/dt₁ (eq. 14: 0)");
-  schema.real("stats.zeta").unit("-").min(0.0).defaultValue(0.0).doc("moments: damping ratio");
+  schema.real("stats.zeta").unit("-").min(0.0).defaultValue(0.0).doc("moments, csv: damping ratio");
   schema.section("monte_carlo",
                  "Random per-tooth errors: the distribution of R (source = \"model\").");
   schema.integer("monte_carlo.samples")
@@ -176,6 +193,33 @@ CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins) 
     table.addRow({lo + (hi - lo) * b / bins, lo + (hi - lo) * (b + 1) / bins, counts[b]});
   }
   return table;
+}
+
+MeanExcitation meanExcitationFromConfigCsv(const Config& config) {
+  for (const char* key : {"stats.csv_file", "stats.baseload", "stats.a"}) {
+    if (!config.has(key)) throw InputError(key, "", "required when stats.source = \"csv\"");
+  }
+  // A relative path is relative to the configuration file's folder.
+  std::filesystem::path file = config.string("stats.csv_file");
+  if (file.is_relative()) file = std::filesystem::path(config.source()).parent_path() / file;
+  const NumericCsv csv(file, "stats.csv_file");
+  const auto& stiffness =
+      csv.column(config.string("stats.csv_stiffness_column"), "stats.csv_stiffness_column");
+  const auto& error = csv.column(config.string("stats.csv_error_column"), "stats.csv_error_column");
+  double k_mean = 0.0;
+  for (double k : stiffness) {
+    if (!(k > 0.0))
+      throw InputError("stats.csv_stiffness_column", fmt::format("{:g}", k),
+                       "stiffness samples must be > 0");
+    k_mean += k / stiffness.size();
+  }
+  const double baseload = config.real("stats.baseload");
+  std::vector<double> k, e_f;
+  for (std::size_t i = 0; i < stiffness.size(); ++i) {
+    k.push_back(stiffness[i] / k_mean);
+    e_f.push_back(error[i] * k_mean / baseload);
+  }
+  return meanExcitationFromSamples(k, e_f, config.real("stats.a"), config.real("stats.zeta"));
 }
 
 MeanExcitation meanExcitationFromConfigMoments(const Config& config) {

@@ -86,6 +86,29 @@ MeanExcitation meanExcitationFromCurves(const MeshStiffness& k, const Transmissi
                        frequency_ratio / (2.0 * std::numbers::pi));
 }
 
+MeanExcitation meanExcitationFromSamples(const std::vector<double>& k,
+                                         const std::vector<double>& e_f, double a, double zeta) {
+  if (k.size() != e_f.size() || k.size() < 2) {
+    throw InputError("samples", fmt::format("{} and {}", k.size(), e_f.size()),
+                     "k and e_f need the same number of samples (at least 2)");
+  }
+  const double n = static_cast<double>(k.size());
+  double m_k = 0, m_e = 0;
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    m_k += k[i] / n;
+    m_e += e_f[i] / n;
+  }
+  double var_k = 0, var_e = 0, cov = 0;
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    var_k += (k[i] - m_k) * (k[i] - m_k) / n;
+    var_e += (e_f[i] - m_e) * (e_f[i] - m_e) / n;
+    cov += (k[i] - m_k) * (e_f[i] - m_e) / n;
+  }
+  const double d_k = std::sqrt(var_k), d_e = std::sqrt(var_e);
+  const double r = d_k > 0 && d_e > 0 ? std::clamp(cov / (d_k * d_e), -1.0, 1.0) : 0.0;
+  return meanExcitationFromMoments(m_k, m_e, d_k, d_e, r, 0.0, a, zeta);
+}
+
 MeanExcitation meanExcitationFromModel(const GearPairModel& model, double baseload) {
   if (!(baseload > 0.0) || !std::isfinite(baseload)) {
     throw InputError("stats.baseload", fmt::format("{:g}", baseload), "must be finite and > 0 [N]");

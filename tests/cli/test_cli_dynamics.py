@@ -118,3 +118,34 @@ def test_stats_moments_need_their_keys(tmp_path):
     result = run("stats", EXAMPLES / "stats_gelman2005_case1_a025.toml", "--out", tmp_path,
                  "--set", "stats.r_ke=1.5")
     assert result.returncode == 2 and "stats.r_ke = 1.5" in result.stderr
+
+
+def test_stats_from_a_csv_record(tmp_path):
+    # The loaded STE of errorless gears is F/K: e = 0, so R = 1 exactly (Gelman: errorless,
+    # unmodified gears). The record comes from geardyn stiffness.
+    result = run("stiffness", EXAMPLES / "stiffness_visnadi2021_spur.toml", "--out", tmp_path / "k",
+                 "--set", "output.plots=false", "--set", "mesh_stiffness.transmitted_force=2000",
+                 "--set", "mesh_stiffness.models=[\"potential_energy\"]")
+    assert result.returncode == 0, result.stderr
+    config = tmp_path / "stats.toml"
+    config.write_text(f'[stats]\nsource = "csv"\ncsv_file = "{tmp_path / "k" / "mesh_stiffness.csv"}"\n'
+                      'baseload = 2000.0\na = 1.0\nzeta = 0.05\n')
+    result = run("stats", config, "--out", tmp_path / "s")
+    assert result.returncode == 0, result.stderr
+    stats = json.loads((tmp_path / "s" / "summary.json").read_text())["results"]["mean_excitation"]
+    assert stats["ratio"] == pytest.approx(1.0, abs=1e-12)
+    assert stats["r_ke"] < -0.99  # the deflection F/K is out of phase with K
+
+
+def test_stats_csv_with_nan_is_rejected(tmp_path):
+    record = tmp_path / "record.csv"
+    record.write_text("k_total,ste_m\n3e8,6e-6\nnan,6e-6\n3.2e8,5.9e-6\n")
+    config = tmp_path / "stats.toml"
+    config.write_text('[stats]\nsource = "csv"\ncsv_file = "record.csv"\nbaseload = 2000.0\na = 1.0\n')
+    result = run("stats", config, "--out", tmp_path / "s")
+    assert result.returncode == 2
+    assert "row 3, column k_total" in result.stderr and "must be finite" in result.stderr
+    config.write_text('[stats]\nsource = "csv"\ncsv_file = "record.csv"\nbaseload = 2000.0\na = 1.0\n'
+                      'csv_error_column = "ste"\n')
+    result = run("stats", config, "--out", tmp_path / "s")
+    assert result.returncode == 2 and 'did you mean "ste_m"?' in result.stderr

@@ -29,6 +29,10 @@ nlohmann::ordered_json monteCarloJson(const MonteCarloOptions& options,
 CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples);
 CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins);
 
+/// The statistics of a CSV record when source = "csv": K̄ = mean K, k = K/K̄,
+/// e_f = E_f K̄ / F₀ with F₀ = stats.baseload (required) and a = stats.a.
+MeanExcitation meanExcitationFromConfigCsv(const Config& config);
+
 /// The moments of [stats] when source = "moments".
 MeanExcitation meanExcitationFromConfigMoments(const Config& config);
 

@@ -7,6 +7,7 @@
 /// error e_f = E_f/x₀ = e + a/k (x₀ = F₀/K̄, a = F/F₀; eqs. 1–3).
 
 #include <string>
+#include <vector>
 
 #include "geardyn/models/transmission_error.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
@@ -43,6 +44,12 @@ MeanExcitation meanExcitationFromMoments(double m1_k, double m1_ef, double d_k, 
 /// mesh frequency ratio Ω = ω_m/ω_n converts de/dφ into de/dt₁ = (Ω/2π) de/dφ.
 MeanExcitation meanExcitationFromCurves(const MeshStiffness& k, const TransmissionError& e,
                                         double a, double zeta, double frequency_ratio);
+
+/// From samples evenly spaced over whole mesh periods (a measured or computed record): the
+/// normalised k and e_f at the same instants; m₁(ė) = 0 (Gelman eq. 14; exact for whole periods
+/// of a periodic error).
+MeanExcitation meanExcitationFromSamples(const std::vector<double>& k,
+                                         const std::vector<double>& e_f, double a, double zeta);
 
 class GearPairModel;
 /// From a dimensional gear-pair model and the baseload F₀ [N] (the load the profile
