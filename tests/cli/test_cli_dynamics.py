@@ -145,6 +145,7 @@ def test_stats_csv_with_nan_is_rejected(tmp_path):
     result = run("stats", config, "--out", tmp_path / "s")
     assert result.returncode == 2
     assert "row 3, column k_total" in result.stderr and "must be finite" in result.stderr
+    record.write_text("k_total,ste_m\n3e8,6e-6\n3.2e8,5.9e-6\n")
     config.write_text('[stats]\nsource = "csv"\ncsv_file = "record.csv"\nbaseload = 2000.0\na = 1.0\n'
                       'csv_error_column = "ste"\n')
     result = run("stats", config, "--out", tmp_path / "s")
