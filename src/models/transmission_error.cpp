@@ -87,6 +87,20 @@ bool TransmissionError::isZero() const noexcept {
   return rect_amplitude_ == 0.0 && table_phases_.empty();
 }
 
+TransmissionError::TableSegment TransmissionError::tableSegment(double phase) const {
+  // Periodic linear interpolation: after the last point the table runs to the first point + 1.
+  const double p = wrapPhase(phase);
+  const std::size_t n = table_phases_.size();
+  const std::size_t hi =
+      static_cast<std::size_t>(std::upper_bound(table_phases_.begin(), table_phases_.end(), p) -
+                               table_phases_.begin()) %
+      n;
+  const std::size_t lo = (hi + n - 1) % n;
+  const double x0 = table_phases_[lo];
+  const double x1 = table_phases_[hi] <= x0 ? table_phases_[hi] + 1.0 : table_phases_[hi];
+  return {lo, hi, x0, x1, p < x0 ? p + 1.0 : p};
+}
+
 double TransmissionError::value(double phase) const {
   double e = 0.0;
   for (std::size_t r = 0; r < amplitudes_.size(); ++r) {
@@ -94,18 +108,9 @@ double TransmissionError::value(double phase) const {
   }
   if (rect_amplitude_ != 0.0 && wrapPhase(phase - rect_start_) < rect_duty_) e += rect_amplitude_;
   if (!table_phases_.empty()) {
-    const double p = wrapPhase(phase);
-    const std::size_t n = table_phases_.size();
-    const std::size_t hi =
-        static_cast<std::size_t>(std::upper_bound(table_phases_.begin(), table_phases_.end(), p) -
-                                 table_phases_.begin()) %
-        n;
-    const std::size_t lo = (hi + n - 1) % n;
-    const double x0 = table_phases_[lo];
-    const double x1 = table_phases_[hi] <= x0 ? table_phases_[hi] + 1.0 : table_phases_[hi];
-    const double x = p < x0 ? p + 1.0 : p;
-    const double w = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
-    e += table_values_[lo] + w * (table_values_[hi] - table_values_[lo]);
+    const TableSegment t = tableSegment(phase);
+    const double w = t.x1 > t.x0 ? (t.x - t.x0) / (t.x1 - t.x0) : 0.0;
+    e += table_values_[t.lo] + w * (table_values_[t.hi] - table_values_[t.lo]);
   }
   return e;
 }
@@ -116,16 +121,8 @@ double TransmissionError::derivative(double phase) const {
     d -= amplitudes_[r] * kTwoPi * (r + 1) * std::sin(kTwoPi * (r + 1) * phase + phases_[r]);
   }
   if (table_phases_.size() > 1) {
-    const double p = wrapPhase(phase);
-    const std::size_t n = table_phases_.size();
-    const std::size_t hi =
-        static_cast<std::size_t>(std::upper_bound(table_phases_.begin(), table_phases_.end(), p) -
-                                 table_phases_.begin()) %
-        n;
-    const std::size_t lo = (hi + n - 1) % n;
-    const double x0 = table_phases_[lo];
-    const double x1 = table_phases_[hi] <= x0 ? table_phases_[hi] + 1.0 : table_phases_[hi];
-    d += (table_values_[hi] - table_values_[lo]) / (x1 - x0);
+    const TableSegment t = tableSegment(phase);
+    d += (table_values_[t.hi] - table_values_[t.lo]) / (t.x1 - t.x0);
   }
   return d;
 }

@@ -34,6 +34,12 @@ class TransmissionError {
   bool isZero() const noexcept;
 
  private:
+  struct TableSegment {
+    std::size_t lo, hi;  // table points around the phase
+    double x0, x1, x;    // their phases and the phase, unwrapped so that x0 <= x < x1
+  };
+  TableSegment tableSegment(double phase) const;
+
   std::vector<double> amplitudes_, phases_;
   double rect_amplitude_ = 0.0, rect_duty_ = 0.0, rect_start_ = 0.0;
   std::vector<double> table_phases_, table_values_;

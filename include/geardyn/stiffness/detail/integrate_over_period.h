@@ -1,5 +1,6 @@
 #pragma once
 // Implementation of integrateOverPeriod (header-only: it is a template over the integrand).
+// Allocation-free: it walks the breaks in place.
 
 #include <boost/math/quadrature/gauss.hpp>
 #include <vector>
@@ -8,21 +9,22 @@ namespace geardyn {
 
 template <typename F>
 double integrateOverPeriod(const F& f, const std::vector<double>& breaks, int panels) {
-  std::vector<double> edges;
-  edges.reserve(breaks.size() + 2);
-  edges.push_back(0.0);
-  for (double b : breaks) {
-    if (b > edges.back()) edges.push_back(b);
-  }
-  if (edges.back() < 1.0) edges.push_back(1.0);
   double total = 0.0;
-  for (std::size_t piece = 0; piece + 1 < edges.size(); ++piece) {
-    const double width = (edges[piece + 1] - edges[piece]) / panels;
+  const auto piece = [&](double from, double to) {
+    const double width = (to - from) / panels;
     for (int p = 0; p < panels; ++p) {
-      const double a = edges[piece] + p * width;
+      const double a = from + p * width;
       total += boost::math::quadrature::gauss<double, 20>::integrate(f, a, a + width);
     }
+  };
+  double start = 0.0;
+  for (double b : breaks) {
+    if (b > start && b < 1.0) {
+      piece(start, b);
+      start = b;
+    }
   }
+  piece(start, 1.0);
   return total;
 }
 
