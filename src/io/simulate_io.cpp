@@ -95,6 +95,19 @@ void addGearPairModelSections(ConfigSchema& schema) {
       .doc("c (instead of damping_ratio)");
   schema.real("model.mean_force").unit("N").optional().doc("F = T₁/R₁ (nondimensional: a = F/F₀)");
   schema.real("model.pinion_torque").unit("N m").optional().doc("T₁ (instead of mean_force)");
+  schema.realList("model.extra_force_amplitudes")
+      .unit("N")
+      .defaultValue(Json::array())
+      .doc("extra forces Σ f_j cos(ω_j t + ψ_j): amplitudes (nondimensional: in F₀)");
+  schema.realList("model.extra_force_frequencies")
+      .unit("Hz")
+      .min(0.0)
+      .defaultValue(Json::array())
+      .doc("their frequencies ω_j/2π (nondimensional: ω_j/ω_n)");
+  schema.realList("model.extra_force_phases")
+      .unit("rad")
+      .defaultValue(Json::array())
+      .doc("their phases ψ_j");
   schema.string("model.contact")
       .choices({"linear", "one_sided", "backlash"})
       .defaultValue("linear")
@@ -417,6 +430,22 @@ GearPairModelBuild buildGearPairModel(const Config& config) {
     b.spec.mesh_frequency = pair->spec().pinion.teeth * config.real("excitation.speed_rpm") / 60.0;
   }
   b.spec.initial_phase = config.real("excitation.initial_phase");
+
+  // Extra harmonic forces.
+  const auto f_amp = config.realList("model.extra_force_amplitudes");
+  const auto f_freq = config.realList("model.extra_force_frequencies");
+  const auto f_phase = config.realList("model.extra_force_phases");
+  if (f_freq.size() != f_amp.size() || f_phase.size() != f_amp.size()) {
+    throw InputError("model.extra_force_frequencies",
+                     fmt::format("{} and {} values", f_freq.size(), f_phase.size()),
+                     fmt::format("need one frequency and one phase per amplitude ({} amplitudes)",
+                                 f_amp.size()));
+  }
+  for (std::size_t j = 0; j < f_amp.size(); ++j) {
+    // Hz → rad/s; nondimensional: ω_j/ω_n is already the angular frequency in t₁ = ω_n t.
+    b.spec.extra_forces.push_back(
+        {f_amp[j], b.nondimensional ? f_freq[j] : kTwoPi * f_freq[j], f_phase[j]});
+  }
 
   // Transmission error.
   const std::string te = "model.transmission_error";

@@ -150,3 +150,38 @@ def test_stats_csv_with_nan_is_rejected(tmp_path):
                       'csv_error_column = "ste"\n')
     result = run("stats", config, "--out", tmp_path / "s")
     assert result.returncode == 2 and 'did you mean "ste_m"?' in result.stderr
+
+
+def test_simulate_extra_harmonic_force_matches_the_linear_response(tmp_path):
+    # Constant stiffness, linear contact, no error, a force 100 cos(2π 300 t): the steady mesh
+    # force amplitude at the mesh order where 300 Hz falls is k |H| 100 with H the FRF of m, c, k.
+    import math
+    config = tmp_path / "forced.toml"
+    config.write_text("""
+[model]
+mass = 1.589
+damping_ratio = 0.05
+mean_force = 1000.0
+extra_force_amplitudes = [100.0]
+extra_force_frequencies = [300.0]
+extra_force_phases = [0.0]
+[model.stiffness]
+mean = 4.55e8
+[excitation]
+mesh_frequency = 300.0
+[solver]
+steps_per_period = 4096
+output_points_per_period = 512
+steady_tolerance = 1e-9
+harmonics = 2
+[output]
+plots = false
+""")
+    result = run("simulate", config, "--out", tmp_path / "o")
+    assert result.returncode == 0, result.stderr
+    r = json.loads((tmp_path / "o" / "summary.json").read_text())["results"]
+    m, k, zeta, w = 1.589, 4.55e8, 0.05, 2 * math.pi * 300.0
+    c = 2 * zeta * math.sqrt(k * m)
+    expected = k * 100.0 / abs(complex(k - m * w * w, w * c))
+    assert r["mesh_force"]["harmonic_amplitudes"][0] == pytest.approx(expected, rel=1e-5)
+    assert r["mesh_force"]["mean"] == pytest.approx(1000.0, rel=1e-9)
