@@ -57,6 +57,8 @@ class GearPairModel {
   /// Validates the data (positive mass, non-negative damping, finite values, b >= 0).
   explicit GearPairModel(GearPairModelSpec spec);
 
+  /// The data the model was built from (to derive a variant, e.g. at another speed).
+  const GearPairModelSpec& spec() const noexcept { return spec_; }
   double mass() const noexcept { return spec_.mass; }
   double damping() const noexcept { return spec_.damping; }
   double meanForce() const noexcept { return spec_.mean_force; }

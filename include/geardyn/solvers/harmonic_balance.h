@@ -1,0 +1,122 @@
+#pragma once
+/// \file
+/// Harmonic balance for the gear-pair model (Saletti, Battiato & Zucca 2025, eqs. 9–12, in
+/// the coupled static/dynamic form: the mean term is an unknown like the harmonics):
+///
+///   y(τ) = a₀ + Σ_{h=1..H} a_h cos hτ + b_h sin hτ,   τ = ω t = 2π φ,
+///   R(q, ω) = L(ω) q + F_nl(q) − F_ext(ω) = 0,   q = [a₀, a₁, b₁, …, a_H, b_H],
+///
+/// with the linear part of m y″ + c y′ and the Fourier coefficients of the mesh force
+/// k(φ) g(y − e(φ)) computed by AFT (inverse real FFT to N samples, the force in the time
+/// domain, forward real FFT; FFTW plans made once). The Jacobian of the scalar nonlinearity is
+/// assembled from the FFT of df/dy at the samples (its Toeplitz + Hankel structure), never by
+/// finite differences. Newton–Raphson, pseudo-arclength continuation in ω through folds, and
+/// stability by Hill's method (sorted Floquet exponents).
+
+#include <fftw3.h>
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "geardyn/models/gear_pair_model.h"
+
+namespace geardyn {
+
+struct HarmonicBalanceOptions {
+  int harmonics = 14;            ///< H
+  int samples_per_period = 256;  ///< N (> 2H)
+  double tolerance = 1e-10;  ///< ‖R‖ / (|F̄| + ‖F_ext‖ + k̄ ‖q‖) (relative, see residualNorm)
+  int max_iterations = 40;
+  void validate() const;
+};
+
+/// One periodic solution.
+struct HarmonicBalancePoint {
+  double omega = 0.0;  ///< mesh angular frequency ω [rad/s]
+  Eigen::VectorXd q;   ///< Fourier coefficients of x
+  bool converged = false;
+  int iterations = 0;
+  double residual = 0.0;  ///< relative residual at the end
+  bool stable = true;
+  double max_floquet_real = 0.0;  ///< largest real part of the selected Floquet exponents [1/s]
+};
+
+class HarmonicBalance {
+ public:
+  HarmonicBalance(const GearPairModel& model, const HarmonicBalanceOptions& options);
+  ~HarmonicBalance();
+  HarmonicBalance(const HarmonicBalance&) = delete;
+  HarmonicBalance& operator=(const HarmonicBalance&) = delete;
+
+  int size() const noexcept { return n_; }
+  int harmonics() const noexcept { return h_; }
+  int samples() const noexcept { return samples_; }
+
+  /// R(q, ω) and, if wanted, ∂R/∂q and ∂R/∂ω (analytic through the AFT).
+  void residual(const Eigen::VectorXd& q, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* dr_dq,
+                Eigen::VectorXd* dr_domega);
+  /// The relative residual norm used for convergence: ‖R‖ / scale, scale = |F| + k̄ ‖q‖ + ‖F_ext‖.
+  double residualNorm(const Eigen::VectorXd& q, const Eigen::VectorXd& r, double omega) const;
+
+  /// Newton at fixed ω from the guess in point.q.
+  void solve(HarmonicBalancePoint& point);
+
+  /// Stability by Hill's method: the quadratic eigenproblem (λ² m + λ (c + 2m D) + J) p = 0 in the
+  /// Fourier basis; the two exponents with the smallest |Im λ| are the Floquet exponents.
+  void stability(HarmonicBalancePoint& point);
+
+  /// x(τ) at N samples over one period from coefficients.
+  std::vector<double> timeSignal(const Eigen::VectorXd& q) const;
+  /// The mesh force at the same samples.
+  std::vector<double> meshForceSignal(const Eigen::VectorXd& q, double omega) const;
+  /// Fourier coefficients of the external force F + c e′(t) at ω, and their ω-derivative.
+  void externalForce(double omega, Eigen::VectorXd& f, Eigen::VectorXd* df_domega) const;
+  /// A guess: the exact response with the teeth held in contact (the contact law replaced by
+  /// its loaded-flank branch), i.e. the linear time-varying solution.
+  Eigen::VectorXd linearGuess(double omega);
+
+ private:
+  void forward(const double* samples, Eigen::VectorXd& coefficients, int count);
+
+  const GearPairModel& model_;
+  HarmonicBalanceOptions options_;
+  int h_, n_, samples_;
+  double k_mean_;
+  std::vector<double> phases_, error_, error_rate_, stiffness_;  // per sample (fixed phases)
+  // FFTW workspaces and plans (created once).
+  double* real_buffer_;
+  fftw_complex* complex_buffer_;
+  fftw_plan forward_plan_, inverse_plan_;
+  std::vector<double> y_, f_, df_;
+  bool linearized_ = false;  // linearGuess: g(y) = y − linear_shift_
+  double linear_shift_ = 0.0;
+};
+
+/// A continuation point with what the sweep reports.
+struct SweepPoint {
+  HarmonicBalancePoint solution;
+  int branch = 0;  ///< increases at every fold
+  double arclength = 0.0;
+};
+
+struct ContinuationOptions {
+  double start = 0.0, stop = 0.0;                             ///< ω range [rad/s]
+  double initial_step = 0.0, min_step = 0.0, max_step = 0.0;  ///< in ω units along the arc
+  int max_points = 20000;
+  bool stability = true;
+  void validate() const;
+};
+
+struct ContinuationResult {
+  std::vector<SweepPoint> points;
+  std::vector<std::size_t> folds;  ///< indices of points next to a turning point in ω
+  int failures = 0;                ///< corrector failures (step cut back)
+  bool completed = false;          ///< reached `stop`
+  std::string message;
+};
+
+/// Pseudo-arclength continuation from `start` to `stop` (either direction).
+ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationOptions& options);
+
+}  // namespace geardyn

@@ -1,0 +1,432 @@
+#include "geardyn/solvers/harmonic_balance.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/stiffness/mesh_stiffness_summary.h"
+
+namespace geardyn {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+inline int cosIndex(int h) {
+  return 2 * h - 1;
+}
+inline int sinIndex(int h) {
+  return 2 * h;
+}
+
+}  // namespace
+
+void HarmonicBalanceOptions::validate() const {
+  if (harmonics < 1 || harmonics > 512) {
+    throw InputError("hbm.harmonics", std::to_string(harmonics), "must be in [1, 512]");
+  }
+  if (samples_per_period <= 2 * harmonics) {
+    throw InputError("hbm.samples_per_period", std::to_string(samples_per_period),
+                     fmt::format("must exceed 2H = {} to resolve {} harmonics without aliasing "
+                                 "(at least {}; 8H or more for contact nonlinearities)",
+                                 2 * harmonics, harmonics, 2 * harmonics + 1));
+  }
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
+    throw InputError("hbm.tolerance", fmt::format("{:g}", tolerance), "must be finite and > 0");
+  }
+  if (max_iterations < 1)
+    throw InputError("hbm.max_iterations", std::to_string(max_iterations), "must be >= 1");
+}
+
+HarmonicBalance::HarmonicBalance(const GearPairModel& model, const HarmonicBalanceOptions& options)
+    : model_(model), options_(options) {
+  options_.validate();
+  if (!model.spec().extra_forces.empty()) {
+    throw InputError("model.extra_force_amplitudes", "",
+                     "extra forces at other frequencies are not supported by harmonic balance");
+  }
+  h_ = options_.harmonics;
+  n_ = 2 * h_ + 1;
+  samples_ = options_.samples_per_period;
+  k_mean_ = summarizeMeshStiffness(model.meshStiffness(), 0).mean;
+  const double phase0 = model.spec().initial_phase;
+  for (int i = 0; i < samples_; ++i) {
+    const double phase = phase0 + static_cast<double>(i) / samples_;
+    phases_.push_back(phase);
+    stiffness_.push_back(model.meshStiffness().stiffness(phase));
+    error_.push_back(model.transmissionError().value(phase));
+    error_rate_.push_back(model.transmissionError().derivative(phase));  // de/dφ
+  }
+  real_buffer_ = fftw_alloc_real(samples_);
+  complex_buffer_ = fftw_alloc_complex(samples_ / 2 + 1);
+  forward_plan_ = fftw_plan_dft_r2c_1d(samples_, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
+  inverse_plan_ = fftw_plan_dft_c2r_1d(samples_, complex_buffer_, real_buffer_, FFTW_ESTIMATE);
+  y_.resize(samples_);
+  f_.resize(samples_);
+  df_.resize(samples_);
+}
+
+HarmonicBalance::~HarmonicBalance() {
+  fftw_destroy_plan(forward_plan_);
+  fftw_destroy_plan(inverse_plan_);
+  fftw_free(real_buffer_);
+  fftw_free(complex_buffer_);
+}
+
+void HarmonicBalance::forward(const double* samples, Eigen::VectorXd& c, int count) {
+  // Real FFT: X_m = Σ s_n e^{−2πi mn/N}; a₀ = X₀/N, a_h = 2 Re X_h / N, b_h = −2 Im X_h / N.
+  std::copy(samples, samples + samples_, real_buffer_);
+  fftw_execute(forward_plan_);
+  c.setZero(count);
+  c[0] = complex_buffer_[0][0] / samples_;
+  for (int h = 1; 2 * h - 1 < count; ++h) {
+    c[cosIndex(h)] = 2.0 * complex_buffer_[h][0] / samples_;
+    if (sinIndex(h) < count) c[sinIndex(h)] = -2.0 * complex_buffer_[h][1] / samples_;
+  }
+}
+
+std::vector<double> HarmonicBalance::timeSignal(const Eigen::VectorXd& q) const {
+  std::vector<double> x(samples_, q[0]);
+  for (int i = 0; i < samples_; ++i) {
+    const double tau = kTwoPi * i / samples_;
+    for (int h = 1; h <= h_; ++h)
+      x[i] += q[cosIndex(h)] * std::cos(h * tau) + q[sinIndex(h)] * std::sin(h * tau);
+  }
+  return x;
+}
+
+std::vector<double> HarmonicBalance::meshForceSignal(const Eigen::VectorXd& q, double) const {
+  const std::vector<double> x = timeSignal(q);
+  std::vector<double> f(samples_);
+  for (int i = 0; i < samples_; ++i) f[i] = stiffness_[i] * model_.contactLaw(x[i] - error_[i]);
+  return f;
+}
+
+void HarmonicBalance::externalForce(double omega, Eigen::VectorXd& f,
+                                    Eigen::VectorXd* df_domega) const {
+  // F + c e′(t) with e′ = (ω/2π) de/dφ: its coefficients are linear in ω.
+  Eigen::VectorXd rate;
+  const_cast<HarmonicBalance*>(this)->forward(error_rate_.data(), rate, n_);
+  const double c = model_.damping();
+  f = (c * omega / kTwoPi) * rate;
+  f[0] += model_.meanForce();
+  if (df_domega) *df_domega = (c / kTwoPi) * rate;
+}
+
+Eigen::VectorXd HarmonicBalance::linearGuess(double omega) {
+  // The response with the teeth held in contact (g(y) = y − shift on the loaded flank): a linear
+  // time-varying problem, solved exactly by one Newton step from the static deflection. Far
+  // from contact loss it is the answer; near it, the best start for the nonlinear solve.
+  Eigen::VectorXd q;
+  forward(error_.data(), q, n_);
+  double shift = 0.0;
+  if (model_.contact() == ContactLaw::kBacklash) {
+    shift = model_.meanForce() >= 0 ? model_.backlash() : -model_.backlash();
+  }
+  q[0] += model_.meanForce() / k_mean_ + shift;
+  linear_shift_ = shift;
+  linearized_ = true;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  for (int iteration = 0; iteration < 2; ++iteration) {
+    residual(q, omega, r, &J, nullptr);
+    const Eigen::VectorXd step = J.partialPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    q += step;
+  }
+  linearized_ = false;
+  return q;
+}
+
+void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::VectorXd& r,
+                               Eigen::MatrixXd* dr_dq, Eigen::VectorXd* dr_domega) {
+  const double m = model_.mass(), c = model_.damping();
+  // AFT: coefficients → samples (inverse real FFT), force in the time domain, back.
+  complex_buffer_[0][0] = q[0];
+  complex_buffer_[0][1] = 0.0;
+  for (int k = 1; k <= samples_ / 2; ++k) {
+    complex_buffer_[k][0] = 0.0;
+    complex_buffer_[k][1] = 0.0;
+  }
+  for (int h = 1; h <= h_; ++h) {
+    complex_buffer_[h][0] = 0.5 * q[cosIndex(h)];
+    complex_buffer_[h][1] = -0.5 * q[sinIndex(h)];
+  }
+  fftw_execute(inverse_plan_);
+  for (int i = 0; i < samples_; ++i) {
+    double slope = 1.0;
+    const double y = real_buffer_[i] - error_[i];
+    const double g = linearized_ ? y - linear_shift_ : model_.contactLaw(y, &slope);
+    f_[i] = stiffness_[i] * g;
+    df_[i] = stiffness_[i] * slope;
+  }
+  Eigen::VectorXd fnl, fext, dfext;
+  forward(f_.data(), fnl, n_);
+  externalForce(omega, fext, dr_domega ? &dfext : nullptr);
+
+  r = fnl - fext;
+  for (int h = 1; h <= h_; ++h) {
+    const double a = q[cosIndex(h)], b = q[sinIndex(h)], w = h * omega;
+    r[cosIndex(h)] += -w * w * m * a + c * w * b;
+    r[sinIndex(h)] += -w * w * m * b - c * w * a;
+  }
+  if (dr_domega) {
+    *dr_domega = -dfext;
+    for (int h = 1; h <= h_; ++h) {
+      const double a = q[cosIndex(h)], b = q[sinIndex(h)];
+      (*dr_domega)[cosIndex(h)] += -2.0 * h * h * omega * m * a + c * h * b;
+      (*dr_domega)[sinIndex(h)] += -2.0 * h * h * omega * m * b - c * h * a;
+    }
+  }
+  if (dr_dq) {
+    // FFT of df/dy: D_m = (1/N) Σ df cos mτ, E_m = (1/N) Σ df sin mτ, any integer m (periodic
+    // in N, D even, E odd). Products of trigonometric functions give the Toeplitz + Hankel
+    // structure of the Jacobian of the sampled force coefficients.
+    std::copy(df_.begin(), df_.end(), real_buffer_);
+    fftw_execute(forward_plan_);
+    const auto DE = [&](int mm, double& d, double& e) {
+      int k = ((mm % samples_) + samples_) % samples_;
+      double sign = 1.0;
+      if (k > samples_ / 2) {  // X_{N−k} = conj(X_k)
+        k = samples_ - k;
+        sign = -1.0;
+      }
+      d = complex_buffer_[k][0] / samples_;
+      e = -sign * complex_buffer_[k][1] / samples_;
+    };
+    Eigen::MatrixXd& J = *dr_dq;
+    J.setZero(n_, n_);
+    double d, e, d2, e2;
+    DE(0, d, e);
+    J(0, 0) = d;
+    for (int l = 1; l <= h_; ++l) {
+      DE(l, d, e);
+      J(0, cosIndex(l)) = d;
+      J(0, sinIndex(l)) = e;
+      J(cosIndex(l), 0) = 2.0 * d;
+      J(sinIndex(l), 0) = 2.0 * e;
+    }
+    for (int h = 1; h <= h_; ++h) {
+      for (int l = 1; l <= h_; ++l) {
+        DE(h - l, d, e);
+        DE(h + l, d2, e2);
+        double e_lh = 0.0, dummy = 0.0;
+        DE(l - h, dummy, e_lh);
+        J(cosIndex(h), cosIndex(l)) = d + d2;
+        J(cosIndex(h), sinIndex(l)) = e2 + e_lh;
+        J(sinIndex(h), cosIndex(l)) = e2 + e;
+        J(sinIndex(h), sinIndex(l)) = d - d2;
+      }
+      const double w = h * omega;
+      J(cosIndex(h), cosIndex(h)) += -w * w * m;
+      J(cosIndex(h), sinIndex(h)) += c * w;
+      J(sinIndex(h), sinIndex(h)) += -w * w * m;
+      J(sinIndex(h), cosIndex(h)) += -c * w;
+    }
+  }
+}
+
+double HarmonicBalance::residualNorm(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                                     double omega) const {
+  Eigen::VectorXd fext;
+  externalForce(omega, fext, nullptr);
+  const double scale = std::abs(model_.meanForce()) + k_mean_ * q.norm() + fext.norm();
+  return r.norm() / (scale > 0.0 ? scale : 1.0);
+}
+
+void HarmonicBalance::solve(HarmonicBalancePoint& point) {
+  Eigen::VectorXd r, step;
+  Eigen::MatrixXd J;
+  point.converged = false;
+  residual(point.q, point.omega, r, &J, nullptr);
+  double norm = residualNorm(point.q, r, point.omega);
+  for (point.iterations = 0; point.iterations < options_.max_iterations; ++point.iterations) {
+    if (norm <= options_.tolerance) {
+      point.converged = true;
+      break;
+    }
+    step = J.partialPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    // Backtracking: accept the full step unless it increases the residual.
+    double alpha = 1.0;
+    Eigen::VectorXd trial;
+    for (int back = 0; back < 6; ++back) {
+      trial = point.q + alpha * step;
+      residual(trial, point.omega, r, &J, nullptr);
+      const double trial_norm = residualNorm(trial, r, point.omega);
+      if (trial_norm < norm || back == 5) {
+        norm = trial_norm;
+        break;
+      }
+      alpha *= 0.5;
+    }
+    point.q = trial;
+  }
+  point.residual = norm;
+  if (norm <= options_.tolerance) point.converged = true;
+}
+
+void HarmonicBalance::stability(HarmonicBalancePoint& point) {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  residual(point.q, point.omega, r, &J, nullptr);
+  const double m = model_.mass(), c = model_.damping();
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(n_, n_);
+  for (int h = 1; h <= h_; ++h) {
+    D(cosIndex(h), sinIndex(h)) = h * point.omega;
+    D(sinIndex(h), cosIndex(h)) = -h * point.omega;
+  }
+  // λ² m p + λ (c I + 2 m D) p + J p = 0  →  first-order companion form.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n_, 2 * n_);
+  A.topRightCorner(n_, n_).setIdentity();
+  A.bottomLeftCorner(n_, n_) = -J / m;
+  A.bottomRightCorner(n_, n_) = -(c * Eigen::MatrixXd::Identity(n_, n_) + 2.0 * m * D) / m;
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(A, false);
+  std::vector<std::complex<double>> values(eig.eigenvalues().begin(), eig.eigenvalues().end());
+  std::sort(values.begin(), values.end(),
+            [](const auto& a, const auto& b) { return std::abs(a.imag()) < std::abs(b.imag()); });
+  // One DOF: the two exponents closest to the real axis are the Floquet exponents.
+  point.max_floquet_real = std::max(values[0].real(), values[1].real());
+  point.stable = point.max_floquet_real < 1e-9 * point.omega;
+}
+
+void ContinuationOptions::validate() const {
+  if (!(start > 0.0) || !std::isfinite(start))
+    throw InputError("sweep.start", fmt::format("{:g}", start), "must be finite and > 0");
+  if (!(stop > 0.0) || !std::isfinite(stop))
+    throw InputError("sweep.stop", fmt::format("{:g}", stop), "must be finite and > 0");
+  if (start == stop)
+    throw InputError("sweep.stop", fmt::format("{:g}", stop), "must differ from sweep.start");
+  if (!(min_step > 0.0))
+    throw InputError("sweep.min_step", fmt::format("{:g}", min_step), "must be > 0");
+  if (!(max_step >= min_step))
+    throw InputError("sweep.max_step", fmt::format("{:g}", max_step), "must be >= sweep.min_step");
+  if (!(initial_step >= min_step && initial_step <= max_step)) {
+    throw InputError("sweep.initial_step", fmt::format("{:g}", initial_step),
+                     "must lie in [min_step, max_step]");
+  }
+}
+
+ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationOptions& options) {
+  options.validate();
+  ContinuationResult out;
+  const int n = hbm.size();
+  const double direction = options.stop > options.start ? 1.0 : -1.0;
+  const double omega_ref = std::max(options.start, options.stop);
+
+  HarmonicBalancePoint first;
+  first.omega = options.start;
+  first.q = hbm.linearGuess(first.omega);
+  hbm.solve(first);
+  if (!first.converged) {
+    out.message =
+        fmt::format("no solution at the start frequency (residual {:.2g})", first.residual);
+    return out;
+  }
+  // Scaling: q by its size at the start, ω by the larger end of the range.
+  const double q_scale = std::max(first.q.norm(), 1e-300);
+  const auto augmented_jacobian = [&](const Eigen::VectorXd& q, double omega, Eigen::MatrixXd& Jq,
+                                      Eigen::VectorXd& Jw,
+                                      Eigen::VectorXd& r) { hbm.residual(q, omega, r, &Jq, &Jw); };
+  const auto tangent = [&](const Eigen::VectorXd& q, double omega,
+                           const Eigen::VectorXd& previous) {
+    Eigen::MatrixXd Jq;
+    Eigen::VectorXd Jw, r;
+    augmented_jacobian(q, omega, Jq, Jw, r);
+    Eigen::MatrixXd A(n + 1, n + 1);
+    A.topLeftCorner(n, n) = Jq * q_scale;
+    A.topRightCorner(n, 1) = Jw * omega_ref;
+    A.bottomRows(1) = previous.transpose();
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
+    rhs[n] = 1.0;
+    Eigen::VectorXd t = A.partialPivLu().solve(rhs);
+    return Eigen::VectorXd(t / t.norm());
+  };
+
+  if (options.stability) hbm.stability(first);
+  out.points.push_back({first, 0, 0.0});
+  Eigen::VectorXd seed = Eigen::VectorXd::Zero(n + 1);
+  seed[n] = direction;
+  Eigen::VectorXd t = tangent(first.q, first.omega, seed);
+  if (t[n] * direction < 0) t = -t;
+
+  double step = options.initial_step / omega_ref;
+  const double min_step = options.min_step / omega_ref, max_step = options.max_step / omega_ref;
+  Eigen::VectorXd z(n + 1);
+  z << first.q / q_scale, first.omega / omega_ref;
+  int branch = 0;
+  double arclength = 0.0;
+  Eigen::VectorXd r, Jw;
+  Eigen::MatrixXd Jq, A(n + 1, n + 1);
+
+  while (static_cast<int>(out.points.size()) < options.max_points) {
+    const Eigen::VectorXd predicted = z + step * t;
+    Eigen::VectorXd y = predicted;
+    bool converged = false;
+    int iterations = 0;
+    double norm = 0.0;
+    for (; iterations < 25; ++iterations) {
+      const Eigen::VectorXd q = y.head(n) * q_scale;
+      const double omega = y[n] * omega_ref;
+      if (!(omega > 0.0)) break;
+      augmented_jacobian(q, omega, Jq, Jw, r);
+      norm = hbm.residualNorm(q, r, omega);
+      const double constraint = t.dot(y - predicted);
+      if (norm <= 1e-10 && std::abs(constraint) <= 1e-12) {
+        converged = true;
+        break;
+      }
+      A.topLeftCorner(n, n) = Jq * q_scale;
+      A.topRightCorner(n, 1) = Jw * omega_ref;
+      A.bottomRows(1) = t.transpose();
+      Eigen::VectorXd rhs(n + 1);
+      rhs << -r, -constraint;
+      const Eigen::VectorXd dy = A.partialPivLu().solve(rhs);
+      if (!dy.allFinite()) break;
+      y += dy;
+    }
+    if (!converged) {
+      ++out.failures;
+      step *= 0.5;
+      if (step < min_step) {
+        out.message = fmt::format(
+            "continuation stopped at {:.6g} rad/s: the corrector failed with the "
+            "minimum step (residual {:.2g})",
+            z[n] * omega_ref, norm);
+        return out;
+      }
+      continue;
+    }
+    HarmonicBalancePoint point;
+    point.q = y.head(n) * q_scale;
+    point.omega = y[n] * omega_ref;
+    point.converged = true;
+    point.iterations = iterations;
+    point.residual = norm;
+    const Eigen::VectorXd t_new = tangent(point.q, point.omega, t);
+    if (t_new[n] * t[n] < 0.0) {  // ω turned back: a fold between the last two points
+      ++branch;
+      out.folds.push_back(out.points.size() - 1);
+    }
+    arclength += step;
+    if (options.stability) hbm.stability(point);
+    out.points.push_back({point, branch, arclength});
+    t = t_new;
+    z = y;
+    if (iterations <= 3) step = std::min(step * 1.6, max_step);
+    if (iterations >= 8) step = std::max(step * 0.5, min_step);
+    if ((point.omega - options.stop) * direction >= 0.0) {
+      out.completed = true;
+      out.message = fmt::format("{} points, {} folds, {} step cuts", out.points.size(),
+                                out.folds.size(), out.failures);
+      return out;
+    }
+  }
+  out.message = fmt::format("stopped after the maximum of {} points", options.max_points);
+  return out;
+}
+
+}  // namespace geardyn
