@@ -2,6 +2,7 @@
 
 #include "command.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/hbm_io.h"
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
 #include "geardyn/io/stiffness_io.h"
@@ -12,6 +13,7 @@ int runGeometry(const io::Config& config, const CommandOptions& options);
 int runStiffness(const io::Config& config, const CommandOptions& options);
 int runSimulate(const io::Config& config, const CommandOptions& options);
 int runStats(const io::Config& config, const CommandOptions& options);
+int runHbm(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
@@ -29,6 +31,10 @@ std::vector<Command> allCommands() {
        "statistics of the dynamic mean excitation (Gelman 2005): mean excitation ratio R from "
        "the model or from moments, with a simulated check",
        io::statsSchema, runStats},
+      {"hbm",
+       "harmonic-balance forced response (AFT) continued in frequency through folds, with Hill "
+       "stability and Newmark checks",
+       io::hbmSchema, runHbm},
   };
 }
 

@@ -230,8 +230,70 @@ def plot_stats(result_dir):
     return [_save_atomically(figure, folder / "mean_excitation_ratio.png")]
 
 
+def plot_hbm(result_dir):
+    """forced_response.png: peak-to-peak relative deflection against the mesh frequency, stable
+    branches solid, unstable dashed, folds marked, Newmark points overlaid; details.png: one
+    period of response, contact force and mesh stiffness F/y at the requested frequencies (as
+    Saletti et al. 2025, Figs. 7-10)."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    results = summary["results"]
+    si = summary["config"]["model"]["units"] == "SI"
+    unit = 1e6 if si else 1.0
+    with open(folder / "sweep.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    figure, ax = plt.subplots(figsize=(9, 5))
+    colours = {"up": "tab:blue", "down": "tab:orange"}
+    for sweep in ("up", "down"):
+        points = [r for r in rows if r["sweep"] == sweep]
+        segment = []
+        for i, r in enumerate(points):
+            segment.append(r)
+            last = i == len(points) - 1
+            if last or points[i + 1]["stable"] != r["stable"]:
+                if not last:
+                    segment.append(points[i + 1])
+                ax.plot([float(p["frequency"]) for p in segment], [float(p["p2p"]) * unit for p in segment],
+                        color=colours[sweep], lw=1.2, ls="-" if r["stable"] == "1" else "--",
+                        label=f"HBM, sweep {sweep}" if not any(l.get_label() == f"HBM, sweep {sweep}" for l in ax.lines) else None)
+                segment = []
+    for fold in results.get("folds", []):
+        ax.plot(fold["frequency"], fold["p2p"] * unit, "kx", ms=5)
+    checks = results.get("newmark_checks", [])
+    if checks:
+        ax.plot([c["frequency"] for c in checks], [c["p2p_newmark"] * unit for c in checks], "ko", mfc="none",
+                label="Newmark (time integration)")
+    ax.set_xlabel("mesh frequency [Hz]" if si else "Omega = omega_m / omega_n")
+    ax.set_ylabel("peak-to-peak y [um]" if si else "peak-to-peak y [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    title = summary["config"].get("title") or "forced response"
+    ax.set_title(f"{title}\nH = {results['harmonics']}: solid stable, dashed unstable, x folds", fontsize=9)
+    figure.tight_layout()
+    written = [_save_atomically(figure, folder / "forced_response.png")]
+    details = results.get("details", [])
+    if details:
+        figure, axes = plt.subplots(len(details), 3, figsize=(12, 2.2 * len(details)), squeeze=False)
+        for row, detail in zip(axes, details):
+            table = _read_columns(folder / detail["file"])
+            tau = table["tau"]
+            row[0].plot(tau, [v * unit for v in table["y"]])
+            row[1].plot(tau, table["mesh_force"], color="tab:red")
+            row[2].plot(tau, [k / 1e8 for k in table["mesh_stiffness"]], color="tab:green")
+            state = "stable" if detail["stable"] else "unstable"
+            row[0].set_ylabel(f"{detail['frequency']:g} Hz\n{state}", fontsize=8)
+        axes[0][0].set_title("relative deflection y [um]", fontsize=9)
+        axes[0][1].set_title("contact force [N]", fontsize=9)
+        axes[0][2].set_title("mesh stiffness F/y [1e8 N/m]", fontsize=9)
+        for ax in axes[-1]:
+            ax.set_xlabel("tau = omega t [rad]")
+        figure.tight_layout()
+        written.append(_save_atomically(figure, folder / "details.png"))
+    return written
+
+
 PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
-            "stats": plot_stats}
+            "stats": plot_stats, "hbm": plot_hbm}
 
 
 def main(argv=None):

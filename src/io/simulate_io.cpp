@@ -53,19 +53,42 @@ Json statistics(const std::vector<double>& values, int samples_per_period, int h
 
 }  // namespace
 
-GearPairModelBuild buildGearPairModel(const Config& config) {
+GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) {
   GearPairModelBuild b;
   b.nondimensional = config.string("model.units") == "nondimensional";
   std::optional<GearPair> pair;
   if (hasGearPair(config)) pair.emplace(gearPairSpecFromConfig(config));
 
   // Stiffness.
-  const std::string type = config.string("model.stiffness.type");
+  const bool contacts = config.string("model.type") == "gear_pair_contacts";
+  const std::string type = contacts ? "contacts" : config.string("model.stiffness.type");
   const double contact_ratio = config.has("model.stiffness.contact_ratio")
                                    ? config.real("model.stiffness.contact_ratio")
                                : pair ? pair->contactRatioTotal()
                                       : 1.0;
-  if (type == "fourier") {
+  if (contacts) {
+    // Saletti et al. 2025 (eqs. 13–14, Figs. 3–4): n_c = ⌈ε⌉ + 1 elements of stiffness k_c, each
+    // with a gap that is 0 in its contact window (length ε T_m, shifted by T_m from element to
+    // element) and open outside it. With Saletti's x (positive when the teeth separate) the
+    // element force is −k_c (x + g) for x + g < 0. In our deflection y = −x (> 0 when loaded)
+    // the elements in their windows add up to k(t) max(0, y) with k(t) = k_c × (windows open at
+    // t): exactly our model with a one-sided contact and the step stiffness n k_c / (n+1) k_c.
+    if (!config.has("model.contact_stiffness")) {
+      throw InputError("model.contact_stiffness", "",
+                       "required for type = \"gear_pair_contacts\" [N/m]");
+    }
+    if (!config.has("model.stiffness.contact_ratio") && !pair) {
+      throw InputError("model.stiffness.contact_ratio", "",
+                       "required for type = \"gear_pair_contacts\" without a gear pair");
+    }
+    const double k_c = config.real("model.contact_stiffness");
+    const double n = std::floor(contact_ratio);
+    b.spec.stiffness = std::make_shared<StepMeshStiffness>(n * k_c, (n + 1.0) * k_c, contact_ratio);
+    if (config.string("model.contact") != "one_sided") {
+      b.warnings.push_back(
+          "gear_pair_contacts uses the elements' one-sided contact; model.contact is ignored");
+    }
+  } else if (type == "fourier") {
     auto c = config.realList("model.stiffness.cos");
     auto s = config.realList("model.stiffness.sin");
     if (s.empty()) s.assign(c.size(), 0.0);  // only cosines given
@@ -168,7 +191,8 @@ GearPairModelBuild buildGearPairModel(const Config& config) {
           ? config.real("model.mean_force")
           : config.real("model.pinion_torque") / base_radius("model.pinion_base_radius", true);
 
-  b.spec.contact = config.string("model.contact") == "linear"      ? ContactLaw::kLinear
+  b.spec.contact = contacts                                        ? ContactLaw::kOneSided
+                   : config.string("model.contact") == "linear"    ? ContactLaw::kLinear
                    : config.string("model.contact") == "one_sided" ? ContactLaw::kOneSided
                                                                    : ContactLaw::kBacklash;
   b.spec.backlash = config.real("model.backlash");
@@ -176,14 +200,20 @@ GearPairModelBuild buildGearPairModel(const Config& config) {
     b.warnings.push_back("model.backlash is ignored unless model.contact = \"backlash\"");
   }
 
-  // Speed.
-  if (config.has("excitation.mesh_frequency") == config.has("excitation.speed_rpm")) {
+  // Speed (not needed when the caller sweeps the frequency).
+  if (!require_speed && !config.has("excitation.mesh_frequency") &&
+      !config.has("excitation.speed_rpm")) {
+    b.spec.mesh_frequency = 0.0;
+  } else if (config.has("excitation.mesh_frequency") == config.has("excitation.speed_rpm")) {
     throw InputError("excitation.mesh_frequency", "",
                      config.has("excitation.speed_rpm")
                          ? "give mesh_frequency or speed_rpm, not both"
                          : "required (or excitation.speed_rpm)");
   }
-  if (config.has("excitation.mesh_frequency")) {
+  if (!require_speed && !config.has("excitation.mesh_frequency") &&
+      !config.has("excitation.speed_rpm")) {
+    // no speed: the caller sets it
+  } else if (config.has("excitation.mesh_frequency")) {
     const double f = config.real("excitation.mesh_frequency");
     b.spec.mesh_frequency = b.nondimensional ? f / kTwoPi : f;  // Ω in rad per unit t₁
   } else {
@@ -229,7 +259,7 @@ GearPairModelBuild buildGearPairModel(const Config& config) {
 
   // Time step against the mesh and natural periods.
   const int steps = static_cast<int>(config.integer("solver.steps_per_period"));
-  if (config.string("solver.method") == "newmark" && steps < 10) {
+  if (config.string("solver.method") == "newmark" && steps < 10 && b.spec.mesh_frequency > 0.0) {
     b.warnings.push_back(
         fmt::format("time step = mesh period / {} is larger than a tenth of the mesh period: raise "
                     "solver.steps_per_period to at least 10 (128 or more for the harmonics)",

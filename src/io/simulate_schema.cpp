@@ -15,7 +15,17 @@ using Json = nlohmann::ordered_json;
 void addGearPairModelSections(ConfigSchema& schema) {
   schema.section(
       "model", "The dynamic model: a single-DOF gear pair along the line of action (Gelman 2005).");
-  schema.string("model.type").choices({"gear_pair"}).defaultValue("gear_pair").doc("model type");
+  schema.string("model.type")
+      .choices({"gear_pair", "gear_pair_contacts"})
+      .defaultValue("gear_pair")
+      .doc(
+          "gear_pair, or gear_pair_contacts: Saletti's tooth-pair contact elements of stiffness "
+          "contact_stiffness");
+  schema.real("model.contact_stiffness")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("gear_pair_contacts: penalty stiffness k_c of each tooth-pair element");
   schema.string("model.units")
       .choices({"SI", "nondimensional"})
       .defaultValue("SI")

@@ -38,7 +38,8 @@ struct GearPairModelBuild {
   bool nondimensional = false;
   std::vector<std::string> warnings;
 };
-GearPairModelBuild buildGearPairModel(const Config& config);
+/// `require_speed` false: [excitation] may be left out (harmonic balance sweeps the frequency).
+GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed = true);
 
 TimeResponseOptions timeResponseOptionsFromConfig(const Config& config);
 

@@ -1,0 +1,210 @@
+/// `geardyn hbm CONFIG`: harmonic-balance forced response swept in frequency.
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "command.h"
+#include "geardyn/error.h"
+#include "geardyn/io/hbm_io.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/result_writer.h"
+#include "geardyn/io/simulate_io.h"
+#include "plotting.h"
+
+namespace geardyn::cli {
+namespace {
+
+/// p2p of the stable branches of one sweep at frequency f (linear interpolation between
+/// consecutive stable points that bracket it).
+std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f) {
+  std::vector<double> values;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& a = rows[i - 1];
+    const auto& b = rows[i];
+    if (a.sweep != b.sweep || !a.stable || !b.stable) continue;
+    if ((a.frequency - f) * (b.frequency - f) > 0.0 || a.frequency == b.frequency) continue;
+    const double w = (f - a.frequency) / (b.frequency - a.frequency);
+    values.push_back(a.p2p + w * (b.p2p - a.p2p));
+  }
+  return values;
+}
+
+}  // namespace
+
+int runHbm(const io::Config& config, const CommandOptions& options) {
+  const io::GearPairModelBuild build = io::buildGearPairModel(config, false);
+  std::vector<std::string> warnings = build.warnings;
+  const GearPairModel model(build.spec);
+  const HarmonicBalanceOptions hbm_options = io::harmonicBalanceOptionsFromConfig(config);
+  HarmonicBalance hbm(model, hbm_options);
+  const double scale = build.nondimensional ? 1.0 : 2.0 * std::numbers::pi;  // ω = scale · f
+
+  ContinuationOptions sweep;
+  sweep.initial_step = config.real("sweep.initial_step") * scale;
+  sweep.min_step = config.real("sweep.min_step") * scale;
+  sweep.max_step = config.real("sweep.max_step") * scale;
+  sweep.stability = config.boolean("sweep.stability");
+  const double start = config.real("sweep.start"), stop = config.real("sweep.stop");
+  if (!(stop > start)) {
+    throw InputError("sweep.stop", fmt::format("{:g}", stop),
+                     fmt::format("must exceed sweep.start = {:g}", start));
+  }
+  const std::string direction = config.string("sweep.direction");
+  std::vector<std::pair<std::string, ContinuationResult>> runs;
+  for (const std::string which : {"up", "down"}) {
+    if (direction != "both" && direction != which) continue;
+    sweep.start = (which == "up" ? start : stop) * scale;
+    sweep.stop = (which == "up" ? stop : start) * scale;
+    runs.emplace_back(which, continueInFrequency(hbm, sweep));
+  }
+
+  std::vector<io::SweepRow> rows;
+  nlohmann::ordered_json folds = nlohmann::ordered_json::array();
+  int failures = 0, points = 0;
+  bool completed = true;
+  nlohmann::ordered_json sweeps = nlohmann::ordered_json::object();
+  for (auto& [which, run] : runs) {
+    const std::size_t first = rows.size();
+    for (const auto& p : run.points) rows.push_back(io::sweepRow(hbm, model, p, which, scale));
+    for (std::size_t index : run.folds) {
+      folds.push_back({{"sweep", which},
+                       {"frequency", rows[first + index].frequency},
+                       {"p2p", rows[first + index].p2p}});
+    }
+    failures += run.failures;
+    points += static_cast<int>(run.points.size());
+    completed = completed && run.completed;
+    sweeps[which] = {{"points", run.points.size()},
+                     {"completed", run.completed},
+                     {"folds", run.folds.size()},
+                     {"step_cuts", run.failures},
+                     {"message", run.message}};
+    if (!run.completed) std::cerr << "geardyn hbm: sweep " << which << ": " << run.message << "\n";
+  }
+
+  io::RunSummary summary;
+  summary.command = "hbm";
+  summary.config_source = options.config_file.string();
+  summary.config = config.resolved();
+  summary.status = completed ? "ok" : "incomplete_sweep";
+  nlohmann::ordered_json peak;
+  for (const auto& r : rows) {
+    if (peak.is_null() || r.p2p > peak["p2p"].get<double>())
+      peak = {{"frequency", r.frequency}, {"p2p", r.p2p}, {"stable", r.stable}};
+  }
+  summary.results = {{"points", points},
+                     {"folds", folds},
+                     {"peak", peak},
+                     {"failures", failures},
+                     {"sweeps", sweeps},
+                     {"harmonics", hbm_options.harmonics},
+                     {"samples_per_period", hbm_options.samples_per_period},
+                     {"natural_frequency", build.natural_frequency / scale}};
+
+  io::ResultWriter writer(options.resultFolder());
+  writer.writeCsv("sweep.csv", io::sweepTable(rows, hbm_options.harmonics));
+
+  // Newmark checks at requested frequencies.
+  const auto newmark_frequencies = config.realList("sweep.newmark_frequencies");
+  if (!newmark_frequencies.empty()) {
+    io::CsvTable table({"frequency", "p2p_newmark", "p2p_hbm", "relative_difference", "status"});
+    nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+    for (double f : newmark_frequencies) {
+      GearPairModelSpec spec = model.spec();
+      spec.mesh_frequency = f * scale / (2.0 * std::numbers::pi);
+      const GearPairModel at(spec);
+      const TimeResponse r = solveTimeResponse(at, io::timeResponseOptionsFromConfig(config));
+      const io::TimeResponseChannels c = io::channelsOf(at, r);
+      const double p2p =
+          *std::max_element(c.y.begin(), c.y.end()) - *std::min_element(c.y.begin(), c.y.end());
+      const auto candidates = stableP2pAt(rows, f);
+      double best = NAN;
+      for (double v : candidates) {
+        if (std::isnan(best) || std::abs(v - p2p) < std::abs(best - p2p)) best = v;
+      }
+      const double difference = std::isnan(best) ? NAN : best / p2p - 1.0;
+      table.addRow({f, p2p, best, difference, toString(r.status)});
+      checks.push_back(
+          {{"frequency", f},
+           {"p2p_newmark", p2p},
+           {"p2p_hbm",
+            std::isnan(best) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(best)},
+           {"relative_difference", std::isnan(difference) ? nlohmann::ordered_json(nullptr)
+                                                          : nlohmann::ordered_json(difference)},
+           {"status", toString(r.status)}});
+    }
+    writer.writeCsv("newmark.csv", table);
+    summary.results["newmark_checks"] = checks;
+  }
+
+  // One period at requested frequencies: every solution on the sweeps there.
+  int detail = 0;
+  for (double f : config.realList("hbm.detail_frequencies")) {
+    std::vector<double> found;  // p2p of the solutions written at f (the sweeps meet the same ones)
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      if (rows[i].sweep != rows[i - 1].sweep ||
+          (rows[i - 1].frequency - f) * (rows[i].frequency - f) > 0.0)
+        continue;
+      // Guess: interpolate the neighbours' coefficients, then solve at f.
+      const auto& run = runs[rows[i].sweep == runs.front().first ? 0 : 1].second;
+      const std::size_t first =
+          rows[i].sweep == runs.front().first ? 0 : runs.front().second.points.size();
+      const auto& a = run.points[i - 1 - first].solution;
+      const auto& b = run.points[i - first].solution;
+      const double w = (f * scale - a.omega) / (b.omega - a.omega);
+      HarmonicBalancePoint point;
+      point.omega = f * scale;
+      point.q = a.q + w * (b.q - a.q);
+      hbm.solve(point);
+      if (!point.converged) continue;
+      if (config.boolean("sweep.stability")) hbm.stability(point);
+      const auto x = hbm.timeSignal(point.q);
+      const double p2p =
+          *std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end());
+      if (std::any_of(found.begin(), found.end(),
+                      [&](double v) { return std::abs(v - p2p) <= 1e-6 * p2p; }))
+        continue;
+      found.push_back(p2p);
+      const auto force = hbm.meshForceSignal(point.q, point.omega);
+      io::CsvTable table({"tau", "t", "x", "y", "mesh_force", "mesh_stiffness"});
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        const double phase = static_cast<double>(k) / x.size();
+        const double y = x[k] - model.transmissionError().value(model.spec().initial_phase + phase);
+        table.addRow({2.0 * std::numbers::pi * phase, 2.0 * std::numbers::pi * phase / point.omega,
+                      x[k], y, force[k], y != 0.0 ? force[k] / y : 0.0});
+      }
+      const std::string name = fmt::format("period_{}_{}.csv", detail++, rows[i].sweep);
+      writer.writeCsv(name, table);
+      summary.results["details"].push_back(
+          {{"file", name}, {"frequency", f}, {"stable", point.stable}, {"p2p", p2p}});
+    }
+  }
+
+  summary.warnings = warnings;
+  for (const auto& warning : warnings) std::cerr << "warning: " << warning << "\n";
+  auto path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    for (const auto& file : drawPlots("hbm", writer.folder())) writer.recordFile(file);
+    path = writer.writeSummary(summary);
+  }
+  std::string text = fmt::format(
+      "harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
+      hbm_options.harmonics, hbm_options.samples_per_period, points, folds.size(), failures);
+  if (!peak.is_null()) {
+    text += fmt::format("  peak p2p {:.6g} at {:.6g}\n", peak["p2p"].get<double>(),
+                        peak["frequency"].get<double>());
+  }
+  for (const auto& fold : folds) {
+    text +=
+        fmt::format("  fold ({} sweep) at {:.6g}, p2p {:.6g}\n", fold["sweep"].get<std::string>(),
+                    fold["frequency"].get<double>(), fold["p2p"].get<double>());
+  }
+  text += fmt::format("results: {}\n", path.string());
+  report(options, text);
+  return completed ? kExitOk : kExitNumericalFailure;
+}
+
+}  // namespace geardyn::cli

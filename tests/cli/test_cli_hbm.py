@@ -1,0 +1,84 @@
+"""geardyn hbm on the Saletti (2025) contact-element model: complete curves, folds, stability,
+Newmark checks, one-period details; bad input."""
+
+import csv
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
+SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+EXAMPLE = SOURCE / "examples" / "hbm_saletti2025_100Nm.toml"
+
+
+def run(*args):
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=300)
+
+
+@pytest.fixture(scope="module")
+def sweep(tmp_path_factory):
+    out = tmp_path_factory.mktemp("hbm")
+    result = run("hbm", EXAMPLE, "--out", out, "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    return out, json.loads((out / "summary.json").read_text())["results"]
+
+
+def test_complete_curves_through_every_fold(sweep):
+    out, results = sweep
+    assert results["sweeps"]["up"]["completed"] and results["sweeps"]["down"]["completed"]
+    assert results["failures"] == 0
+    # Softening primary resonance (two folds) and the superharmonic's folds, met by both sweeps.
+    up = [f["frequency"] for f in results["folds"] if f["sweep"] == "up"]
+    down = [f["frequency"] for f in results["folds"] if f["sweep"] == "down"]
+    assert len(up) == len(down) >= 4
+    assert sorted(up) == pytest.approx(sorted(down), rel=1e-3)
+    assert any(1550 < f < 1700 for f in up) and any(2150 < f < 2300 for f in up)
+    with open(out / "sweep.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert list(rows[0])[:10] == ["frequency", "branch", "p2p", "mean", "max", "min", "rms", "stable",
+                                  "newton_iterations", "contact_loss"]
+    assert "h14" in rows[0] and "h15" not in rows[0]
+    assert any(r["stable"] == "0" for r in rows)  # the unstable middle branch is traced
+
+
+def test_newmark_agrees_with_the_stable_branches(sweep):
+    _, results = sweep
+    checks = results["newmark_checks"]
+    assert [c["frequency"] for c in checks] == [1250.0, 1850.0, 3250.0]
+    for check in checks:
+        assert check["status"] == "converged"
+        assert abs(check["relative_difference"]) < 0.01, check
+
+
+def test_paper_observations_in_the_details(sweep):
+    out, results = sweep
+    details = results["details"]
+    at = {}
+    for d in details:
+        at.setdefault(d["frequency"], []).append(d)
+    # 1850 Hz: two stable solutions (low and high) and the unstable one between them.
+    assert sorted(d["stable"] for d in at[1850.0]) == [False, True, True]
+
+    def levels(detail):
+        with open(out / detail["file"], newline="") as handle:
+            return {round(float(r["mesh_stiffness"]) / 2.6e8, 6) for r in csv.DictReader(handle)}
+
+    # 3250 Hz: the mesh stiffness alternates k_c and 2 k_c; 1250 Hz: it also drops to 0.
+    assert levels(at[3250.0][0]) == {1.0, 2.0}
+    assert 0.0 in levels(at[1250.0][0])
+
+
+@pytest.mark.parametrize("override, expected", [
+    ("hbm.samples_per_period=28", "must exceed 2H = 28"),
+    ("sweep.stop=400", "sweep.stop = 400: must exceed sweep.start = 500"),
+    ("sweep.min_step=0", "sweep.min_step = 0: must be a number > 0"),
+    ("model.stiffness.contact_ratio=0.9", "model.stiffness.contact_ratio = 0.9"),
+    ("hbm.harmonics=0", "hbm.harmonics = 0"),
+])
+def test_bad_input_exits_2(tmp_path, override, expected):
+    result = run("hbm", EXAMPLE, "--out", tmp_path, "--set", override)
+    assert result.returncode == 2, result.stderr
+    assert expected in result.stderr
