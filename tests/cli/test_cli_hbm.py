@@ -82,3 +82,16 @@ def test_bad_input_exits_2(tmp_path, override, expected):
     result = run("hbm", EXAMPLE, "--out", tmp_path, "--set", override)
     assert result.returncode == 2, result.stderr
     assert expected in result.stderr
+
+
+def test_backlash_softening_resonance_has_both_jumps(tmp_path):
+    result = run("hbm", SOURCE / "examples" / "hbm_backlash_kahraman_singh.toml", "--out", tmp_path,
+                 "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    results = json.loads((tmp_path / "summary.json").read_text())["results"]
+    for sweep in ("up", "down"):
+        folds = sorted(f["frequency"] for f in results["folds"] if f["sweep"] == sweep)
+        # Softening: the jump-down fold (end of the high branch) lies below the jump-up fold.
+        assert len(folds) == 2 and folds[0] < folds[1] < 1.0
+    assert results["peak"]["frequency"] < 1.0  # the peak bends to lower frequencies
+    assert all(abs(c["relative_difference"]) < 0.01 for c in results["newmark_checks"])
