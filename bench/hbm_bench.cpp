@@ -40,7 +40,9 @@ void BM_HbmContinuationPoint(benchmark::State& state) {
   sweep.initial_step = 0.002;
   sweep.min_step = 1e-6;
   sweep.max_step = 0.01;
-  sweep.stability = state.range(0) == 1;
+  sweep.stability = state.range(0) > 0;
+  sweep.stability_method =
+      state.range(0) == 2 ? geardyn::StabilityMethod::kMonodromy : geardyn::StabilityMethod::kHill;
   long long points = 0;
   for (auto _ : state) {
     const auto result = geardyn::continueInFrequency(hbm, sweep);

@@ -47,6 +47,9 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
   sweep.min_step = config.real("sweep.min_step") * scale;
   sweep.max_step = config.real("sweep.max_step") * scale;
   sweep.stability = config.boolean("sweep.stability");
+  sweep.stability_method = config.string("sweep.stability_method") == "hill"
+                               ? StabilityMethod::kHill
+                               : StabilityMethod::kMonodromy;
   const double start = config.real("sweep.start"), stop = config.real("sweep.stop");
   if (!(stop > start)) {
     throw InputError("sweep.stop", fmt::format("{:g}", stop),
@@ -160,7 +163,10 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
       point.q = a.q + w * (b.q - a.q);
       hbm.solve(point);
       if (!point.converged) continue;
-      if (config.boolean("sweep.stability")) hbm.stability(point);
+      if (config.boolean("sweep.stability")) {
+        sweep.stability_method == StabilityMethod::kHill ? hbm.stability(point)
+                                                         : hbm.stabilityMonodromy(point);
+      }
       const auto x = hbm.timeSignal(point.q);
       const double p2p =
           *std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end());

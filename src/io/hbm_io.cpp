@@ -55,7 +55,13 @@ ConfigSchema hbmSchema() {
       .choices({"up", "down", "both"})
       .defaultValue("both")
       .doc("sweep up from start, down from stop, or both");
-  schema.boolean("sweep.stability").defaultValue(true).doc("Hill stability of every point");
+  schema.boolean("sweep.stability").defaultValue(true).doc("stability of every point");
+  schema.string("sweep.stability_method")
+      .choices({"hill", "monodromy"})
+      .defaultValue("hill")
+      .doc(
+          "Hill's method (sorted Floquet exponents), or the sampled monodromy matrix (~20x "
+          "cheaper)");
   schema.realList("sweep.newmark_frequencies")
       .unit("Hz")
       .min(0.0)
@@ -103,16 +109,13 @@ SweepRow sweepRow(HarmonicBalance& hbm, const GearPairModel& model, const SweepP
   row.rms = std::sqrt(row.rms);
   row.p2p = row.max - row.min;
   row.contact_loss = static_cast<double>(lost) / n;
-  // Harmonic amplitudes of y over the samples.
-  const int harmonics = hbm.harmonics();
-  for (int h = 0; h <= harmonics; ++h) {
-    double a = 0.0, b = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const double tau = 2.0 * M_PI * h * i / n;
-      a += y[i] * std::cos(tau);
-      b += y[i] * std::sin(tau);
-    }
-    row.harmonics.push_back(h == 0 ? std::abs(a) / n : 2.0 * std::hypot(a, b) / n);
+  // Harmonic amplitudes of y = x − e from the samples by one real FFT (y is band-limited to
+  // the H harmonics of x plus those of e, sampled well above Nyquist).
+  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(2 * hbm.harmonics() + 1);
+  hbm.coefficientsOf(y, coefficients);
+  row.harmonics.push_back(std::abs(coefficients[0]));
+  for (int h = 1; h <= hbm.harmonics(); ++h) {
+    row.harmonics.push_back(std::hypot(coefficients[2 * h - 1], coefficients[2 * h]));
   }
   return row;
 }

@@ -88,14 +88,26 @@ void HarmonicBalance::forward(const double* samples, Eigen::VectorXd& c, int cou
   }
 }
 
-std::vector<double> HarmonicBalance::timeSignal(const Eigen::VectorXd& q) const {
-  std::vector<double> x(samples_, q[0]);
-  for (int i = 0; i < samples_; ++i) {
-    const double tau = kTwoPi * i / samples_;
-    for (int h = 1; h <= h_; ++h)
-      x[i] += q[cosIndex(h)] * std::cos(h * tau) + q[sinIndex(h)] * std::sin(h * tau);
+void HarmonicBalance::inverseToBuffer(const Eigen::VectorXd& q) {
+  // Inverse real FFT (the plan made once); harmonic h goes to bin h as (a_h − i b_h)/2, so that
+  // FFTW's c2r sum gives a₀ + Σ a_h cos hτ + b_h sin hτ in real_buffer_.
+  complex_buffer_[0][0] = q[0];
+  complex_buffer_[0][1] = 0.0;
+  for (int k = 1; k <= samples_ / 2; ++k) {
+    complex_buffer_[k][0] = 0.0;
+    complex_buffer_[k][1] = 0.0;
   }
-  return x;
+  for (int h = 1; h <= h_; ++h) {
+    complex_buffer_[h][0] = 0.5 * q[cosIndex(h)];
+    complex_buffer_[h][1] = -0.5 * q[sinIndex(h)];
+  }
+  fftw_execute(inverse_plan_);
+}
+
+std::vector<double> HarmonicBalance::timeSignal(const Eigen::VectorXd& q) const {
+  auto* self = const_cast<HarmonicBalance*>(this);  // the FFT buffers are scratch space
+  self->inverseToBuffer(q);
+  return std::vector<double>(real_buffer_, real_buffer_ + samples_);
 }
 
 std::vector<double> HarmonicBalance::meshForceSignal(const Eigen::VectorXd& q, double) const {
@@ -145,17 +157,7 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
                                Eigen::MatrixXd* dr_dq, Eigen::VectorXd* dr_domega) {
   const double m = model_.mass(), c = model_.damping();
   // AFT: coefficients → samples (inverse real FFT), force in the time domain, back.
-  complex_buffer_[0][0] = q[0];
-  complex_buffer_[0][1] = 0.0;
-  for (int k = 1; k <= samples_ / 2; ++k) {
-    complex_buffer_[k][0] = 0.0;
-    complex_buffer_[k][1] = 0.0;
-  }
-  for (int h = 1; h <= h_; ++h) {
-    complex_buffer_[h][0] = 0.5 * q[cosIndex(h)];
-    complex_buffer_[h][1] = -0.5 * q[sinIndex(h)];
-  }
-  fftw_execute(inverse_plan_);
+  inverseToBuffer(q);
   for (int i = 0; i < samples_; ++i) {
     double slope = 1.0;
     const double y = real_buffer_[i] - error_[i];
@@ -293,6 +295,43 @@ void HarmonicBalance::stability(HarmonicBalancePoint& point) {
   point.stable = point.max_floquet_real < 1e-9 * point.omega;
 }
 
+void HarmonicBalance::stabilityMonodromy(HarmonicBalancePoint& point) {
+  // df/dy at the samples of the solution.
+  Eigen::VectorXd r;
+  residual(point.q, point.omega, r, nullptr, nullptr);  // fills df_ for this q
+  const double m = model_.mass(), c = model_.damping();
+  const double T = kTwoPi / point.omega, h = T / samples_;
+  const double half_gamma = 0.5 * c / m;
+  Eigen::Matrix2d phi = Eigen::Matrix2d::Identity();
+  for (int i = 0; i < samples_; ++i) {
+    // exp(A h), A = [[0, 1], [−κ, −γ]]: e^{−γh/2} [C I + S (A + γ/2 I)] with s² = γ²/4 − κ,
+    // C = cosh(sh) or cos, S = sinh(sh)/s or sin(|s|h)/|s|.
+    const double kappa = df_[i] / m;
+    const double s2 = half_gamma * half_gamma - kappa;
+    double cs, sn;
+    if (s2 > 1e-300) {
+      const double s = std::sqrt(s2);
+      cs = std::cosh(s * h);
+      sn = std::sinh(s * h) / s;
+    } else if (s2 < -1e-300) {
+      const double s = std::sqrt(-s2);
+      cs = std::cos(s * h);
+      sn = std::sin(s * h) / s;
+    } else {
+      cs = 1.0;
+      sn = h;
+    }
+    Eigen::Matrix2d step;
+    step << cs + sn * half_gamma, sn, -sn * kappa, cs - sn * half_gamma;
+    phi = (std::exp(-half_gamma * h) * step) * phi;
+  }
+  const Eigen::EigenSolver<Eigen::Matrix2d> eig(phi, false);
+  double largest = 0.0;
+  for (int j = 0; j < 2; ++j) largest = std::max(largest, std::abs(eig.eigenvalues()[j]));
+  point.max_floquet_real = std::log(largest) / T;
+  point.stable = largest < 1.0 + 1e-9;
+}
+
 void ContinuationOptions::validate() const {
   if (!(start > 0.0) || !std::isfinite(start))
     throw InputError("sweep.start", fmt::format("{:g}", start), "must be finite and > 0");
@@ -346,7 +385,15 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
     return Eigen::VectorXd(t / t.norm());
   };
 
-  if (options.stability) hbm.stability(first);
+  const auto classify = [&](HarmonicBalancePoint& p) {
+    if (!options.stability) return;
+    if (options.stability_method == StabilityMethod::kHill) {
+      hbm.stability(p);
+    } else {
+      hbm.stabilityMonodromy(p);
+    }
+  };
+  classify(first);
   out.points.push_back({first, 0, 0.0});
   Eigen::VectorXd seed = Eigen::VectorXd::Zero(n + 1);
   seed[n] = direction;
@@ -412,12 +459,12 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
       out.folds.push_back(out.points.size() - 1);
     }
     arclength += step;
-    if (options.stability) hbm.stability(point);
+    classify(point);
     out.points.push_back({point, branch, arclength});
     t = t_new;
     z = y;
-    if (iterations <= 3) step = std::min(step * 1.6, max_step);
-    if (iterations >= 8) step = std::max(step * 0.5, min_step);
+    if (iterations <= 4) step = std::min(step * 1.5, max_step);
+    if (iterations >= 10) step = std::max(step * 0.5, min_step);
     if ((point.omega - options.stop) * direction >= 0.0) {
       out.completed = true;
       out.message = fmt::format("{} points, {} folds, {} step cuts", out.points.size(),

@@ -5,6 +5,7 @@
 // and the jump frequencies within 1 % of the folds. Prints the timings of both methods.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -33,6 +34,7 @@ GearPairModelSpec saletti(double torque) {
 struct Branch {
   std::vector<double> f, p2p;
   std::vector<bool> stable;
+  std::vector<Eigen::VectorXd> q;
 };
 
 Branch trace(HarmonicBalance& hbm, double from, double to, std::vector<double>& folds) {
@@ -41,7 +43,8 @@ Branch trace(HarmonicBalance& hbm, double from, double to, std::vector<double>& 
   sweep.stop = kTwoPi * to;
   sweep.initial_step = kTwoPi * 5;
   sweep.min_step = kTwoPi * 0.01;
-  sweep.max_step = kTwoPi * 40;
+  sweep.max_step = kTwoPi * 200;
+  sweep.stability_method = StabilityMethod::kMonodromy;  // Hill's agreement: unit tests
   const ContinuationResult result = continueInFrequency(hbm, sweep);
   EXPECT_TRUE(result.completed) << result.message;
   Branch b;
@@ -50,20 +53,30 @@ Branch trace(HarmonicBalance& hbm, double from, double to, std::vector<double>& 
     b.f.push_back(p.solution.omega / kTwoPi);
     b.p2p.push_back(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
     b.stable.push_back(p.solution.stable);
+    b.q.push_back(p.solution.q);
   }
   for (std::size_t i : result.folds) folds.push_back(b.f[i]);
   return b;
 }
 
-/// Stable HBM values at f (interpolated on stable segments).
-std::vector<double> stableAt(const Branch& b, double f) {
+/// The stable HBM solutions at f: on every stable segment of the curve that brackets f, solved
+/// exactly at f from the neighbours' interpolated coefficients.
+std::vector<double> stableAt(HarmonicBalance& hbm, const Branch& b, double f) {
   std::vector<double> out;
   for (std::size_t i = 1; i < b.f.size(); ++i) {
     if (!b.stable[i] || !b.stable[i - 1] || (b.f[i - 1] - f) * (b.f[i] - f) > 0 ||
-        b.f[i] == b.f[i - 1])
+        b.f[i] == b.f[i - 1]) {
       continue;
-    out.push_back(b.p2p[i - 1] +
-                  (f - b.f[i - 1]) / (b.f[i] - b.f[i - 1]) * (b.p2p[i] - b.p2p[i - 1]));
+    }
+    HarmonicBalancePoint point;
+    point.omega = kTwoPi * f;
+    point.q = b.q[i - 1] + (f - b.f[i - 1]) / (b.f[i] - b.f[i - 1]) * (b.q[i] - b.q[i - 1]);
+    hbm.solve(point);
+    if (!point.converged) continue;
+    hbm.stabilityMonodromy(point);
+    if (!point.stable) continue;
+    const auto x = hbm.timeSignal(point.q);
+    out.push_back(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
   }
   return out;
 }
@@ -116,7 +129,7 @@ TEST(SalettiValidation, HarmonicBalanceAgainstNewmarkSweeps) {
         if (!r.converged()) continue;
         p2p[i] =
             *std::max_element(r.x.begin(), r.x.end()) - *std::min_element(r.x.begin(), r.x.end());
-        const auto candidates = stableAt(upward ? up : down, frequencies[i]);
+        const auto candidates = stableAt(hbm, upward ? up : down, frequencies[i]);
         if (candidates.empty()) continue;
         double best = candidates[0];
         for (double c : candidates) {

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <numbers>
 
 #include "geardyn/error.h"
@@ -182,6 +183,11 @@ TEST(HarmonicBalance, HillStabilityAgreesWithFloquetMultipliers) {
       floquet = std::max(floquet, std::log(std::abs(eig.eigenvalues()[j])) / T);
     EXPECT_NEAR(point.max_floquet_real, floquet, 1e-6) << omega;
     EXPECT_EQ(point.stable, floquet < 0.0) << omega;
+    // The sampled monodromy (k held over each of the N = 128 intervals): first order in 1/N.
+    HarmonicBalancePoint sampled = point;
+    hbm.stabilityMonodromy(sampled);
+    EXPECT_NEAR(sampled.max_floquet_real, floquet, 2e-3) << omega;
+    EXPECT_EQ(sampled.stable, point.stable) << omega;
   }
 }
 
@@ -214,9 +220,55 @@ TEST(HarmonicBalance, ContinuationTracesTheSofteningPeakThroughItsFolds) {
   EXPECT_TRUE(result.completed) << result.message;
   EXPECT_GE(result.folds.size(), 2u) << result.message;
   EXPECT_EQ(result.folds.size() % 2, 0u) << result.message;  // the curve comes back: folds pair up
-  int unstable = 0;
-  for (const auto& p : result.points) unstable += !p.solution.stable;
+  int unstable = 0, disagree = 0;
+  for (const auto& p : result.points) {
+    unstable += !p.solution.stable;
+    HarmonicBalancePoint copy = p.solution;
+    hbm.stabilityMonodromy(copy);
+    disagree += copy.stable != p.solution.stable;
+  }
   EXPECT_GT(unstable, 0);  // the middle branch between the folds
+  // Hill and the sampled monodromy classify the same points (but right at a fold, where the
+  // exponent crosses 0 and either may fall on its side).
+  EXPECT_LE(disagree, 4) << "of " << result.points.size();
+}
+
+}  // namespace
+}  // namespace geardyn
+
+namespace geardyn {
+namespace {
+
+TEST(HarmonicBalance, ConvergesAsHarmonicsAndSamplesGrow) {
+  // Saletti Table 1, T = 100 N m, at 3250 Hz (contact kept, k steps k_c ↔ 2k_c) and 1250 Hz
+  // (superharmonic with separation). The peak to peak against H (N = 16H) settles: the change
+  // from H to the next H shrinks (the step gap makes the spectrum decay like 1/h², so the
+  // convergence is algebraic). Prints the table.
+  for (double f : {3250.0, 1250.0}) {
+    GearPairModelSpec spec = saletti(100.0);
+    const GearPairModel model(spec);
+    std::vector<double> p2p;
+    std::printf("f = %.0f Hz:", f);
+    for (int harmonics : {4, 8, 14, 20, 28, 40}) {
+      HarmonicBalanceOptions options;
+      options.harmonics = harmonics;
+      options.samples_per_period = 16 * harmonics;
+      HarmonicBalance hbm(model, options);
+      HarmonicBalancePoint point;
+      point.omega = 2 * kPi * f;
+      point.q = hbm.linearGuess(point.omega);
+      hbm.solve(point);
+      ASSERT_TRUE(point.converged) << harmonics;
+      const auto x = hbm.timeSignal(point.q);
+      p2p.push_back(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
+      std::printf("  H=%d: %.6e", harmonics, p2p.back());
+    }
+    std::printf("\n");
+    const double first_change = std::abs(p2p[1] / p2p[0] - 1),
+                 last_change = std::abs(p2p[5] / p2p[4] - 1);
+    EXPECT_LT(last_change, first_change) << f;
+    EXPECT_LT(last_change, 0.01) << f;  // H = 28 → 40 changes p2p by < 1 %
+  }
 }
 
 }  // namespace

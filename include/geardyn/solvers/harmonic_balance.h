@@ -66,8 +66,18 @@ class HarmonicBalance {
   /// Fourier basis; the two exponents with the smallest |Im λ| are the Floquet exponents.
   void stability(HarmonicBalancePoint& point);
 
+  /// Stability from the monodromy matrix of the variational equation m δ″ + c δ′ + f′(t) δ = 0
+  /// along the solution, with f′ = ∂f/∂y held at its sample value over each of the N intervals:
+  /// the product of N exact 2×2 matrix exponentials (O(N), ~100× cheaper than Hill's method;
+  /// first order in the switching instants of a piecewise-linear contact).
+  void stabilityMonodromy(HarmonicBalancePoint& point);
+
   /// x(τ) at N samples over one period from coefficients.
   std::vector<double> timeSignal(const Eigen::VectorXd& q) const;
+  /// Fourier coefficients (a₀, a₁, b₁, …) of N samples over one period (forward real FFT).
+  void coefficientsOf(const std::vector<double>& samples, Eigen::VectorXd& coefficients) {
+    forward(samples.data(), coefficients, n_);
+  }
   /// The mesh force at the same samples.
   std::vector<double> meshForceSignal(const Eigen::VectorXd& q, double omega) const;
   /// Fourier coefficients of the external force F + c e′(t) at ω, and their ω-derivative.
@@ -78,6 +88,7 @@ class HarmonicBalance {
 
  private:
   void forward(const double* samples, Eigen::VectorXd& coefficients, int count);
+  void inverseToBuffer(const Eigen::VectorXd& q);
 
   const GearPairModel& model_;
   HarmonicBalanceOptions options_;
@@ -100,11 +111,14 @@ struct SweepPoint {
   double arclength = 0.0;
 };
 
+enum class StabilityMethod { kHill, kMonodromy };
+
 struct ContinuationOptions {
   double start = 0.0, stop = 0.0;                             ///< ω range [rad/s]
   double initial_step = 0.0, min_step = 0.0, max_step = 0.0;  ///< in ω units along the arc
   int max_points = 20000;
   bool stability = true;
+  StabilityMethod stability_method = StabilityMethod::kHill;
   void validate() const;
 };
 
