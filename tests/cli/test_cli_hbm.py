@@ -90,8 +90,15 @@ def test_backlash_softening_resonance_has_both_jumps(tmp_path):
     assert result.returncode == 0, result.stderr
     results = json.loads((tmp_path / "summary.json").read_text())["results"]
     for sweep in ("up", "down"):
+        # Folds closer than 0.5 % belong to one turning region (the non-smooth contact can add a
+        # tiny S-loop right at a fold); two regions: the jump down (end of the high branch) below
+        # the jump up (end of the low branch) — a softening resonance.
         folds = sorted(f["frequency"] for f in results["folds"] if f["sweep"] == sweep)
-        # Softening: the jump-down fold (end of the high branch) lies below the jump-up fold.
-        assert len(folds) == 2 and folds[0] < folds[1] < 1.0
+        regions = [folds[0]]
+        for f in folds[1:]:
+            if f > regions[-1] * 1.005:
+                regions.append(f)
+        assert len(regions) == 2 and regions[0] < regions[1] < 1.0, folds
+        assert len(folds) % 2 == 0  # the curve comes back to the stable side
     assert results["peak"]["frequency"] < 1.0  # the peak bends to lower frequencies
     assert all(abs(c["relative_difference"]) < 0.01 for c in results["newmark_checks"])
