@@ -56,6 +56,7 @@ void BM_HbmContinuationPoint(benchmark::State& state) {
 BENCHMARK(BM_HbmContinuationPoint)
     ->Arg(0)
     ->Arg(1)
+    ->Arg(2)
     ->ArgName("stability")
     ->Unit(benchmark::kMillisecond);
 

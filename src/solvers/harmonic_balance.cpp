@@ -295,10 +295,12 @@ void HarmonicBalance::stability(HarmonicBalancePoint& point) {
   point.stable = point.max_floquet_real < 1e-9 * point.omega;
 }
 
-void HarmonicBalance::stabilityMonodromy(HarmonicBalancePoint& point) {
-  // df/dy at the samples of the solution.
-  Eigen::VectorXd r;
-  residual(point.q, point.omega, r, nullptr, nullptr);  // fills df_ for this q
+void HarmonicBalance::stabilityMonodromy(HarmonicBalancePoint& point, bool samples_current) {
+  // df/dy at the samples of the solution (left by the last residual evaluation at point.q).
+  if (!samples_current) {
+    Eigen::VectorXd r;
+    residual(point.q, point.omega, r, nullptr, nullptr);
+  }
   const double m = model_.mass(), c = model_.damping();
   const double T = kTwoPi / point.omega, h = T / samples_;
   const double half_gamma = 0.5 * c / m;
@@ -370,11 +372,9 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
   const auto augmented_jacobian = [&](const Eigen::VectorXd& q, double omega, Eigen::MatrixXd& Jq,
                                       Eigen::VectorXd& Jw,
                                       Eigen::VectorXd& r) { hbm.residual(q, omega, r, &Jq, &Jw); };
-  const auto tangent = [&](const Eigen::VectorXd& q, double omega,
-                           const Eigen::VectorXd& previous) {
-    Eigen::MatrixXd Jq;
-    Eigen::VectorXd Jw, r;
-    augmented_jacobian(q, omega, Jq, Jw, r);
+  // The tangent from the Jacobians at (q, ω) (already evaluated there by the caller).
+  const auto tangentFrom = [&](const Eigen::MatrixXd& Jq, const Eigen::VectorXd& Jw,
+                               const Eigen::VectorXd& previous) {
     Eigen::MatrixXd A(n + 1, n + 1);
     A.topLeftCorner(n, n) = Jq * q_scale;
     A.topRightCorner(n, 1) = Jw * omega_ref;
@@ -384,16 +384,23 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
     Eigen::VectorXd t = A.partialPivLu().solve(rhs);
     return Eigen::VectorXd(t / t.norm());
   };
+  const auto tangent = [&](const Eigen::VectorXd& q, double omega,
+                           const Eigen::VectorXd& previous) {
+    Eigen::MatrixXd Jq;
+    Eigen::VectorXd Jw, r;
+    augmented_jacobian(q, omega, Jq, Jw, r);
+    return tangentFrom(Jq, Jw, previous);
+  };
 
-  const auto classify = [&](HarmonicBalancePoint& p) {
+  const auto classify = [&](HarmonicBalancePoint& p, bool samples_current) {
     if (!options.stability) return;
     if (options.stability_method == StabilityMethod::kHill) {
       hbm.stability(p);
     } else {
-      hbm.stabilityMonodromy(p);
+      hbm.stabilityMonodromy(p, samples_current);
     }
   };
-  classify(first);
+  classify(first, false);
   out.points.push_back({first, 0, 0.0});
   Eigen::VectorXd seed = Eigen::VectorXd::Zero(n + 1);
   seed[n] = direction;
@@ -453,13 +460,15 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
     point.converged = true;
     point.iterations = iterations;
     point.residual = norm;
-    const Eigen::VectorXd t_new = tangent(point.q, point.omega, t);
+    // Jq, Jw were evaluated at the converged point by the corrector's last iteration (and the
+    // AFT samples, df, belong to it too: the sampled-monodromy stability reuses them).
+    const Eigen::VectorXd t_new = tangentFrom(Jq, Jw, t);
     if (t_new[n] * t[n] < 0.0) {  // ω turned back: a fold between the last two points
       ++branch;
       out.folds.push_back(out.points.size() - 1);
     }
     arclength += step;
-    classify(point);
+    classify(point, true);
     out.points.push_back({point, branch, arclength});
     t = t_new;
     z = y;

@@ -70,7 +70,8 @@ class HarmonicBalance {
   /// along the solution, with f′ = ∂f/∂y held at its sample value over each of the N intervals:
   /// the product of N exact 2×2 matrix exponentials (O(N), ~100× cheaper than Hill's method;
   /// first order in the switching instants of a piecewise-linear contact).
-  void stabilityMonodromy(HarmonicBalancePoint& point);
+  /// `samples_current`: the last residual() call was at point.q (its df samples are reused).
+  void stabilityMonodromy(HarmonicBalancePoint& point, bool samples_current = false);
 
   /// x(τ) at N samples over one period from coefficients.
   std::vector<double> timeSignal(const Eigen::VectorXd& q) const;
