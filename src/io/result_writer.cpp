@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <fstream>
 
 #include "geardyn/io/atomic_file.h"
 #include "geardyn/version.h"
@@ -20,7 +21,25 @@ std::string utcNow() {
 
 }  // namespace
 
-ResultWriter::ResultWriter(std::filesystem::path folder) : folder_(std::move(folder)) {}
+ResultWriter::ResultWriter(std::filesystem::path folder) : folder_(std::move(folder)) {
+  // A folder that holds an earlier run's results: remove the files that run listed in its
+  // summary (only those: a folder is never emptied blindly), so that no stale table or plot of
+  // another configuration sits beside the new ones. The summary goes last.
+  const std::filesystem::path summary = folder_ / "summary.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(summary, ec)) return;
+  std::ifstream in(summary);
+  const auto previous = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (previous.is_discarded() || !previous.contains("files") || !previous["files"].is_array())
+    return;
+  for (const auto& name : previous["files"]) {
+    if (!name.is_string()) continue;
+    const std::filesystem::path file(name.get<std::string>());
+    if (file.has_parent_path() || file.filename() == "summary.json") continue;  // plain names only
+    std::filesystem::remove(folder_ / file, ec);
+  }
+  std::filesystem::remove(summary, ec);
+}
 
 void ResultWriter::writeCsv(const std::string& name, const CsvTable& table) {
   writeText(name, table.toString());

@@ -168,3 +168,14 @@ def test_schema_reference_in_docs_is_current(command):
     assert result.returncode == 0
     committed = (SOURCE / "docs" / "config" / f"{command}.md").read_text()
     assert result.stdout == committed, f"regenerate: build/bin/geardyn schema {command} > docs/config/{command}.md"
+
+
+def test_a_rerun_removes_the_previous_runs_files_only(tmp_path):
+    config = write(tmp_path, VALID)
+    out = tmp_path / "o"
+    assert run("geometry", config, "--out", out, "--set", "output.plots=false").returncode == 0
+    (out / "notes.txt").write_text("mine")          # a user's file in the folder
+    (out / "gears.csv").write_text("stale")         # will be rewritten
+    assert run("geometry", config, "--out", out, "--set", "output.plots=false").returncode == 0
+    assert (out / "notes.txt").read_text() == "mine"
+    assert (out / "gears.csv").read_text().startswith("member,")

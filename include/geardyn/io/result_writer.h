@@ -26,7 +26,8 @@ struct RunSummary {
   nlohmann::ordered_json results = nlohmann::ordered_json::object();  ///< headline numbers
 };
 
-/// Writes the files of one run into a folder (created if missing).
+/// Writes the files of one run into a folder (created if missing). If the folder holds an
+/// earlier run's summary.json, the files that summary lists are removed first (nothing else).
 class ResultWriter {
  public:
   explicit ResultWriter(std::filesystem::path folder);
