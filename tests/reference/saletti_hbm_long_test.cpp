@@ -15,6 +15,7 @@
 #include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/solvers/time_response.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "support/reference_pairs.h"
 
 namespace geardyn {
 namespace {
@@ -22,14 +23,9 @@ namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 GearPairModelSpec saletti(double torque) {
-  GearPairModelSpec spec;
-  spec.mass = 0.0158 / (2 * 0.0705 * 0.0705);
-  spec.damping = 4038.2;
-  spec.mean_force = torque / 0.0705;
-  spec.contact = ContactLaw::kOneSided;
-  spec.stiffness = std::make_shared<StepMeshStiffness>(2.6e8, 5.2e8, 1.75);
-  return spec;
+  return testing::salettiModelSpec(torque);
 }
+using testing::peakToPeak;
 
 struct Branch {
   std::vector<double> f, p2p;
@@ -51,7 +47,7 @@ Branch trace(HarmonicBalance& hbm, double from, double to, std::vector<double>& 
   for (const auto& p : result.points) {
     const auto x = hbm.timeSignal(p.solution.q);
     b.f.push_back(p.solution.omega / kTwoPi);
-    b.p2p.push_back(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
+    b.p2p.push_back(peakToPeak(x));
     b.stable.push_back(p.solution.stable);
     b.q.push_back(p.solution.q);
   }
@@ -76,7 +72,7 @@ std::vector<double> stableAt(HarmonicBalance& hbm, const Branch& b, double f) {
     hbm.stabilityMonodromy(point);
     if (!point.stable) continue;
     const auto x = hbm.timeSignal(point.q);
-    out.push_back(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
+    out.push_back(peakToPeak(x));
   }
   return out;
 }
@@ -127,8 +123,7 @@ TEST(SalettiValidation, HarmonicBalanceAgainstNewmarkSweeps) {
         newmark.initial_displacement = r.x.back();
         newmark.initial_velocity = r.v.back();
         if (!r.converged()) continue;
-        p2p[i] =
-            *std::max_element(r.x.begin(), r.x.end()) - *std::min_element(r.x.begin(), r.x.end());
+        p2p[i] = peakToPeak(r.x);
         const auto candidates = stableAt(hbm, upward ? up : down, frequencies[i]);
         if (candidates.empty()) continue;
         double best = candidates[0];
@@ -205,8 +200,7 @@ TEST(SalettiValidation, TimeIntegrationLeavesAnUnstableSolution) {
   }
   ASSERT_NE(unstable, nullptr);
   const auto x = hbm.timeSignal(unstable->q);
-  const double p2p_unstable =
-      *std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end());
+  const double p2p_unstable = peakToPeak(x);
   // Start on it: x(0) and v(0) = Σ h ω b_h.
   double v0 = 0;
   for (int h = 1; h <= hbm.harmonics(); ++h) v0 += h * unstable->omega * unstable->q[2 * h];
@@ -219,8 +213,7 @@ TEST(SalettiValidation, TimeIntegrationLeavesAnUnstableSolution) {
   newmark.max_periods = 6000;
   const TimeResponse r = solveTimeResponse(GearPairModel(spec), newmark);
   ASSERT_TRUE(r.converged());
-  const double p2p =
-      *std::max_element(r.x.begin(), r.x.end()) - *std::min_element(r.x.begin(), r.x.end());
+  const double p2p = peakToPeak(r.x);
   EXPECT_GT(std::abs(p2p / p2p_unstable - 1), 0.05) << p2p << " vs unstable " << p2p_unstable;
   (void)b;
 }

@@ -17,23 +17,17 @@
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
 #include "support/numeric_assertions.h"
+#include "support/reference_pairs.h"
 
 namespace geardyn {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-/// Saletti et al. (2025), Table 1: m = I/(2r²), C = 4038.2 N s/m, contact elements of
-/// k_c = 2.6e8 N/m with ε = 1.75 (k alternates k_c and 2k_c), one-sided contact, F = T/r.
 GearPairModelSpec saletti(double torque) {
-  GearPairModelSpec spec;
-  spec.mass = 0.0158 / (2 * 0.0705 * 0.0705);
-  spec.damping = 4038.2;
-  spec.mean_force = torque / 0.0705;
-  spec.contact = ContactLaw::kOneSided;
-  spec.stiffness = std::make_shared<StepMeshStiffness>(2.6e8, 5.2e8, 1.75);
-  return spec;
+  return testing::salettiModelSpec(torque);
 }
+using testing::peakToPeak;
 
 TEST(HarmonicBalance, LinearLimitIsTheAnalyticFrf) {
   GearPairModelSpec spec;
@@ -124,16 +118,14 @@ TEST(HarmonicBalance, AgreesWithNewmarkOnTheContactElementModel) {
     hbm.solve(point);
     ASSERT_TRUE(point.converged) << f;
     const auto x = hbm.timeSignal(point.q);
-    const double p2p_hbm =
-        *std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end());
+    const double p2p_hbm = peakToPeak(x);
     TimeResponseOptions newmark;
     newmark.steps_per_period = 2048;
     newmark.output_points_per_period = 256;
     newmark.steady_tolerance = 1e-9;
     const TimeResponse r = solveTimeResponse(model, newmark);
     ASSERT_TRUE(r.converged()) << r.message;
-    const double p2p_dti =
-        *std::max_element(r.x.begin(), r.x.end()) - *std::min_element(r.x.begin(), r.x.end());
+    const double p2p_dti = peakToPeak(r.x);
     EXPECT_NEAR(p2p_hbm / p2p_dti, 1.0, 0.01) << f << " Hz";
   }
 }
@@ -142,12 +134,7 @@ TEST(HarmonicBalance, HillStabilityAgreesWithFloquetMultipliers) {
   // A smooth problem (linear contact, k = k̄(1 + 0.3 cos)) inside and outside the principal
   // parametric resonance (Ω ≈ 2ω_n): the largest real part of the Floquet exponents from Hill's
   // method against ln|μ|/T from the monodromy matrix integrated along the HBM orbit (RK4).
-  GearPairModelSpec spec;
-  spec.mass = 1.0;
-  spec.damping = 0.02;
-  spec.mean_force = 1.0;
-  spec.stiffness = std::make_shared<FourierMeshStiffness>(1.0, std::vector<double>{0.3},
-                                                          std::vector<double>{0.0}, 1.5);
+  const GearPairModelSpec spec = testing::mathieuModelSpec();
   const GearPairModel model(spec);
   HarmonicBalanceOptions options;
   options.harmonics = 20;
@@ -260,7 +247,7 @@ TEST(HarmonicBalance, ConvergesAsHarmonicsAndSamplesGrow) {
       hbm.solve(point);
       ASSERT_TRUE(point.converged) << harmonics;
       const auto x = hbm.timeSignal(point.q);
-      p2p.push_back(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()));
+      p2p.push_back(peakToPeak(x));
       std::printf("  H=%d: %.6e", harmonics, p2p.back());
     }
     std::printf("\n");

@@ -14,6 +14,7 @@
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
 #include "support/numeric_assertions.h"
+#include "support/reference_pairs.h"
 
 namespace geardyn {
 namespace {
@@ -133,12 +134,7 @@ TEST(TimeResponse, ParametricInstabilityNearTwiceTheNaturalFrequency) {
   // Nondimensional: x″ + 2ζx′ + (1 + ε cos φt) x = 1, ζ = 0.01, ε = 0.3. The first Mathieu
   // instability tongue around φ = 2 (Den Hartog) opens for ε/4 > ζ: unbounded growth there,
   // a bounded periodic response away from it.
-  GearPairModelSpec spec;
-  spec.mass = 1.0;
-  spec.damping = 0.02;
-  spec.mean_force = 1.0;
-  spec.stiffness = std::make_shared<FourierMeshStiffness>(1.0, std::vector<double>{0.3},
-                                                          std::vector<double>{0.0}, 1.5);
+  GearPairModelSpec spec = testing::mathieuModelSpec();
   TimeResponseOptions options;
   options.max_periods = 3000;
   for (double phi : {1.95, 2.0, 2.05}) {

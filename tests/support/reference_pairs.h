@@ -1,10 +1,17 @@
 #pragma once
 /// \file
-/// Gear pairs of the seed papers, shared by tests and benchmarks.
+/// Gear pairs and dynamic models of the seed papers and of textbook cases, shared by tests and
+/// benchmarks.
 
+#include <algorithm>
+#include <memory>
 #include <numbers>
+#include <vector>
 
 #include "geardyn/geometry/gear_pair.h"
+#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/stiffness/step_stiffness.h"
 
 namespace geardyn::testing {
 
@@ -26,6 +33,36 @@ inline GearPairSpec visnadiPairSpec(double helix_deg = 0.0, double module = 3e-3
   spec.pinion.helix_angle = helix_deg * std::numbers::pi / 180.0;
   spec.gear.helix_angle = -spec.pinion.helix_angle;
   return spec;
+}
+
+/// Saletti et al. (2025), Table 1: m = I/(2r²), C = 4038.2 N s/m, contact elements of
+/// k_c = 2.6e8 N/m with ε = 1.75 (k alternates k_c and 2k_c), one-sided contact, F = T/r.
+inline GearPairModelSpec salettiModelSpec(double torque) {
+  GearPairModelSpec spec;
+  spec.mass = 0.0158 / (2 * 0.0705 * 0.0705);
+  spec.damping = 4038.2;
+  spec.mean_force = torque / 0.0705;
+  spec.contact = ContactLaw::kOneSided;
+  spec.stiffness = std::make_shared<StepMeshStiffness>(2.6e8, 5.2e8, 1.75);
+  return spec;
+}
+
+/// The Mathieu-type oscillator x″ + 0.02 x′ + (1 + 0.3 cos Ωt) x = 1 (nondimensional, linear
+/// contact): the principal parametric resonance opens around Ω = 2.
+inline GearPairModelSpec mathieuModelSpec() {
+  GearPairModelSpec spec;
+  spec.mass = 1.0;
+  spec.damping = 0.02;
+  spec.mean_force = 1.0;
+  spec.stiffness = std::make_shared<FourierMeshStiffness>(1.0, std::vector<double>{0.3},
+                                                          std::vector<double>{0.0}, 1.5);
+  return spec;
+}
+
+/// Peak to peak of a signal.
+inline double peakToPeak(const std::vector<double>& x) {
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  return *hi - *lo;
 }
 
 }  // namespace geardyn::testing
