@@ -64,9 +64,11 @@ HarmonicBalance::HarmonicBalance(const GearPairModel& model, const HarmonicBalan
   complex_buffer_ = fftw_alloc_complex(samples_ / 2 + 1);
   forward_plan_ = fftw_plan_dft_r2c_1d(samples_, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
   inverse_plan_ = fftw_plan_dft_c2r_1d(samples_, complex_buffer_, real_buffer_, FFTW_ESTIMATE);
-  y_.resize(samples_);
   f_.resize(samples_);
   df_.resize(samples_);
+  // The error and its phase derivative are fixed over the sweep: their coefficients once.
+  forward(error_.data(), error_coefficients_, n_);
+  forward(error_rate_.data(), error_rate_coefficients_, n_);
 }
 
 HarmonicBalance::~HarmonicBalance() {
@@ -120,20 +122,17 @@ std::vector<double> HarmonicBalance::meshForceSignal(const Eigen::VectorXd& q, d
 void HarmonicBalance::externalForce(double omega, Eigen::VectorXd& f,
                                     Eigen::VectorXd* df_domega) const {
   // F + c e′(t) with e′ = (ω/2π) de/dφ: its coefficients are linear in ω.
-  Eigen::VectorXd rate;
-  const_cast<HarmonicBalance*>(this)->forward(error_rate_.data(), rate, n_);
   const double c = model_.damping();
-  f = (c * omega / kTwoPi) * rate;
+  f = (c * omega / kTwoPi) * error_rate_coefficients_;
   f[0] += model_.meanForce();
-  if (df_domega) *df_domega = (c / kTwoPi) * rate;
+  if (df_domega) *df_domega = (c / kTwoPi) * error_rate_coefficients_;
 }
 
 Eigen::VectorXd HarmonicBalance::linearGuess(double omega) {
   // The response with the teeth held in contact (g(y) = y − shift on the loaded flank): a linear
   // time-varying problem, solved exactly by one Newton step from the static deflection. Far
   // from contact loss it is the answer; near it, the best start for the nonlinear solve.
-  Eigen::VectorXd q;
-  forward(error_.data(), q, n_);
+  Eigen::VectorXd q = error_coefficients_;
   double shift = 0.0;
   if (model_.contact() == ContactLaw::kBacklash) {
     shift = model_.meanForce() >= 0 ? model_.backlash() : -model_.backlash();

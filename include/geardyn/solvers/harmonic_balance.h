@@ -100,7 +100,8 @@ class HarmonicBalance {
   double* real_buffer_;
   fftw_complex* complex_buffer_;
   fftw_plan forward_plan_, inverse_plan_;
-  std::vector<double> y_, f_, df_;
+  std::vector<double> f_, df_;
+  Eigen::VectorXd error_coefficients_, error_rate_coefficients_;  // of e(φ) and de/dφ
   bool linearized_ = false;  // linearGuess: g(y) = y − linear_shift_
   double linear_shift_ = 0.0;
 };
