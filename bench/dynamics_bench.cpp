@@ -13,26 +13,18 @@
 #include "geardyn/stats/monte_carlo.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "support/reference_pairs.h"
 
 namespace {
 
 geardyn::GearPairModel backlashModel(bool step) {
-  geardyn::GearPairModelSpec spec;
-  spec.mass = 1.589;
-  spec.damping = 2 * 0.05 * std::sqrt(4.55e8 * 1.589);
-  spec.mean_force = 1418.4;
+  geardyn::GearPairModelSpec spec = geardyn::testing::issue4ExampleSpec();
   spec.contact = geardyn::ContactLaw::kBacklash;
   spec.backlash = 1e-4;
   if (step) {
     spec.stiffness = std::make_shared<geardyn::StepMeshStiffness>(
         geardyn::StepMeshStiffness::fromMean(4.55e8, 1.6));
-  } else {
-    spec.stiffness = std::make_shared<geardyn::FourierMeshStiffness>(
-        4.55e8, std::vector<double>{0.2, 0.1},
-        std::vector<double>{std::numbers::pi, std::numbers::pi}, 1.6);
   }
-  spec.transmission_error.addFourier({1e-6}, {0.0});
-  spec.mesh_frequency = 1000.0;
   return geardyn::GearPairModel(spec);
 }
 
@@ -61,15 +53,7 @@ namespace {
 /// Monte Carlo of the mean excitation ratio: 400 samples of a 25-tooth revolution on 1 and 2
 /// threads (the issue's target: >= 1.8x on 2 threads).
 void BM_MeanExcitationMonteCarlo(benchmark::State& state) {
-  geardyn::GearPairModelSpec spec;
-  spec.mass = 1.589;
-  spec.damping = 2 * 0.05 * std::sqrt(4.55e8 * 1.589);
-  spec.mean_force = 1418.4;
-  spec.stiffness = std::make_shared<geardyn::FourierMeshStiffness>(
-      4.55e8, std::vector<double>{0.2, 0.1}, std::vector<double>{0.0, 0.0}, 1.6);
-  spec.transmission_error.addFourier({1e-6}, {0.0});
-  spec.mesh_frequency = 1000.0;
-  const geardyn::GearPairModel model(spec);
+  const geardyn::GearPairModel model(geardyn::testing::issue4ExampleSpec());
   geardyn::MonteCarloOptions options;
   options.samples = 400;
   options.teeth = 25;

@@ -68,15 +68,20 @@ MeanExcitation fromFunctions(const K& k, const E& e, const Edot& edot,
       integrateOverPeriod([&](double p) { return std::pow(ef(p) - m1_ef, 2); }, breaks);
   const double cov =
       integrateOverPeriod([&](double p) { return (k(p) - m1_k) * (ef(p) - m1_ef); }, breaks);
-  const double d_k = std::sqrt(std::max(var_k, 0.0)), d_e = std::sqrt(std::max(var_e, 0.0));
-  const double r = d_k > 0.0 && d_e > 0.0 ? std::clamp(cov / (d_k * d_e), -1.0, 1.0) : 0.0;
   // Over a whole period the mean of a periodic error's derivative is (e(1) − e(0)) dφ/dt₁ = 0:
   // Gelman's assumption 14 holds exactly here; integrated all the same.
   const double m1_edot = phase_rate * integrateOverPeriod(edot, breaks);
-  return meanExcitationFromMoments(m1_k, m1_ef, d_k, d_e, r, m1_edot, a, zeta);
+  return meanExcitationFromCovariance(m1_k, m1_ef, var_k, var_e, cov, m1_edot, a, zeta);
 }
 
 }  // namespace
+
+MeanExcitation meanExcitationFromCovariance(double m1_k, double m1_ef, double var_k, double var_e,
+                                            double cov_ke, double m1_edot, double a, double zeta) {
+  const double d_k = std::sqrt(std::max(var_k, 0.0)), d_e = std::sqrt(std::max(var_e, 0.0));
+  const double r = d_k > 0.0 && d_e > 0.0 ? std::clamp(cov_ke / (d_k * d_e), -1.0, 1.0) : 0.0;
+  return meanExcitationFromMoments(m1_k, m1_ef, d_k, d_e, r, m1_edot, a, zeta);
+}
 
 MeanExcitation meanExcitationFromCurves(const MeshStiffness& k, const TransmissionError& e,
                                         double a, double zeta, double frequency_ratio) {
@@ -104,9 +109,7 @@ MeanExcitation meanExcitationFromSamples(const std::vector<double>& k,
     var_e += (e_f[i] - m_e) * (e_f[i] - m_e) / n;
     cov += (k[i] - m_k) * (e_f[i] - m_e) / n;
   }
-  const double d_k = std::sqrt(var_k), d_e = std::sqrt(var_e);
-  const double r = d_k > 0 && d_e > 0 ? std::clamp(cov / (d_k * d_e), -1.0, 1.0) : 0.0;
-  return meanExcitationFromMoments(m_k, m_e, d_k, d_e, r, 0.0, a, zeta);
+  return meanExcitationFromCovariance(m_k, m_e, var_k, var_e, cov, 0.0, a, zeta);
 }
 
 MeanExcitation meanExcitationFromModel(const GearPairModel& model, double baseload) {

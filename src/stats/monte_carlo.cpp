@@ -70,15 +70,10 @@ MeanExcitation meanExcitationOfRevolution(const GearPairModel& model, double bas
     s_ke += integrateOverPeriod([&](double p) { return k(p) * ef(p); }, breaks, 4);
   }
   const double m_k = s_k / n, m_e = s_e / n;
-  const double var_k = std::max(s_kk / n - m_k * m_k, 0.0),
-               var_e = std::max(s_ee / n - m_e * m_e, 0.0);
-  const double d_k = std::sqrt(var_k), d_e = std::sqrt(var_e);
-  const double r =
-      d_k > 0 && d_e > 0 ? std::clamp((s_ke / n - m_k * m_e) / (d_k * d_e), -1.0, 1.0) : 0.0;
   // m₁(ė) over the revolution is (e(end) − e(start)) / duration = 0: the error repeats every
   // revolution, so the slopes within the periods and the jumps between teeth cancel exactly.
-  const double m_edot = 0.0;
-  return meanExcitationFromMoments(m_k, m_e, d_k, d_e, r, m_edot, a, zeta);
+  return meanExcitationFromCovariance(m_k, m_e, s_kk / n - m_k * m_k, s_ee / n - m_e * m_e,
+                                      s_ke / n - m_k * m_e, 0.0, a, zeta);
 }
 
 std::vector<MonteCarloSample> runMeanExcitationMonteCarlo(const GearPairModel& model,

@@ -8,20 +8,13 @@
 
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "support/numeric_assertions.h"
+#include "support/reference_pairs.h"
 
 namespace geardyn {
 namespace {
 
 GearPairModel model() {
-  GearPairModelSpec spec;
-  spec.mass = 1.589;
-  spec.damping = 2 * 0.05 * std::sqrt(4.55e8 * 1.589);
-  spec.mean_force = 1418.4;
-  spec.stiffness = std::make_shared<FourierMeshStiffness>(
-      4.55e8, std::vector<double>{0.2, 0.1}, std::vector<double>{3.14159, 3.14159}, 1.6);
-  spec.transmission_error.addFourier({1e-6}, {0.0});
-  spec.mesh_frequency = 1000.0;
-  return GearPairModel(spec);
+  return GearPairModel(testing::issue4ExampleSpec());
 }
 
 TEST(MonteCarlo, BitIdenticalWhateverTheThreads) {

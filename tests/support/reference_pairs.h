@@ -4,6 +4,7 @@
 /// benchmarks.
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numbers>
 #include <vector>
@@ -44,6 +45,22 @@ inline GearPairModelSpec salettiModelSpec(double torque) {
   spec.mean_force = torque / 0.0705;
   spec.contact = ContactLaw::kOneSided;
   spec.stiffness = std::make_shared<StepMeshStiffness>(2.6e8, 5.2e8, 1.75);
+  return spec;
+}
+
+/// The SDOF gear pair of issue #4 and examples/simulate_gear_pair_backlash.toml, linear contact:
+/// m = 1.589 kg, k = 4.55e8 (1 − 0.2 cos Ωt − 0.1 cos 2Ωt) N/m, ζ = 0.05, F = 1418.4 N, a 1 µm
+/// first-order error, f_m = 1000 Hz.
+inline GearPairModelSpec issue4ExampleSpec() {
+  GearPairModelSpec spec;
+  spec.mass = 1.589;
+  spec.damping = 2 * 0.05 * std::sqrt(4.55e8 * 1.589);
+  spec.mean_force = 1418.4;
+  spec.stiffness = std::make_shared<FourierMeshStiffness>(
+      4.55e8, std::vector<double>{0.2, 0.1},
+      std::vector<double>{std::numbers::pi, std::numbers::pi}, 1.6);
+  spec.transmission_error.addFourier({1e-6}, {0.0});
+  spec.mesh_frequency = 1000.0;
   return spec;
 }
 

@@ -39,6 +39,12 @@ struct MeanExcitation {
 MeanExcitation meanExcitationFromMoments(double m1_k, double m1_ef, double d_k, double d_e,
                                          double r_ke, double m1_edot, double a, double zeta);
 
+/// From the means, variances and covariance of k and e_f (the step every estimator shares):
+/// d = √var (negative round-off clipped), r_ke = cov / (d_k d_e) clamped to [−1, 1], 0 when a
+/// process is constant.
+MeanExcitation meanExcitationFromCovariance(double m1_k, double m1_ef, double var_k, double var_e,
+                                            double cov_ke, double m1_edot, double a, double zeta);
+
 /// From curves over one mesh period: the normalised stiffness k(φ) = K/K̄ (its mean need not be
 /// exactly 1: it is used as given), the normalised gear error e(φ) = E/x₀, the load a and ζ; the
 /// mesh frequency ratio Ω = ω_m/ω_n converts de/dφ into de/dt₁ = (Ω/2π) de/dφ.
