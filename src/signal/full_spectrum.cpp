@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -103,6 +104,38 @@ void fitWhirlComponents(const std::vector<double>& x, const std::vector<double>&
   }
   const Eigen::VectorXcd c = lu.solve(r);
   for (std::size_t a = 0; a < m; ++a) components[a].value = c[a];
+}
+
+WhirlExtraction extractWhirlComponents(const std::vector<double>& x, const std::vector<double>& y,
+                                       double sample_rate, std::vector<WhirlComponent>& components,
+                                       WhirlExtraction method) {
+  requireRecord(x, y, sample_rate);
+  const double n = static_cast<double>(x.size());
+  const auto offBin = [&](const WhirlComponent& c) {
+    const double bin = c.frequency * n / sample_rate;
+    return std::abs(bin - std::round(bin)) > 1e-6 || std::abs(bin) >= n / 2.0;
+  };
+  const auto off = std::find_if(components.begin(), components.end(), offBin);
+  if (method == WhirlExtraction::kAuto) {
+    method = off == components.end() ? WhirlExtraction::kExactBins : WhirlExtraction::kLeastSquares;
+  }
+  if (method == WhirlExtraction::kLeastSquares) {
+    fitWhirlComponents(x, y, sample_rate, components);
+    return method;
+  }
+  if (off != components.end()) {
+    throw InputError(off->name, fmt::format("{:.9g} Hz", off->frequency),
+                     fmt::format("is not on a bin of this record ({} samples at {:.9g} Hz): use "
+                                 "whole common periods or the least-squares fit",
+                                 x.size(), sample_rate));
+  }
+  const FullSpectrum s = fullSpectrum(x, y, sample_rate);
+  const std::size_t zero = x.size() / 2;  // index of 0 Hz in the ascending spectrum
+  for (auto& c : components) {
+    const long long bin = std::llround(c.frequency * n / sample_rate);
+    c.value = s.coefficient[static_cast<std::size_t>(static_cast<long long>(zero) + bin)];
+  }
+  return method;
 }
 
 void addRelativeNoise(std::vector<double>& channel, double level, std::mt19937_64& rng) {

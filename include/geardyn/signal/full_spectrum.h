@@ -52,6 +52,19 @@ struct WhirlComponent {
 void fitWhirlComponents(const std::vector<double>& x, const std::vector<double>& y,
                         double sample_rate, std::vector<WhirlComponent>& components);
 
+/// How whirl components are read from a record.
+enum class WhirlExtraction {
+  kAuto,          ///< exact FFT bins when every frequency falls on a bin, else least squares
+  kExactBins,     ///< FFT bins; InputError when a frequency is not on a bin (leakage)
+  kLeastSquares,  ///< fitWhirlComponents
+};
+
+/// Fills `value` of each component from the record (0-peak complex radius at sample 0). Returns
+/// the method used. A frequency is on a bin when f N / f_s is within 1e-6 of an integer.
+WhirlExtraction extractWhirlComponents(const std::vector<double>& x, const std::vector<double>& y,
+                                       double sample_rate, std::vector<WhirlComponent>& components,
+                                       WhirlExtraction method = WhirlExtraction::kAuto);
+
 /// Adds white Gaussian noise of standard deviation level × std(channel) (Rao 2023 §5 studies);
 /// the generator is the caller's (seeded) so that studies are reproducible.
 void addRelativeNoise(std::vector<double>& channel, double level, std::mt19937_64& rng);
