@@ -1,0 +1,61 @@
+#pragma once
+/// \file
+/// The whirl components a gear pair's lateral response holds (Rao 2023 §4.4): static, the mesh
+/// harmonics forward and backward, and the 1× of each shaft, at frequencies fixed by the pinion
+/// speed and the teeth numbers; their common period; the keyphasor-referenced analysis of a
+/// record (§5.4–5.5: whole shaft cycles, phase compensation) and the change to a shaft's own
+/// rotation frame.
+
+#include <string>
+#include <vector>
+
+#include "geardyn/signal/full_spectrum.h"
+
+namespace geardyn {
+
+/// Speeds and teeth of a gear pair: ω_e = t_p ω_p = t_g ω_g; the pinion turns in the −z sense
+/// and the gear in the +z sense of the probe frame (x → y counter-clockwise), as in Rao eq. 2.2.
+struct GearWhirlSetup {
+  double pinion_speed = 0.0;  ///< [rev/s]
+  int pinion_teeth = 0;
+  int gear_teeth = 0;
+  int harmonics = 0;  ///< mesh harmonics n
+
+  void validate() const;
+  double gearSpeed() const { return pinion_speed * pinion_teeth / gear_teeth; }  ///< [rev/s]
+  double meshFrequency() const { return pinion_speed * pinion_teeth; }           ///< [Hz]
+  /// t_g/d pinion revolutions, d = gcd(t_p, t_g) [s].
+  double commonPeriod() const;
+};
+
+/// static, mesh_1_fwd, mesh_1_bwd, …, mesh_n_bwd, pinion_1x_fwd, pinion_1x_bwd, gear_1x_fwd,
+/// gear_1x_bwd, with signed frequencies in the probe frame (fwd > 0) [Hz]; values zero.
+std::vector<WhirlComponent> gearWhirlComponents(const GearWhirlSetup& setup);
+
+/// Reference frame of reported whirl components.
+enum class WhirlFrame {
+  kProbe,  ///< z = x + jy for both shafts (forward = +z, the probe frame)
+  kShaft,  ///< each shaft relative to its own rotation (thesis Fig. 4.2): the pinion shaft's
+           ///< record is conjugated (z = x − jy), so its forward is the pinion's spin sense
+};
+
+/// A component seen in another frame: for a shaft turning in −z, the frequency changes sign, the
+/// value is conjugated and fwd/bwd in the name swap.
+WhirlComponent inShaftFrame(const WhirlComponent& probe_frame_component, bool shaft_turns_negative);
+
+/// Keyphasor (once-per-revolution) pulses.
+struct KeyphasorPulses {
+  std::vector<double> times;  ///< rising threshold crossings, linear interpolation [s]
+  double threshold = 0.0;
+  double speed = 0.0;  ///< revolutions per second from the first and last pulse [rev/s]
+};
+
+/// Finds the rising crossings of `threshold` (NaN: halfway between the channel's extremes) in a
+/// keyphasor channel sampled at `sample_rate`, time of sample 0 = `start_time`. Throws
+/// InputError when fewer than two pulses are found or when the intervals between pulses vary
+/// by more than `max_speed_variation` (relative) — a missing pulse or a speed change.
+KeyphasorPulses findKeyphasorPulses(const std::vector<double>& keyphasor, double sample_rate,
+                                    double start_time, double threshold = 0.0 / 0.0,
+                                    double max_speed_variation = 0.05);
+
+}  // namespace geardyn
