@@ -3,6 +3,7 @@
 #include "command.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/hbm_io.h"
+#include "geardyn/io/rotor_io.h"
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
 #include "geardyn/io/stiffness_io.h"
@@ -14,6 +15,8 @@ int runStiffness(const io::Config& config, const CommandOptions& options);
 int runSimulate(const io::Config& config, const CommandOptions& options);
 int runStats(const io::Config& config, const CommandOptions& options);
 int runHbm(const io::Config& config, const CommandOptions& options);
+int runRotor(const io::Config& config, const CommandOptions& options);
+int runSpectrum(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
@@ -35,6 +38,14 @@ std::vector<Command> allCommands() {
        "harmonic-balance forced response (AFT) continued in frequency through folds, with Hill "
        "stability and Newmark checks",
        io::hbmSchema, runHbm},
+      {"rotor",
+       "lateral geared rotor with asymmetric transmission error (Rao 2023): Dormand-Prince and "
+       "exact frequency-domain response, orbits, full spectra, probe records, parametric study",
+       io::rotorSchema, runRotor},
+      {"spectrum",
+       "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
+       "compensation, forward/backward whirl peaks of a gear pair",
+       io::spectrumSchema, runSpectrum},
   };
 }
 

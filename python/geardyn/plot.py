@@ -292,8 +292,103 @@ def plot_hbm(result_dir):
     return written
 
 
+def _orbits(folder, table, title, written, only_steady):
+    """orbits.png: y against x of each shaft [um] (as Rao 2023, Fig. 4.1)."""
+    figure, axes = plt.subplots(1, 2, figsize=(10, 4.8))
+    steady = table.get("steady")
+    for ax, (shaft, xs, ys) in zip(axes, (("pinion (input) shaft", "x1", "y1"), ("gear (output) shaft", "x2", "y2"))):
+        keep = range(len(table[xs]))
+        if only_steady and steady is not None:
+            keep = [i for i in keep if steady[i] == 1.0]
+        ax.plot([table[xs][i] * 1e6 for i in keep], [table[ys][i] * 1e6 for i in keep], lw=0.4)
+        ax.set_xlabel("x [um]")
+        ax.set_ylabel("y [um]")
+        ax.set_title(shaft, fontsize=9)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.grid(alpha=0.3)
+    figure.suptitle(title, fontsize=9)
+    figure.tight_layout()
+    written.append(_save_atomically(figure, folder / "orbits.png"))
+
+
+def _full_spectra(folder, summary, title, written):
+    """full_spectrum.png: amplitude against signed frequency of each shaft, forward right and
+    backward left, with the whirl peaks marked (as Rao 2023, Fig. 4.2)."""
+    spectrum = _read_columns(folder / "full_spectrum.csv")
+    peaks = _read_columns(folder / "spectrum_peaks.csv")
+    frame = summary["config"]["spectrum"]["frame"]
+    figure, axes = plt.subplots(2, 1, figsize=(10, 7))
+    for ax, shaft in zip(axes, ("pinion", "gear")):
+        f = [spectrum["frequency_hz"][i] for i, s in enumerate(spectrum["shaft"]) if s == shaft]
+        a = [spectrum["amplitude"][i] * 1e6 for i, s in enumerate(spectrum["shaft"]) if s == shaft]
+        ax.plot(f, a, lw=0.6, color="0.4", label="FFT (display window)")
+        pf = [peaks["frequency_hz"][i] for i, s in enumerate(peaks["shaft"]) if s == shaft]
+        pa = [peaks["amplitude"][i] * 1e6 for i, s in enumerate(peaks["shaft"]) if s == shaft]
+        top = max(a + pa + [1e-30])
+        ax.plot(pf, pa, "o", color="tab:red", ms=3, mfc="none", label="whirl peaks (exact bins or fit)")
+        ax.set_yscale("log")
+        ax.set_ylim(top * 1e-8, top * 3)
+        ax.set_ylabel("0-peak whirl radius [um]")
+        ax.set_title(f"{shaft} shaft ({frame} frame): forward f > 0, backward f < 0", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[-1].set_xlabel("frequency [Hz]")
+    figure.suptitle(title, fontsize=9)
+    figure.tight_layout()
+    written.append(_save_atomically(figure, folder / "full_spectrum.png"))
+
+
+def plot_rotor(result_dir):
+    """orbits.png (steady window), full_spectrum.png and, with a study, study.png: the dynamic
+    whirl amplitudes per case and shaft (thesis §4.5)."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    title = summary["config"].get("title") or "lateral geared rotor"
+    written = []
+    if (folder / "time_history.csv").exists():
+        _orbits(folder, _read_columns(folder / "time_history.csv"), title, written, True)
+    if (folder / "full_spectrum.csv").exists():
+        _full_spectra(folder, summary, title, written)
+    if (folder / "study.csv").exists():
+        study = _read_columns(folder / "study.csv")
+        cases = list(dict.fromkeys(study["case"]))
+        components = [c for c in dict.fromkeys(study["component"]) if c != "static"]
+        figure, axes = plt.subplots(2, 1, figsize=(12, 7), sharex=True)
+        width = 0.8 / len(cases)
+        for ax, shaft in zip(axes, ("pinion", "gear")):
+            for k, case in enumerate(cases):
+                values = {study["component"][i]: study["amplitude"][i] * 1e6 for i in range(len(study["case"]))
+                          if study["case"][i] == case and study["shaft"][i] == shaft}
+                ax.bar([j + k * width for j in range(len(components))], [values[c] for c in components],
+                       width=width, label=case)
+            ax.set_ylabel(f"{shaft} shaft [um]")
+            ax.set_yscale("log")
+            ax.grid(alpha=0.3, axis="y")
+        axes[0].legend(fontsize=7, ncol=3)
+        axes[-1].set_xticks([j + 0.4 - width / 2 for j in range(len(components))])
+        axes[-1].set_xticklabels(components, rotation=60, fontsize=7)
+        ranking = ", ".join(f"{r['group']} {100 * r['max_relative_change']:.0f} %"
+                            for r in summary["results"]["study"]["ranking_mesh"])
+        figure.suptitle(f"{title}\nwhirl amplitudes per case; largest change of the mesh-harmonic RMS: {ranking}",
+                        fontsize=9)
+        figure.tight_layout()
+        written.append(_save_atomically(figure, folder / "study.png"))
+    return written
+
+
+def plot_spectrum(result_dir):
+    """orbits.png and full_spectrum.png of an analysed probe record."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    title = summary["config"].get("title") or summary["results"]["record"]["file"]
+    written = []
+    _orbits(folder, _read_columns(folder / "time_history.csv"), title, written, False)
+    _full_spectra(folder, summary, title, written)
+    return written
+
+
 PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
-            "stats": plot_stats, "hbm": plot_hbm}
+            "stats": plot_stats, "hbm": plot_hbm, "rotor": plot_rotor, "spectrum": plot_spectrum}
 
 
 def main(argv=None):

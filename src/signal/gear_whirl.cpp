@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "geardyn/error.h"
@@ -54,6 +55,37 @@ WhirlComponent inShaftFrame(const WhirlComponent& c, bool shaft_turns_negative) 
   };
   swap("_fwd", "_bwd");
   swap("_bwd", "_fwd");
+  return out;
+}
+
+GearPairSpectrum analyseGearPairRecord(const std::array<std::vector<double>, 4>& channels,
+                                       double sample_rate, double first_sample_time,
+                                       double reference_time, const GearWhirlSetup& setup,
+                                       const GearPairSpectrumOptions& options) {
+  GearPairSpectrum out;
+  for (int shaft = 0; shaft < 2; ++shaft) {
+    const auto& x = channels[2 * shaft];
+    const auto& y = channels[2 * shaft + 1];
+    std::vector<WhirlComponent> components = gearWhirlComponents(setup);
+    out.method = extractWhirlComponents(x, y, sample_rate, components, options.method);
+    const bool turns_negative = shaft == 0 && options.frame == WhirlFrame::kShaft;
+    for (auto& c : components) {
+      c.value *= std::polar(
+          1.0, 2.0 * std::numbers::pi * c.frequency * (reference_time - first_sample_time));
+      c = inShaftFrame(c, turns_negative);
+    }
+    out.peaks[shaft] = std::move(components);
+    FullSpectrum display = fullSpectrum(x, y, sample_rate, options.display_window);
+    if (turns_negative) {  // z* has the spectrum Z*(−f): reverse and conjugate
+      FullSpectrum flipped;
+      for (std::size_t i = display.frequency.size(); i-- > 0;) {
+        flipped.frequency.push_back(-display.frequency[i]);
+        flipped.coefficient.push_back(std::conj(display.coefficient[i]));
+      }
+      display = std::move(flipped);
+    }
+    out.display[shaft] = std::move(display);
+  }
   return out;
 }
 

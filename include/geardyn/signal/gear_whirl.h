@@ -6,6 +6,7 @@
 /// record (§5.4–5.5: whole shaft cycles, phase compensation) and the change to a shaft's own
 /// rotation frame.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,30 @@ enum class WhirlFrame {
 /// A component seen in another frame: for a shaft turning in −z, the frequency changes sign, the
 /// value is conjugated and fwd/bwd in the name swap.
 WhirlComponent inShaftFrame(const WhirlComponent& probe_frame_component, bool shaft_turns_negative);
+
+/// The whirl components of both shafts of a gear pair from a record (x₁, y₁ at the pinion,
+/// x₂, y₂ at the gear), with phases referred to one time and reported in a frame.
+struct GearPairSpectrumOptions {
+  WhirlFrame frame = WhirlFrame::kProbe;
+  WhirlExtraction method = WhirlExtraction::kAuto;
+  SpectrumWindow display_window = SpectrumWindow::kHann;  ///< for the displayed full spectra
+};
+
+struct GearPairSpectrum {
+  /// [0] pinion shaft, [1] gear shaft: the components of gearWhirlComponents() (names and
+  /// frequencies in the reported frame), values = complex 0-peak radius at the reference time.
+  std::array<std::vector<WhirlComponent>, 2> peaks;
+  std::array<FullSpectrum, 2> display;              ///< full spectra for display (frame applied)
+  WhirlExtraction method = WhirlExtraction::kAuto;  ///< the method used
+};
+
+/// Analyses the samples [begin, end) of the four channels, sample k at time t₀ + k/f_s; phases
+/// are referred to `reference_time` (c_ref = c(t_first) e^{j2πf(t_ref − t_first)}, exact for
+/// the steady components).
+GearPairSpectrum analyseGearPairRecord(const std::array<std::vector<double>, 4>& channels,
+                                       double sample_rate, double first_sample_time,
+                                       double reference_time, const GearWhirlSetup& setup,
+                                       const GearPairSpectrumOptions& options);
 
 /// Keyphasor (once-per-revolution) pulses.
 struct KeyphasorPulses {

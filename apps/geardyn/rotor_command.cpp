@@ -1,0 +1,410 @@
+/// `geardyn rotor CONFIG`: the lateral geared rotor of Rao 2023 in time and frequency domain,
+/// its full spectra, simulated probe records and the parametric study of §4.5.
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <random>
+
+#include "command.h"
+#include "geardyn/error.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/probe_record.h"
+#include "geardyn/io/result_writer.h"
+#include "geardyn/io/rotor_io.h"
+#include "plotting.h"
+
+namespace geardyn::cli {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+GearWhirlSetup setupOf(const LateralRotorModel& model) {
+  const auto& s = model.spec();
+  return {s.pinion_speed, s.pinion_teeth, s.gear_teeth, model.harmonics()};
+}
+
+/// Sampling must resolve the highest component (mesh harmonic n) without aliasing.
+void requireNyquist(const LateralRotorModel& model, double sample_rate, const std::string& key) {
+  const double highest = model.meshOmega() * std::max(1, model.harmonics()) / kTwoPi;
+  if (sample_rate <= 2.0 * highest) {
+    throw InputError(
+        key, fmt::format("{:.6g} Hz sampling", sample_rate),
+        fmt::format("must exceed twice the highest mesh harmonic ({:.6g} Hz)", highest));
+  }
+}
+
+/// A once-per-revolution keyphasor: 0 → 1 at each pinion revolution (pinion angle ω_p t = 2πk),
+/// with linear edges 4 samples wide centred on the revolution, high for 10 % of a revolution
+/// (an eddy-current probe over a key: the crossing of 0.5 is recovered exactly by linear
+/// interpolation).
+double keyphasorAt(double t, double speed, double sample_rate) {
+  double phase = std::fmod(t * speed, 1.0);
+  if (phase < 0.0) phase += 1.0;
+  const double since = phase / speed, to_next = (1.0 - phase) / speed;
+  const double ramp = 4.0 / sample_rate, high = 0.1 / speed;
+  if (to_next < ramp / 2) return 0.5 - to_next / ramp;
+  if (since < ramp / 2) return 0.5 + since / ramp;
+  if (since < high) return 1.0;
+  if (since < high + ramp) return 1.0 - (since - high) / ramp;
+  return 0.0;
+}
+
+struct StudyCase {
+  std::string name, group;
+  double factor = 1.0;
+  LateralRotorSpec spec;
+};
+
+std::vector<StudyCase> studyCases(const io::Config& config, const LateralRotorSpec& base) {
+  const double zeta_m_known = base.mesh_damping / std::sqrt(base.mesh_stiffness);
+  std::vector<StudyCase> cases{{"baseline", "baseline", 1.0, base}};
+  for (double f : config.realList("study.speed_factors")) {
+    if (!(f > 0.0)) throw InputError("study.speed_factors", fmt::format("{:g}", f), "factors > 0");
+    StudyCase c{fmt::format("speed_x{:g}", f), "speed", f, base};
+    c.spec.pinion_speed *= f;
+    cases.push_back(c);
+  }
+  const double d = config.real("study.stiffness_te_change");
+  for (int sign : {+1, -1}) {
+    StudyCase c{sign > 0 ? fmt::format("stiffness_up_{:g}_te_down", d)
+                         : fmt::format("stiffness_down_{:g}_te_up", d),
+                "stiffness_te", 1.0 + sign * d, base};
+    c.spec.mesh_stiffness *= 1.0 + sign * d;
+    // Thesis §4.5: the mesh damping follows the stiffness, c_m = 2 ζ_m √(k_m m).
+    c.spec.mesh_damping = zeta_m_known * std::sqrt(c.spec.mesh_stiffness);
+    for (auto* list : {&c.spec.te_x, &c.spec.te_y})
+      for (auto& h : *list) h.amplitude *= 1.0 - sign * d;
+    c.spec.mean_te *= 1.0 - sign * d;
+    cases.push_back(c);
+  }
+  for (double f : config.realList("study.runout_factors")) {
+    if (!(f >= 0.0)) throw InputError("study.runout_factors", fmt::format("{:g}", f), ">= 0");
+    StudyCase c{fmt::format("runout_x{:g}", f), "runout", f, base};
+    c.spec.pinion_runout *= f;
+    c.spec.gear_runout *= f;
+    cases.push_back(c);
+  }
+  for (double f : config.realList("study.mesh_damping_factors")) {
+    if (!(f >= 0.0)) throw InputError("study.mesh_damping_factors", fmt::format("{:g}", f), ">= 0");
+    StudyCase c{fmt::format("mesh_damping_x{:g}", f), "mesh_damping", f, base};
+    c.spec.mesh_damping *= f;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+/// RMS of a shaft's whirl components whose names start with `prefix` ("mesh_": the gear-mesh
+/// vibration; "": every dynamic component): √(Σ |c|²) over them, the static one excluded [m].
+double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& prefix) {
+  double sum = 0.0;
+  for (const auto& c : peaks)
+    if (c.name != "static" && c.name.rfind(prefix, 0) == 0) sum += std::norm(c.value);
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+int runRotor(const io::Config& config, const CommandOptions& options) {
+  const LateralRotorModel model(io::lateralRotorSpecFromConfig(config));
+  const GearPairSpectrumOptions spectrum_options = io::gearPairSpectrumOptionsFromConfig(config);
+  const GearWhirlSetup setup = setupOf(model);
+  const double max_frequency =
+      config.optionalReal("spectrum.max_frequency")
+          .value_or(1.25 * setup.meshFrequency() * std::max(1, model.harmonics()));
+  const std::uint64_t seed = static_cast<std::uint64_t>(config.integer("spectrum.seed"));
+  const double noise = config.real("spectrum.noise_level");
+  std::vector<std::string> warnings;
+
+  io::RunSummary summary;
+  summary.command = "rotor";
+  summary.config_source = options.config_file.string();
+  summary.config = config.resolved();
+  if (noise > 0.0) summary.seed = seed;
+  io::ResultWriter writer(options.resultFolder());
+  const auto& s = model.spec();
+  summary.results["frequencies"] = {{"pinion_hz", s.pinion_speed},
+                                    {"gear_hz", setup.gearSpeed()},
+                                    {"mesh_hz", setup.meshFrequency()},
+                                    {"common_period_s", model.commonPeriod()}};
+  summary.results["damping"] = {{"pinion_shaft", s.pinion_shaft_damping},
+                                {"gear_shaft", s.gear_shaft_damping},
+                                {"mesh", s.mesh_damping}};
+  summary.results["conventions"] = io::whirlConventionsJson(
+      spectrum_options.frame,
+      "t = 0 of the simulation (≡ any multiple of the common period in steady state), where the "
+      "pinion and gear angles are their runout phases");
+
+  // Frequency domain: exact, microseconds.
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto parts = solveRotorFrequencyResponse(model);
+  const double frequency_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto exact = io::frequencyDomainPeaks(parts, spectrum_options.frame);
+  writer.writeCsv("frequency_components.csv", io::whirlPeaksTable(exact));
+  summary.results["frequency_domain"] = {{"wall_time_s", frequency_seconds},
+                                         {"peaks", io::whirlPeaksJson(exact)}};
+
+  std::string text = fmt::format(
+      "lateral geared rotor: pinion {:.6g} Hz, gear {:.6g} Hz, mesh {:.6g} Hz, common period "
+      "{:.6g} s\n",
+      s.pinion_speed, setup.gearSpeed(), setup.meshFrequency(), model.commonPeriod());
+  bool ok = true;
+  RotorTimeResponse time;
+  if (config.boolean("time.enabled")) {
+    const RotorTimeOptions time_options = io::rotorTimeOptionsFromConfig(config);
+    const auto start = std::chrono::steady_clock::now();
+    time = solveRotorTimeResponse(model, time_options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    requireNyquist(model, time.sample_rate, "time.samples");
+    summary.results["time_domain"] = {{"status", toString(time.status)},
+                                      {"message", time.message},
+                                      {"wall_time_s", seconds},
+                                      {"steps", time.steps},
+                                      {"rhs_evaluations", time.rhs_evaluations},
+                                      {"sample_rate_hz", time.sample_rate},
+                                      {"samples", time.t.size()},
+                                      {"transient_end_s", time.t[time.transient_end]},
+                                      {"window_start_s", time.t[time.window_begin]},
+                                      {"window_periods", time.window_periods}};
+    io::CsvTable history({"t", "x1", "y1", "x2", "y2", "steady"});
+    for (std::size_t k = 0; k < time.t.size(); ++k) {
+      const auto& e = time.eta[k];
+      history.addRow({time.t[k], e(0), e(1), e(2), e(3),
+                      static_cast<long long>(static_cast<long long>(k) >= time.window_begin &&
+                                             static_cast<long long>(k) < time.window_end)});
+    }
+    writer.writeCsv("time_history.csv", history);
+    text +=
+        fmt::format("  time domain: {} ({} steps, {:.3g} s)\n", time.message, time.steps, seconds);
+    if (!time.converged()) {
+      ok = false;
+      std::cerr << "geardyn rotor: " << time.message << "\n";
+    } else {
+      std::array<std::vector<double>, 4> channels;
+      for (int c = 0; c < 4; ++c) {
+        for (long long k = time.window_begin; k < time.window_end; ++k)
+          channels[c].push_back(time.eta[k](c));
+      }
+      if (noise > 0.0) {
+        std::mt19937_64 rng(seed);
+        for (auto& channel : channels) addRelativeNoise(channel, noise, rng);
+      }
+      const GearPairSpectrum spectrum = analyseGearPairRecord(
+          channels, time.sample_rate, time.t[time.window_begin], 0.0, setup, spectrum_options);
+      writer.writeCsv("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
+      writer.writeCsv("full_spectrum.csv", io::fullSpectrumTable(spectrum.display, max_frequency));
+      // Time domain against the exact solution, component by component.
+      double largest = 0.0, amplitude_error = 0.0, phase_error = 0.0;
+      for (int sh = 0; sh < 2; ++sh)
+        for (const auto& c : exact[sh]) largest = std::max(largest, std::abs(c.value));
+      for (int sh = 0; sh < 2; ++sh) {
+        for (std::size_t i = 0; i < exact[sh].size(); ++i) {
+          const auto a = spectrum.peaks[sh][i].value, b = exact[sh][i].value;
+          if (std::abs(b) < 1e-3 * largest) continue;  // phases of vanishing peaks mean nothing
+          amplitude_error = std::max(amplitude_error, std::abs(std::abs(a) / std::abs(b) - 1.0));
+          phase_error = std::max(phase_error, std::abs(std::arg(a / b)));
+        }
+      }
+      summary.results["time_domain"]["extraction"] =
+          spectrum.method == WhirlExtraction::kExactBins ? "exact_bins" : "least_squares";
+      summary.results["time_domain"]["peaks"] = io::whirlPeaksJson(spectrum.peaks);
+      summary.results["time_vs_frequency"] = {
+          {"max_relative_amplitude_difference", amplitude_error},
+          {"max_phase_difference_rad", phase_error},
+          {"note",
+           "over peaks above 1e-3 of the largest; includes the noise when noise_level > 0"}};
+      text += fmt::format(
+          "  time vs frequency domain: amplitudes within {:.2e}, phases within {:.2e} rad\n",
+          amplitude_error, phase_error);
+    }
+  }
+
+  if (config.boolean("frequency.superpose")) {
+    std::vector<double> times;
+    if (!time.t.empty()) {
+      times.assign(time.t.begin() + time.window_begin, time.t.begin() + time.window_end);
+    } else {
+      const int n = 4096;
+      for (int k = 0; k < n; ++k) times.push_back(model.commonPeriod() * k / n);
+    }
+    const auto history = superposeWhirlResponse(parts, times);
+    io::CsvTable table({"t", "x1", "y1", "x2", "y2"});
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const auto& e = history[k];
+      table.addRow({times[k], e(0), e(1), e(2), e(3)});
+    }
+    writer.writeCsv("frequency_history.csv", table);
+  }
+
+  // Simulated probe records with a keyphasor.
+  const auto formats = config.stringList("measurement.formats");
+  if (!formats.empty()) {
+    const double fs = config.real("measurement.sample_rate");
+    requireNyquist(model, fs, "measurement.sample_rate");
+    const double period = model.commonPeriod();
+    double start = 0.0;
+    if (auto given = config.optionalReal("measurement.start")) {
+      start = *given;
+    } else if (!time.t.empty() && time.converged()) {
+      start = std::ceil(time.t[time.transient_end] / period - 1e-9) * period;
+    } else {
+      throw InputError("measurement.start", "(not set)",
+                       "give a start time, or enable [time] so the transient is detected");
+    }
+    const double duration = config.optionalReal("measurement.duration").value_or(2.0 * period);
+    const auto n = static_cast<long long>(std::floor(duration * fs));
+    // Two samples before the start so the first pulse's rising edge is fully sampled.
+    std::vector<double> times;
+    for (long long k = -2; k < n; ++k) times.push_back(start + static_cast<double>(k) / fs);
+    if (times.front() < 0.0) {
+      throw InputError("measurement.start", fmt::format("{:g}", start),
+                       fmt::format(">= {:g} s (two samples)", 2.0 / fs));
+    }
+    const auto eta = sampleRotorTimeResponse(model, times, config.real("time.relative_tolerance"),
+                                             config.real("time.absolute_tolerance"));
+    io::ProbeRecord record;
+    record.sample_rate = fs;
+    record.start_time = times.front();
+    record.names = {"x1", "y1", "x2", "y2", "keyphasor"};
+    record.channels.assign(5, std::vector<double>(times.size()));
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);
+      record.channels[4][k] = keyphasorAt(times[k], s.pinion_speed, fs);
+    }
+    nlohmann::ordered_json files = nlohmann::ordered_json::array();
+    for (const auto& f : formats) {
+      const auto format = f == "csv"   ? io::RecordFormat::kCsv
+                          : f == "wav" ? io::RecordFormat::kWav
+                                       : io::RecordFormat::kHdf5;
+      const std::string name = f == "hdf5" ? "measurement.h5" : fmt::format("measurement.{}", f);
+      io::writeProbeRecord(writer.folder() / name, format, record);
+      writer.recordFile(name);
+      files.push_back(name);
+    }
+    summary.results["measurement"] = {{"files", files},
+                                      {"sample_rate_hz", fs},
+                                      {"start_s", record.start_time},
+                                      {"samples", times.size()},
+                                      {"keyphasor",
+                                       "pulse at each pinion revolution, rising "
+                                       "through 0.5 at pinion angle 2 pi k"}};
+  }
+
+  // Parametric study (§4.5).
+  if (config.boolean("study.enabled")) {
+    const bool in_time = config.string("study.method") == "time";
+    io::CsvTable table(
+        {"case", "group", "factor", "shaft", "component", "frequency_hz", "amplitude", "phase"});
+    io::CsvTable totals({"case", "group", "factor", "shaft", "mesh_rms_m", "mesh_relative_change",
+                         "dynamic_rms_m", "dynamic_relative_change"});
+    // Two measures: the gear-mesh vibration (mesh harmonics) and the whole dynamic orbit
+    // (mesh harmonics + 1x runout circles).
+    std::array<std::array<double, 2>, 2> baseline{};  // [measure][shaft]
+    std::array<std::map<std::string, double>, 2> group_change;
+    nlohmann::ordered_json cases_json = nlohmann::ordered_json::array();
+    for (const StudyCase& c : studyCases(config, model.spec())) {
+      const LateralRotorModel m(c.spec);
+      std::array<std::vector<WhirlComponent>, 2> peaks;
+      if (in_time) {
+        RotorTimeOptions o = io::rotorTimeOptionsFromConfig(config);
+        o.samples =
+            static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
+        const RotorTimeResponse r = solveRotorTimeResponse(m, o);
+        if (!r.converged()) {
+          warnings.push_back(fmt::format("study case {}: {}", c.name, r.message));
+          ok = false;
+          continue;
+        }
+        std::array<std::vector<double>, 4> channels;
+        for (int ch = 0; ch < 4; ++ch)
+          for (long long k = r.window_begin; k < r.window_end; ++k)
+            channels[ch].push_back(r.eta[k](ch));
+        peaks = analyseGearPairRecord(channels, r.sample_rate, r.t[r.window_begin], 0.0, setupOf(m),
+                                      spectrum_options)
+                    .peaks;
+      } else {
+        peaks = io::frequencyDomainPeaks(solveRotorFrequencyResponse(m), spectrum_options.frame);
+      }
+      nlohmann::ordered_json case_json = {
+          {"case", c.name}, {"group", c.group}, {"factor", c.factor}};
+      for (int sh = 0; sh < 2; ++sh) {
+        for (const auto& p : peaks[sh]) {
+          table.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), p.name,
+                        p.frequency, std::abs(p.value), std::arg(p.value)});
+        }
+        std::array<double, 2> rms{whirlRms(peaks[sh], "mesh_"), whirlRms(peaks[sh], "")};
+        std::array<double, 2> change{0.0, 0.0};
+        for (int k = 0; k < 2; ++k) {
+          if (c.group == "baseline") baseline[k][sh] = rms[k];
+          change[k] = baseline[k][sh] > 0.0 ? rms[k] / baseline[k][sh] - 1.0 : 0.0;
+          if (c.group != "baseline")
+            group_change[k][c.group] = std::max(group_change[k][c.group], std::abs(change[k]));
+        }
+        totals.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), rms[0],
+                       change[0], rms[1], change[1]});
+        case_json[io::kShaftNames[sh]] = {{"mesh_rms_m", rms[0]},
+                                          {"mesh_relative_change", change[0]},
+                                          {"dynamic_rms_m", rms[1]},
+                                          {"dynamic_relative_change", change[1]}};
+      }
+      cases_json.push_back(case_json);
+    }
+    writer.writeCsv("study.csv", table);
+    writer.writeCsv("study_totals.csv", totals);
+    std::array<nlohmann::ordered_json, 2> rankings;
+    std::array<std::string, 2> dominant;
+    for (int k = 0; k < 2; ++k) {
+      std::vector<std::pair<std::string, double>> ranking(group_change[k].begin(),
+                                                          group_change[k].end());
+      std::sort(ranking.begin(), ranking.end(),
+                [](const auto& a, const auto& b) { return a.second > b.second; });
+      rankings[k] = nlohmann::ordered_json::array();
+      for (const auto& [group, change] : ranking)
+        rankings[k].push_back({{"group", group}, {"max_relative_change", change}});
+      if (!ranking.empty())
+        dominant[k] =
+            fmt::format("{} ({:.1f} %)", ranking.front().first, 100 * ranking.front().second);
+    }
+    summary.results["study"] = {
+        {"method", in_time ? "time" : "frequency"},
+        {"measures",
+         {{"mesh_rms",
+           "sqrt(sum |c|^2) over the mesh harmonics, forward and backward: the "
+           "gear-mesh vibration"},
+          {"dynamic_rms",
+           "the same over every dynamic component (mesh harmonics and the 1x "
+           "runout circles)"}}},
+        {"cases", cases_json},
+        {"ranking_mesh", rankings[0]},
+        {"ranking_dynamic", rankings[1]}};
+    text +=
+        fmt::format("  study: dominant source of the mesh vibration {}, of the whole orbit {}\n",
+                    dominant[0], dominant[1]);
+  }
+
+  summary.status = ok ? "ok" : (time.converged() ? "study_incomplete" : toString(time.status));
+  summary.warnings = warnings;
+  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  auto path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    for (const auto& file : drawPlots("rotor", writer.folder())) writer.recordFile(file);
+    path = writer.writeSummary(summary);
+  }
+  for (int sh = 0; sh < 2; ++sh) {
+    double mesh1 = 0.0;
+    for (const auto& c : exact[sh])
+      if (c.name.rfind("mesh_1_", 0) == 0) mesh1 = std::max(mesh1, std::abs(c.value));
+    text += fmt::format("  {} shaft: static |z| {:.4g} m, largest 1st-mesh whirl {:.4g} m\n",
+                        io::kShaftNames[sh], std::abs(exact[sh].front().value), mesh1);
+  }
+  text += fmt::format("results: {}\n", path.string());
+  report(options, text);
+  return ok ? kExitOk : kExitNumericalFailure;
+}
+
+}  // namespace geardyn::cli
