@@ -18,6 +18,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev libhdf5-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py
+  python3-scipy  # bench/rotor_scipy_compare.py only
 )
 
 missing=()

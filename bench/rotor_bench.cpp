@@ -1,0 +1,62 @@
+/// Lateral geared rotor (Rao 2023 Table 4.1): 15 s of Dormand–Prince at rtol 1e-8 from rest
+/// (the target: >= 50x faster than scipy's solve_ivp RK45 at the same tolerances, see
+/// bench/rotor_scipy_compare.py), the exact frequency-domain solution (target: microseconds),
+/// and the whirl components of the steady window by exact FFT bins.
+
+#include <benchmark/benchmark.h>
+
+#include "geardyn/signal/full_spectrum.h"
+#include "geardyn/solvers/rotor_response.h"
+
+namespace {
+
+void BM_RotorDormandPrince15s(benchmark::State& state) {
+  const geardyn::LateralRotorModel model(geardyn::raoTable41Spec());
+  geardyn::RotorTimeOptions options;  // 15 s, 2^15 samples, rtol 1e-8
+  long long steps = 0;
+  for (auto _ : state) {
+    const auto r = geardyn::solveRotorTimeResponse(model, options);
+    steps = r.steps;
+    benchmark::DoNotOptimize(r.eta.back());
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+}
+BENCHMARK(BM_RotorDormandPrince15s)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_RotorFrequencyDomain(benchmark::State& state) {
+  const geardyn::LateralRotorModel model(geardyn::raoTable41Spec());
+  for (auto _ : state) benchmark::DoNotOptimize(geardyn::solveRotorFrequencyResponse(model));
+}
+BENCHMARK(BM_RotorFrequencyDomain)->Unit(benchmark::kMicrosecond);
+
+void BM_RotorForceEvaluation(benchmark::State& state) {
+  const geardyn::LateralRotorModel model(geardyn::raoTable41Spec());
+  double t = 0.0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(model.force(t));
+    t += 1e-5;
+  }
+}
+BENCHMARK(BM_RotorForceEvaluation);
+
+void BM_WhirlComponentsExactBins(benchmark::State& state) {
+  const geardyn::LateralRotorModel model(geardyn::raoTable41Spec());
+  const auto parts = geardyn::solveRotorFrequencyResponse(model);
+  std::vector<double> t, x, y;
+  const int n = 6950 * 4;  // four common periods at the default sample rate
+  for (int k = 0; k < n; ++k) t.push_back(4 * model.commonPeriod() * k / n);
+  for (const auto& e : geardyn::superposeWhirlResponse(parts, t)) {
+    x.push_back(e(0));
+    y.push_back(e(1));
+  }
+  std::vector<geardyn::WhirlComponent> components;
+  for (const auto& p : parts) components.push_back({p.name, p.omega / (2 * M_PI), 0.0});
+  const double fs = n / (4 * model.commonPeriod());
+  for (auto _ : state) {
+    geardyn::extractWhirlComponents(x, y, fs, components);
+    benchmark::DoNotOptimize(components.front().value);
+  }
+}
+BENCHMARK(BM_WhirlComponentsExactBins)->Unit(benchmark::kMillisecond);
+
+}  // namespace
