@@ -26,7 +26,7 @@ CLI = sys.argv[1] if len(sys.argv) > 1 else "build/bin/geardyn"
 m1, m2, ks1, ks2, km = 0.310, 1.270, 1e6, 1e6, 6e8
 zeta_s = zeta_m = 0.01
 cs1, cs2 = 2 * zeta_s * math.sqrt(ks1 * m1), 2 * zeta_s * math.sqrt(ks2 * m2)
-cm = 2 * zeta_m * math.sqrt(km * (m1 + m2) / 2)
+cm = 2 * zeta_m * math.sqrt(km * m1 * m2 / (m1 + m2))  # eq. 4.9
 em, g = 50e-6, 9.81
 tex, phx = [40e-6, 25e-6, 35e-6, 20e-6, 10e-6], 0.785
 tey, phy = [30e-6, 15e-6, 25e-6, 10e-6, 5e-6], 1.570

@@ -125,11 +125,11 @@ ConfigSchema rotorSchema() {
       .defaultValue(0.01)
       .doc("zeta_m: c_m = 2 zeta_m sqrt(k_m m_mesh)");
   schema.string("mesh.damping_mass")
-      .choices({"average", "effective"})
-      .defaultValue("average")
+      .choices({"effective", "arithmetic_mean"})
+      .defaultValue("effective")
       .doc(
-          "m_mesh for the ratio: average (m1 + m2)/2 as the thesis §4.5, or effective m1 m2/(m1 "
-          "+ m2)");
+          "m_mesh for the ratio: effective m1 m2/(m1 + m2), the thesis's \"average gearing mass\" "
+          "(eq. 4.9), or arithmetic_mean (m1 + m2)/2");
   schema.real("mesh.damping")
       .unit("N s/m")
       .min(0.0)
@@ -323,8 +323,8 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   s.gear_runout_phase = config.real("runout.gear_phase");
   lateralRotorDamping(
       s, config.real("rotor.shaft_damping_ratio"), config.real("mesh.damping_ratio"),
-      config.string("mesh.damping_mass") == "average" ? MeshDampingMass::kAverage
-                                                      : MeshDampingMass::kEffective);
+      config.string("mesh.damping_mass") == "effective" ? MeshDampingMass::kEffective
+                                                        : MeshDampingMass::kArithmeticMean);
   if (auto c = config.optionalReal("rotor.pinion_shaft_damping")) s.pinion_shaft_damping = *c;
   if (auto c = config.optionalReal("rotor.gear_shaft_damping")) s.gear_shaft_damping = *c;
   if (auto c = config.optionalReal("mesh.damping")) s.mesh_damping = *c;

@@ -80,7 +80,7 @@ void lateralRotorDamping(LateralRotorSpec& spec, double shaft_ratio, double mesh
       2.0 * shaft_ratio * std::sqrt(spec.pinion_shaft_stiffness * spec.pinion_mass);
   spec.gear_shaft_damping =
       2.0 * shaft_ratio * std::sqrt(spec.gear_shaft_stiffness * spec.gear_mass);
-  const double m = mesh_mass == MeshDampingMass::kAverage
+  const double m = mesh_mass == MeshDampingMass::kArithmeticMean
                        ? 0.5 * (spec.pinion_mass + spec.gear_mass)
                        : spec.pinion_mass * spec.gear_mass / (spec.pinion_mass + spec.gear_mass);
   spec.mesh_damping = 2.0 * mesh_ratio * std::sqrt(spec.mesh_stiffness * m);

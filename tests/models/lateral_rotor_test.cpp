@@ -175,10 +175,10 @@ TEST(LateralRotor, FrequenciesAndDampingMapping) {
   const auto& s = model.spec();
   EXPECT_NEAR(s.pinion_shaft_damping, 2 * 0.01 * std::sqrt(1e6 * 0.31), 1e-12);
   EXPECT_NEAR(s.gear_shaft_damping, 2 * 0.01 * std::sqrt(1e6 * 1.27), 1e-12);
-  EXPECT_NEAR(s.mesh_damping, 2 * 0.01 * std::sqrt(6e8 * 0.79), 1e-9);
+  EXPECT_NEAR(s.mesh_damping, 2 * 0.01 * std::sqrt(6e8 * 0.31 * 1.27 / 1.58), 1e-9);  // eq. 4.9
   LateralRotorSpec e = s;
-  lateralRotorDamping(e, 0.01, 0.01, MeshDampingMass::kEffective);
-  EXPECT_NEAR(e.mesh_damping, 2 * 0.01 * std::sqrt(6e8 * 0.31 * 1.27 / 1.58), 1e-9);
+  lateralRotorDamping(e, 0.01, 0.01, MeshDampingMass::kArithmeticMean);
+  EXPECT_NEAR(e.mesh_damping, 2 * 0.01 * std::sqrt(6e8 * 0.79), 1e-9);
 }
 
 TEST(LateralRotor, RejectsNonPhysicalData) {

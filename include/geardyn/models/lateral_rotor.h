@@ -48,8 +48,10 @@ struct TeHarmonic {
 
 /// How damping ratios map to dashpots (thesis Table 4.1 gives ratios, §4.5 the mesh's mass).
 enum class MeshDampingMass {
-  kAverage,  ///< c_m = 2 ζ_m √(k_m (m₁ + m₂)/2): "average mass of the two gears" (thesis §4.5)
-  kEffective,  ///< c_m = 2 ζ_m √(k_m m₁m₂/(m₁ + m₂)): the relative-motion (two-mass) mode
+  /// c_m = 2 ζ_m √(k_m m₁m₂/(m₁ + m₂)): the thesis's "average gearing mass" m_avg of eq. 4.9
+  /// (the two-mass relative mode; §4.5 words it "average mass"), used by its identification.
+  kEffective,
+  kArithmeticMean,  ///< c_m = 2 ζ_m √(k_m (m₁ + m₂)/2)
 };
 
 /// Physical data of the rotor, SI units. Damping is given as dashpots; see
@@ -83,9 +85,9 @@ struct LateralRotorSpec {
 /// Dashpots from damping ratios: c_s1 = 2 ζ_s √(k_s1 m₁), c_s2 = 2 ζ_s √(k_s2 m₂) (each shaft
 /// with its own gear, a one-mass oscillator), c_m = 2 ζ_m √(k_m m_mesh) with m_mesh as chosen.
 void lateralRotorDamping(LateralRotorSpec& spec, double shaft_ratio, double mesh_ratio,
-                         MeshDampingMass mesh_mass = MeshDampingMass::kAverage);
+                         MeshDampingMass mesh_mass = MeshDampingMass::kEffective);
 
-/// The Table 4.1 data set (with ζ_s = ζ_m = 0.01, average mesh mass).
+/// The Table 4.1 data set (with ζ_s = ζ_m = 0.01, the eq. 4.9 mesh mass).
 LateralRotorSpec raoTable41Spec();
 
 /// A steady-state whirl component of the forcing or of the response: z = c e^{jΩt}.
