@@ -210,6 +210,8 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
           phase_error = std::max(phase_error, std::abs(std::arg(a / b)));
         }
       }
+      summary.results["coefficient_noise"] = {{"pinion", spectrum.coefficient_sigma[0]},
+                                              {"gear", spectrum.coefficient_sigma[1]}};
       summary.results["time_domain"]["extraction"] =
           spectrum.method == WhirlExtraction::kExactBins ? "exact_bins" : "least_squares";
       summary.results["time_domain"]["peaks"] = io::whirlPeaksJson(spectrum.peaks);

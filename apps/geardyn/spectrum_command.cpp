@@ -142,6 +142,8 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
                                       "is taken as 0 there too, the gear-ratio adjustment of "
                                       "thesis §5.5)"
                                     : "the record's first sample")},
+      {"coefficient_noise",
+       {{"pinion", spectrum.coefficient_sigma[0]}, {"gear", spectrum.coefficient_sigma[1]}}},
       {"peaks", io::whirlPeaksJson(spectrum.peaks)}};
   if (!keyphasor_json.is_null()) summary.results["keyphasor"] = keyphasor_json;
   auto path = writer.writeSummary(summary);

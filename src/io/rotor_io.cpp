@@ -71,13 +71,7 @@ std::vector<TeHarmonic> harmonicsOf(const Config& config, const std::string& amp
 
 }  // namespace
 
-ConfigSchema rotorSchema() {
-  ConfigSchema schema("rotor",
-                      "Lateral geared rotor with asymmetric transmission error (Rao 2023, "
-                      "Fig. 2.1): Dormand-Prince response from rest, exact frequency-domain "
-                      "steady state, orbits, full spectra, simulated probe records, parametric "
-                      "study. Defaults are the thesis's Table 4.1.");
-  schema.string("title").optional().doc("free text describing the study");
+void addRotorSection(ConfigSchema& schema, bool with_speed) {
   schema.section("rotor", "Masses at mid-span of shafts on rigid bearings (Table 4.1).");
   schema.real("rotor.pinion_mass").unit("kg").positive().defaultValue(0.310).doc("m1");
   schema.real("rotor.gear_mass").unit("kg").positive().defaultValue(1.270).doc("m2");
@@ -110,11 +104,23 @@ ConfigSchema rotorSchema() {
   schema.real("rotor.gravity").unit("m/s^2").min(0.0).defaultValue(9.81).doc("g, acting along -y");
   schema.integer("rotor.pinion_teeth").min(2).max(100000).defaultValue(16).doc("t_p");
   schema.integer("rotor.gear_teeth").min(2).max(100000).defaultValue(35).doc("t_g");
-  schema.real("rotor.pinion_speed_rpm")
-      .unit("rpm")
-      .positive()
-      .defaultValue(660.0)
-      .doc("N_p; the pinion turns in -z, the gear in +z (Rao eq. 2.2)");
+  if (with_speed) {
+    schema.real("rotor.pinion_speed_rpm")
+        .unit("rpm")
+        .positive()
+        .defaultValue(660.0)
+        .doc("N_p; the pinion turns in -z, the gear in +z (Rao eq. 2.2)");
+  }
+}
+
+ConfigSchema rotorSchema() {
+  ConfigSchema schema("rotor",
+                      "Lateral geared rotor with asymmetric transmission error (Rao 2023, "
+                      "Fig. 2.1): Dormand-Prince response from rest, exact frequency-domain "
+                      "steady state, orbits, full spectra, simulated probe records, parametric "
+                      "study. Defaults are the thesis's Table 4.1.");
+  schema.string("title").optional().doc("free text describing the study");
+  addRotorSection(schema, true);
 
   schema.section("mesh", "Mesh spring, damper and transmission error (eqs. 2.6-2.9).");
   schema.real("mesh.stiffness").unit("N/m").positive().defaultValue(6e8).doc("k_m");
@@ -299,7 +305,7 @@ ConfigSchema spectrumSchema() {
   return schema;
 }
 
-LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
+LateralRotorSpec knownRotorFromConfig(const Config& config) {
   LateralRotorSpec s;
   s.pinion_mass = config.real("rotor.pinion_mass");
   s.gear_mass = config.real("rotor.gear_mass");
@@ -308,7 +314,22 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   s.gravity = config.real("rotor.gravity");
   s.pinion_teeth = static_cast<int>(config.integer("rotor.pinion_teeth"));
   s.gear_teeth = static_cast<int>(config.integer("rotor.gear_teeth"));
-  s.pinion_speed = config.real("rotor.pinion_speed_rpm") / 60.0;
+  if (config.has("rotor.pinion_speed_rpm"))
+    s.pinion_speed = config.real("rotor.pinion_speed_rpm") / 60.0;
+  const double zeta = config.real("rotor.shaft_damping_ratio");
+  s.pinion_shaft_damping =
+      config.optionalReal("rotor.pinion_shaft_damping")
+          .value_or(2.0 * zeta * std::sqrt(s.pinion_shaft_stiffness * s.pinion_mass));
+  s.gear_shaft_damping =
+      config.optionalReal("rotor.gear_shaft_damping")
+          .value_or(2.0 * zeta * std::sqrt(s.gear_shaft_stiffness * s.gear_mass));
+  s.te_x.clear();
+  s.te_y.clear();
+  return s;
+}
+
+LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
+  LateralRotorSpec s = knownRotorFromConfig(config);
   s.mesh_stiffness = config.real("mesh.stiffness");
   s.mean_te = config.real("mesh.mean_te");
   s.te_x = harmonicsOf(config, "mesh.te_x", "mesh.te_x_phase");
@@ -321,13 +342,12 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   s.pinion_runout_phase = config.real("runout.pinion_phase");
   s.gear_runout = config.real("runout.gear");
   s.gear_runout_phase = config.real("runout.gear_phase");
-  lateralRotorDamping(
-      s, config.real("rotor.shaft_damping_ratio"), config.real("mesh.damping_ratio"),
-      config.string("mesh.damping_mass") == "effective" ? MeshDampingMass::kEffective
-                                                        : MeshDampingMass::kArithmeticMean);
-  if (auto c = config.optionalReal("rotor.pinion_shaft_damping")) s.pinion_shaft_damping = *c;
-  if (auto c = config.optionalReal("rotor.gear_shaft_damping")) s.gear_shaft_damping = *c;
-  if (auto c = config.optionalReal("mesh.damping")) s.mesh_damping = *c;
+  const double m = config.string("mesh.damping_mass") == "effective"
+                       ? s.pinion_mass * s.gear_mass / (s.pinion_mass + s.gear_mass)
+                       : 0.5 * (s.pinion_mass + s.gear_mass);
+  s.mesh_damping =
+      config.optionalReal("mesh.damping")
+          .value_or(2.0 * config.real("mesh.damping_ratio") * std::sqrt(s.mesh_stiffness * m));
   s.validate();
   return s;
 }

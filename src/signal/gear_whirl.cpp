@@ -68,6 +68,26 @@ GearPairSpectrum analyseGearPairRecord(const std::array<std::vector<double>, 4>&
     const auto& y = channels[2 * shaft + 1];
     std::vector<WhirlComponent> components = gearWhirlComponents(setup);
     out.method = extractWhirlComponents(x, y, sample_rate, components, options.method);
+    // The residual after removing every component (phasors by recurrence: one rotation each).
+    {
+      const std::size_t n = x.size(), m = components.size();
+      std::vector<std::complex<double>> phasor(m), step(m);
+      for (std::size_t c = 0; c < m; ++c) {
+        phasor[c] = components[c].value;
+        step[c] = std::polar(1.0, 2.0 * std::numbers::pi * components[c].frequency / sample_rate);
+      }
+      double power = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        std::complex<double> r(x[k], y[k]);
+        for (std::size_t c = 0; c < m; ++c) {
+          r -= phasor[c];
+          phasor[c] *= step[c];
+        }
+        power += std::norm(r);
+      }
+      const double dof = static_cast<double>(n > m ? n - m : 1);
+      out.coefficient_sigma[shaft] = std::sqrt(power / dof / static_cast<double>(n));
+    }
     const bool turns_negative = shaft == 0 && options.frame == WhirlFrame::kShaft;
     for (auto& c : components) {
       c.value *= std::polar(

@@ -17,6 +17,12 @@
 
 namespace geardyn::io {
 
+/// Adds [rotor]: masses, shaft stiffness and damping, gravity, teeth (and the pinion speed).
+void addRotorSection(ConfigSchema& schema, bool with_speed);
+/// The rotor's known physical data from [rotor] (DTE fields left at their defaults; the pinion
+/// speed only when the section has it).
+LateralRotorSpec knownRotorFromConfig(const Config& config);
+
 /// `geardyn rotor`: [rotor], [mesh], [runout], [time], [frequency], [spectrum], [measurement],
 /// [study], [output].
 ConfigSchema rotorSchema();

@@ -56,7 +56,11 @@ struct GearPairSpectrum {
   /// [0] pinion shaft, [1] gear shaft: the components of gearWhirlComponents() (names and
   /// frequencies in the reported frame), values = complex 0-peak radius at the reference time.
   std::array<std::vector<WhirlComponent>, 2> peaks;
-  std::array<FullSpectrum, 2> display;              ///< full spectra for display (frame applied)
+  std::array<FullSpectrum, 2> display;  ///< full spectra for display (frame applied)
+  /// Standard deviation of each complex peak value from the noise left after the components
+  /// are removed: √(Σ|r|² / (N − m)) / √N, r the residual record [m] (the weights and
+  /// confidence intervals of the identification).
+  std::array<double, 2> coefficient_sigma{0.0, 0.0};
   WhirlExtraction method = WhirlExtraction::kAuto;  ///< the method used
 };
 
