@@ -3,6 +3,7 @@
 #include "command.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/hbm_io.h"
+#include "geardyn/io/identify_io.h"
 #include "geardyn/io/rotor_io.h"
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
@@ -17,6 +18,7 @@ int runStats(const io::Config& config, const CommandOptions& options);
 int runHbm(const io::Config& config, const CommandOptions& options);
 int runRotor(const io::Config& config, const CommandOptions& options);
 int runSpectrum(const io::Config& config, const CommandOptions& options);
+int runIdentify(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
@@ -46,6 +48,10 @@ std::vector<Command> allCommands() {
        "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
        "compensation, forward/backward whirl peaks of a gear pair",
        io::spectrumSchema, runSpectrum},
+      {"identify",
+       "gear-mesh DTE parameters (k_m, e_m, c_m, TE harmonics, runouts) from full-spectrum whirl "
+       "peaks: the thesis's three-step algorithm or a joint estimator with 95 % intervals",
+       io::identifySchema, runIdentify},
   };
 }
 

@@ -156,6 +156,10 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
   RotorTimeResponse time;
   if (config.boolean("time.enabled")) {
     const RotorTimeOptions time_options = io::rotorTimeOptionsFromConfig(config);
+    // Checked before integrating: the grid's rate (snapped to the common period) is within a
+    // sample per period of duration/(samples − 1).
+    requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
+                   "time.samples");
     const auto start = std::chrono::steady_clock::now();
     time = solveRotorTimeResponse(model, time_options);
     const double seconds =
@@ -278,6 +282,12 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
       for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);
       record.channels[4][k] = keyphasorAt(times[k], s.pinion_speed, fs);
     }
+    const double measurement_noise = config.real("measurement.noise_level");
+    if (measurement_noise > 0.0) {
+      std::mt19937_64 rng(static_cast<std::uint64_t>(config.integer("measurement.seed")));
+      for (int c = 0; c < 4; ++c) addRelativeNoise(record.channels[c], measurement_noise, rng);
+      summary.seed = static_cast<std::uint64_t>(config.integer("measurement.seed"));
+    }
     nlohmann::ordered_json files = nlohmann::ordered_json::array();
     for (const auto& f : formats) {
       const auto format = f == "csv"   ? io::RecordFormat::kCsv
@@ -292,6 +302,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
                                       {"sample_rate_hz", fs},
                                       {"start_s", record.start_time},
                                       {"samples", times.size()},
+                                      {"noise_level", measurement_noise},
                                       {"keyphasor",
                                        "pulse at each pinion revolution, rising "
                                        "through 0.5 at pinion angle 2 pi k"}};

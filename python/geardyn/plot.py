@@ -387,8 +387,38 @@ def plot_spectrum(result_dir):
     return written
 
 
+def plot_identify(result_dir):
+    """identify.png: measured against re-simulated whirl peaks of each shaft and speed, forward
+    right and backward left (as Rao 2023, Figs. 5.12 and 5.14)."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    table = _read_columns(folder / "resimulated_peaks.csv")
+    speeds = list(dict.fromkeys(table["speed_rpm"]))
+    figure, axes = plt.subplots(len(speeds), 2, figsize=(12, 3.6 * len(speeds)), squeeze=False)
+    for row, speed in zip(axes, speeds):
+        for ax, shaft in zip(row, ("pinion", "gear")):
+            keep = [i for i in range(len(table["shaft"])) if table["shaft"][i] == shaft and table["speed_rpm"][i] == speed]
+            f = [table["frequency_hz"][i] for i in keep]
+            measured = [table["measured_amplitude"][i] * 1e6 for i in keep]
+            model = [table["model_amplitude"][i] * 1e6 for i in keep]
+            ax.vlines(f, 0, measured, color="0.6", lw=4, label="measured")
+            ax.plot(f, model, "o", color="tab:red", ms=4, mfc="none", label="re-simulated (identified)")
+            ax.set_title(f"{shaft} shaft, {speed:g} rpm", fontsize=9)
+            ax.set_ylabel("0-peak whirl radius [um]")
+            ax.set_xlabel("frequency [Hz] (probe frame)")
+            ax.grid(alpha=0.3)
+        row[0].legend(fontsize=8)
+    fit = summary["results"]["fit"]
+    title = summary["config"].get("title") or "identification"
+    figure.suptitle(f"{title}: {fit['method']}, re-simulated within {100 * fit['resimulated_relative_difference']:.2g} % "
+                    f"of the largest peak", fontsize=9)
+    figure.tight_layout()
+    return [_save_atomically(figure, folder / "identify.png")]
+
+
 PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
-            "stats": plot_stats, "hbm": plot_hbm, "rotor": plot_rotor, "spectrum": plot_spectrum}
+            "stats": plot_stats, "hbm": plot_hbm, "rotor": plot_rotor, "spectrum": plot_spectrum,
+            "identify": plot_identify}
 
 
 def main(argv=None):

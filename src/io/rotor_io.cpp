@@ -221,6 +221,13 @@ ConfigSchema rotorSchema() {
       .min(0.0)
       .optional()
       .doc("default: the first common-period boundary after the detected transient");
+  schema.real("measurement.noise_level")
+      .unit("-")
+      .min(0.0)
+      .max(10.0)
+      .defaultValue(0.0)
+      .doc("white Gaussian noise in the probe channels: level x std(channel) (not the keyphasor)");
+  schema.integer("measurement.seed").min(0).defaultValue(1).doc("seed of the measurement noise");
 
   schema.section("study", "Parametric study of §4.5: which source dominates the response.");
   schema.boolean("study.enabled").defaultValue(false);
@@ -314,7 +321,7 @@ LateralRotorSpec knownRotorFromConfig(const Config& config) {
   s.gravity = config.real("rotor.gravity");
   s.pinion_teeth = static_cast<int>(config.integer("rotor.pinion_teeth"));
   s.gear_teeth = static_cast<int>(config.integer("rotor.gear_teeth"));
-  if (config.has("rotor.pinion_speed_rpm"))
+  if (config.resolved()["rotor"].contains("pinion_speed_rpm"))
     s.pinion_speed = config.real("rotor.pinion_speed_rpm") / 60.0;
   const double zeta = config.real("rotor.shaft_damping_ratio");
   s.pinion_shaft_damping =

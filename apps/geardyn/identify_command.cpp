@@ -1,0 +1,177 @@
+/// `geardyn identify CONFIG`: the gear-mesh DTE parameters from full-spectrum whirl peaks
+/// (Rao 2023 §4.6–4.7, ch. 5), by the thesis's three-step algorithm or the joint estimator.
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "command.h"
+#include "geardyn/error.h"
+#include "geardyn/io/identify_io.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/result_writer.h"
+#include "geardyn/io/rotor_io.h"
+#include "plotting.h"
+
+namespace geardyn::cli {
+
+int runIdentify(const io::Config& config, const CommandOptions& options) {
+  const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
+  const LateralRotorSpec known = io::knownRotorFromConfig(config);
+  std::vector<io::WhirlSpectrumInput> inputs;
+  std::vector<MeasuredWhirlPeaks> data;
+  for (const auto& entry : config.stringList("input.spectra")) {
+    std::filesystem::path folder = entry;
+    if (folder.is_relative()) folder = base / folder;
+    inputs.push_back(io::readWhirlSpectrum(folder, "input.spectra"));
+    data.push_back(inputs.back().peaks);
+  }
+  if (inputs.empty()) throw InputError("input.spectra", "[]", "name at least one result folder");
+  std::optional<LateralRotorSpec> truth;
+  if (config.has("truth.rotor_config")) {
+    std::filesystem::path file = config.string("truth.rotor_config");
+    if (file.is_relative()) file = base / file;
+    truth = io::lateralRotorSpecFromConfig(io::loadConfigFile(file, io::rotorSchema()));
+  } else {
+    for (const auto& in : inputs)
+      if (in.truth && !truth) truth = in.truth;
+  }
+  if (truth && (truth->pinion_teeth != known.pinion_teeth || truth->gear_teeth != known.gear_teeth)) {
+    throw InputError("rotor.pinion_teeth",
+                     fmt::format("{}/{}", known.pinion_teeth, known.gear_teeth),
+                     fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth,
+                                 truth->gear_teeth));
+  }
+
+  const IdentificationOptions id_options = io::identificationOptionsFromConfig(config);
+  const auto start = std::chrono::steady_clock::now();
+  const DteIdentification r = identifyDte(known, data, id_options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  io::RunSummary summary;
+  summary.command = "identify";
+  summary.config_source = options.config_file.string();
+  summary.config = config.resolved();
+  summary.status = r.converged ? "ok" : "not_converged";
+  io::ResultWriter writer(options.resultFolder());
+  writer.writeCsv("identified.csv", io::identifiedTable(r, truth));
+
+  // Measured against re-simulated peaks (thesis Figs. 5.12/5.14).
+  io::CsvTable resim({"speed_rpm", "shaft", "component", "frequency_hz", "measured_re",
+                      "measured_im", "measured_amplitude", "model_re", "model_im",
+                      "model_amplitude"});
+  double worst = 0.0, largest = 0.0;
+  for (const auto& d : data) {
+    LateralRotorSpec at = r.spec;
+    at.pinion_speed = d.pinion_speed;
+    const auto model = modelWhirlPeaks(at);
+    for (int s = 0; s < 2; ++s) {
+      for (const auto& m : model[s]) {
+        std::complex<double> measured = 0.0;
+        for (const auto& c : d.peaks[s])
+          if (c.name == m.name) measured = c.value;
+        resim.addRow({60.0 * d.pinion_speed, std::string(io::kShaftNames[s]), m.name, m.frequency,
+                      measured.real(), measured.imag(), std::abs(measured), m.value.real(),
+                      m.value.imag(), std::abs(m.value)});
+        worst = std::max(worst, std::abs(measured - m.value));
+        largest = std::max(largest, std::abs(measured));
+      }
+    }
+  }
+  writer.writeCsv("resimulated_peaks.csv", resim);
+
+  nlohmann::ordered_json inputs_json = nlohmann::ordered_json::array();
+  for (const auto& in : inputs) {
+    inputs_json.push_back({{"folder", in.folder.string()},
+                           {"file", in.file},
+                           {"speed_rpm", 60.0 * in.peaks.pinion_speed},
+                           {"coefficient_noise",
+                            {{"pinion", in.peaks.coefficient_sigma[0]},
+                             {"gear", in.peaks.coefficient_sigma[1]}}}});
+  }
+  summary.results = {
+      {"inputs", inputs_json},
+      {"fit",
+       {{"method", r.method == IdentificationMethod::kJoint ? "joint" : "three_step"},
+        {"converged", r.converged},
+        {"iterations", r.iterations},
+        {"chi_square", r.chi_square},
+        {"degrees_of_freedom", r.degrees_of_freedom},
+        {"message", r.message},
+        {"wall_time_s", seconds},
+        {"resimulated_max_difference", worst},
+        {"resimulated_relative_difference", largest > 0 ? worst / largest : 0.0}}},
+      {"identified", io::identifiedJson(r)},
+      {"phase_reference", "the spectra's (t = 0 of a simulation, the first keyphasor pulse of a "
+                          "record); probe frame"}};
+  std::vector<std::string> not_identifiable;
+  if (!r.mesh_stiffness.identifiable) not_identifiable.push_back("mesh_stiffness");
+  if (!r.mesh_damping.identifiable) not_identifiable.push_back("mesh_damping");
+  if (!r.mean_te.identifiable) not_identifiable.push_back("mean_te");
+  for (std::size_t i = 0; i < r.te_x.size(); ++i) {
+    if (!r.te_x[i].amplitude.identifiable) not_identifiable.push_back(fmt::format("te_x_{}", i + 1));
+    if (!r.te_y[i].amplitude.identifiable) not_identifiable.push_back(fmt::format("te_y_{}", i + 1));
+  }
+  summary.results["not_identifiable"] = not_identifiable;
+  for (const auto& name : not_identifiable) {
+    if (name == "mesh_stiffness" && r.method == IdentificationMethod::kJoint) {
+      summary.warnings.push_back(fmt::format(
+          "mesh_stiffness is not identifiable from these spectra (95 % interval [{:.3g}, {:.3g}] "
+          "N/m): the lateral probes see the mesh only through its small relative deflection; "
+          "give prior.mesh_stiffness (e.g. from `geardyn stiffness` for the gear geometry)",
+          r.mesh_stiffness.low, r.mesh_stiffness.high));
+    }
+  }
+  if (truth) {
+    double te = 0.0, phase = 0.0;
+    for (std::size_t i = 0; i < r.te_x.size() && i < truth->te_x.size(); ++i) {
+      te = std::max({te, std::abs(r.te_x[i].amplitude.value / truth->te_x[i].amplitude - 1.0),
+                     std::abs(r.te_y[i].amplitude.value / truth->te_y[i].amplitude - 1.0)});
+      phase = std::max({phase,
+                        std::abs(std::remainder(r.te_x[i].phase.value - truth->te_x[i].phase,
+                                                2 * std::numbers::pi)),
+                        std::abs(std::remainder(r.te_y[i].phase.value - truth->te_y[i].phase,
+                                                2 * std::numbers::pi))});
+    }
+    summary.results["truth_comparison"] = {
+        {"mesh_stiffness_relative_error", r.mesh_stiffness.value / truth->mesh_stiffness - 1.0},
+        {"mean_te_relative_error", r.mean_te.value / truth->mean_te - 1.0},
+        {"mesh_damping_relative_error", r.mesh_damping.value / truth->mesh_damping - 1.0},
+        {"te_amplitude_max_relative_error", te},
+        {"te_phase_max_error_rad", phase},
+        {"pinion_runout_relative_error", r.pinion_runout.amplitude.value / truth->pinion_runout - 1.0},
+        {"gear_runout_relative_error", r.gear_runout.amplitude.value / truth->gear_runout - 1.0}};
+  }
+  if (!r.converged) std::cerr << "geardyn identify: " << r.message << "\n";
+  for (const auto& w : summary.warnings) std::cerr << "warning: " << w << "\n";
+  auto path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    for (const auto& f : drawPlots("identify", writer.folder())) writer.recordFile(f);
+    path = writer.writeSummary(summary);
+  }
+  const auto ci = [](const IdentifiedValue& v, double unit) {
+    return fmt::format("{:.5g} [{:.4g}, {:.4g}]{}", v.value * unit, v.low * unit, v.high * unit,
+                       v.identifiable ? "" : " (not identifiable)");
+  };
+  std::string text = fmt::format("{} ({:.3g} ms)\n", r.message, 1e3 * seconds);
+  text += fmt::format("  k_m  = {} N/m\n", ci(r.mesh_stiffness, 1.0));
+  text += fmt::format("  e_m  = {} um\n", ci(r.mean_te, 1e6));
+  text += fmt::format("  c_m  = {} N s/m\n", ci(r.mesh_damping, 1.0));
+  for (std::size_t i = 0; i < r.te_x.size(); ++i) {
+    text += fmt::format("  TE {}: x {:.4g} um at {:.4g} rad, y {:.4g} um at {:.4g} rad\n", i + 1,
+                        1e6 * r.te_x[i].amplitude.value, r.te_x[i].phase.value,
+                        1e6 * r.te_y[i].amplitude.value, r.te_y[i].phase.value);
+  }
+  text += fmt::format("  runouts: pinion {:.4g} um at {:.4g} rad, gear {:.4g} um at {:.4g} rad\n",
+                      1e6 * r.pinion_runout.amplitude.value, r.pinion_runout.phase.value,
+                      1e6 * r.gear_runout.amplitude.value, r.gear_runout.phase.value);
+  text += fmt::format("results: {}\n", path.string());
+  report(options, text);
+  return r.converged ? kExitOk : kExitNumericalFailure;
+}
+
+}  // namespace geardyn::cli
