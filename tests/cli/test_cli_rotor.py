@@ -6,21 +6,14 @@ import cmath
 import csv
 import json
 import math
-import os
-import pathlib
 import struct
-import subprocess
 
 import pytest
 
-CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
-SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
-TABLE41 = SOURCE / "examples" / "rotor_rao2023_table41.toml"
-STUDY = SOURCE / "examples" / "rotor_rao2023_study.toml"
+from cli_support import EXAMPLES, run
 
-
-def run(*args):
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=600)
+TABLE41 = EXAMPLES / "rotor_rao2023_table41.toml"
+STUDY = EXAMPLES / "rotor_rao2023_study.toml"
 
 
 def peaks(path):
