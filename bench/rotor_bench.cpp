@@ -5,6 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "geardyn/identify/dte_identification.h"
 #include "geardyn/signal/full_spectrum.h"
 #include "geardyn/solvers/rotor_response.h"
 
@@ -58,5 +59,22 @@ void BM_WhirlComponentsExactBins(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_WhirlComponentsExactBins)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+namespace {
+
+/// DTE identification from exact Table 4.1 peaks (target: milliseconds).
+void BM_IdentifyDte(benchmark::State& state) {
+  const geardyn::LateralRotorSpec truth = geardyn::raoTable41Spec();
+  geardyn::MeasuredWhirlPeaks m;
+  m.pinion_speed = truth.pinion_speed;
+  m.peaks = geardyn::modelWhirlPeaks(truth);
+  geardyn::IdentificationOptions o;
+  o.method = state.range(0) ? geardyn::IdentificationMethod::kJoint
+                            : geardyn::IdentificationMethod::kThreeStep;
+  for (auto _ : state) benchmark::DoNotOptimize(geardyn::identifyDte(truth, {m}, o));
+}
+BENCHMARK(BM_IdentifyDte)->ArgName("joint")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -7,11 +7,12 @@
 ///     mesh sits near s = 0, where the data constrain s linearly and without bias; ln k_m would
 ///     put the rigid limit at infinity and drift there (or away) with the noise. s may leave the
 ///     physical range in a noisy fit: its interval says so (k_m interval open to +inf);
-///   - ζ_m with c_m = 2 ζ_m √(|k_m| m₁m₂/(m₁ + m₂)) (eq. 4.9–4.10): the peaks barely see c_m —
-///     a common factor (1 + jΩc_m/k_m) of each harmonic's forcing is absorbed by the TE phasors,
-///     leaving only the mesh's relative motion — so ζ_m carries a log-normal prior (centre
-///     options.mesh_damping_ratio, relative sd options.mesh_damping_ratio_sd) unless a prior on
-///     c_m is given;
+///   - ζ_m with c_m = 2 ζ_m √(|k_m| m₁m₂/(m₁ + m₂)) (eq. 4.9–4.10): the peaks do not see c_m —
+///     each harmonic's forcing factor (k_m ± jΩc_m) is absorbed by the TE phasors, and the two
+///     rows of each harmonic's equations sum to an identity free of k_m and c_m — so ζ_m stays at
+///     its log-normal prior (centre options.mesh_damping_ratio, relative sd
+///     options.mesh_damping_ratio_sd; or the c_m prior when given), whose uncertainty the
+///     covariance carries into the TE intervals;
 ///   - X = e_fx e^{jϕx}, Y = e_fy e^{jϕy}, U_p = e_p e^{−jϕ_p}, U_g = e_g e^{jϕ_g}, e_m, all
 ///     scaled by L (the largest measured peak): the peaks are linear in them.
 /// Residuals (measured − modelled)/σ for the real and imaginary parts, σ = σ_c/√2 from each
@@ -79,6 +80,19 @@ struct Problem {
     return free[0] && options.mesh_stiffness.value && options.mesh_stiffness.relative_sd > 0.0;
   }
   bool dampingPrior() const { return free[1]; }
+
+  /// The data cannot inform c_m (see the file comment), so ln ζ_m sits at its prior's centre
+  /// during the fit (ζ₀, or the ζ giving the c_m prior at this k_m); it stays a parameter of the
+  /// covariance, so that its prior uncertainty reaches the other intervals.
+  void anchorDamping(Eigen::VectorXd& t) const {
+    if (!free[1]) return;
+    if (options.mesh_damping.value) {
+      t[1] =
+          std::log(*options.mesh_damping.value / (2.0 * std::sqrt(std::abs(stiffness(t)) * m_eff)));
+    } else {
+      t[1] = std::log(options.mesh_damping_ratio);
+    }
+  }
 
   int residuals() const {
     return static_cast<int>(data.size() * 2 * components.size() * 2) + (stiffnessPrior() ? 1 : 0) +
@@ -194,6 +208,7 @@ struct Problem {
 
 /// The exact linear parameters (indices ≥ 2) for fixed s and ln ζ: one Gauss–Newton step.
 Eigen::VectorXd solveLinearPart(const Problem& p, Eigen::VectorXd t) {
+  p.anchorDamping(t);
   const Eigen::VectorXd r = p.residual(t);
   if (!r.allFinite()) return t;
   const Eigen::MatrixXd j = p.jacobian(t);
@@ -313,7 +328,8 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
       Eigen::MatrixXd a = jtj;
       for (int k = 0; k < n; ++k) a(k, k) += lambda * std::max(jtj(k, k), 1e-12);
       const Eigen::VectorXd step = a.ldlt().solve(-g);
-      const Eigen::VectorXd trial = t + step;
+      Eigen::VectorXd trial = t + step;
+      p.anchorDamping(trial);
       const Eigen::VectorXd trial_res = p.residual(trial);
       const double trial_cost = trial_res.squaredNorm();
       if (std::isfinite(trial_cost) && trial_cost < cost) {
@@ -336,7 +352,8 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
   // Polish with undamped Gauss–Newton steps while they do not raise the cost.
   for (int polish = 0; polish < 5; ++polish) {
     const Eigen::VectorXd step = p.jacobian(t).completeOrthogonalDecomposition().solve(-res);
-    const Eigen::VectorXd trial = t + step;
+    Eigen::VectorXd trial = t + step;
+    p.anchorDamping(trial);
     const Eigen::VectorXd trial_res = p.residual(trial);
     if (!(trial_res.squaredNorm() <= cost)) break;
     t = trial;

@@ -6,12 +6,20 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 
 #include "geardyn/error.h"
 
 namespace geardyn {
 namespace {
+
+/// FFTW's planner is not thread-safe (only fftw_execute is): plans are made and destroyed under
+/// this lock so that analyses may run on several threads (e.g. noise studies).
+std::mutex& fftwPlannerMutex() {
+  static std::mutex m;
+  return m;
+}
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
@@ -45,7 +53,11 @@ FullSpectrum fullSpectrum(const std::vector<double>& x, const std::vector<double
     data[i][0] = w * x[i];
     data[i][1] = w * y[i];
   }
-  fftw_plan plan = fftw_plan_dft_1d(n, data, data, FFTW_FORWARD, FFTW_ESTIMATE);
+  fftw_plan plan;
+  {
+    const std::lock_guard<std::mutex> lock(fftwPlannerMutex());
+    plan = fftw_plan_dft_1d(n, data, data, FFTW_FORWARD, FFTW_ESTIMATE);
+  }
   fftw_execute(plan);
   FullSpectrum s;
   // Bins in ascending frequency: k = −⌊N/2⌋ … ⌈N/2⌉ − 1.
@@ -55,7 +67,10 @@ FullSpectrum fullSpectrum(const std::vector<double>& x, const std::vector<double
     s.frequency.push_back(k * sample_rate / n);
     s.coefficient.emplace_back(data[bin][0] / (n * gain), data[bin][1] / (n * gain));
   }
-  fftw_destroy_plan(plan);
+  {
+    const std::lock_guard<std::mutex> lock(fftwPlannerMutex());
+    fftw_destroy_plan(plan);
+  }
   fftw_free(data);
   return s;
 }

@@ -94,17 +94,20 @@ TEST(DteIdentification, BothMethodsRecoverTheVariedCasesOfTable43) {
       {"damping 0.02", [](LateralRotorSpec& s, double& zeta) { zeta = 0.02; }},
   };
   for (auto& [label, change] : cases) {
-    LateralRotorSpec truth = raoTable41Spec();
-    double zeta = 0.01;
-    change(truth, zeta);
-    lateralRotorDamping(truth, 0.01, zeta);
-    for (auto method : {IdentificationMethod::kThreeStep, IdentificationMethod::kJoint}) {
-      IdentificationOptions o;
-      o.method = method;
-      o.mesh_damping_ratio = zeta;  // the three-step method assumes ζ_m (eq. 4.10)
-      expectRecovered(
-          identifyDte(truth, {exactPeaks(truth)}, o), truth, 1e-6,
-          label + (method == IdentificationMethod::kJoint ? ", joint" : ", three-step"));
+    for (int n = 1; n <= 5; ++n) {
+      LateralRotorSpec truth = withHarmonics(raoTable41Spec(), n);
+      double zeta = 0.01;
+      change(truth, zeta);
+      lateralRotorDamping(truth, 0.01, zeta);
+      for (auto method : {IdentificationMethod::kThreeStep, IdentificationMethod::kJoint}) {
+        IdentificationOptions o;
+        o.method = method;
+        o.mesh_damping_ratio = zeta;  // the three-step method assumes ζ_m (eq. 4.10)
+        expectRecovered(
+            identifyDte(truth, {exactPeaks(truth)}, o), truth, 1e-6,
+            fmt::format("{}, {} harmonics, {}", label, n,
+                        method == IdentificationMethod::kJoint ? "joint" : "three-step"));
+      }
     }
   }
 }
