@@ -39,11 +39,11 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
     for (const auto& in : inputs)
       if (in.truth && !truth) truth = in.truth;
   }
-  if (truth && (truth->pinion_teeth != known.pinion_teeth || truth->gear_teeth != known.gear_teeth)) {
-    throw InputError("rotor.pinion_teeth",
-                     fmt::format("{}/{}", known.pinion_teeth, known.gear_teeth),
-                     fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth,
-                                 truth->gear_teeth));
+  if (truth &&
+      (truth->pinion_teeth != known.pinion_teeth || truth->gear_teeth != known.gear_teeth)) {
+    throw InputError(
+        "rotor.pinion_teeth", fmt::format("{}/{}", known.pinion_teeth, known.gear_teeth),
+        fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth, truth->gear_teeth));
   }
 
   const IdentificationOptions id_options = io::identificationOptionsFromConfig(config);
@@ -86,12 +86,12 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
 
   nlohmann::ordered_json inputs_json = nlohmann::ordered_json::array();
   for (const auto& in : inputs) {
-    inputs_json.push_back({{"folder", in.folder.string()},
-                           {"file", in.file},
-                           {"speed_rpm", 60.0 * in.peaks.pinion_speed},
-                           {"coefficient_noise",
-                            {{"pinion", in.peaks.coefficient_sigma[0]},
-                             {"gear", in.peaks.coefficient_sigma[1]}}}});
+    inputs_json.push_back(
+        {{"folder", in.folder.string()},
+         {"file", in.file},
+         {"speed_rpm", 60.0 * in.peaks.pinion_speed},
+         {"coefficient_noise",
+          {{"pinion", in.peaks.coefficient_sigma[0]}, {"gear", in.peaks.coefficient_sigma[1]}}}});
   }
   summary.results = {
       {"inputs", inputs_json},
@@ -106,24 +106,48 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
         {"resimulated_max_difference", worst},
         {"resimulated_relative_difference", largest > 0 ? worst / largest : 0.0}}},
       {"identified", io::identifiedJson(r)},
-      {"phase_reference", "the spectra's (t = 0 of a simulation, the first keyphasor pulse of a "
-                          "record); probe frame"}};
+      {"phase_reference",
+       "the spectra's (t = 0 of a simulation, the first keyphasor pulse of a "
+       "record); probe frame"}};
+  nlohmann::ordered_json priors = nlohmann::ordered_json::object();
+  if (id_options.mesh_stiffness.value) {
+    priors["mesh_stiffness"] = {{"value", *id_options.mesh_stiffness.value},
+                                {"relative_sd", id_options.mesh_stiffness.relative_sd},
+                                {"source", config.string("prior.mesh_stiffness_from") == "iso6336"
+                                               ? "ISO 6336-1 method B, c_gamma_alpha b"
+                                               : "prior.mesh_stiffness"}};
+  }
+  if (id_options.mesh_damping.value) {
+    priors["mesh_damping"] = {{"value", *id_options.mesh_damping.value},
+                              {"relative_sd", id_options.mesh_damping.relative_sd}};
+  } else if (r.method == IdentificationMethod::kJoint) {
+    priors["mesh_damping_ratio"] = {{"value", id_options.mesh_damping_ratio},
+                                    {"relative_sd", id_options.mesh_damping_ratio_sd}};
+  }
+  summary.results["priors"] = priors;
   std::vector<std::string> not_identifiable;
   if (!r.mesh_stiffness.identifiable) not_identifiable.push_back("mesh_stiffness");
   if (!r.mesh_damping.identifiable) not_identifiable.push_back("mesh_damping");
   if (!r.mean_te.identifiable) not_identifiable.push_back("mean_te");
   for (std::size_t i = 0; i < r.te_x.size(); ++i) {
-    if (!r.te_x[i].amplitude.identifiable) not_identifiable.push_back(fmt::format("te_x_{}", i + 1));
-    if (!r.te_y[i].amplitude.identifiable) not_identifiable.push_back(fmt::format("te_y_{}", i + 1));
+    if (!r.te_x[i].amplitude.identifiable)
+      not_identifiable.push_back(fmt::format("te_x_{}", i + 1));
+    if (!r.te_y[i].amplitude.identifiable)
+      not_identifiable.push_back(fmt::format("te_y_{}", i + 1));
   }
   summary.results["not_identifiable"] = not_identifiable;
   for (const auto& name : not_identifiable) {
     if (name == "mesh_stiffness" && r.method == IdentificationMethod::kJoint) {
       summary.warnings.push_back(fmt::format(
-          "mesh_stiffness is not identifiable from these spectra (95 % interval [{:.3g}, {:.3g}] "
-          "N/m): the lateral probes see the mesh only through its small relative deflection; "
-          "give prior.mesh_stiffness (e.g. from `geardyn stiffness` for the gear geometry)",
-          r.mesh_stiffness.low, r.mesh_stiffness.high));
+          "mesh_stiffness is not identifiable from these spectra{} (95 % interval [{:.3g}, {:.3g}] "
+          "N/m): the lateral probes see the mesh only through its small static relative "
+          "deflection, and the TE amplitudes depend on it; {}",
+          id_options.mesh_stiffness.value ? " and its prior" : "", r.mesh_stiffness.low,
+          r.mesh_stiffness.high,
+          id_options.mesh_stiffness.value
+              ? "the estimates' intervals include this uncertainty"
+              : "give prior.mesh_stiffness or prior.mesh_stiffness_from = \"iso6336\" with the "
+                "gear pair"));
     }
   }
   if (truth) {
@@ -143,7 +167,8 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
         {"mesh_damping_relative_error", r.mesh_damping.value / truth->mesh_damping - 1.0},
         {"te_amplitude_max_relative_error", te},
         {"te_phase_max_error_rad", phase},
-        {"pinion_runout_relative_error", r.pinion_runout.amplitude.value / truth->pinion_runout - 1.0},
+        {"pinion_runout_relative_error",
+         r.pinion_runout.amplitude.value / truth->pinion_runout - 1.0},
         {"gear_runout_relative_error", r.gear_runout.amplitude.value / truth->gear_runout - 1.0}};
   }
   if (!r.converged) std::cerr << "geardyn identify: " << r.message << "\n";

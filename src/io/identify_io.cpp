@@ -7,9 +7,11 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/io/geometry_io.h"
 #include "geardyn/io/output_section.h"
 #include "geardyn/io/rotor_io.h"
 #include "geardyn/signal/gear_whirl.h"
+#include "geardyn/stiffness/iso6336_stiffness.h"
 
 namespace geardyn::io {
 namespace {
@@ -60,9 +62,9 @@ std::vector<std::pair<std::string, WhirlComponent>> readPeakTable(const std::fil
     if (line.empty()) continue;
     const auto cells = split(line);
     if (cells.size() != header.size()) {
-      throw InputError(key, path.string(),
-                       fmt::format("row {} has {} cells, the header {}", row, cells.size(),
-                                   header.size()));
+      throw InputError(
+          key, path.string(),
+          fmt::format("row {} has {} cells, the header {}", row, cells.size(), header.size()));
     }
     const auto number = [&](std::size_t c) {
       try {
@@ -71,9 +73,9 @@ std::vector<std::pair<std::string, WhirlComponent>> readPeakTable(const std::fil
         if (used == cells[c].size() && std::isfinite(v)) return v;
       } catch (const std::exception&) {
       }
-      throw InputError(key, path.string(),
-                       fmt::format("row {}, column {}: '{}' is not a finite number", row,
-                                   header[c], cells[c]));
+      throw InputError(
+          key, path.string(),
+          fmt::format("row {}, column {}: '{}' is not a finite number", row, header[c], cells[c]));
     };
     rows.push_back({cells[cs], WhirlComponent{cells[cc], number(cf), {number(cr), number(ci)}}});
   }
@@ -102,8 +104,11 @@ ConfigSchema identifySchema() {
       .doc(
           "joint: weighted least squares of every component and speed with 95 % intervals; "
           "three_step: the thesis's algorithm (eqs. 4.3-4.20)");
-  schema.integer("identify.harmonics").min(1).max(1000).optional().doc(
-      "mesh harmonics used; default every one in the spectra");
+  schema.integer("identify.harmonics")
+      .min(1)
+      .max(1000)
+      .optional()
+      .doc("mesh harmonics used; default every one in the spectra");
   schema.real("identify.mesh_damping_ratio")
       .unit("-")
       .greaterThan(0.0)
@@ -128,16 +133,34 @@ ConfigSchema identifySchema() {
                  "Knowledge the lateral probes lack (joint): e.g. k_m from `geardyn stiffness` "
                  "for the gear geometry. A relative sd of 0 fixes the value.");
   schema.real("prior.mesh_stiffness").unit("N/m").positive().optional().doc("k_m prior centre");
-  schema.real("prior.mesh_stiffness_rsd").unit("-").min(0.0).defaultValue(0.5).doc(
-      "relative standard deviation of the k_m prior");
-  schema.real("prior.mesh_damping").unit("N s/m").positive().optional().doc(
-      "c_m prior centre (replaces the zeta_m prior)");
-  schema.real("prior.mesh_damping_rsd").unit("-").min(0.0).defaultValue(0.5).doc(
-      "relative standard deviation of the c_m prior");
+  schema.string("prior.mesh_stiffness_from")
+      .choices({"none", "iso6336"})
+      .defaultValue("none")
+      .doc(
+          "iso6336: centre the k_m prior on c_gamma_alpha b (ISO 6336-1 method B) of the gear "
+          "pair in [pinion], [gear], [pair]");
+  schema.real("prior.mesh_stiffness_rsd")
+      .unit("-")
+      .min(0.0)
+      .defaultValue(0.5)
+      .doc("relative standard deviation of the k_m prior");
+  schema.real("prior.mesh_damping")
+      .unit("N s/m")
+      .positive()
+      .optional()
+      .doc("c_m prior centre (replaces the zeta_m prior)");
+  schema.real("prior.mesh_damping_rsd")
+      .unit("-")
+      .min(0.0)
+      .defaultValue(0.5)
+      .doc("relative standard deviation of the c_m prior");
   schema.section("truth", "Known true values, for the comparison table (simulated input).");
-  schema.string("truth.rotor_config").optional().doc(
-      "a `geardyn rotor` configuration holding the truth; default: the configuration of an "
-      "input folder written by `geardyn rotor`");
+  schema.string("truth.rotor_config")
+      .optional()
+      .doc(
+          "a `geardyn rotor` configuration holding the truth; default: the configuration of an "
+          "input folder written by `geardyn rotor`");
+  addGearPairSections(schema, false);
   addOutputSection(schema);
   return schema;
 }
@@ -145,7 +168,7 @@ ConfigSchema identifySchema() {
 IdentificationOptions identificationOptionsFromConfig(const Config& config) {
   IdentificationOptions o;
   o.method = config.string("identify.method") == "joint" ? IdentificationMethod::kJoint
-                                                          : IdentificationMethod::kThreeStep;
+                                                         : IdentificationMethod::kThreeStep;
   o.harmonics = config.has("identify.harmonics")
                     ? static_cast<int>(config.integer("identify.harmonics"))
                     : -1;
@@ -154,6 +177,27 @@ IdentificationOptions identificationOptionsFromConfig(const Config& config) {
   o.identifiable_width = config.real("identify.identifiable_width");
   if (auto k = config.optionalReal("prior.mesh_stiffness")) {
     o.mesh_stiffness.value = *k;
+    o.mesh_stiffness.relative_sd = config.real("prior.mesh_stiffness_rsd");
+  }
+  if (config.string("prior.mesh_stiffness_from") == "iso6336") {
+    if (o.mesh_stiffness.value) {
+      throw InputError("prior.mesh_stiffness_from", "iso6336",
+                       "give either prior.mesh_stiffness or prior.mesh_stiffness_from, not both");
+    }
+    if (!hasGearPair(config)) {
+      throw InputError(
+          "prior.mesh_stiffness_from", "iso6336",
+          "needs the gear pair: [pinion], [gear] and [pair] (as for geardyn geometry)");
+    }
+    const GearPair pair(gearPairSpecFromConfig(config));
+    if (pair.spec().pinion.teeth != config.integer("rotor.pinion_teeth") ||
+        pair.spec().gear.teeth != config.integer("rotor.gear_teeth")) {
+      throw InputError(
+          "pinion.teeth", fmt::format("{}/{}", pair.spec().pinion.teeth, pair.spec().gear.teeth),
+          fmt::format("must match rotor.pinion_teeth/gear_teeth ({}/{})",
+                      config.integer("rotor.pinion_teeth"), config.integer("rotor.gear_teeth")));
+    }
+    o.mesh_stiffness.value = iso6336Stiffness(pair).meshStiffness();
     o.mesh_stiffness.relative_sd = config.real("prior.mesh_stiffness_rsd");
   }
   if (auto c = config.optionalReal("prior.mesh_damping")) {
@@ -217,20 +261,21 @@ nlohmann::ordered_json identifiedJson(const DteIdentification& r) {
     te["x"].push_back(x);
     te["y"].push_back(y);
   }
-  return {{"mesh_stiffness", valueJson(r.mesh_stiffness)},
-          {"mean_te", valueJson(r.mean_te)},
-          {"mesh_damping", valueJson(r.mesh_damping)},
-          {"te", te},
-          {"runout", {{"pinion", phasorJson(r.pinion_runout)}, {"gear", phasorJson(r.gear_runout)}}}};
+  return {
+      {"mesh_stiffness", valueJson(r.mesh_stiffness)},
+      {"mean_te", valueJson(r.mean_te)},
+      {"mesh_damping", valueJson(r.mesh_damping)},
+      {"te", te},
+      {"runout", {{"pinion", phasorJson(r.pinion_runout)}, {"gear", phasorJson(r.gear_runout)}}}};
 }
 
 CsvTable identifiedTable(const DteIdentification& r, const std::optional<LateralRotorSpec>& truth) {
-  CsvTable t({"parameter", "harmonic", "value", "ci_low", "ci_high", "identifiable", "true",
-              "error"});
+  CsvTable t(
+      {"parameter", "harmonic", "value", "ci_low", "ci_high", "identifiable", "true", "error"});
   const auto add = [&](const std::string& name, long long harmonic, const IdentifiedValue& v,
                        std::optional<double> exact, bool phase) {
-    std::vector<CsvCell> row{name, harmonic, v.value, v.low, v.high,
-                             static_cast<long long>(v.identifiable)};
+    std::vector<CsvCell> row{name,  harmonic, v.value,
+                             v.low, v.high,   static_cast<long long>(v.identifiable)};
     if (exact) {
       row.push_back(*exact);
       row.push_back(phase ? std::remainder(v.value - *exact, 2.0 * std::numbers::pi)

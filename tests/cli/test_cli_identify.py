@@ -126,3 +126,14 @@ def test_bad_input(tmp_path, exact):
     assert result.returncode == 2 and "identify.method" in result.stderr
     result, _ = identify(tmp_path, [exact], '[prior]\nmesh_stiffness = -1.0\n', name="p")
     assert result.returncode == 2 and "prior.mesh_stiffness" in result.stderr
+
+
+def test_example_prior_from_the_gear_geometry(tmp_path):
+    # The example's k_m prior comes from ISO 6336-1 for the Table 5.1 gear set: the value the
+    # validation noise study uses (tests/reference/dte_identification_noise_test.cpp).
+    result = run("identify", EXAMPLES / "identify_rao2023_table41.toml", "--out", tmp_path,
+                 "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    prior = json.loads((tmp_path / "summary.json").read_text())["results"]["priors"]["mesh_stiffness"]
+    assert prior["value"] == pytest.approx(1.7524e8, rel=1e-3)
+    assert "ISO 6336" in prior["source"]
