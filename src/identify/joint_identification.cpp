@@ -56,6 +56,10 @@ struct Component {
 };
 
 struct Problem {
+  Problem(const LateralRotorSpec& known_, const std::vector<MeasuredWhirlPeaks>& data_,
+          int harmonics_, const IdentificationOptions& options_)
+      : known(known_), data(data_), harmonics(harmonics_), options(options_) {}
+
   const LateralRotorSpec& known;
   const std::vector<MeasuredWhirlPeaks>& data;
   int harmonics;
