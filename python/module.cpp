@@ -11,6 +11,7 @@ namespace py = pybind11;
 namespace geardyn::python {
 void bindGeometry(py::module_& m);
 void bindIo(py::module_& m);
+void bindRotor(py::module_& m);
 void bindStiffness(py::module_& m);
 }  // namespace geardyn::python
 
@@ -28,5 +29,6 @@ PYBIND11_MODULE(_geardyn, m) {
   });
   geardyn::python::bindGeometry(m);
   geardyn::python::bindIo(m);
+  geardyn::python::bindRotor(m);
   geardyn::python::bindStiffness(m);
 }
