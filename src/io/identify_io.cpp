@@ -227,12 +227,19 @@ WhirlSpectrumInput readWhirlSpectrum(const std::filesystem::path& folder, const 
     throw InputError(key, folder.string(),
                      fmt::format("was written by `geardyn {}`, not rotor or spectrum", command));
   }
-  const auto& results = summary["results"];
-  in.peaks.pinion_speed = results["frequencies"]["pinion_hz"].get<double>();
-  const bool shaft_frame = summary["config"]["spectrum"]["frame"].get<std::string>() == "shaft";
-  if (results.contains("coefficient_noise")) {
-    in.peaks.coefficient_sigma = {results["coefficient_noise"]["pinion"].get<double>(),
-                                  results["coefficient_noise"]["gear"].get<double>()};
+  bool shaft_frame = false;
+  try {
+    const auto& results = summary.at("results");
+    in.peaks.pinion_speed = results.at("frequencies").at("pinion_hz").get<double>();
+    shaft_frame = summary.at("config").at("spectrum").at("frame").get<std::string>() == "shaft";
+    if (results.contains("coefficient_noise")) {
+      in.peaks.coefficient_sigma = {results["coefficient_noise"].at("pinion").get<double>(),
+                                    results["coefficient_noise"].at("gear").get<double>()};
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(
+        key, summary_path.string(),
+        fmt::format("lacks the pinion speed, frame or noise of a spectrum ({})", e.what()));
   }
   in.file = std::filesystem::exists(folder / "spectrum_peaks.csv") ? "spectrum_peaks.csv"
                                                                    : "frequency_components.csv";
@@ -246,7 +253,11 @@ WhirlSpectrumInput readWhirlSpectrum(const std::filesystem::path& folder, const 
     in.peaks.peaks[s].push_back(inShaftFrame(c, s == 0 && shaft_frame));
   }
   if (command == "rotor") {
-    in.truth = lateralRotorSpecFromConfig(Config(summary["config"], summary_path.string()));
+    try {
+      in.truth = lateralRotorSpecFromConfig(Config(summary["config"], summary_path.string()));
+    } catch (const std::exception&) {
+      // A configuration of another geardyn version: no truth to compare with.
+    }
   }
   return in;
 }
