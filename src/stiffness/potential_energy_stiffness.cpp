@@ -174,12 +174,17 @@ double PotentialEnergyMeshStiffness::pairAt(double s_pair) const {
   return scale_ * width * sum;
 }
 
-double PotentialEnergyMeshStiffness::pairStiffness(double phase, int pair) const {
+bool PotentialEnergyMeshStiffness::pairSection(double phase, int pair, double& s_pair) const {
   // Progress of pair j along its window: u = (φ + j) p_b, in contact for 0 <= u < window.
   const double u = (wrapPhase(phase) + pair) * base_pitch_;
-  if (pair < 0 || u >= window_) return 0.0;
-  const double s_pair = driver_is_pinion_ ? s_begin_ - stagger_ + u : s_end_ - u;
-  return pairAt(s_pair);
+  if (pair < 0 || u >= window_) return false;
+  s_pair = driver_is_pinion_ ? s_begin_ - stagger_ + u : s_end_ - u;
+  return true;
+}
+
+double PotentialEnergyMeshStiffness::pairStiffness(double phase, int pair) const {
+  double s_pair = 0.0;
+  return pairSection(phase, pair, s_pair) ? pairAt(s_pair) : 0.0;
 }
 
 double PotentialEnergyMeshStiffness::stiffness(double phase) const {

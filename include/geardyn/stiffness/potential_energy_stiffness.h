@@ -61,6 +61,18 @@ class PotentialEnergyMeshStiffness final : public MeshStiffness {
   /// Path of contact on the line of action from T₁ [m].
   double contactStart() const noexcept { return s_begin_; }
   double contactEnd() const noexcept { return s_end_; }
+  /// The kinematics the loaded contact analysis shares (contact/loaded_contact.h): the
+  /// transverse base pitch [m], the effective face width [m], the stagger b tan β_b of a helical
+  /// contact line along the line of action [m], the scale of helical slices (cos² β_b or 1), and
+  /// whether the pinion drives (pairs run from contactStart to contactEnd).
+  double basePitch() const noexcept { return base_pitch_; }
+  double faceWidth() const noexcept { return face_width_; }
+  double stagger() const noexcept { return stagger_; }
+  double sliceScale() const noexcept { return scale_; }
+  bool driverIsPinion() const noexcept { return driver_is_pinion_; }
+  /// Position along the line of action (from T₁) of the z = 0 face section of pair j at mesh
+  /// phase φ, and whether that pair is within its contact window.
+  bool pairSection(double phase, int pair, double& s_pair) const;
   const std::vector<std::string>& warnings() const noexcept { return warnings_; }
 
  private:
