@@ -4,6 +4,7 @@
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/hbm_io.h"
 #include "geardyn/io/identify_io.h"
+#include "geardyn/io/ltca_io.h"
 #include "geardyn/io/rotor_io.h"
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
@@ -19,6 +20,7 @@ int runHbm(const io::Config& config, const CommandOptions& options);
 int runRotor(const io::Config& config, const CommandOptions& options);
 int runSpectrum(const io::Config& config, const CommandOptions& options);
 int runIdentify(const io::Config& config, const CommandOptions& options);
+int runLtca(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   return {
@@ -52,6 +54,10 @@ std::vector<Command> allCommands() {
        "gear-mesh DTE parameters (k_m, e_m, c_m, TE harmonics, runouts) from full-spectrum whirl "
        "peaks: the thesis's three-step algorithm or a joint estimator with 95 % intervals",
        io::identifySchema, runIdentify},
+      {"ltca",
+       "loaded tooth contact analysis with flank modifications: loaded STE, load sharing, "
+       "secant/tangent stiffness, Harris map, Gelman statistics against load",
+       io::ltcaSchema, runLtca},
   };
 }
 

@@ -416,9 +416,69 @@ def plot_identify(result_dir):
     return [_save_atomically(figure, folder / "identify.png")]
 
 
+def plot_ltca(result_dir):
+    """ltca.png: loaded STE over the mesh period and the load share of each tooth pair;
+    harris.png: peak-to-peak STE against load (a Harris map); statistics.png: Gelman's r_ke and
+    R against the normalised load."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    title = summary["config"].get("title") or "loaded tooth contact"
+    table = _read_columns(folder / "ltca.csv")
+    written = []
+    figure, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    top.plot(table["phase"], [v * 1e6 for v in table["ste_m"]], label="loaded STE")
+    top.plot(table["phase"], [v * 1e6 for v in table["no_load_te_m"]], "--", label="no-load TE")
+    top.set_ylabel("along the line of action [um]")
+    top.legend(fontsize=8)
+    top.grid(alpha=0.3)
+    for name in [c for c in table if c.startswith("share_pair_")]:
+        bottom.plot(table["phase"], table[name], label=name.replace("share_", ""))
+    bottom.set_ylabel("load share [-]")
+    bottom.set_xlabel("mesh phase [periods]")
+    bottom.legend(fontsize=8)
+    bottom.grid(alpha=0.3)
+    figure.suptitle(f"{title}: {summary['results']['ltca']['force']:g} N", fontsize=9)
+    figure.tight_layout()
+    written.append(_save_atomically(figure, folder / "ltca.png"))
+    if (folder / "harris.csv").exists():
+        harris = _read_columns(folder / "harris.csv")
+        figure, ax = plt.subplots(figsize=(7, 4.5))
+        ax.plot(harris["force_n"], [v * 1e6 for v in harris["peak_to_peak_m"]], "o-", label="peak to peak")
+        for name in [c for c in harris if c.startswith("harmonic_")]:
+            ax.plot(harris["force_n"], [v * 1e6 for v in harris[name]], lw=0.8, label=name.replace("_m", ""))
+        design = summary["config"]["modifications"].get("design_load")
+        if design:
+            ax.axvline(design, color="0.5", ls=":", label="design load")
+        ax.set_xlabel("transmitted force [N]")
+        ax.set_ylabel("loaded STE [um]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        ax.set_title(f"{title}: Harris map", fontsize=9)
+        figure.tight_layout()
+        written.append(_save_atomically(figure, folder / "harris.png"))
+    if (folder / "load_statistics.csv").exists():
+        stats = _read_columns(folder / "load_statistics.csv")
+        figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+        left.plot(stats["a"], stats["r_ke"], "o-")
+        left.axhline(0.0, color="0.5", lw=0.8)
+        left.set_xlabel("a = F / F0")
+        left.set_ylabel("r_ke")
+        right.plot(stats["a"], stats["ratio_eq11"], "o-", label="R (eq. 11)")
+        right.plot(stats["a"], stats["ratio_eq7"], "s--", label="R (eq. 7)")
+        right.axhline(1.0, color="0.5", lw=0.8)
+        right.set_xlabel("a = F / F0")
+        right.legend(fontsize=8)
+        for ax in (left, right):
+            ax.grid(alpha=0.3)
+        figure.suptitle(f"{title}: Gelman statistics against load", fontsize=9)
+        figure.tight_layout()
+        written.append(_save_atomically(figure, folder / "statistics.png"))
+    return written
+
+
 PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
             "stats": plot_stats, "hbm": plot_hbm, "rotor": plot_rotor, "spectrum": plot_spectrum,
-            "identify": plot_identify}
+            "identify": plot_identify, "ltca": plot_ltca}
 
 
 def main(argv=None):

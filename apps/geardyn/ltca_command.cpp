@@ -1,0 +1,116 @@
+/// `geardyn ltca CONFIG`: loaded tooth contact analysis, Harris map and Gelman's statistics
+/// against load.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+
+#include "command.h"
+#include "geardyn/error.h"
+#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/ltca_io.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/result_writer.h"
+#include "plotting.h"
+
+namespace geardyn::cli {
+
+int runLtca(const io::Config& config, const CommandOptions& options) {
+  const GearPair pair(io::gearPairSpecFromConfig(config));
+  const int slices = static_cast<int>(config.integer("ltca.slices"));
+  PotentialEnergyOptions pe;
+  if (pair.baseHelixAngle() > 0.0) pe.slices = slices;  // the same slices as the contact
+  auto stiffness = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
+  const PairModifications modifications = io::pairModificationsFromConfig(config, *stiffness);
+  const LoadedToothContact contact(stiffness, modifications, slices);
+  const double force = config.real("ltca.force");
+  const int positions = static_cast<int>(config.integer("ltca.positions"));
+
+  io::RunSummary summary;
+  summary.command = "ltca";
+  summary.config_source = options.config_file.string();
+  summary.config = config.resolved();
+  summary.warnings = stiffness->warnings();
+  io::ResultWriter writer(options.resultFolder());
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto points =
+      contact.sweep(force, positions, static_cast<int>(config.integer("ltca.periods")));
+  const double sweep_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writer.writeCsv("ltca.csv", io::ltcaTable(points, force));
+  const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
+                                            [](auto& a, auto& b) { return a.ste < b.ste; });
+  double mean_tangent = 0.0;
+  for (const auto& p : points) mean_tangent += p.tangent / static_cast<double>(points.size());
+  summary.results["ltca"] = {{"force", force},
+                             {"ste_peak_to_peak", hi->ste - lo->ste},
+                             {"ste_min", lo->ste},
+                             {"ste_max", hi->ste},
+                             {"mean_tangent_stiffness", mean_tangent},
+                             {"contact_ratio", stiffness->contactRatio()},
+                             {"wall_time_s", sweep_seconds}};
+  std::string text = fmt::format(
+      "loaded tooth contact at {:g} N: STE {:.4g} .. {:.4g} um (peak to peak {:.4g} um), mean "
+      "tangent stiffness {:.4g} N/m\n",
+      force, 1e6 * lo->ste, 1e6 * hi->ste, 1e6 * (hi->ste - lo->ste), mean_tangent);
+
+  const auto design = config.optionalReal("modifications.design_load");
+  std::vector<double> factors = config.realList("harris.load_factors");
+  if (factors.empty() && design) {
+    for (int i = 1; i <= 20; ++i) factors.push_back(0.1 * i);
+  }
+  if (!factors.empty()) {
+    const double reference = design.value_or(force);
+    std::vector<double> loads;
+    for (double f : factors) {
+      if (!(f > 0.0)) throw InputError("harris.load_factors", fmt::format("{:g}", f), "> 0");
+      loads.push_back(f * reference);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto map = harrisMap(contact, loads, positions);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    writer.writeCsv("harris.csv", io::harrisTable(map));
+    const auto best = std::min_element(
+        map.begin(), map.end(), [](auto& a, auto& b) { return a.peak_to_peak < b.peak_to_peak; });
+    summary.results["harris"] = {{"loads", loads.size()},
+                                 {"minimum_at", best->force},
+                                 {"minimum_peak_to_peak", best->peak_to_peak},
+                                 {"wall_time_s", seconds}};
+    text += fmt::format(
+        "  Harris map ({} loads x {} positions, {:.3g} ms): minimum {:.4g} um at "
+        "{:.4g} N\n",
+        loads.size(), positions, 1e3 * seconds, 1e6 * best->peak_to_peak, best->force);
+  }
+  if (design) {
+    double k_bar = 0.0;
+    const auto stats = meanExcitationAgainstLoad(
+        contact, *design, config.realList("statistics.load_factors"), positions, &k_bar);
+    writer.writeCsv("load_statistics.csv", io::loadStatisticsTable(stats));
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const auto& s : stats) {
+      rows.push_back({{"a", s.a},
+                      {"r_ke", s.statistics.r_ke},
+                      {"ratio_eq7", s.statistics.ratio},
+                      {"ratio_eq11", s.statistics.ratio_eq11},
+                      {"classification", s.statistics.classification()}});
+    }
+    summary.results["statistics"] = {{"design_load", *design},
+                                     {"mean_tangent_stiffness_at_design_load", k_bar},
+                                     {"loads", rows}};
+  }
+  auto path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    for (const auto& f : drawPlots("ltca", writer.folder())) writer.recordFile(f);
+    path = writer.writeSummary(summary);
+  }
+  for (const auto& w : summary.warnings) std::cerr << "warning: " << w << "\n";
+  text += fmt::format("results: {}\n", path.string());
+  report(options, text);
+  return kExitOk;
+}
+
+}  // namespace geardyn::cli

@@ -1,0 +1,76 @@
+"""geardyn ltca: the loaded STE and load sharing of a relieved spur pair, the Harris map with its
+minimum at the design load, Gelman's statistics against load, and bad input."""
+
+import csv
+import json
+
+import pytest
+
+from cli_support import EXAMPLES, run
+
+EXAMPLE = EXAMPLES / "ltca_visnadi2021_long_relief.toml"
+
+
+@pytest.fixture(scope="module")
+def ltca(tmp_path_factory):
+    out = tmp_path_factory.mktemp("ltca")
+    result = run("ltca", EXAMPLE, "--out", out, "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    return out, json.loads((out / "summary.json").read_text())["results"]
+
+
+def test_loads_share_the_force(ltca):
+    out, _ = ltca
+    with open(out / "ltca.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    assert len(rows) == 200
+    for row in rows:
+        shares = [float(v) for k, v in row.items() if k.startswith("share_pair_")]
+        assert sum(shares) == pytest.approx(1.0, abs=1e-12)
+        assert min(shares) >= 0.0
+        assert float(row["ste_m"]) >= float(row["no_load_te_m"])
+
+
+def test_harris_minimum_at_the_design_load_and_statistics_sign_change(ltca):
+    _, results = ltca
+    assert results["harris"]["minimum_at"] == pytest.approx(3000.0, abs=300.0 + 1e-9)
+    assert results["harris"]["wall_time_s"] < 0.05  # 20 loads x 200 positions
+    loads = {row["a"]: row for row in results["statistics"]["loads"]}
+    assert loads[0.5]["r_ke"] > 0 and loads[0.5]["ratio_eq11"] > 1
+    assert loads[1.5]["r_ke"] < 0 and loads[1.5]["ratio_eq11"] < 1
+    assert loads[1.0]["ratio_eq11"] == pytest.approx(1.0, abs=0.02)
+
+
+def test_unmodified_pair_has_the_potential_energy_stiffness(tmp_path):
+    # No modification: STE = F/k and the secant stiffness is the stiffness command's k.
+    result = run("ltca", EXAMPLE, "--out", tmp_path / "l", "--set", "output.plots=false",
+                 "--set", 'modifications.relief="none"', "--set", "harris.load_factors=[]",
+                 "--set", "ltca.positions=2000")
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "l" / "ltca.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    for row in rows:
+        assert float(row["secant_stiffness"]) == pytest.approx(float(row["tangent_stiffness"]), rel=1e-12)
+        assert float(row["ste_m"]) == pytest.approx(3000.0 / float(row["secant_stiffness"]), rel=1e-12)
+    mean = sum(float(r["secant_stiffness"]) for r in rows) / len(rows)
+    # The exact mean of the Visnadi pair is 3.1636e8; 2000 samples of a curve with jumps: ~1e-4.
+    assert mean == pytest.approx(3.1636e8, rel=1e-3)
+
+
+@pytest.mark.parametrize("override, key", [
+    ('modifications.relief="long"', "modifications.design_load"),
+    ("modifications.pinion_tip_relief=1e-5", "modifications.pinion_tip_relief"),
+    ("ltca.force=-1", "ltca.force"),
+    ("ltca.slices=0", "ltca.slices"),
+])
+def test_bad_input(tmp_path, override, key):
+    preset = override.startswith("modifications.relief")
+    extra = [] if preset else ["--set", "modifications.design_load=3000.0"]
+    config = tmp_path / "c.toml"
+    text = EXAMPLE.read_text()
+    if preset:
+        text = text.replace("design_load = 3000.0\n", "")
+    config.write_text(text)
+    result = run("ltca", config, "--out", tmp_path / "o", "--set", override, *extra)
+    assert result.returncode == 2, result.stderr
+    assert key in result.stderr
