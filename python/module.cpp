@@ -10,6 +10,7 @@ namespace py = pybind11;
 
 namespace geardyn::python {
 void bindGeometry(py::module_& m);
+void bindContact(py::module_& m);
 void bindIo(py::module_& m);
 void bindRotor(py::module_& m);
 void bindStiffness(py::module_& m);
@@ -28,6 +29,7 @@ PYBIND11_MODULE(_geardyn, m) {
     }
   });
   geardyn::python::bindGeometry(m);
+  geardyn::python::bindContact(m);
   geardyn::python::bindIo(m);
   geardyn::python::bindRotor(m);
   geardyn::python::bindStiffness(m);

@@ -26,9 +26,11 @@ from ._geardyn import (  # noqa: F401  (re-exported API)
     config_reference,
     full_spectrum,
     gear_whirl_peaks,
+    harris_map,
     identify_dte,
     iso6336_stiffness,
     load_config,
+    loaded_contact,
     mesh_phase_from_roll_angle,
     roll_angle_from_mesh_phase,
 )
