@@ -189,8 +189,8 @@ DteIdentification threeStep(const LateralRotorSpec& known,
   }
   LateralRotorSpec s = known;
   s.mesh_stiffness = std::max(std::abs(km), 1e-12);
-  const double m_avg = m1 * m2 / (m1 + m2);  // eq. 4.9
-  s.mesh_damping = 2.0 * options.mesh_damping_ratio * std::sqrt(s.mesh_stiffness * m_avg);
+  s.mesh_damping = dashpotFromRatio(options.mesh_damping_ratio, s.mesh_stiffness,
+                                    meshDampingMass(m1, m2));  // eqs. 4.9–4.10
   r.mesh_damping = {s.mesh_damping, s.mesh_damping, s.mesh_damping, true};
 
   // Step 2: X_i, Y_i from the mesh harmonics.

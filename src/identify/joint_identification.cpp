@@ -78,7 +78,7 @@ struct Problem {
   double logRatio(const Eigen::VectorXd& t) const { return free[1] ? t[1] : fixed[1]; }
   double stiffness(const Eigen::VectorXd& t) const { return k_ref / compliance(t); }
   double damping(const Eigen::VectorXd& t) const {
-    return 2.0 * std::exp(logRatio(t)) * std::sqrt(std::abs(stiffness(t)) * m_eff);
+    return dashpotFromRatio(std::exp(logRatio(t)), std::abs(stiffness(t)), m_eff);
   }
   bool stiffnessPrior() const {
     return free[0] && options.mesh_stiffness.value && options.mesh_stiffness.relative_sd > 0.0;
@@ -251,7 +251,7 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
   Problem p{known, data, harmonics, options};
   p.scale = largest;
   p.k_ref = known.pinion_shaft_stiffness + known.gear_shaft_stiffness;
-  p.m_eff = known.pinion_mass * known.gear_mass / (known.pinion_mass + known.gear_mass);
+  p.m_eff = meshDampingMass(known.pinion_mass, known.gear_mass);
   p.components.push_back({"static", Component::kStatic, 0});
   for (int i = 1; i <= harmonics; ++i) {
     p.components.push_back({fmt::format("mesh_{}_fwd", i), Component::kMeshForward, i});
@@ -429,8 +429,7 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
     r.spec.mesh_stiffness = std::isfinite(r.mesh_stiffness.low) && r.mesh_stiffness.low > 0.0
                                 ? r.mesh_stiffness.low
                                 : 1e6 * p.k_ref;
-    r.spec.mesh_damping =
-        2.0 * std::exp(p.logRatio(t)) * std::sqrt(r.spec.mesh_stiffness * p.m_eff);
+    r.spec.mesh_damping = dashpotFromRatio(std::exp(p.logRatio(t)), r.spec.mesh_stiffness, p.m_eff);
   }
   r.message = fmt::format(
       "joint weighted least squares: {} iterations, chi^2 = {:.4g} for {} degrees of freedom{}",

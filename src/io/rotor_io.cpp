@@ -323,13 +323,9 @@ LateralRotorSpec knownRotorFromConfig(const Config& config) {
   s.gear_teeth = static_cast<int>(config.integer("rotor.gear_teeth"));
   if (config.resolved()["rotor"].contains("pinion_speed_rpm"))
     s.pinion_speed = config.real("rotor.pinion_speed_rpm") / 60.0;
-  const double zeta = config.real("rotor.shaft_damping_ratio");
-  s.pinion_shaft_damping =
-      config.optionalReal("rotor.pinion_shaft_damping")
-          .value_or(2.0 * zeta * std::sqrt(s.pinion_shaft_stiffness * s.pinion_mass));
-  s.gear_shaft_damping =
-      config.optionalReal("rotor.gear_shaft_damping")
-          .value_or(2.0 * zeta * std::sqrt(s.gear_shaft_stiffness * s.gear_mass));
+  lateralRotorDamping(s, config.real("rotor.shaft_damping_ratio"), 0.0);
+  if (auto c = config.optionalReal("rotor.pinion_shaft_damping")) s.pinion_shaft_damping = *c;
+  if (auto c = config.optionalReal("rotor.gear_shaft_damping")) s.gear_shaft_damping = *c;
   s.te_x.clear();
   s.te_y.clear();
   return s;
@@ -349,12 +345,13 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   s.pinion_runout_phase = config.real("runout.pinion_phase");
   s.gear_runout = config.real("runout.gear");
   s.gear_runout_phase = config.real("runout.gear_phase");
-  const double m = config.string("mesh.damping_mass") == "effective"
-                       ? s.pinion_mass * s.gear_mass / (s.pinion_mass + s.gear_mass)
-                       : 0.5 * (s.pinion_mass + s.gear_mass);
+  const MeshDampingMass kind = config.string("mesh.damping_mass") == "effective"
+                                   ? MeshDampingMass::kEffective
+                                   : MeshDampingMass::kArithmeticMean;
   s.mesh_damping =
       config.optionalReal("mesh.damping")
-          .value_or(2.0 * config.real("mesh.damping_ratio") * std::sqrt(s.mesh_stiffness * m));
+          .value_or(dashpotFromRatio(config.real("mesh.damping_ratio"), s.mesh_stiffness,
+                                     meshDampingMass(s.pinion_mass, s.gear_mass, kind)));
   s.validate();
   return s;
 }

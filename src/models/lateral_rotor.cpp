@@ -72,18 +72,27 @@ void LateralRotorSpec::validate() const {
   }
 }
 
+double meshDampingMass(double pinion_mass, double gear_mass, MeshDampingMass kind) {
+  return kind == MeshDampingMass::kArithmeticMean
+             ? 0.5 * (pinion_mass + gear_mass)
+             : pinion_mass * gear_mass / (pinion_mass + gear_mass);
+}
+
+double dashpotFromRatio(double ratio, double stiffness, double mass) {
+  return 2.0 * ratio * std::sqrt(stiffness * mass);
+}
+
 void lateralRotorDamping(LateralRotorSpec& spec, double shaft_ratio, double mesh_ratio,
                          MeshDampingMass mesh_mass) {
   requireAtLeast("rotor.shaft_damping_ratio", shaft_ratio, 0.0, "-");
   requireAtLeast("mesh.damping_ratio", mesh_ratio, 0.0, "-");
   spec.pinion_shaft_damping =
-      2.0 * shaft_ratio * std::sqrt(spec.pinion_shaft_stiffness * spec.pinion_mass);
+      dashpotFromRatio(shaft_ratio, spec.pinion_shaft_stiffness, spec.pinion_mass);
   spec.gear_shaft_damping =
-      2.0 * shaft_ratio * std::sqrt(spec.gear_shaft_stiffness * spec.gear_mass);
-  const double m = mesh_mass == MeshDampingMass::kArithmeticMean
-                       ? 0.5 * (spec.pinion_mass + spec.gear_mass)
-                       : spec.pinion_mass * spec.gear_mass / (spec.pinion_mass + spec.gear_mass);
-  spec.mesh_damping = 2.0 * mesh_ratio * std::sqrt(spec.mesh_stiffness * m);
+      dashpotFromRatio(shaft_ratio, spec.gear_shaft_stiffness, spec.gear_mass);
+  spec.mesh_damping =
+      dashpotFromRatio(mesh_ratio, spec.mesh_stiffness,
+                       meshDampingMass(spec.pinion_mass, spec.gear_mass, mesh_mass));
 }
 
 LateralRotorSpec raoTable41Spec() {

@@ -82,6 +82,12 @@ struct LateralRotorSpec {
   void validate() const;
 };
 
+/// The mass a mesh damping ratio refers to [kg]: m₁m₂/(m₁ + m₂) (eq. 4.9) or (m₁ + m₂)/2.
+double meshDampingMass(double pinion_mass, double gear_mass,
+                       MeshDampingMass kind = MeshDampingMass::kEffective);
+/// A dashpot from a damping ratio, c = 2 ζ √(k m) [N s/m].
+double dashpotFromRatio(double ratio, double stiffness, double mass);
+
 /// Dashpots from damping ratios: c_s1 = 2 ζ_s √(k_s1 m₁), c_s2 = 2 ζ_s √(k_s2 m₂) (each shaft
 /// with its own gear, a one-mass oscillator), c_m = 2 ζ_m √(k_m m_mesh) with m_mesh as chosen.
 void lateralRotorDamping(LateralRotorSpec& spec, double shaft_ratio, double mesh_ratio,
