@@ -53,6 +53,14 @@ double keyphasorAt(double t, double speed, double sample_rate) {
   return 0.0;
 }
 
+/// The four probe channels x₁, y₁, x₂, y₂ over the steady window of a time response.
+std::array<std::vector<double>, 4> steadyChannels(const RotorTimeResponse& r) {
+  std::array<std::vector<double>, 4> channels;
+  for (int c = 0; c < 4; ++c)
+    for (long long k = r.window_begin; k < r.window_end; ++k) channels[c].push_back(r.eta[k](c));
+  return channels;
+}
+
 struct StudyCase {
   std::string name, group;
   double factor = 1.0;
@@ -189,11 +197,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
       ok = false;
       std::cerr << "geardyn rotor: " << time.message << "\n";
     } else {
-      std::array<std::vector<double>, 4> channels;
-      for (int c = 0; c < 4; ++c) {
-        for (long long k = time.window_begin; k < time.window_end; ++k)
-          channels[c].push_back(time.eta[k](c));
-      }
+      auto channels = steadyChannels(time);
       if (noise > 0.0) {
         std::mt19937_64 rng(seed);
         for (auto& channel : channels) addRelativeNoise(channel, noise, rng);
@@ -333,12 +337,8 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
           ok = false;
           continue;
         }
-        std::array<std::vector<double>, 4> channels;
-        for (int ch = 0; ch < 4; ++ch)
-          for (long long k = r.window_begin; k < r.window_end; ++k)
-            channels[ch].push_back(r.eta[k](ch));
-        peaks = analyseGearPairRecord(channels, r.sample_rate, r.t[r.window_begin], 0.0, setupOf(m),
-                                      spectrum_options)
+        peaks = analyseGearPairRecord(steadyChannels(r), r.sample_rate, r.t[r.window_begin], 0.0,
+                                      setupOf(m), spectrum_options)
                     .peaks;
       } else {
         peaks = io::frequencyDomainPeaks(solveRotorFrequencyResponse(m), spectrum_options.frame);

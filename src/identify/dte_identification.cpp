@@ -253,13 +253,17 @@ DteIdentification threeStep(const LateralRotorSpec& known,
 }  // namespace
 }  // namespace detail
 
-std::array<std::vector<WhirlComponent>, 2> modelWhirlPeaks(const LateralRotorSpec& spec) {
-  const auto parts = solveRotorFrequencyResponse(LateralRotorModel(spec));
+std::array<std::vector<WhirlComponent>, 2> whirlPeaksOf(
+    const std::vector<RotorWhirlResponse>& parts) {
   std::array<std::vector<WhirlComponent>, 2> out;
   for (int s = 0; s < 2; ++s)
     for (const auto& p : parts)
       out[s].push_back({p.name, p.omega / (2.0 * std::numbers::pi), p.response(s)});
   return out;
+}
+
+std::array<std::vector<WhirlComponent>, 2> modelWhirlPeaks(const LateralRotorSpec& spec) {
+  return whirlPeaksOf(solveRotorFrequencyResponse(LateralRotorModel(spec)));
 }
 
 DteIdentification identifyDte(const LateralRotorSpec& known,

@@ -6,12 +6,11 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/identify/dte_identification.h"
 #include "geardyn/io/output_section.h"
 
 namespace geardyn::io {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 void addSpectrumSection(ConfigSchema& schema) {
   schema.section("spectrum",
@@ -420,14 +419,7 @@ nlohmann::ordered_json whirlPeaksJson(const std::array<std::vector<WhirlComponen
 
 std::array<std::vector<WhirlComponent>, 2> frequencyDomainPeaks(
     const std::vector<RotorWhirlResponse>& parts, WhirlFrame frame) {
-  std::array<std::vector<WhirlComponent>, 2> out;
-  for (int s = 0; s < 2; ++s) {
-    for (const auto& p : parts) {
-      out[s].push_back(inShaftFrame({p.name, p.omega / kTwoPi, p.response(s)},
-                                    s == 0 && frame == WhirlFrame::kShaft));
-    }
-  }
-  return out;
+  return inFrame(whirlPeaksOf(parts), frame);
 }
 
 nlohmann::ordered_json whirlConventionsJson(WhirlFrame frame, const std::string& phase_reference) {

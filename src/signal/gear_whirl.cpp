@@ -109,6 +109,13 @@ GearPairSpectrum analyseGearPairRecord(const std::array<std::vector<double>, 4>&
   return out;
 }
 
+std::array<std::vector<WhirlComponent>, 2> inFrame(std::array<std::vector<WhirlComponent>, 2> peaks,
+                                                   WhirlFrame frame) {
+  if (frame == WhirlFrame::kShaft)
+    for (auto& c : peaks[0]) c = inShaftFrame(c, true);
+  return peaks;
+}
+
 KeyphasorPulses findKeyphasorPulses(const std::vector<double>& keyphasor, double sample_rate,
                                     double start_time, double threshold,
                                     double max_speed_variation) {

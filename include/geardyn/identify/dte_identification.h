@@ -23,6 +23,7 @@
 
 #include "geardyn/models/lateral_rotor.h"
 #include "geardyn/signal/full_spectrum.h"
+#include "geardyn/solvers/rotor_response.h"
 
 namespace geardyn {
 
@@ -97,7 +98,12 @@ DteIdentification identifyDte(const LateralRotorSpec& known,
                               const std::vector<MeasuredWhirlPeaks>& data,
                               const IdentificationOptions& options);
 
-/// The model's exact peaks at one speed for a spec (probe frame), in gearWhirlComponents order.
+/// The frequency-domain solution as whirl peaks of both shafts (probe frame, Hz), in
+/// gearWhirlComponents order.
+std::array<std::vector<WhirlComponent>, 2> whirlPeaksOf(
+    const std::vector<RotorWhirlResponse>& parts);
+
+/// The model's exact peaks at one speed for a spec: whirlPeaksOf its frequency-domain solution.
 std::array<std::vector<WhirlComponent>, 2> modelWhirlPeaks(const LateralRotorSpec& spec);
 
 }  // namespace geardyn

@@ -72,6 +72,10 @@ GearPairSpectrum analyseGearPairRecord(const std::array<std::vector<double>, 4>&
                                        double reference_time, const GearWhirlSetup& setup,
                                        const GearPairSpectrumOptions& options);
 
+/// Both shafts' peaks (probe frame) reported in `frame`: the pinion shaft turns in −z.
+std::array<std::vector<WhirlComponent>, 2> inFrame(std::array<std::vector<WhirlComponent>, 2> peaks,
+                                                   WhirlFrame frame);
+
 /// Keyphasor (once-per-revolution) pulses.
 struct KeyphasorPulses {
   std::vector<double> times;  ///< rising threshold crossings, linear interpolation [s]
