@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
@@ -125,9 +126,34 @@ RotorTimeResponse solveRotorTimeResponse(const LateralRotorModel& model,
   out.t.resize(count);
   for (long long k = 0; k < count; ++k) out.t[k] = k * dt;
   out.eta.resize(count);
-  out.steps = integrateOnGrid(model, out.t, options.relative_tolerance, options.absolute_tolerance,
-                              &out.rhs_evaluations,
-                              [&](std::size_t i, const Eigen::Vector4d& eta) { out.eta[i] = eta; });
+  // On a grid not aligned to T_c the periodicity check needs η(t_k + T_c) off the grid: the
+  // integrator's dense output gives it, on the merged grid (tagged: ≥ count = shifted sample).
+  std::vector<Eigen::Vector4d> shifted;
+  if (out.samples_per_period == 0) {
+    std::vector<std::pair<double, long long>> merged;
+    for (long long k = 0; k < count; ++k) {
+      merged.push_back({out.t[k], k});
+      if (out.t[k] + out.common_period <= out.t.back()) {
+        merged.push_back({out.t[k] + out.common_period, count + k});
+      }
+    }
+    std::sort(merged.begin(), merged.end());
+    std::vector<double> times;
+    for (const auto& m : merged) times.push_back(m.first);
+    shifted.resize(merged.size());
+    out.steps =
+        integrateOnGrid(model, times, options.relative_tolerance, options.absolute_tolerance,
+                        &out.rhs_evaluations, [&](std::size_t i, const Eigen::Vector4d& eta) {
+                          const long long tag = merged[i].second;
+                          (tag < count ? out.eta[tag] : shifted[tag - count]) = eta;
+                        });
+    shifted.resize(static_cast<std::size_t>(std::count_if(
+        merged.begin(), merged.end(), [&](const auto& m) { return m.second >= count; })));
+  } else {
+    out.steps = integrateOnGrid(
+        model, out.t, options.relative_tolerance, options.absolute_tolerance, &out.rhs_evaluations,
+        [&](std::size_t i, const Eigen::Vector4d& eta) { out.eta[i] = eta; });
+  }
 
   double scale = 0.0;
   for (const auto& eta : out.eta) {
@@ -153,8 +179,10 @@ RotorTimeResponse solveRotorTimeResponse(const LateralRotorModel& model,
     scale = std::max(scale, out.eta[k].cwiseAbs().maxCoeff());
   const double limit = options.steady_tolerance * scale;
   long long last_bad = -1;
-  for (long long k = 0; k + n < count; ++k) {
-    if ((out.eta[k + n] - out.eta[k]).cwiseAbs().maxCoeff() > limit) last_bad = k;
+  const long long comparable = shifted.empty() ? count - n : static_cast<long long>(shifted.size());
+  for (long long k = 0; k < comparable; ++k) {
+    const Eigen::Vector4d& later = shifted.empty() ? out.eta[k + n] : shifted[k];
+    if ((later - out.eta[k]).cwiseAbs().maxCoeff() > limit) last_bad = k;
   }
   out.transient_end = last_bad + 1;
   if (out.samples_per_period == 0) {
@@ -168,7 +196,7 @@ RotorTimeResponse solveRotorTimeResponse(const LateralRotorModel& model,
     out.window_end = count;
     out.window_begin = count - static_cast<long long>(out.window_periods) * n;
   }
-  if (last_bad + n >= count - 1 || (out.samples_per_period > 0 && out.window_periods < 1)) {
+  if (last_bad + 1 >= comparable || (out.samples_per_period > 0 && out.window_periods < 1)) {
     out.status = RotorTimeStatus::kTransient;
     out.message = fmt::format(
         "the transient has not decayed to {:g} of the response within {:g} s "
@@ -176,8 +204,14 @@ RotorTimeResponse solveRotorTimeResponse(const LateralRotorModel& model,
         options.steady_tolerance, out.t.back(), out.common_period);
     return out;
   }
-  out.message = fmt::format("steady after {:.4g} s; {} common period(s) of {:.6g} s analysed",
-                            out.t[out.transient_end], out.window_periods, out.common_period);
+  out.message =
+      out.samples_per_period > 0
+          ? fmt::format("steady after {:.4g} s; {} common period(s) of {:.6g} s analysed",
+                        out.t[out.transient_end], out.window_periods, out.common_period)
+          : fmt::format(
+                "steady after {:.4g} s; the remaining {:.4g} s analysed (grid not aligned "
+                "to the common period: least squares)",
+                out.t[out.transient_end], out.t.back() - out.t[out.transient_end]);
   return out;
 }
 
