@@ -8,35 +8,7 @@
 
 namespace geardyn::io {
 
-ConfigSchema ltcaSchema() {
-  ConfigSchema schema("ltca",
-                      "Loaded tooth contact analysis: the static transmission error under load "
-                      "with flank modifications, the load sharing, secant and tangent mesh "
-                      "stiffness, a Harris map and Gelman's mean-excitation statistics against "
-                      "load.");
-  schema.string("title").optional().doc("free text describing the study");
-  addGearPairSections(schema, true);
-  schema.section("ltca", "The analysis.");
-  schema.real("ltca.force")
-      .unit("N")
-      .positive()
-      .required()
-      .doc("transmitted force along the line of action (T1 / r_b1)");
-  schema.integer("ltca.positions")
-      .min(8)
-      .max(100000)
-      .defaultValue(200)
-      .doc("mesh positions per period");
-  schema.integer("ltca.periods")
-      .min(1)
-      .max(100000)
-      .defaultValue(1)
-      .doc("mesh periods analysed (pitch errors: the teeth change from period to period)");
-  schema.integer("ltca.slices")
-      .min(1)
-      .max(10000)
-      .defaultValue(1)
-      .doc("face slices per tooth pair (helical gears and crowning need several)");
+void addModificationsSection(ConfigSchema& schema) {
   schema.section("modifications",
                  "Flank modifications and errors (separations along the line of "
                  "action).");
@@ -79,6 +51,38 @@ ConfigSchema ltcaSchema() {
         .defaultValue(nlohmann::ordered_json::array())
         .doc("pitch error of each tooth (cyclic)");
   }
+}
+
+ConfigSchema ltcaSchema() {
+  ConfigSchema schema("ltca",
+                      "Loaded tooth contact analysis: the static transmission error under load "
+                      "with flank modifications, the load sharing, secant and tangent mesh "
+                      "stiffness, a Harris map and Gelman's mean-excitation statistics against "
+                      "load.");
+  schema.string("title").optional().doc("free text describing the study");
+  addGearPairSections(schema, true);
+  schema.section("ltca", "The analysis.");
+  schema.real("ltca.force")
+      .unit("N")
+      .positive()
+      .required()
+      .doc("transmitted force along the line of action (T1 / r_b1)");
+  schema.integer("ltca.positions")
+      .min(8)
+      .max(100000)
+      .defaultValue(200)
+      .doc("mesh positions per period");
+  schema.integer("ltca.periods")
+      .min(1)
+      .max(100000)
+      .defaultValue(1)
+      .doc("mesh periods analysed (pitch errors: the teeth change from period to period)");
+  schema.integer("ltca.slices")
+      .min(1)
+      .max(10000)
+      .defaultValue(1)
+      .doc("face slices per tooth pair (helical gears and crowning need several)");
+  addModificationsSection(schema);
   schema.section("harris", "Peak-to-peak loaded STE against load.");
   schema.realList("harris.load_factors")
       .unit("-")

@@ -6,13 +6,17 @@
 #include <complex>
 #include <numbers>
 
+#include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/ltca_io.h"
 #include "geardyn/io/stiffness_io.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "geardyn/stiffness/potential_energy_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/stiffness/tabulated_stiffness.h"
 
 namespace geardyn::io {
 namespace {
@@ -58,6 +62,21 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
   b.nondimensional = config.string("model.units") == "nondimensional";
   std::optional<GearPair> pair;
   if (hasGearPair(config)) pair.emplace(gearPairSpecFromConfig(config));
+
+  // The transmitted force (also needed by the loaded contact analysis below).
+  const auto meanForce = [&]() {
+    if (config.has("model.mean_force") == config.has("model.pinion_torque")) {
+      throw InputError("model.mean_force", "",
+                       config.has("model.mean_force") ? "give mean_force or pinion_torque, not both"
+                                                      : "required (or model.pinion_torque)");
+    }
+    if (config.has("model.mean_force")) return config.real("model.mean_force");
+    if (config.has("model.pinion_base_radius"))
+      return config.real("model.pinion_torque") / config.real("model.pinion_base_radius");
+    if (pair) return config.real("model.pinion_torque") / pair->pinion().base_radius;
+    throw InputError("model.pinion_base_radius", "", "required (or give [pinion] and [gear])");
+  };
+  std::vector<double> ltca_phases, ltca_error;  // δ − F/K of the loaded contact (type ltca)
 
   // Stiffness.
   const bool contacts = config.string("model.type") == "gear_pair_contacts";
@@ -128,7 +147,30 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
       throw InputError("model.stiffness.type", "\"" + type + "\"",
                        "computes the stiffness from the gears: give [pinion], [gear] (and [pair])");
     }
-    b.spec.stiffness = buildMeshStiffnessModel(type, config, *pair, b.warnings);
+    if (type == "ltca") {
+      // The mesh linearised about the mean force F: F = K(φ)(δ − E(φ)) with K the tangent
+      // stiffness of the loaded contact and E = δ − F/K (contact/load_statistics.h).
+      if (b.nondimensional) {
+        throw InputError("model.stiffness.type", "\"ltca\"", "needs SI units (model.units)");
+      }
+      PotentialEnergyOptions pe = potentialEnergyOptionsFromConfig(config);
+      const int slices = static_cast<int>(config.integer("model.stiffness.ltca_slices"));
+      if (pair->baseHelixAngle() > 0.0) pe.slices = slices;
+      auto k = std::make_shared<const PotentialEnergyMeshStiffness>(*pair, pe);
+      const LoadedToothContact contact(k, pairModificationsFromConfig(config, *k), slices);
+      const double force = meanForce();
+      std::vector<double> tangent;
+      for (const auto& p : contact.sweep(
+               force, static_cast<int>(config.integer("model.stiffness.ltca_positions")))) {
+        ltca_phases.push_back(p.phase);
+        tangent.push_back(p.tangent);
+        ltca_error.push_back(p.ste - force / p.tangent);
+      }
+      b.spec.stiffness =
+          std::make_shared<TabulatedMeshStiffness>(ltca_phases, tangent, k->contactRatio(), "ltca");
+    } else {
+      b.spec.stiffness = buildMeshStiffnessModel(type, config, *pair, b.warnings);
+    }
   }
   b.mean_stiffness = summarizeMeshStiffness(*b.spec.stiffness, 0).mean;
 
@@ -181,15 +223,7 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
   }
 
   // Load.
-  if (config.has("model.mean_force") == config.has("model.pinion_torque")) {
-    throw InputError("model.mean_force", "",
-                     config.has("model.mean_force") ? "give mean_force or pinion_torque, not both"
-                                                    : "required (or model.pinion_torque)");
-  }
-  b.spec.mean_force =
-      config.has("model.mean_force")
-          ? config.real("model.mean_force")
-          : config.real("model.pinion_torque") / base_radius("model.pinion_base_radius", true);
+  b.spec.mean_force = meanForce();
 
   b.spec.contact = contacts                                        ? ContactLaw::kOneSided
                    : config.string("model.contact") == "linear"    ? ContactLaw::kLinear
@@ -253,9 +287,14 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
   }
   if (!config.realList(te + ".table_phases").empty() ||
       !config.realList(te + ".table_values").empty()) {
+    if (!ltca_phases.empty()) {
+      throw InputError(te + ".table_phases", "(given)",
+                       "model.stiffness.type = \"ltca\" supplies the error table itself");
+    }
     b.spec.transmission_error.addTable(config.realList(te + ".table_phases"),
                                        config.realList(te + ".table_values"), te);
   }
+  if (!ltca_phases.empty()) b.spec.transmission_error.addTable(ltca_phases, ltca_error, te);
 
   // Time step against the mesh and natural periods.
   const int steps = static_cast<int>(config.integer("solver.steps_per_period"));

@@ -1,6 +1,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/ltca_io.h"
 #include "geardyn/io/output_section.h"
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stiffness_io.h"
@@ -88,10 +89,12 @@ void addGearPairModelSections(ConfigSchema& schema) {
 
   schema.section("model.stiffness", "Mesh stiffness k(t).");
   schema.string("model.stiffness.type")
-      .choices({"fourier", "step", "potential_energy", "api", "iso6336"})
+      .choices({"fourier", "step", "potential_energy", "api", "iso6336", "ltca"})
       .defaultValue("fourier")
       .doc(
-          "given Fourier series or step, or a model of the gear pair ([mesh_stiffness.*] options)");
+          "given Fourier series or step, or a model of the gear pair ([mesh_stiffness.*] options); "
+          "ltca: the loaded tooth contact at the mean force with [modifications] - its tangent "
+          "stiffness as k(t) and delta - F/k as a table error");
   schema.real("model.stiffness.mean")
       .unit("N/m")
       .positive()
@@ -248,11 +251,22 @@ ConfigSchema simulateSchema() {
 
 void addGearPairDynamicsSections(ConfigSchema& schema) {
   addGearPairModelSections(schema);
+  schema.integer("model.stiffness.ltca_positions")
+      .min(16)
+      .max(100000)
+      .defaultValue(400)
+      .doc("ltca: table points per mesh period");
+  schema.integer("model.stiffness.ltca_slices")
+      .min(1)
+      .max(10000)
+      .defaultValue(1)
+      .doc("ltca: face slices per tooth pair");
   addTimeSolverSection(schema);
   addGearPairSections(schema, false);
   schema.section("mesh_stiffness",
                  "Options of the mesh-stiffness models (when [model.stiffness] type names one).");
   addMeshStiffnessModelSections(schema);
+  addModificationsSection(schema);
   addOutputSection(schema);
 }
 

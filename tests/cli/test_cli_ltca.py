@@ -74,3 +74,18 @@ def test_bad_input(tmp_path, override, key):
     result = run("ltca", config, "--out", tmp_path / "o", "--set", override, *extra)
     assert result.returncode == 2, result.stderr
     assert key in result.stderr
+
+
+def test_gear_pair_model_with_the_loaded_contact_mesh(tmp_path):
+    # model.stiffness.type = "ltca": the stats command's Gelman statistics at a = 0.5 of the
+    # long-relief design match the library's (r_ke = +0.816, R eq. 11 = 1.0705) and the simulated
+    # mean of k y equals L_d (Gelman eq. 1 averaged over a period).
+    result = run("stats", EXAMPLES / "stats_ltca_long_relief_underload.toml", "--out", tmp_path,
+                 "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    results = json.loads((tmp_path / "summary.json").read_text())["results"]
+    stats = results["mean_excitation"]
+    assert stats["r_ke"] == pytest.approx(0.8159, abs=2e-3)
+    assert stats["ratio_eq11"] == pytest.approx(1.0705, abs=1e-3)
+    assert stats["ratio_eq11"] > 1.0
+    assert abs(results["simulation"]["relative_difference"]) < 1e-6

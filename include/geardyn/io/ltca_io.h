@@ -14,6 +14,9 @@ namespace geardyn::io {
 
 ConfigSchema ltcaSchema();
 
+/// Adds [modifications] (designed relief presets, reliefs, crowning, slope and pitch errors).
+void addModificationsSection(ConfigSchema& schema);
+
 /// The modifications of [modifications] for the pair's potential-energy model (presets need
 /// it for their amount and length).
 PairModifications pairModificationsFromConfig(const Config& config,
