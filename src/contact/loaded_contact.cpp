@@ -23,24 +23,30 @@ LoadedToothContact::LoadedToothContact(
   modifications_.gear.validate("modifications.gear");
 }
 
+void LoadedToothContact::slice(double phase, int pair, int slice, double& stiffness,
+                               double& separation, int period) const {
+  stiffness = 0.0;
+  separation = 0.0;
+  const auto& k = *stiffness_;
+  double s_pair = 0.0;
+  if (!k.pairSection(phase, pair, s_pair)) return;
+  const double s_begin = k.contactStart(), s_end = k.contactEnd(), b = k.faceWidth();
+  const double fraction = (slice + 0.5) / slices_;
+  const double s = s_pair + fraction * k.stagger();
+  if (s < s_begin || s > s_end) return;
+  stiffness = std::max(0.0, k.sliceScale() * (b / slices_) * k.pairStiffnessPerWidth(s));
+  // Pair j entered contact j periods ago: the teeth of period − j.
+  const int tooth = period - pair;
+  separation = modifications_.separation(s, (fraction - 0.5) * b, tooth, tooth, s_begin, s_end, b);
+}
+
 void LoadedToothContact::gather(double phase, int period, std::vector<Slice>& out) const {
   out.clear();
-  const auto& k = *stiffness_;
-  const double s_begin = k.contactStart(), s_end = k.contactEnd(), b = k.faceWidth();
-  const double stagger = k.stagger(), scale = k.sliceScale();
-  for (int j = 0; j < k.pairCount(); ++j) {
-    double s_pair = 0.0;
-    if (!k.pairSection(phase, j, s_pair)) continue;
-    // Pair j entered contact j periods ago: the teeth of period − j.
-    const int tooth = period - j;
+  for (int j = 0; j < pairCount(); ++j) {
     for (int i = 0; i < slices_; ++i) {
-      const double fraction = (i + 0.5) / slices_;
-      const double s = s_pair + fraction * stagger;
-      if (s < s_begin || s > s_end) continue;
-      const double ki = scale * (b / slices_) * k.pairStiffnessPerWidth(s);
-      if (!(ki > 0.0)) continue;
-      const double z = (fraction - 0.5) * b;
-      out.push_back({ki, modifications_.separation(s, z, tooth, tooth, s_begin, s_end, b), j});
+      double k = 0.0, g = 0.0;
+      slice(phase, j, i, k, g, period);
+      if (k > 0.0) out.push_back({k, g, j});
     }
   }
 }

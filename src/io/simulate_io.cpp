@@ -57,6 +57,22 @@ Json statistics(const std::vector<double>& values, int samples_per_period, int h
 
 }  // namespace
 
+namespace {
+
+/// The loaded tooth contact of the configured gear pair and [modifications] (potential-energy
+/// pair compliance with the [mesh_stiffness.potential_energy] options).
+std::shared_ptr<const LoadedToothContact> loadedContactFromConfig(const Config& config,
+                                                                  const GearPair& pair) {
+  PotentialEnergyOptions pe = potentialEnergyOptionsFromConfig(config);
+  const int slices = static_cast<int>(config.integer("model.stiffness.ltca_slices"));
+  if (pair.baseHelixAngle() > 0.0) pe.slices = slices;
+  auto k = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
+  return std::make_shared<const LoadedToothContact>(k, pairModificationsFromConfig(config, *k),
+                                                    slices);
+}
+
+}  // namespace
+
 GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) {
   GearPairModelBuild b;
   b.nondimensional = config.string("model.units") == "nondimensional";
@@ -80,7 +96,23 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
 
   // Stiffness.
   const bool contacts = config.string("model.type") == "gear_pair_contacts";
-  const std::string type = contacts ? "contacts" : config.string("model.stiffness.type");
+  if (config.string("model.type") == "gear_pair_ltca") {
+    // One contact element per tooth pair (and slice): Σ_j k_j max(0, y − g_j) with the
+    // potential-energy stiffness and the modifications as gaps; k(φ) stays the unmodified
+    // potential-energy stiffness (scales, k̄, the linear start).
+    if (!pair) {
+      throw InputError("model.type", "\"gear_pair_ltca\"",
+                       "needs the gear pair: [pinion], [gear] (and [pair])");
+    }
+    if (b.nondimensional) {
+      throw InputError("model.type", "\"gear_pair_ltca\"", "needs SI units (model.units)");
+    }
+    const auto contact = loadedContactFromConfig(config, *pair);
+    b.spec.contact_elements = std::make_shared<LoadedContactElements>(contact);
+  }
+  const std::string type = contacts                  ? "contacts"
+                           : b.spec.contact_elements ? "potential_energy"
+                                                     : config.string("model.stiffness.type");
   const double contact_ratio = config.has("model.stiffness.contact_ratio")
                                    ? config.real("model.stiffness.contact_ratio")
                                : pair ? pair->contactRatioTotal()
@@ -153,21 +185,17 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
       if (b.nondimensional) {
         throw InputError("model.stiffness.type", "\"ltca\"", "needs SI units (model.units)");
       }
-      PotentialEnergyOptions pe = potentialEnergyOptionsFromConfig(config);
-      const int slices = static_cast<int>(config.integer("model.stiffness.ltca_slices"));
-      if (pair->baseHelixAngle() > 0.0) pe.slices = slices;
-      auto k = std::make_shared<const PotentialEnergyMeshStiffness>(*pair, pe);
-      const LoadedToothContact contact(k, pairModificationsFromConfig(config, *k), slices);
+      const auto contact = loadedContactFromConfig(config, *pair);
       const double force = meanForce();
       std::vector<double> tangent;
-      for (const auto& p : contact.sweep(
+      for (const auto& p : contact->sweep(
                force, static_cast<int>(config.integer("model.stiffness.ltca_positions")))) {
         ltca_phases.push_back(p.phase);
         tangent.push_back(p.tangent);
         ltca_error.push_back(p.ste - force / p.tangent);
       }
-      b.spec.stiffness =
-          std::make_shared<TabulatedMeshStiffness>(ltca_phases, tangent, k->contactRatio(), "ltca");
+      b.spec.stiffness = std::make_shared<TabulatedMeshStiffness>(
+          ltca_phases, tangent, contact->stiffness().contactRatio(), "ltca");
     } else {
       b.spec.stiffness = buildMeshStiffnessModel(type, config, *pair, b.warnings);
     }

@@ -17,11 +17,13 @@ void addGearPairModelSections(ConfigSchema& schema) {
   schema.section(
       "model", "The dynamic model: a single-DOF gear pair along the line of action (Gelman 2005).");
   schema.string("model.type")
-      .choices({"gear_pair", "gear_pair_contacts"})
+      .choices({"gear_pair", "gear_pair_contacts", "gear_pair_ltca"})
       .defaultValue("gear_pair")
       .doc(
           "gear_pair, or gear_pair_contacts: Saletti's tooth-pair contact elements of stiffness "
-          "contact_stiffness");
+          "contact_stiffness (step gaps), or gear_pair_ltca: one contact element per tooth pair "
+          "(and face slice) of the loaded tooth contact, potential-energy stiffness and the "
+          "[modifications] as gaps");
   schema.real("model.contact_stiffness")
       .unit("N/m")
       .positive()

@@ -78,6 +78,20 @@ double GearPairModel::contactLaw(double y, double* slope) const noexcept {
 }
 
 double GearPairModel::meshForce(double t, double x, double* dforce_dx) const {
+  if (spec_.contact_elements) {
+    const double y = x - error(t), phase = meshPhase(t);
+    double force = 0.0, slope = 0.0;
+    for (int j = 0; j < spec_.contact_elements->count(); ++j) {
+      double k = 0.0, gap = 0.0;
+      spec_.contact_elements->element(phase, j, k, gap);
+      if (y > gap) {
+        force += k * (y - gap);
+        slope += k;
+      }
+    }
+    if (dforce_dx) *dforce_dx = slope;
+    return force;
+  }
   const double k = stiffness(t);
   double slope = 0.0;
   const double g = contactLaw(x - error(t), dforce_dx ? &slope : nullptr);

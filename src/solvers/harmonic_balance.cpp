@@ -60,6 +60,15 @@ HarmonicBalance::HarmonicBalance(const GearPairModel& model, const HarmonicBalan
     error_.push_back(model.transmissionError().value(phase));
     error_rate_.push_back(model.transmissionError().derivative(phase));  // de/dφ
   }
+  if (const MeshContactElements* elements = model.contactElements()) {
+    elements_ = elements->count();
+    element_stiffness_.resize(static_cast<std::size_t>(samples_) * elements_);
+    element_gap_.resize(element_stiffness_.size());
+    for (int i = 0; i < samples_; ++i)
+      for (int j = 0; j < elements_; ++j)
+        elements->element(phases_[i], j, element_stiffness_[i * elements_ + j],
+                          element_gap_[i * elements_ + j]);
+  }
   real_buffer_ = fftw_alloc_real(samples_);
   complex_buffer_ = fftw_alloc_complex(samples_ / 2 + 1);
   forward_plan_ = fftw_plan_dft_r2c_1d(samples_, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
@@ -115,8 +124,28 @@ std::vector<double> HarmonicBalance::timeSignal(const Eigen::VectorXd& q) const 
 std::vector<double> HarmonicBalance::meshForceSignal(const Eigen::VectorXd& q, double) const {
   const std::vector<double> x = timeSignal(q);
   std::vector<double> f(samples_);
-  for (int i = 0; i < samples_; ++i) f[i] = stiffness_[i] * model_.contactLaw(x[i] - error_[i]);
+  for (int i = 0; i < samples_; ++i) f[i] = sampleForce(i, x[i] - error_[i], nullptr);
   return f;
+}
+
+double HarmonicBalance::sampleForce(int i, double y, double* slope) const {
+  if (elements_ == 0) {
+    double s = 1.0;
+    const double g = linearized_ ? y - linear_shift_ : model_.contactLaw(y, &s);
+    if (slope) *slope = stiffness_[i] * s;
+    return stiffness_[i] * g;
+  }
+  // Σ_j k_j max(0, y − g_j); linearised (the start): every element in its window in contact.
+  double force = 0.0, d = 0.0;
+  for (int j = 0; j < elements_; ++j) {
+    const double k = element_stiffness_[i * elements_ + j], gap = element_gap_[i * elements_ + j];
+    if (linearized_ ? k > 0.0 : y > gap) {
+      force += k * (y - gap);
+      d += k;
+    }
+  }
+  if (slope) *slope = d;
+  return force;
 }
 
 void HarmonicBalance::externalForce(double omega, Eigen::VectorXd& f,
@@ -157,13 +186,7 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
   const double m = model_.mass(), c = model_.damping();
   // AFT: coefficients → samples (inverse real FFT), force in the time domain, back.
   inverseToBuffer(q);
-  for (int i = 0; i < samples_; ++i) {
-    double slope = 1.0;
-    const double y = real_buffer_[i] - error_[i];
-    const double g = linearized_ ? y - linear_shift_ : model_.contactLaw(y, &slope);
-    f_[i] = stiffness_[i] * g;
-    df_[i] = stiffness_[i] * slope;
-  }
+  for (int i = 0; i < samples_; ++i) f_[i] = sampleForce(i, real_buffer_[i] - error_[i], &df_[i]);
   Eigen::VectorXd fnl, fext, dfext;
   forward(f_.data(), fnl, n_);
   externalForce(omega, fext, dr_domega ? &dfext : nullptr);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "geardyn/contact/profile_modification.h"
+#include "geardyn/models/mesh_contact_elements.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
 
 namespace geardyn {
@@ -45,6 +46,12 @@ class LoadedToothContact {
   /// errors) under the transmitted force F >= 0 [N] along the line of action.
   LoadedContactPoint solve(double phase, double force, int period = 0) const;
 
+  int slices() const { return slices_; }
+  /// Stiffness [N/m] (0 when out of contact) and separation [m] of slice `slice` of pair slot
+  /// `pair` at mesh phase φ (in mesh period `period`).
+  void slice(double phase, int pair, int slice, double& stiffness, double& separation,
+             int period = 0) const;
+
   /// `positions` evenly spaced phases of mesh periods first..first+periods−1.
   std::vector<LoadedContactPoint> sweep(double force, int positions, int periods = 1) const;
 
@@ -58,6 +65,23 @@ class LoadedToothContact {
   std::shared_ptr<const PotentialEnergyMeshStiffness> stiffness_;
   PairModifications modifications_;
   int slices_;
+};
+
+/// The slices of a loaded tooth contact as the contact elements of a dynamic mesh model
+/// (models/mesh_contact_elements.h): element e = pair (e / slices), slice (e % slices), with
+/// the slice's stiffness and its separation as the gap — tooth entry and exit follow the flank
+/// modifications instead of a step gap.
+class LoadedContactElements final : public MeshContactElements {
+ public:
+  explicit LoadedContactElements(std::shared_ptr<const LoadedToothContact> contact)
+      : contact_(std::move(contact)) {}
+  int count() const override { return contact_->pairCount() * contact_->slices(); }
+  void element(double phase, int j, double& stiffness, double& gap) const override {
+    contact_->slice(phase, j / contact_->slices(), j % contact_->slices(), stiffness, gap);
+  }
+
+ private:
+  std::shared_ptr<const LoadedToothContact> contact_;
 };
 
 /// One load of a Harris map: the loaded STE over the sampled positions.

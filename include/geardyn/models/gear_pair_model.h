@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/models/mesh_contact_elements.h"
 #include "geardyn/models/transmission_error.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
 
@@ -46,6 +47,9 @@ struct GearPairModelSpec {
   double initial_phase = 0.0;            ///< mesh phase at t = 0 [mesh periods]
   TransmissionError transmission_error;  ///< e(φ) [m]
   std::vector<HarmonicForce> extra_forces;
+  /// Contact elements: when given, the mesh force is Σ_j k_j max(0, y − g_j) and `contact` is
+  /// not used; `stiffness` stays the nominal k(φ) (for scales, k̄ and the linear start).
+  std::shared_ptr<const MeshContactElements> contact_elements;
 };
 
 /// Equivalent mass of two gears on the line of action: I₁I₂ / (I₁R₂² + I₂R₁²) [kg] for polar
@@ -83,6 +87,11 @@ class GearPairModel {
   /// The elastic mesh force k(t) g(x − e(t)) [N]; its derivative with respect to x in
   /// *dforce_dx if given.
   double meshForce(double t, double x, double* dforce_dx = nullptr) const;
+
+  bool hasContactElements() const noexcept { return spec_.contact_elements != nullptr; }
+  const MeshContactElements* contactElements() const noexcept {
+    return spec_.contact_elements.get();
+  }
 
   /// Everything on the right-hand side that does not depend on the state:
   /// F + c e′(t) + Σ f_j cos(ω_j t + ψ_j) [N].

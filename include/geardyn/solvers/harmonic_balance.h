@@ -96,6 +96,12 @@ class HarmonicBalance {
   int h_, n_, samples_;
   double k_mean_;
   std::vector<double> phases_, error_, error_rate_, stiffness_;  // per sample (fixed phases)
+  // Contact elements (model.hasContactElements()): stiffness and gap of element j at sample i,
+  // at [i * elements_ + j].
+  int elements_ = 0;
+  std::vector<double> element_stiffness_, element_gap_;
+  /// The mesh force at sample i for the deflection y, and dF/dy in *slope.
+  double sampleForce(int i, double y, double* slope) const;
   // FFTW workspaces and plans (created once).
   double* real_buffer_;
   fftw_complex* complex_buffer_;

@@ -34,6 +34,8 @@ struct NewmarkParameters {
 ///   double stiffness(double t) const; double error(double t) const;
 ///   double externalForce(double t) const;
 ///   double contactLaw(double y, double* slope) const;
+///   bool hasContactElements() const; double meshForce(double t, double x, double* slope) const
+///   (with contact elements the spring is meshForce, evaluated per Newton iteration).
 struct NewmarkState {
   double x = 0.0, v = 0.0, a = 0.0;  ///< displacement, velocity, acceleration
 };
@@ -55,10 +57,11 @@ class NewmarkStepper {
 
   /// The acceleration consistent with (x, v) at t (to start the scheme).
   double initialAcceleration(double t, double x, double v) const {
-    const double k = model_.stiffness(t);
-    return (model_.externalForce(t) - model_.damping() * v -
-            k * model_.contactLaw(x - model_.error(t), nullptr)) /
-           model_.mass();
+    const double spring =
+        model_.hasContactElements()
+            ? model_.meshForce(t, x, nullptr)
+            : model_.stiffness(t) * model_.contactLaw(x - model_.error(t), nullptr);
+    return (model_.externalForce(t) - model_.damping() * v - spring) / model_.mass();
   }
 
   /// Advances the state from t to t + h.
@@ -66,6 +69,7 @@ class NewmarkStepper {
     const double t1 = t + h;
     const double m = model_.mass(), c = model_.damping();
     const double k = model_.stiffness(t1), e = model_.error(t1), f = model_.externalForce(t1);
+    const bool elements = model_.hasContactElements();
     const double bh2 = p_.beta * h * h;
     // x_{n+1} = x* + β h² a_{n+1},  v_{n+1} = v* + γ h a_{n+1}
     const double x_star = s.x + h * s.v + h * h * (0.5 - p_.beta) * s.a;
@@ -76,7 +80,8 @@ class NewmarkStepper {
     const auto residual = [&](double x, double* slope, double* scale) {
       const double a = (x - x_star) / bh2;
       const double v = v_star + p_.gamma * h * a;
-      const double spring = k * model_.contactLaw(x - e, slope);
+      const double spring =
+          elements ? model_.meshForce(t1, x, slope) : k * model_.contactLaw(x - e, slope);
       *scale = std::abs(m * a) + std::abs(c * v) + std::abs(spring) + std::abs(f);
       return m * a + c * v + spring - f;
     };
@@ -99,7 +104,8 @@ class NewmarkStepper {
         if (side == 1) r_lo *= 0.5;
         hi = x, r_hi = r, side = 1;
       }
-      double next = x - r / (inertia + k * slope);
+      // With contact elements the residual's slope is already dF/dx.
+      double next = x - r / (inertia + (elements ? slope : k * slope));
       if (std::isfinite(lo) && std::isfinite(hi) && !(next > lo && next < hi)) {
         next = lo - r_lo * (hi - lo) / (r_hi - r_lo);
       }
