@@ -84,6 +84,35 @@ int runLtca(const io::Config& config, const CommandOptions& options) {
         "  Harris map ({} loads x {} positions, {:.3g} ms): minimum {:.4g} um at "
         "{:.4g} N\n",
         loads.size(), positions, 1e3 * seconds, 1e6 * best->peak_to_peak, best->force);
+
+    // Other designs on the same loads (one Harris map each).
+    const auto designs = config.stringList("harris.compare_reliefs");
+    if (!designs.empty()) {
+      if (!design) {
+        throw InputError("harris.compare_reliefs", fmt::format("{} designs", designs.size()),
+                         "needs modifications.design_load");
+      }
+      const ReliefShape shape = config.string("modifications.shape") == "linear"
+                                    ? ReliefShape::kLinear
+                                    : ReliefShape::kParabolic;
+      io::CsvTable table({"design", "force_n", "peak_to_peak_m", "mean_m"});
+      nlohmann::ordered_json minima = nlohmann::ordered_json::object();
+      for (const auto& name : designs) {
+        const PairModifications m =
+            name == "none" ? PairModifications{}
+                           : designedTipRelief(*stiffness, *design, name == "long", shape);
+        const auto other = harrisMap(LoadedToothContact(stiffness, m, slices), loads, positions);
+        for (const auto& p : other) table.addRow({name, p.force, p.peak_to_peak, p.mean});
+        const auto low = std::min_element(other.begin(), other.end(), [](auto& a, auto& b) {
+          return a.peak_to_peak < b.peak_to_peak;
+        });
+        minima[name] = {{"minimum_at", low->force}, {"minimum_peak_to_peak", low->peak_to_peak}};
+        text += fmt::format("  design {}: minimum {:.4g} um at {:.4g} N\n", name,
+                            1e6 * low->peak_to_peak, low->force);
+      }
+      writer.writeCsv("harris_designs.csv", table);
+      summary.results["harris"]["designs"] = minima;
+    }
   }
   if (design) {
     double k_bar = 0.0;

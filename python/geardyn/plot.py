@@ -446,6 +446,12 @@ def plot_ltca(result_dir):
         ax.plot(harris["force_n"], [v * 1e6 for v in harris["peak_to_peak_m"]], "o-", label="peak to peak")
         for name in [c for c in harris if c.startswith("harmonic_")]:
             ax.plot(harris["force_n"], [v * 1e6 for v in harris[name]], lw=0.8, label=name.replace("_m", ""))
+        if (folder / "harris_designs.csv").exists():
+            others = _read_columns(folder / "harris_designs.csv")
+            for name in dict.fromkeys(others["design"]):
+                keep = [i for i, d in enumerate(others["design"]) if d == name]
+                ax.plot([others["force_n"][i] for i in keep], [others["peak_to_peak_m"][i] * 1e6 for i in keep],
+                        "--", lw=1.0, label=f"peak to peak, design {name}")
         design = summary["config"]["modifications"].get("design_load")
         if design:
             ax.axvline(design, color="0.5", ls=":", label="design load")

@@ -84,6 +84,12 @@ ConfigSchema ltcaSchema() {
       .doc("face slices per tooth pair (helical gears and crowning need several)");
   addModificationsSection(schema);
   schema.section("harris", "Peak-to-peak loaded STE against load.");
+  schema.stringList("harris.compare_reliefs")
+      .choices({"none", "short", "long"})
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc(
+          "also map these tip-relief designs for modifications.design_load (with its shape) on "
+          "the same loads: harris_designs.csv");
   schema.realList("harris.load_factors")
       .unit("-")
       .defaultValue(nlohmann::ordered_json::array())

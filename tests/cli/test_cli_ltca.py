@@ -125,3 +125,17 @@ def test_contact_elements_with_relief_agree_with_newmark(tmp_path):
     assert results["folds"] == []
     for check in results["newmark_checks"]:
         assert abs(check["relative_difference"]) < 1e-2, check
+
+
+def test_several_designs_in_one_harris_map(ltca):
+    # The example also maps "none" and "short" on the same loads: without relief the peak to
+    # peak grows with the load from the lightest one; the long relief's minimum sits at F0.
+    out, results = ltca
+    designs = results["harris"]["designs"]
+    assert set(designs) == {"none", "short"}
+    assert designs["none"]["minimum_at"] == pytest.approx(300.0)
+    with open(out / "harris_designs.csv", newline="") as handle:
+        rows = [r for r in csv.DictReader(handle) if r["design"] == "none"]
+    ptp = [float(r["peak_to_peak_m"]) for r in rows]
+    assert ptp == sorted(ptp)
+    assert results["harris"]["minimum_at"] == pytest.approx(3000.0, abs=300.0 + 1e-9)
