@@ -138,6 +138,11 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
                                     {"gear_hz", setup.gearSpeed()},
                                     {"mesh_hz", setup.meshFrequency()},
                                     {"common_period_s", model.commonPeriod()}};
+  nlohmann::ordered_json te_x = nlohmann::ordered_json::array(), te_y = te_x;
+  for (const auto& h : s.te_x) te_x.push_back({{"amplitude", h.amplitude}, {"phase", h.phase}});
+  for (const auto& h : s.te_y) te_y.push_back({{"amplitude", h.amplitude}, {"phase", h.phase}});
+  summary.results["mesh"] = {
+      {"stiffness", s.mesh_stiffness}, {"mean_te", s.mean_te}, {"te_x", te_x}, {"te_y", te_y}};
   summary.results["damping"] = {{"pinion_shaft", s.pinion_shaft_damping},
                                 {"gear_shaft", s.gear_shaft_damping},
                                 {"mesh", s.mesh_damping}};

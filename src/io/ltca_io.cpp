@@ -5,6 +5,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/output_section.h"
+#include "geardyn/io/stiffness_io.h"
 
 namespace geardyn::io {
 
@@ -103,6 +104,17 @@ ConfigSchema ltcaSchema() {
       .doc("a = F/F0");
   addOutputSection(schema);
   return schema;
+}
+
+std::shared_ptr<const LoadedToothContact> loadedContactFromConfig(const Config& config,
+                                                                  const GearPair& pair,
+                                                                  int slices) {
+  PotentialEnergyOptions pe;
+  if (config.resolved().contains("mesh_stiffness")) pe = potentialEnergyOptionsFromConfig(config);
+  if (pair.baseHelixAngle() > 0.0) pe.slices = slices;
+  auto k = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
+  return std::make_shared<const LoadedToothContact>(k, pairModificationsFromConfig(config, *k),
+                                                    slices);
 }
 
 PairModifications pairModificationsFromConfig(const Config& config,

@@ -3,10 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include "geardyn/error.h"
 #include "geardyn/identify/dte_identification.h"
+#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/ltca_io.h"
 #include "geardyn/io/output_section.h"
 
 namespace geardyn::io {
@@ -158,6 +161,29 @@ ConfigSchema rotorSchema() {
       .defaultValue(nlohmann::ordered_json::array({1.570}))
       .doc("phi_ey,i");
 
+  schema.boolean("mesh.from_ltca")
+      .defaultValue(false)
+      .doc(
+          "take k_m, e_m and the TE harmonics from the loaded tooth contact of the gear pair in "
+          "[pinion], [gear], [pair] with [modifications] at mesh.ltca_force: k_m = mean tangent "
+          "stiffness, e = loaded STE (mean and harmonics) split along the line of action "
+          "(overrides stiffness, mean_te, te_x, te_y)");
+  schema.real("mesh.ltca_force")
+      .unit("N")
+      .positive()
+      .optional()
+      .doc("from_ltca: transmitted force along the line of action");
+  schema.integer("mesh.ltca_positions")
+      .min(16)
+      .max(100000)
+      .defaultValue(400)
+      .doc("from_ltca: mesh positions per period");
+  schema.real("mesh.line_of_action_angle")
+      .unit("rad")
+      .optional()
+      .doc(
+          "from_ltca: angle of the line of action from the y axis (Rao Fig. 2.1): e_x = e sin, "
+          "e_y = e cos; default the operating pressure angle");
   schema.section("runout", "Gear runouts (eccentricities) and their phases (eqs. 2.2-2.4).");
   schema.real("runout.pinion").unit("m").min(0.0).defaultValue(200e-6).doc("e_p");
   schema.real("runout.pinion_phase").unit("rad").defaultValue(1.047).doc("phi_p");
@@ -198,6 +224,8 @@ ConfigSchema rotorSchema() {
       .doc("write frequency_history.csv: the components superposed on the analysis window");
 
   addSpectrumSection(schema);
+  addGearPairSections(schema, false);
+  addModificationsSection(schema);
 
   schema.section("measurement",
                  "Simulated probe records (x1, y1, x2, y2, keyphasor) for `geardyn spectrum`.");
@@ -311,6 +339,55 @@ ConfigSchema spectrumSchema() {
   return schema;
 }
 
+namespace {
+
+/// k_m, e_m and the TE harmonics from the loaded tooth contact at mesh.ltca_force: the mesh
+/// linearised about the load (Özgüven & Houser: a constant stiffness with the loaded STE as
+/// displacement excitation), δ(φ) = e_m + Σ |c_i| sin(2πiφ + arg c_i + π/2), split along the
+/// line of action at angle α from y (Rao Fig. 2.1): e_x = δ sin α, e_y = δ cos α.
+void ltcaMesh(const Config& config, LateralRotorSpec& s) {
+  if (!hasGearPair(config)) {
+    throw InputError("mesh.from_ltca", "true",
+                     "needs the gear pair: [pinion], [gear] (and [pair])");
+  }
+  if (!config.has("mesh.ltca_force")) {
+    throw InputError("mesh.ltca_force", "(not set)", "needed by mesh.from_ltca [N]");
+  }
+  const GearPair pair(gearPairSpecFromConfig(config));
+  if (pair.spec().pinion.teeth != s.pinion_teeth || pair.spec().gear.teeth != s.gear_teeth) {
+    throw InputError("pinion.teeth",
+                     fmt::format("{}/{}", pair.spec().pinion.teeth, pair.spec().gear.teeth),
+                     fmt::format("must match rotor.pinion_teeth/gear_teeth ({}/{})", s.pinion_teeth,
+                                 s.gear_teeth));
+  }
+  const auto contact = loadedContactFromConfig(config, pair, 1);
+  const int n = static_cast<int>(config.integer("mesh.ltca_positions"));
+  const auto points = contact->sweep(config.real("mesh.ltca_force"), n);
+  const double alpha =
+      config.optionalReal("mesh.line_of_action_angle").value_or(pair.operatingPressureAngle());
+  const int harmonics = std::max<int>(1, static_cast<int>(s.te_x.size()));
+  double k_mean = 0.0, mean = 0.0;
+  std::vector<std::complex<double>> c(harmonics, 0.0);
+  for (const auto& p : points) {
+    k_mean += p.tangent / n;
+    mean += p.ste / n;
+    for (int i = 1; i <= harmonics; ++i)
+      c[i - 1] += p.ste * std::polar(2.0 / n, -2.0 * std::numbers::pi * i * p.phase);
+  }
+  s.mesh_stiffness = k_mean;
+  s.mean_te = mean;
+  s.te_x.clear();
+  s.te_y.clear();
+  const double sa = std::sin(alpha), ca = std::cos(alpha);
+  for (const auto& ci : c) {
+    const double phase = std::arg(ci) + 0.5 * std::numbers::pi;
+    s.te_x.push_back({std::abs(ci * sa), phase + (sa < 0.0 ? std::numbers::pi : 0.0)});
+    s.te_y.push_back({std::abs(ci * ca), phase + (ca < 0.0 ? std::numbers::pi : 0.0)});
+  }
+}
+
+}  // namespace
+
 LateralRotorSpec knownRotorFromConfig(const Config& config) {
   LateralRotorSpec s;
   s.pinion_mass = config.real("rotor.pinion_mass");
@@ -340,6 +417,7 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
     throw InputError("mesh.te_y", fmt::format("{} harmonics", s.te_y.size()),
                      fmt::format("as many as mesh.te_x ({})", s.te_x.size()));
   }
+  if (config.boolean("mesh.from_ltca")) ltcaMesh(config, s);
   s.pinion_runout = config.real("runout.pinion");
   s.pinion_runout_phase = config.real("runout.pinion_phase");
   s.gear_runout = config.real("runout.gear");

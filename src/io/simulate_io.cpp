@@ -57,22 +57,6 @@ Json statistics(const std::vector<double>& values, int samples_per_period, int h
 
 }  // namespace
 
-namespace {
-
-/// The loaded tooth contact of the configured gear pair and [modifications] (potential-energy
-/// pair compliance with the [mesh_stiffness.potential_energy] options).
-std::shared_ptr<const LoadedToothContact> loadedContactFromConfig(const Config& config,
-                                                                  const GearPair& pair) {
-  PotentialEnergyOptions pe = potentialEnergyOptionsFromConfig(config);
-  const int slices = static_cast<int>(config.integer("model.stiffness.ltca_slices"));
-  if (pair.baseHelixAngle() > 0.0) pe.slices = slices;
-  auto k = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
-  return std::make_shared<const LoadedToothContact>(k, pairModificationsFromConfig(config, *k),
-                                                    slices);
-}
-
-}  // namespace
-
 GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) {
   GearPairModelBuild b;
   b.nondimensional = config.string("model.units") == "nondimensional";
@@ -107,7 +91,8 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
     if (b.nondimensional) {
       throw InputError("model.type", "\"gear_pair_ltca\"", "needs SI units (model.units)");
     }
-    const auto contact = loadedContactFromConfig(config, *pair);
+    const auto contact = loadedContactFromConfig(
+        config, *pair, static_cast<int>(config.integer("model.stiffness.ltca_slices")));
     b.spec.contact_elements = std::make_shared<LoadedContactElements>(contact);
   }
   const std::string type = contacts                  ? "contacts"
@@ -185,7 +170,8 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
       if (b.nondimensional) {
         throw InputError("model.stiffness.type", "\"ltca\"", "needs SI units (model.units)");
       }
-      const auto contact = loadedContactFromConfig(config, *pair);
+      const auto contact = loadedContactFromConfig(
+          config, *pair, static_cast<int>(config.integer("model.stiffness.ltca_slices")));
       const double force = meanForce();
       std::vector<double> tangent;
       for (const auto& p : contact->sweep(

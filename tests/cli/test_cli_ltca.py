@@ -139,3 +139,28 @@ def test_several_designs_in_one_harris_map(ltca):
     ptp = [float(r["peak_to_peak_m"]) for r in rows]
     assert ptp == sorted(ptp)
     assert results["harris"]["minimum_at"] == pytest.approx(3000.0, abs=300.0 + 1e-9)
+
+
+def test_rotor_mesh_from_the_loaded_contact(ltca, tmp_path):
+    # mesh.from_ltca: the rotor's k_m is the LTCA mean tangent stiffness and its TE harmonics
+    # are the loaded STE's, split along the line of action (α = operating pressure angle).
+    import math
+    out, results = ltca
+    pair = EXAMPLE.read_text().split("[ltca]")[0].split("\n", 5)[-1]  # [pinion] and [gear]
+    config = tmp_path / "rotor.toml"
+    config.write_text(pair + '\n[rotor]\npinion_teeth = 25\ngear_teeth = 30\n'
+                      '[mesh]\nfrom_ltca = true\nltca_force = 3000.0\nltca_positions = 200\n'
+                      '[modifications]\nrelief = "long"\ndesign_load = 3000.0\n'
+                      '[time]\nenabled = false\n[measurement]\nformats = []\n[output]\nplots = false\n')
+    result = run("rotor", config, "--out", tmp_path / "r")
+    assert result.returncode == 0, result.stderr
+    with open(out / "harris.csv", newline="") as handle:
+        at_f0 = [r for r in csv.DictReader(handle) if float(r["force_n"]) == pytest.approx(3000.0)][0]
+    summary = json.loads((tmp_path / "r" / "summary.json").read_text())
+    mesh = summary["results"]["mesh"]
+    assert mesh["stiffness"] == pytest.approx(results["ltca"]["mean_tangent_stiffness"], rel=1e-12)
+    h1 = float(at_f0["harmonic_1_m"])
+    alpha = math.radians(20.0)  # standard centre distance: the operating pressure angle is 20°
+    assert mesh["te_x"][0]["amplitude"] == pytest.approx(h1 * math.sin(alpha), rel=1e-9)
+    assert mesh["te_y"][0]["amplitude"] == pytest.approx(h1 * math.cos(alpha), rel=1e-9)
+    assert mesh["te_x"][0]["phase"] == pytest.approx(mesh["te_y"][0]["phase"])

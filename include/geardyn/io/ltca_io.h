@@ -17,6 +17,12 @@ ConfigSchema ltcaSchema();
 /// Adds [modifications] (designed relief presets, reliefs, crowning, slope and pitch errors).
 void addModificationsSection(ConfigSchema& schema);
 
+/// The loaded tooth contact of a gear pair with the [modifications] of a configuration
+/// (potential-energy compliance with the [mesh_stiffness.potential_energy] options when the
+/// schema has them), `slices` face slices per pair.
+std::shared_ptr<const LoadedToothContact> loadedContactFromConfig(const Config& config,
+                                                                  const GearPair& pair, int slices);
+
 /// The modifications of [modifications] for the pair's potential-energy model (presets need
 /// it for their amount and length).
 PairModifications pairModificationsFromConfig(const Config& config,
