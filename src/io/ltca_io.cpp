@@ -184,11 +184,12 @@ CsvTable harrisTable(const std::vector<HarrisPoint>& map) {
 }
 
 CsvTable loadStatisticsTable(const std::vector<LoadStatistics>& stats) {
-  CsvTable t(
-      {"a", "m1_k", "m1_ef", "d_k", "d_e", "r_ke", "delta_m1_ef", "ratio_eq7", "ratio_eq11"});
+  CsvTable t({"a", "m1_k", "m1_ef", "d_k", "d_e", "r_ke", "delta_m1_ef", "variable_term_v",
+              "ratio_eq7", "ratio_eq11"});
   for (const auto& s : stats) {
     const auto& m = s.statistics;
-    t.addRow({s.a, m.m1_k, m.m1_ef, m.d_k, m.d_e, m.r_ke, m.delta_m1_ef, m.ratio, m.ratio_eq11});
+    t.addRow({s.a, m.m1_k, m.m1_ef, m.d_k, m.d_e, m.r_ke, m.delta_m1_ef, m.variable_term, m.ratio,
+              m.ratio_eq11});
   }
   return t;
 }

@@ -32,7 +32,7 @@ PairModifications pairModificationsFromConfig(const Config& config,
 CsvTable ltcaTable(const std::vector<LoadedContactPoint>& points, double force);
 /// force_n, peak_to_peak_m, mean_m, harmonic_1_m, ...
 CsvTable harrisTable(const std::vector<HarrisPoint>& map);
-/// a, m1_k, m1_ef, d_k, d_e, r_ke, delta_m1_ef, ratio_eq7, ratio_eq11
+/// a, m1_k, m1_ef, d_k, d_e, r_ke, delta_m1_ef, variable_term_v, ratio_eq7, ratio_eq11
 CsvTable loadStatisticsTable(const std::vector<LoadStatistics>& stats);
 
 }  // namespace geardyn::io
