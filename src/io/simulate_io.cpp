@@ -239,7 +239,8 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
   // Load.
   b.spec.mean_force = meanForce();
 
-  b.spec.contact = contacts                                        ? ContactLaw::kOneSided
+  // Contact elements are one-sided each; model.contact applies to the single-law models only.
+  b.spec.contact = contacts || b.spec.contact_elements             ? ContactLaw::kOneSided
                    : config.string("model.contact") == "linear"    ? ContactLaw::kLinear
                    : config.string("model.contact") == "one_sided" ? ContactLaw::kOneSided
                                                                    : ContactLaw::kBacklash;
