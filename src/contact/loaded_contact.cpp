@@ -105,27 +105,30 @@ std::vector<LoadedContactPoint> LoadedToothContact::sweep(double force, int posi
   return out;
 }
 
+std::vector<std::complex<double>> steHarmonics(const std::vector<LoadedContactPoint>& period,
+                                               int harmonics) {
+  std::vector<std::complex<double>> c(harmonics, 0.0);
+  const double n = static_cast<double>(period.size());
+  for (const auto& p : period) {
+    for (int h = 1; h <= harmonics; ++h)
+      c[h - 1] += p.ste * std::polar(2.0 / n, -2.0 * std::numbers::pi * h * p.phase);
+  }
+  return c;
+}
+
 std::vector<HarrisPoint> harrisMap(const LoadedToothContact& contact,
                                    const std::vector<double>& forces, int positions,
                                    int harmonics) {
   std::vector<HarrisPoint> out;
   for (double f : forces) {
+    const auto period = contact.sweep(f, positions);
     HarrisPoint h;
     h.force = f;
-    double lo = INFINITY, hi = -INFINITY, mean = 0.0;
-    std::vector<std::complex<double>> c(harmonics, 0.0);
-    for (int i = 0; i < positions; ++i) {
-      const double phase = static_cast<double>(i) / positions;
-      const double d = contact.solve(phase, f).ste;
-      lo = std::min(lo, d);
-      hi = std::max(hi, d);
-      mean += d / positions;
-      for (int n = 1; n <= harmonics; ++n)
-        c[n - 1] += d * std::polar(2.0 / positions, -2.0 * std::numbers::pi * n * phase);
-    }
-    h.peak_to_peak = hi - lo;
-    h.mean = mean;
-    for (const auto& v : c) h.harmonics.push_back(std::abs(v));
+    const auto [lo, hi] = std::minmax_element(
+        period.begin(), period.end(), [](const auto& a, const auto& b) { return a.ste < b.ste; });
+    h.peak_to_peak = hi->ste - lo->ste;
+    for (const auto& p : period) h.mean += p.ste / positions;
+    for (const auto& v : steHarmonics(period, harmonics)) h.harmonics.push_back(std::abs(v));
     out.push_back(std::move(h));
   }
   return out;

@@ -367,13 +367,11 @@ void ltcaMesh(const Config& config, LateralRotorSpec& s) {
       config.optionalReal("mesh.line_of_action_angle").value_or(pair.operatingPressureAngle());
   const int harmonics = std::max<int>(1, static_cast<int>(s.te_x.size()));
   double k_mean = 0.0, mean = 0.0;
-  std::vector<std::complex<double>> c(harmonics, 0.0);
   for (const auto& p : points) {
     k_mean += p.tangent / n;
     mean += p.ste / n;
-    for (int i = 1; i <= harmonics; ++i)
-      c[i - 1] += p.ste * std::polar(2.0 / n, -2.0 * std::numbers::pi * i * p.phase);
   }
+  const auto c = steHarmonics(points, harmonics);
   s.mesh_stiffness = k_mean;
   s.mean_te = mean;
   s.te_x.clear();

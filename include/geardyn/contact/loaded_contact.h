@@ -12,6 +12,7 @@
 /// increasing function of δ). Outputs: δ(φ, F), the load per pair, the secant stiffness F/δ and
 /// the tangent stiffness dF/dδ = Σ of the loaded slices' k_i.
 
+#include <complex>
 #include <memory>
 #include <vector>
 
@@ -83,6 +84,11 @@ class LoadedContactElements final : public MeshContactElements {
  private:
   std::shared_ptr<const LoadedToothContact> contact_;
 };
+
+/// Complex mesh harmonics c_n (n = 1..harmonics) of the loaded STE over one period sampled at
+/// evenly spaced phases: δ(φ) ≈ mean + Σ Re(c_n e^{j2πnφ}) [m].
+std::vector<std::complex<double>> steHarmonics(const std::vector<LoadedContactPoint>& period,
+                                               int harmonics);
 
 /// One load of a Harris map: the loaded STE over the sampled positions.
 struct HarrisPoint {
