@@ -1,0 +1,181 @@
+/// Modal analysis and Campbell diagram of the FE geared rotor.
+
+#include "geardyn/solvers/rotor_modal.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "geardyn/error.h"
+
+namespace geardyn {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+void classify(const FeGearedRotor& model, RotorMode& mode) {
+  const Eigen::VectorXd& md = model.mass().diagonal();
+  double lateral = 0, torsional = 0, axial = 0, forward = 0, backward = 0;
+  const int n = model.dofCount();
+  for (int i = 0; i < n; ++i) {
+    const double e = md(i) * std::norm(mode.shape(i));
+    switch (model.typeOf(i)) {
+      case kUx:
+        axial += e;
+        break;
+      case kRx:
+        torsional += e;
+        break;
+      default:
+        lateral += e;
+    }
+    if (model.typeOf(i) != kUy) continue;
+    const int iz = model.dofIndex(model.shaftOf(i), model.nodeOf(i), kUz);
+    const std::complex<double> Y = mode.shape(i), Z = mode.shape(iz), I(0.0, 1.0);
+    double f = std::norm(Y + I * Z), b = std::norm(Y - I * Z);
+    if (model.spinRatio(model.shaftOf(i)) < 0) std::swap(f, b);
+    forward += md(i) * f;
+    backward += md(i) * b;
+  }
+  const double total = lateral + torsional + axial;
+  mode.lateral_fraction = lateral / total;
+  mode.torsional_fraction = torsional / total;
+  mode.axial_fraction = axial / total;
+  mode.forward_fraction = forward + backward > 0 ? forward / (forward + backward) : 0.5;
+  if (mode.torsional_fraction > 0.5) {
+    mode.whirl = "torsional";
+  } else if (mode.axial_fraction > 0.5) {
+    mode.whirl = "axial";
+  } else {
+    mode.whirl = mode.forward_fraction > 0.75   ? "forward"
+                 : mode.forward_fraction < 0.25 ? "backward"
+                                                : "mixed";
+  }
+}
+
+double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
+  return std::norm(a.dot(b)) / (a.squaredNorm() * b.squaredNorm());
+}
+
+}  // namespace
+
+void ModalOptions::validate() const {
+  if (modes < 1) throw InputError("modal.modes", std::to_string(modes), "an integer >= 1");
+  if (!(mesh_stiffness >= 0.0) || !std::isfinite(mesh_stiffness))
+    throw InputError("modal.mesh_stiffness", fmt::format("{:g}", mesh_stiffness),
+                     "a stiffness >= 0 N/m (0: the mean)");
+  if (!(rigid_frequency >= 0.0))
+    throw InputError("modal.rigid_frequency", fmt::format("{:g}", rigid_frequency), ">= 0 Hz");
+}
+
+std::vector<RotorMode> modalAnalysis(const FeGearedRotor& model, double pinion_speed,
+                                     const ModalOptions& options) {
+  options.validate();
+  const int n = model.dofCount();
+  const double k = options.mesh_stiffness > 0 ? options.mesh_stiffness : model.meanMeshStiffness();
+  const Eigen::VectorXd& w = model.meshVector();
+  const Eigen::MatrixXd K = model.stiffness() + k * w * w.transpose();
+  const Eigen::MatrixXd D = model.damping() + pinion_speed * model.gyroscopic();
+  const auto mass = model.mass().ldlt();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  A.bottomLeftCorner(n, n) = -mass.solve(K);
+  A.bottomRightCorner(n, n) = -mass.solve(D);
+  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
+  if (solver.info() != Eigen::Success) {
+    throw std::runtime_error("modal analysis: the eigenvalue solver did not converge");
+  }
+  std::vector<RotorMode> modes;
+  for (int j = 0; j < 2 * n; ++j) {
+    const std::complex<double> lambda = solver.eigenvalues()(j);
+    if (lambda.imag() <= 0.0) continue;  // one of each conjugate pair; overdamped skipped
+    if (std::abs(lambda) / kTwoPi < options.rigid_frequency) continue;
+    RotorMode mode;
+    mode.eigenvalue = lambda;
+    mode.frequency = lambda.imag() / kTwoPi;
+    mode.damping_ratio = -lambda.real() / std::abs(lambda);
+    mode.shape = solver.eigenvectors().col(j).head(n);
+    Eigen::Index largest = 0;
+    mode.shape.cwiseAbs().maxCoeff(&largest);
+    mode.shape /= mode.shape(largest);
+    classify(model, mode);
+    modes.push_back(std::move(mode));
+  }
+  std::sort(modes.begin(), modes.end(),
+            [](const RotorMode& a, const RotorMode& b) { return a.frequency < b.frequency; });
+  if (static_cast<int>(modes.size()) > options.modes) modes.resize(options.modes);
+  return modes;
+}
+
+std::vector<OrderLine> standardOrderLines(const FeGearedRotor& model) {
+  return {{"1x pinion", 1.0},
+          {"1x gear", std::abs(model.spinRatio(1))},
+          {"mesh", static_cast<double>(model.spec().pinion_teeth)}};
+}
+
+CampbellDiagram campbellDiagram(const FeGearedRotor& model, const std::vector<double>& speeds,
+                                const ModalOptions& options, const std::vector<OrderLine>& lines) {
+  options.validate();
+  if (speeds.size() < 2) throw InputError("campbell.speeds", "", "at least two speeds");
+  for (std::size_t i = 1; i < speeds.size(); ++i) {
+    if (!(speeds[i] > speeds[i - 1]))
+      throw InputError("campbell.speeds", fmt::format("{:g}", speeds[i]), "ascending speeds");
+  }
+  CampbellDiagram d;
+  d.speeds = speeds;
+  d.lines = lines;
+  ModalOptions candidates = options;
+  candidates.modes = 2 * options.modes;
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    std::vector<RotorMode> found = modalAnalysis(model, speeds[i], candidates);
+    if (i == 0) {
+      if (static_cast<int>(found.size()) > options.modes) found.resize(options.modes);
+      d.modes.push_back(std::move(found));
+      continue;
+    }
+    const std::vector<RotorMode>& previous = d.modes.back();
+    // All (track, candidate) pairs by descending MAC; greedy assignment.
+    struct Pair {
+      double mac;
+      std::size_t track, candidate;
+    };
+    std::vector<Pair> pairs;
+    for (std::size_t a = 0; a < previous.size(); ++a)
+      for (std::size_t b = 0; b < found.size(); ++b)
+        pairs.push_back({mac(previous[a].shape, found[b].shape), a, b});
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& x, const Pair& y) { return x.mac > y.mac; });
+    std::vector<int> assigned(previous.size(), -1);
+    std::vector<bool> taken(found.size(), false);
+    for (const Pair& p : pairs) {
+      if (assigned[p.track] >= 0 || taken[p.candidate]) continue;
+      assigned[p.track] = static_cast<int>(p.candidate);
+      taken[p.candidate] = true;
+    }
+    std::vector<RotorMode> tracked;
+    for (std::size_t a = 0; a < previous.size(); ++a) {
+      tracked.push_back(assigned[a] >= 0 ? found[assigned[a]] : previous[a]);
+    }
+    d.modes.push_back(std::move(tracked));
+  }
+  for (std::size_t j = 0; j < d.modes.front().size(); ++j) {
+    for (const OrderLine& line : lines) {
+      for (std::size_t i = 1; i < speeds.size(); ++i) {
+        const double g0 = d.modes[i - 1][j].frequency - line.order * speeds[i - 1] / kTwoPi;
+        const double g1 = d.modes[i][j].frequency - line.order * speeds[i] / kTwoPi;
+        if (g0 == 0.0 || g0 * g1 >= 0.0) continue;
+        const double s = g0 / (g0 - g1);
+        const double speed = speeds[i - 1] + s * (speeds[i] - speeds[i - 1]);
+        d.critical_speeds.push_back({static_cast<int>(j), line.name, speed,
+                                     line.order * speed / kTwoPi,
+                                     (s < 0.5 ? d.modes[i - 1][j] : d.modes[i][j]).whirl});
+      }
+    }
+  }
+  std::sort(d.critical_speeds.begin(), d.critical_speeds.end(),
+            [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
+  return d;
+}
+
+}  // namespace geardyn
