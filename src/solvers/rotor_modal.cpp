@@ -65,6 +65,9 @@ void ModalOptions::validate() const {
   if (!(mesh_stiffness >= 0.0) || !std::isfinite(mesh_stiffness))
     throw InputError("modal.mesh_stiffness", fmt::format("{:g}", mesh_stiffness),
                      "a stiffness >= 0 N/m (0: the mean)");
+  if (!(max_damping_ratio > 0.0 && max_damping_ratio <= 1.0))
+    throw InputError("modal.max_damping_ratio", fmt::format("{:g}", max_damping_ratio),
+                     "a damping ratio in (0, 1]");
   if (!(rigid_frequency >= 0.0))
     throw InputError("modal.rigid_frequency", fmt::format("{:g}", rigid_frequency), ">= 0 Hz");
 }
@@ -74,28 +77,41 @@ std::vector<RotorMode> modalAnalysis(const FeGearedRotor& model, double pinion_s
   options.validate();
   const int n = model.dofCount();
   const double k = options.mesh_stiffness > 0 ? options.mesh_stiffness : model.meanMeshStiffness();
-  const Eigen::VectorXd& w = model.meshVector();
-  const Eigen::MatrixXd K = model.stiffness() + k * w * w.transpose();
+  const Eigen::VectorXd& v = model.meshVector();
+  const Eigen::MatrixXd K = model.stiffness() + k * v * v.transpose();
   const Eigen::MatrixXd D = model.damping() + pinion_speed * model.gyroscopic();
-  const auto mass = model.mass().ldlt();
+  // Balanced first-order form. With M = L Lᵀ and L⁻¹ K L⁻ᵀ = Φ diag(w²) Φᵀ (undamped modes,
+  // symmetric and accurate), z = Φᵀ Lᵀ q obeys z̈ + D̂ ż + diag(w²) z = 0, D̂ = Φᵀ L⁻¹ D L⁻ᵀ Φ,
+  // and the state [diag(w) z; ż] has the matrix [[0, diag(w)], [−diag(w), −D̂]], whose entries
+  // are all frequencies. (The textbook [[0, I], [−M⁻¹K, −M⁻¹D]] mixes 1 with ‖M⁻¹K‖ ~ 1e14
+  // for stiff bearings and loses the low modes to round-off: 0.25 % on the tilting-disk test.)
+  const Eigen::LLT<Eigen::MatrixXd> chol(model.mass());
+  const Eigen::MatrixXd Linv = chol.matrixL().solve(Eigen::MatrixXd::Identity(n, n));
+  const Eigen::MatrixXd Kt = Linv * K * Linv.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> undamped(0.5 * (Kt + Kt.transpose()));
+  const Eigen::MatrixXd& Phi = undamped.eigenvectors();
+  const Eigen::VectorXd w = undamped.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::MatrixXd Dh = Phi.transpose() * Linv * D * Linv.transpose() * Phi;
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  A.topRightCorner(n, n).setIdentity();
-  A.bottomLeftCorner(n, n) = -mass.solve(K);
-  A.bottomRightCorner(n, n) = -mass.solve(D);
+  A.topRightCorner(n, n) = w.asDiagonal();
+  A.bottomLeftCorner(n, n) = -Eigen::MatrixXd(w.asDiagonal());
+  A.bottomRightCorner(n, n) = -Dh;
   Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
   if (solver.info() != Eigen::Success) {
     throw std::runtime_error("modal analysis: the eigenvalue solver did not converge");
   }
+  const Eigen::MatrixXcd back = (Linv.transpose() * Phi).cast<std::complex<double>>();
   std::vector<RotorMode> modes;
   for (int j = 0; j < 2 * n; ++j) {
     const std::complex<double> lambda = solver.eigenvalues()(j);
     if (lambda.imag() <= 0.0) continue;  // one of each conjugate pair; overdamped skipped
     if (std::abs(lambda) / kTwoPi < options.rigid_frequency) continue;
+    if (-lambda.real() / std::abs(lambda) > options.max_damping_ratio) continue;
     RotorMode mode;
     mode.eigenvalue = lambda;
     mode.frequency = lambda.imag() / kTwoPi;
     mode.damping_ratio = -lambda.real() / std::abs(lambda);
-    mode.shape = solver.eigenvectors().col(j).head(n);
+    mode.shape = back * (solver.eigenvectors().col(j).tail(n) / lambda);  // z = ż / λ
     Eigen::Index largest = 0;
     mode.shape.cwiseAbs().maxCoeff(&largest);
     mode.shape /= mode.shape(largest);

@@ -38,11 +38,15 @@ struct ModalOptions {
   int modes = 12;                 ///< lowest elastic modes returned
   double mesh_stiffness = 0.0;    ///< k_m [N/m]; 0: the model's mean
   double rigid_frequency = 1e-2;  ///< |λ|/2π below this [Hz]: rigid-body mode, skipped
+  /// Modes more damped than this are skipped: the pairs of real eigenvalues of overdamped high
+  /// modes (stiffness-proportional damping) that gyroscopic coupling turns into "modes" of a
+  /// fraction of a hertz with ζ ≈ 1.
+  double max_damping_ratio = 0.99;
   void validate() const;
 };
 
-/// The lowest elastic modes at pinion speed Ω_p [rad/s], ascending in frequency (overdamped
-/// real eigenvalues are skipped).
+/// The lowest elastic modes at pinion speed Ω_p [rad/s], ascending in frequency (rigid-body and
+/// overdamped eigenvalues are skipped).
 std::vector<RotorMode> modalAnalysis(const FeGearedRotor& model, double pinion_speed,
                                      const ModalOptions& options = {});
 
