@@ -40,6 +40,11 @@ struct Command {
   std::string help;
   std::function<io::ConfigSchema()> schema;
   std::function<int(const io::Config&, const CommandOptions&)> run;
+  /// When set, the schema depends on the configuration file (e.g. `rotor` with [model] type =
+  /// "fe_geared_rotor"); `schema` stays the default one.
+  std::function<io::ConfigSchema(const std::filesystem::path&)> schema_for_file;
+  /// Further schemas `geardyn schema COMMAND` prints after the default one.
+  std::vector<std::function<io::ConfigSchema()>> variant_schemas;
 };
 
 /// The analysis commands, in the order `geardyn --help` lists them.

@@ -1,6 +1,7 @@
 /// The table of analysis commands. A new command adds one line here and one *_command.cpp.
 
 #include "command.h"
+#include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/hbm_io.h"
 #include "geardyn/io/identify_io.h"
@@ -18,11 +19,28 @@ int runSimulate(const io::Config& config, const CommandOptions& options);
 int runStats(const io::Config& config, const CommandOptions& options);
 int runHbm(const io::Config& config, const CommandOptions& options);
 int runRotor(const io::Config& config, const CommandOptions& options);
+int runFeRotor(const io::Config& config, const CommandOptions& options);
 int runSpectrum(const io::Config& config, const CommandOptions& options);
 int runIdentify(const io::Config& config, const CommandOptions& options);
 int runLtca(const io::Config& config, const CommandOptions& options);
 
 std::vector<Command> allCommands() {
+  Command rotor{
+      "rotor",
+      "geared rotors: Rao 2023's lateral rotor with asymmetric TE (Dormand-Prince and exact "
+      "frequency domain, full spectra, probe records, study) or, with [model] type = "
+      "\"fe_geared_rotor\", the finite-element two-shaft rotor of Visnadi 2021 (Newmark, run-up, "
+      "modal, Campbell, mesh-stiffness comparison)",
+      io::rotorSchema,
+      [](const io::Config& config, const CommandOptions& options) {
+        return config.resolved().contains("model") ? runFeRotor(config, options)
+                                                   : runRotor(config, options);
+      },
+      [](const std::filesystem::path& file) {
+        return io::peekConfigString(file, "model.type") == "fe_geared_rotor" ? io::feRotorSchema()
+                                                                             : io::rotorSchema();
+      },
+      {io::feRotorSchema}};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
        io::geometrySchema, runGeometry},
@@ -42,10 +60,7 @@ std::vector<Command> allCommands() {
        "harmonic-balance forced response (AFT) continued in frequency through folds, with Hill "
        "stability and Newmark checks",
        io::hbmSchema, runHbm},
-      {"rotor",
-       "lateral geared rotor with asymmetric transmission error (Rao 2023): Dormand-Prince and "
-       "exact frequency-domain response, orbits, full spectra, probe records, parametric study",
-       io::rotorSchema, runRotor},
+      rotor,
       {"spectrum",
        "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
        "compensation, forward/backward whirl peaks of a gear pair",

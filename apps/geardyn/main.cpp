@@ -16,7 +16,8 @@ using geardyn::cli::CommandOptions;
 
 int runCommand(const geardyn::cli::Command& command, const CommandOptions& options) {
   try {
-    const auto schema = command.schema();
+    const auto schema =
+        command.schema_for_file ? command.schema_for_file(options.config_file) : command.schema();
     const auto config = geardyn::io::loadConfigFile(options.config_file, schema, options.overrides);
     return command.run(config, options);
   } catch (const geardyn::InputError& error) {
@@ -77,7 +78,10 @@ int main(int argc, char** argv) {
 
   if (schema_sub->parsed()) {
     for (const auto& command : commands) {
-      if (command.name == schema_command) std::cout << command.schema().referenceMarkdown();
+      if (command.name != schema_command) continue;
+      std::cout << command.schema().referenceMarkdown();
+      for (const auto& variant : command.variant_schemas)
+        std::cout << "\n" << variant().referenceMarkdown();
     }
     return geardyn::cli::kExitOk;
   }

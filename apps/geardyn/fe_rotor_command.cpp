@@ -1,0 +1,514 @@
+/// `geardyn rotor CONFIG` with [model] type = "fe_geared_rotor": the finite-element two-shaft
+/// geared rotor of Visnadi & de Castro (2021) — time response (constant speed or run-up), modal
+/// analysis, Campbell diagram and the comparison of mesh-stiffness models (Figs. 3–7).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <thread>
+
+#include "command.h"
+#include "geardyn/error.h"
+#include "geardyn/io/fe_rotor_io.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/result_writer.h"
+#include "geardyn/signal/order_analysis.h"
+#include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "plotting.h"
+
+namespace geardyn::cli {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kRpm = std::numbers::pi / 30.0;
+
+/// The steady-state window of a constant-speed response: harmonics at the mesh orders and the
+/// amplitude spectra of every channel (displacement and acceleration).
+struct SteadyAnalysis {
+  std::vector<double> orders, frequencies;
+  std::vector<std::vector<double>> displacement, acceleration;  // [channel][order]
+  std::vector<AmplitudeSpectrum> displacement_spectrum, acceleration_spectrum;
+  double window = 0.0;       // [s]
+  double last_change = 0.0;  // max |q(t) − q(t − T_m)| / max |q| over the last mesh period
+};
+
+SteadyAnalysis analyseSteady(const io::Config& config, const FeGearedRotor& model,
+                             const FeTimeResponse& r) {
+  SteadyAnalysis a;
+  const double dt = config.real("time.time_step"), fs = 1.0 / dt;
+  const double f_mesh = model.spec().speed.start * model.spec().pinion_teeth / kTwoPi;
+  const int harmonics = static_cast<int>(config.integer("time.harmonics"));
+  for (int h = 1; h <= harmonics && h * f_mesh < fs / 2; ++h) {
+    a.orders.push_back(h);
+    a.frequencies.push_back(h * f_mesh);
+  }
+  const long long period = std::llround(1.0 / (f_mesh * dt));
+  long long n = std::llround(config.integer("time.window_mesh_periods") / (f_mesh * dt));
+  n = std::min<long long>(n, static_cast<long long>(r.t.size()) - 1);
+  a.window = n * dt;
+  const long long first = static_cast<long long>(r.t.size()) - n;
+  double change = 0.0, scale = 0.0;
+  for (int c = 0; c < r.displacement.cols(); ++c) {
+    const Eigen::VectorXd q = r.displacement.col(c).segment(first, n);
+    const Eigen::VectorXd acc = r.acceleration.col(c).segment(first, n);
+    a.displacement.push_back(harmonicAmplitudes(q, fs, a.frequencies));
+    a.acceleration.push_back(harmonicAmplitudes(acc, fs, a.frequencies));
+    a.displacement_spectrum.push_back(amplitudeSpectrum(q, fs));
+    a.acceleration_spectrum.push_back(amplitudeSpectrum(acc, fs));
+    if (n > period) {
+      for (long long k = n - period; k < n; ++k) {
+        change = std::max(change, std::abs(q(k) - q(k - period)));
+        scale = std::max(scale, std::abs(q(k)));
+      }
+    }
+  }
+  a.last_change = scale > 0.0 ? change / scale : 0.0;
+  return a;
+}
+
+double spectrumLimit(const io::Config& config, const SteadyAnalysis& a) {
+  return config.has("time.spectrum_max_frequency") ? config.real("time.spectrum_max_frequency")
+         : a.frequencies.empty()                   ? 1e3
+                                                   : 1.25 * a.frequencies.back();
+}
+
+std::vector<std::string> channelNames(const FeGearedRotor& model, const FeTimeResponse& r) {
+  std::vector<std::string> names;
+  for (int c : r.channels) names.push_back(model.dofName(c));
+  return names;
+}
+
+nlohmann::ordered_json modelJson(const FeGearedRotor& model, const std::string& stiffness) {
+  const auto& s = model.spec();
+  double mass = 0.0;
+  for (const auto& shaft : s.shafts) {
+    for (const auto& e : shaft.elements) mass += e.density * e.area() * e.length;
+    for (const auto& d : shaft.disks) mass += d.mass;
+  }
+  return {{"type", "fe_geared_rotor"},
+          {"dofs", model.dofCount()},
+          {"nodes", {s.shafts[0].nodeCount(), s.shafts[1].nodeCount()}},
+          {"mass_kg", mass},
+          {"mesh_stiffness_model", stiffness},
+          {"mean_mesh_stiffness", model.meanMeshStiffness()},
+          {"line_of_action_angle_deg", s.mesh.line_of_action_angle * 180.0 / std::numbers::pi},
+          {"base_helix_angle_deg", s.mesh.base_helix_angle * 180.0 / std::numbers::pi},
+          {"pinion_base_radius", s.mesh.pinion_base_radius},
+          {"gear_base_radius", s.mesh.gear_base_radius},
+          {"nominal_mesh_force", model.nominalMeshForce()},
+          {"gear_speed_ratio", model.spinRatio(1)},
+          {"mesh_frequency_hz", s.speed.start * s.pinion_teeth / kTwoPi}};
+}
+
+io::CsvTable timeHistoryTable(const FeGearedRotor& model, const FeTimeResponse& r, int every) {
+  std::vector<std::string> columns{"t", "speed_rpm", "mesh_stiffness", "mesh_force"};
+  for (const auto& name : channelNames(model, r)) {
+    columns.push_back(name);
+    columns.push_back(name + "_vel");
+    columns.push_back(name + "_acc");
+  }
+  io::CsvTable table(columns);
+  for (std::size_t k = 0; k < r.t.size(); k += every) {
+    std::vector<io::CsvCell> row{r.t[k], r.speed[k] / kRpm, r.mesh_stiffness[k], r.mesh_force[k]};
+    for (int c = 0; c < r.displacement.cols(); ++c) {
+      row.push_back(r.displacement(k, c));
+      row.push_back(r.velocity(k, c));
+      row.push_back(r.acceleration(k, c));
+    }
+    table.addRow(row);
+  }
+  return table;
+}
+
+void addHarmonicRows(io::CsvTable& table, const std::string& model_name,
+                     const std::vector<std::string>& names, const SteadyAnalysis& a) {
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    for (std::size_t h = 0; h < a.orders.size(); ++h) {
+      std::vector<io::CsvCell> row;
+      if (!model_name.empty()) row.push_back(model_name);
+      row.insert(row.end(), {names[c], a.orders[h], a.frequencies[h], a.displacement[c][h],
+                             a.acceleration[c][h]});
+      table.addRow(row);
+    }
+  }
+}
+
+void addSpectrumRows(io::CsvTable& table, const std::string& model_name,
+                     const std::vector<std::string>& names, const SteadyAnalysis& a, double fmax) {
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    const auto& d = a.displacement_spectrum[c];
+    for (std::size_t k = 0; k < d.frequency.size() && d.frequency[k] <= fmax; ++k) {
+      std::vector<io::CsvCell> row;
+      if (!model_name.empty()) row.push_back(model_name);
+      row.insert(row.end(), {names[c], d.frequency[k], d.amplitude[k],
+                             a.acceleration_spectrum[c].amplitude[k]});
+      table.addRow(row);
+    }
+  }
+}
+
+nlohmann::ordered_json harmonicsJson(const std::vector<std::string>& names,
+                                     const SteadyAnalysis& a) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    j[names[c]] = {{"displacement", a.displacement[c]}, {"acceleration", a.acceleration[c]}};
+  }
+  return j;
+}
+
+void reportDivergence(const FeTimeResponse& r, std::vector<std::string>& warnings) {
+  if (!r.converged()) {
+    warnings.push_back("Newmark: " + r.message);
+    std::cerr << "geardyn rotor: diverged: " << r.message << "\n";
+  }
+}
+
+/// The run-up: order tracking of the mesh order and 1× in windows, a waterfall of the first
+/// channel's acceleration, the speed of the largest mesh-order response per channel, and the
+/// Campbell crossings of the mesh line within the speed range.
+void runUpOutputs(const io::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
+                  io::ResultWriter& writer, nlohmann::ordered_json& results, std::string& text) {
+  const double dt = config.real("time.time_step"), fs = 1.0 / dt;
+  const int window = static_cast<int>(std::llround(config.real("time.runup_window") / dt));
+  const std::vector<double> orders{static_cast<double>(model.spec().pinion_teeth), 1.0};
+  const auto names = channelNames(model, r);
+  io::CsvTable track_table({"channel", "t", "speed_rpm", "mesh_order_displacement",
+                            "mesh_order_acceleration", "x1_displacement"});
+  nlohmann::ordered_json peaks = nlohmann::ordered_json::object();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    const OrderTrack disp = trackOrders(r.displacement.col(c), fs, r.speed, orders, window);
+    const OrderTrack acc = trackOrders(r.acceleration.col(c), fs, r.speed, orders, window);
+    double best = -1.0, best_speed = 0.0;
+    for (std::size_t w = 0; w < disp.time.size(); ++w) {
+      track_table.addRow({names[c], disp.time[w], disp.speed[w] / kRpm, disp.amplitude[0][w],
+                          acc.amplitude[0][w], disp.amplitude[1][w]});
+      if (acc.amplitude[0][w] > best) best = acc.amplitude[0][w], best_speed = acc.speed[w];
+    }
+    peaks[names[c]] = {{"speed_rpm", best_speed / kRpm}, {"mesh_order_acceleration", best}};
+  }
+  writer.writeCsv("runup.csv", track_table);
+  // Waterfall of the first channel's acceleration.
+  io::CsvTable waterfall({"t", "speed_rpm", "frequency_hz", "amplitude"});
+  const double fmax = config.has("time.spectrum_max_frequency")
+                          ? config.real("time.spectrum_max_frequency")
+                          : 1.25 * model.spec().speed.maxSpeed() * orders[0] / kTwoPi;
+  for (Eigen::Index start = 0; start + window <= r.acceleration.rows(); start += window) {
+    const AmplitudeSpectrum s = amplitudeSpectrum(r.acceleration.col(0).segment(start, window), fs);
+    double speed = 0.0;
+    for (int k = 0; k < window; ++k) speed += r.speed[start + k] / window;
+    for (std::size_t k = 0; k < s.frequency.size() && s.frequency[k] <= fmax; ++k)
+      waterfall.addRow(
+          {r.t[start] + 0.5 * window * dt, speed / kRpm, s.frequency[k], s.amplitude[k]});
+  }
+  writer.writeCsv("waterfall.csv", waterfall);
+  // Where the Campbell diagram puts the mesh-line crossings inside the ramp.
+  const auto& p = model.spec().speed;
+  const double lo = std::min(p.start, p.end), hi = std::max(p.start, p.end);
+  std::vector<double> speeds;
+  for (int i = 0; i <= 40; ++i) speeds.push_back(lo + (hi - lo) * i / 40.0);
+  ModalOptions mo;
+  mo.modes = static_cast<int>(config.integer("campbell.modes"));
+  mo.max_damping_ratio = config.real("modal.max_damping_ratio");
+  nlohmann::ordered_json predicted = nlohmann::ordered_json::array();
+  if (hi > lo) {
+    const CampbellDiagram d = campbellDiagram(model, speeds, mo, standardOrderLines(model));
+    for (const auto& cs : d.critical_speeds) {
+      if (cs.line != "mesh") continue;
+      predicted.push_back({{"mode", cs.mode},
+                           {"speed_rpm", cs.speed / kRpm},
+                           {"frequency_hz", cs.frequency},
+                           {"whirl", cs.whirl}});
+    }
+  }
+  results["runup"] = {{"window_s", window * dt},
+                      {"mesh_order_peaks", peaks},
+                      {"campbell_mesh_crossings", predicted}};
+  text += fmt::format(
+      "  run-up {:.0f} -> {:.0f} rpm: largest mesh-order response of {} at {:.0f} "
+      "rpm; {} Campbell crossing(s) of the mesh line in range\n",
+      p.start / kRpm, p.end / kRpm, names[0], peaks[names[0]]["speed_rpm"].get<double>(),
+      predicted.size());
+}
+
+int runTime(const io::Config& config, const CommandOptions& options, io::RunSummary& summary,
+            io::ResultWriter& writer, std::string& text) {
+  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
+  const FeGearedRotor model(build.spec);
+  const FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
+  reportDivergence(r, summary.warnings);
+  summary.results["model"] = modelJson(model, build.stiffness_model);
+  summary.results["time"] = {{"status", toString(r.status)},
+                             {"steps", r.steps},
+                             {"factorisations", r.factorisations},
+                             {"message", r.message}};
+  writer.writeCsv(
+      "time_history.csv",
+      timeHistoryTable(model, r, static_cast<int>(config.integer("time.output_every"))));
+  text += fmt::format("  {}\n", r.message);
+  if (!r.converged()) return kExitNumericalFailure;
+  const auto names = channelNames(model, r);
+  if (model.spec().speed.constant()) {
+    const SteadyAnalysis a = analyseSteady(config, model, r);
+    io::CsvTable harmonics({"channel", "order", "frequency_hz", "displacement", "acceleration"});
+    addHarmonicRows(harmonics, "", names, a);
+    writer.writeCsv("harmonics.csv", harmonics);
+    io::CsvTable spectrum({"channel", "frequency_hz", "displacement", "acceleration"});
+    addSpectrumRows(spectrum, "", names, a, spectrumLimit(config, a));
+    writer.writeCsv("spectrum.csv", spectrum);
+    summary.results["steady"] = {{"window_s", a.window},
+                                 {"last_period_change", a.last_change},
+                                 {"mesh_orders", a.orders},
+                                 {"harmonics", harmonicsJson(names, a)}};
+    if (a.last_change > 1e-3) {
+      summary.warnings.push_back(fmt::format(
+          "the response still changes by {:.2g} of its size between the last two mesh periods: "
+          "lengthen time.duration for a steady window",
+          a.last_change));
+    }
+    text += fmt::format(
+        "  steady window {:.3g} s (change over the last mesh period {:.2g}); {} "
+        "mesh-order 1..{} amplitudes in harmonics.csv\n",
+        a.window, a.last_change, names.size(), a.orders.size());
+  } else {
+    runUpOutputs(config, model, r, writer, summary.results, text);
+  }
+  return kExitOk;
+}
+
+nlohmann::ordered_json modeJson(const RotorMode& m) {
+  return {{"frequency_hz", m.frequency},
+          {"damping_ratio", m.damping_ratio},
+          {"whirl", m.whirl},
+          {"forward_fraction", m.forward_fraction},
+          {"lateral_fraction", m.lateral_fraction},
+          {"torsional_fraction", m.torsional_fraction},
+          {"axial_fraction", m.axial_fraction}};
+}
+
+int runModal(const io::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+             std::string& text) {
+  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
+  const FeGearedRotor model(build.spec);
+  const double speed =
+      (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm") : config.real("speed.rpm")) *
+      kRpm;
+  const auto modes = modalAnalysis(model, speed, io::modalOptionsFromConfig(config, "modal"));
+  io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
+                      "lateral_fraction", "torsional_fraction", "axial_fraction"});
+  io::CsvTable shapes({"mode", "dof", "re", "im", "amplitude"});
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (std::size_t j = 0; j < modes.size(); ++j) {
+    const RotorMode& m = modes[j];
+    table.addRow({static_cast<long long>(j + 1), m.frequency, m.damping_ratio, m.whirl,
+                  m.forward_fraction, m.lateral_fraction, m.torsional_fraction, m.axial_fraction});
+    for (int i = 0; i < model.dofCount(); ++i) {
+      shapes.addRow({static_cast<long long>(j + 1), model.dofName(i), m.shape(i).real(),
+                     m.shape(i).imag(), std::abs(m.shape(i))});
+    }
+    list.push_back(modeJson(m));
+    text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {:.4f}  {}\n", j + 1, m.frequency,
+                        m.damping_ratio, m.whirl);
+  }
+  writer.writeCsv("modes.csv", table);
+  writer.writeCsv("mode_shapes.csv", shapes);
+  summary.results["model"] = modelJson(model, build.stiffness_model);
+  summary.results["modal"] = {{"speed_rpm", speed / kRpm}, {"modes", list}};
+  return kExitOk;
+}
+
+int runCampbell(const io::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+                std::string& text) {
+  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
+  const FeGearedRotor model(build.spec);
+  const auto speeds = io::campbellSpeedsFromConfig(config);
+  const CampbellDiagram d = campbellDiagram(
+      model, speeds, io::modalOptionsFromConfig(config, "campbell"), standardOrderLines(model));
+  io::CsvTable table(
+      {"speed_rpm", "mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction"});
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    for (std::size_t j = 0; j < d.modes[i].size(); ++j) {
+      const RotorMode& m = d.modes[i][j];
+      table.addRow({speeds[i] / kRpm, static_cast<long long>(j + 1), m.frequency, m.damping_ratio,
+                    m.whirl, m.forward_fraction});
+    }
+  }
+  writer.writeCsv("campbell.csv", table);
+  io::CsvTable lines({"line", "order"});
+  for (const auto& l : d.lines) lines.addRow({l.name, l.order});
+  writer.writeCsv("campbell_lines.csv", lines);
+  io::CsvTable critical({"mode", "line", "speed_rpm", "frequency_hz", "whirl"});
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const auto& c : d.critical_speeds) {
+    critical.addRow(
+        {static_cast<long long>(c.mode + 1), c.line, c.speed / kRpm, c.frequency, c.whirl});
+    list.push_back({{"mode", c.mode + 1},
+                    {"line", c.line},
+                    {"speed_rpm", c.speed / kRpm},
+                    {"frequency_hz", c.frequency},
+                    {"whirl", c.whirl}});
+  }
+  writer.writeCsv("critical_speeds.csv", critical);
+  summary.results["model"] = modelJson(model, build.stiffness_model);
+  summary.results["campbell"] = {{"speeds_rpm", {speeds.front() / kRpm, speeds.back() / kRpm}},
+                                 {"points", speeds.size()},
+                                 {"critical_speeds", list}};
+  text += fmt::format("  {} modes tracked over {:.0f}-{:.0f} rpm; {} critical speed(s)\n",
+                      d.modes.front().size(), speeds.front() / kRpm, speeds.back() / kRpm,
+                      d.critical_speeds.size());
+  for (const auto& c : d.critical_speeds)
+    text += fmt::format("    mode {} x {}: {:.1f} rpm ({:.1f} Hz, {})\n", c.mode + 1, c.line,
+                        c.speed / kRpm, c.frequency, c.whirl);
+  return kExitOk;
+}
+
+/// Visnadi §4: the same rotor with each mesh-stiffness model; amplitudes at the mesh orders.
+int runCompare(const io::Config& config, const CommandOptions& options, io::RunSummary& summary,
+               io::ResultWriter& writer, std::string& text) {
+  const auto models = config.stringList("compare.models");
+  if (models.empty()) throw InputError("compare.models", "[]", "at least one model");
+  struct Case {
+    std::string name;
+    std::unique_ptr<FeGearedRotor> model;
+    FeTimeResponse response;
+    double mean = 0.0;
+    std::vector<std::string> warnings;
+  };
+  std::vector<Case> cases;
+  for (const auto& name : models) {
+    io::FeRotorBuild build = io::feRotorSpecFromConfig(config, name);
+    Case c{name, std::make_unique<FeGearedRotor>(build.spec), {}, 0.0, build.warnings};
+    c.mean = c.model->meanMeshStiffness();
+    cases.push_back(std::move(c));
+  }
+  if (!cases.front().model->spec().speed.constant()) {
+    throw InputError("speed.end_rpm", "", "compare_stiffness runs at constant speed (no end_rpm)");
+  }
+  // The cases are independent: run them on the worker threads.
+  const unsigned threads =
+      options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  std::atomic<std::size_t> next{0};
+  for (unsigned t = 0; t < std::min<std::size_t>(threads, cases.size()); ++t) {
+    pool.emplace_back([&] {
+      for (std::size_t i; (i = next++) < cases.size();) {
+        Case& c = cases[i];
+        c.response =
+            solveFeRotorTimeResponse(*c.model, io::feTimeOptionsFromConfig(config, *c.model));
+      }
+    });
+  }
+  for (auto& t : pool) t.join();
+
+  io::CsvTable harmonics(
+      {"model", "channel", "order", "frequency_hz", "displacement", "acceleration"});
+  io::CsvTable spectra({"model", "channel", "frequency_hz", "displacement", "acceleration"});
+  io::CsvTable stiffness({"model", "mesh_fraction", "stiffness"});
+  nlohmann::ordered_json per_model = nlohmann::ordered_json::object();
+  std::vector<SteadyAnalysis> analyses;
+  bool ok = true;
+  for (Case& c : cases) {
+    summary.warnings.insert(summary.warnings.end(), c.warnings.begin(), c.warnings.end());
+    reportDivergence(c.response, summary.warnings);
+    if (!c.response.converged()) {
+      ok = false;
+      analyses.emplace_back();
+      continue;
+    }
+    const auto names = channelNames(*c.model, c.response);
+    const SteadyAnalysis a = analyseSteady(config, *c.model, c.response);
+    addHarmonicRows(harmonics, c.name, names, a);
+    addSpectrumRows(spectra, c.name, names, a, spectrumLimit(config, a));
+    for (int k = 0; k <= 200; ++k)
+      stiffness.addRow({c.name, k / 200.0, c.model->meshStiffness(k / 200.0)});
+    const MeshStiffnessSummary s =
+        summarizeMeshStiffness(c.model->spec().mesh_stiffness.operator*(), 1);
+    per_model[c.name] = {{"mean_stiffness", c.mean},
+                         {"min_stiffness", s.min},
+                         {"max_stiffness", s.max},
+                         {"last_period_change", a.last_change},
+                         {"harmonics", harmonicsJson(names, a)}};
+    analyses.push_back(a);
+  }
+  writer.writeCsv("compare_harmonics.csv", harmonics);
+  writer.writeCsv("compare_spectra.csv", spectra);
+  writer.writeCsv("compare_stiffness.csv", stiffness);
+
+  // Ratios to the reference model, per channel and order (acceleration: the bearing plots).
+  const std::string reference = config.string("compare.reference");
+  const auto ref_it = std::find(models.begin(), models.end(), reference);
+  io::CsvTable ratios({"model", "channel", "order", "displacement_ratio", "acceleration_ratio"});
+  nlohmann::ordered_json ratio_json = nlohmann::ordered_json::object();
+  if (ref_it != models.end() && ok) {
+    const std::size_t r = ref_it - models.begin();
+    const auto names = channelNames(*cases[r].model, cases[r].response);
+    for (std::size_t m = 0; m < cases.size(); ++m) {
+      if (m == r) continue;
+      double below = 0, above = 0, total = 0;
+      for (std::size_t c = 0; c < names.size(); ++c) {
+        for (std::size_t h = 0; h < analyses[r].orders.size(); ++h) {
+          const double d = analyses[m].displacement[c][h] / analyses[r].displacement[c][h];
+          const double acc = analyses[m].acceleration[c][h] / analyses[r].acceleration[c][h];
+          ratios.addRow({cases[m].name, names[c], analyses[r].orders[h], d, acc});
+          ++total;
+          below += acc < 1.0;
+          above += acc > 1.0;
+        }
+      }
+      ratio_json[cases[m].name] = {{"share_of_peaks_above_reference", above / total},
+                                   {"share_of_peaks_below_reference", below / total}};
+    }
+    writer.writeCsv("compare_ratios.csv", ratios);
+  }
+  summary.results["model"] = modelJson(*cases.front().model, "(per case)");
+  summary.results["compare"] = {
+      {"reference", reference}, {"models", per_model}, {"against_reference", ratio_json}};
+  for (const Case& c : cases) {
+    double largest = 0.0;
+    if (per_model.contains(c.name)) {
+      for (const auto& [ch, h] : per_model[c.name]["harmonics"].items())
+        for (double x : h["acceleration"]) largest = std::max(largest, x);
+    }
+    text +=
+        fmt::format("  {:<18s} mean k {:.4e} N/m, largest mesh-order acceleration {:.4g} m/s^2\n",
+                    c.name, c.mean, largest);
+  }
+  return ok ? kExitOk : kExitNumericalFailure;
+}
+
+}  // namespace
+
+int runFeRotor(const io::Config& config, const CommandOptions& options) {
+  io::RunSummary summary;
+  summary.command = "rotor";
+  summary.config_source = options.config_file.string();
+  summary.config = config.resolved();
+  io::ResultWriter writer(options.resultFolder());
+  const std::string analysis = config.string("analysis.type");
+  std::string text = fmt::format("finite-element geared rotor: {} analysis\n", analysis);
+  int code = kExitOk;
+  if (analysis == "time") code = runTime(config, options, summary, writer, text);
+  if (analysis == "modal") code = runModal(config, summary, writer, text);
+  if (analysis == "campbell") code = runCampbell(config, summary, writer, text);
+  if (analysis == "compare_stiffness") code = runCompare(config, options, summary, writer, text);
+  summary.status = code == kExitOk ? "ok" : "diverged";
+  for (const auto& w : summary.warnings)
+    if (w.rfind("Newmark", 0) != 0) std::cerr << "warning: " << w << "\n";
+  auto path = writer.writeSummary(summary);
+  if (io::outputOptionsFromConfig(config).plots) {
+    for (const auto& file : drawPlots("rotor_fe", writer.folder())) writer.recordFile(file);
+    path = writer.writeSummary(summary);
+  }
+  text += fmt::format("results: {}\n", path.string());
+  report(options, text);
+  return code;
+}
+
+}  // namespace geardyn::cli

@@ -1,0 +1,38 @@
+#pragma once
+/// \file
+/// Amplitudes of real vibration signals at known frequencies (mesh orders), their one-sided
+/// amplitude spectrum (the DFT amplitude plots of Visnadi 2021 Figs. 3–7), and order tracking
+/// along a run-up (amplitude of an order in consecutive windows: the cascade / waterfall).
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace geardyn {
+
+/// Least-squares fit of x(t_k) = a₀ + Σ_j [a_j cos 2πf_j t_k + b_j sin 2πf_j t_k], t_k = k/f_s:
+/// the 0-peak amplitudes √(a_j² + b_j²) [unit of x]; exact for whole periods and free of leakage
+/// otherwise. Frequencies must be distinct, > 0 and below f_s/2 (InputError otherwise).
+std::vector<double> harmonicAmplitudes(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                       double sample_rate, const std::vector<double>& frequencies);
+
+/// One-sided amplitude spectrum: amplitude[0] = |mean|, amplitude[k] = 2|X_k|/N (0-peak of a
+/// sinusoid on a bin), frequencies k f_s/N up to f_s/2 (FFTW).
+struct AmplitudeSpectrum {
+  std::vector<double> frequency;  ///< [Hz]
+  std::vector<double> amplitude;  ///< 0-peak [unit of x]
+};
+AmplitudeSpectrum amplitudeSpectrum(const Eigen::Ref<const Eigen::VectorXd>& x, double sample_rate);
+
+/// Order tracking: the signal cut into consecutive windows of `window` samples; in each, the
+/// mean speed and the least-squares amplitude of each order at order × mean speed / 2π.
+struct OrderTrack {
+  std::vector<double> time;                    ///< window centres [s]
+  std::vector<double> speed;                   ///< mean reference speed [rad/s]
+  std::vector<std::vector<double>> amplitude;  ///< amplitude[o][w] of order o in window w
+};
+OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample_rate,
+                       const std::vector<double>& speed, const std::vector<double>& orders,
+                       int window);
+
+}  // namespace geardyn
