@@ -272,7 +272,7 @@ int runTime(const io::Config& config, const CommandOptions& options, io::RunSumm
           a.last_change));
     }
     text += fmt::format(
-        "  steady window {:.3g} s (change over the last mesh period {:.2g}); {} "
+        "  steady window {:.3g} s (change over the last mesh period {:.2g}); {} channels: "
         "mesh-order 1..{} amplitudes in harmonics.csv\n",
         a.window, a.last_change, names.size(), a.orders.size());
   } else {
