@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -391,21 +392,29 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
   if (!cases.front().model->spec().speed.constant()) {
     throw InputError("speed.end_rpm", "", "compare_stiffness runs at constant speed (no end_rpm)");
   }
-  // The cases are independent: run them on the worker threads.
+  // The cases are independent: run them on the worker threads (options are read first, so that
+  // configuration errors surface here, on the main thread).
+  std::vector<FeTimeOptions> time_options;
+  for (const Case& c : cases) time_options.push_back(io::feTimeOptionsFromConfig(config, *c.model));
   const unsigned threads =
       options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(cases.size());
   for (unsigned t = 0; t < std::min<std::size_t>(threads, cases.size()); ++t) {
     pool.emplace_back([&] {
       for (std::size_t i; (i = next++) < cases.size();) {
-        Case& c = cases[i];
-        c.response =
-            solveFeRotorTimeResponse(*c.model, io::feTimeOptionsFromConfig(config, *c.model));
+        try {
+          cases[i].response = solveFeRotorTimeResponse(*cases[i].model, time_options[i]);
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
       }
     });
   }
   for (auto& t : pool) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
 
   io::CsvTable harmonics(
       {"model", "channel", "order", "frequency_hz", "displacement", "acceleration"});
