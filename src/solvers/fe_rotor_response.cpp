@@ -46,6 +46,7 @@ FeNewmarkStepper::FeNewmarkStepper(const FeGearedRotor& model, const FeTimeOptio
   k_ref_ = model.meanMeshStiffness();
   A_.resize(n, n);
   Cg_.resize(n, n);
+  K0_ = model.stiffness() + k_ref_ * model.meshVector() * model.meshVector().transpose();
   for (Eigen::VectorXd* x : {&q_, &v_, &a_, &z_, &rhs_, &y_, &p_, &c_, &f_}) x->setZero(n);
   factorise(model.spec().speed.speed(0.0));
 }
@@ -53,8 +54,7 @@ FeNewmarkStepper::FeNewmarkStepper(const FeGearedRotor& model, const FeTimeOptio
 void FeNewmarkStepper::factorise(double speed) {
   const FeGearedRotor& m = model_;
   Cg_ = m.damping() + speed * m.gyroscopic();
-  A_ = m.stiffness() + k_ref_ * m.meshVector() * m.meshVector().transpose() + a0_ * m.mass() +
-       a1_ * Cg_;
+  A_ = K0_ + a0_ * m.mass() + a1_ * Cg_;  // coefficient-wise: no temporary
   lu_.compute(A_);
   z_ = lu_.solve(m.meshVector());
   s_ = m.meshVector().dot(z_);

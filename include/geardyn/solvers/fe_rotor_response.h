@@ -78,7 +78,7 @@ class FeNewmarkStepper {
   double a0_, a1_, a2_, a3_, a4_, a5_;
   double t_ = 0.0, k_ = 0.0, e_ = 0.0, speed_factorised_ = 0.0, k_ref_ = 0.0, s_ = 0.0;
   int factorisations_ = 0;
-  Eigen::MatrixXd A_, Cg_;
+  Eigen::MatrixXd A_, Cg_, K0_;  // effective, C + ΩG₁, K + k̄ v vᵀ
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::VectorXd q_, v_, a_, z_, rhs_, y_, p_, c_, f_;
 };

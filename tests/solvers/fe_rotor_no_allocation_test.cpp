@@ -1,0 +1,77 @@
+// The Newmark step of the FE geared rotor allocates nothing (issue #8: "no allocation in the
+// loop"). This executable interposes malloc to count the calls made while stepping; it is a
+// separate test binary so that no other test runs with the counting allocator.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <vector>
+
+#include "geardyn/solvers/fe_rotor_response.h"
+#include "geardyn/stiffness/potential_energy_stiffness.h"
+#include "support/fe_rotor_cases.h"
+
+extern "C" void* __libc_malloc(std::size_t size);
+extern "C" void* __libc_calloc(std::size_t count, std::size_t size);
+extern "C" void* __libc_realloc(void* pointer, std::size_t size);
+
+namespace {
+bool counting = false;
+long allocations = 0;
+}  // namespace
+
+extern "C" void* malloc(std::size_t size) {
+  if (counting) ++allocations;
+  return __libc_malloc(size);
+}
+extern "C" void* calloc(std::size_t count, std::size_t size) {
+  if (counting) ++allocations;
+  return __libc_calloc(count, size);
+}
+extern "C" void* realloc(void* pointer, std::size_t size) {
+  if (counting) ++allocations;
+  return __libc_realloc(pointer, size);
+}
+
+namespace geardyn {
+namespace {
+
+TEST(FeRotorNewmarkAllocation, TheCounterSeesAllocations) {
+  allocations = 0;
+  counting = true;
+  Eigen::VectorXd v(1000);      // Eigen's heap storage goes through malloc
+  std::vector<double> w(1000);  // and so does operator new
+  counting = false;
+  EXPECT_GE(allocations, 2);
+  EXPECT_EQ(v.size() + w.size(), 2000u);
+}
+
+TEST(FeRotorNewmarkAllocation, StepsAllocateNothingAtConstantSpeedOrAlongARunUp) {
+  const GearPair pair(testing::visnadiPairSpec(5.0));
+  auto spec =
+      testing::visnadiFeRotorSpec(std::make_shared<PotentialEnergyMeshStiffness>(pair), 5.0, 4);
+  spec.shafts[0].unbalances.push_back({1, 1e-5, 0.0});
+  spec.transmission_error.addFourier({2e-6}, {0.3});
+  for (double end : {500.0, 3000.0}) {
+    spec.speed = {500.0 * 3.14159265358979 / 30, end * 3.14159265358979 / 30, 0.0, 0.01};
+    const FeGearedRotor model(spec);
+    FeTimeOptions o;
+    o.gyro_speed_tolerance = 1e-2;
+    FeNewmarkStepper stepper(model, o);
+    stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                  Eigen::VectorXd::Zero(model.dofCount()));
+    stepper.step();  // warm-up
+    allocations = 0;
+    counting = true;
+    for (int s = 0; s < 1000; ++s) stepper.step();  // 10 ms: the whole ramp when end > start
+    counting = false;
+    EXPECT_EQ(allocations, 0) << "end speed " << end << " rpm";
+    if (end != 500.0) {
+      EXPECT_GT(stepper.factorisations(), 50);  // refactorising is allocation-free too
+    }
+    EXPECT_TRUE(std::isfinite(stepper.displacement().norm()));
+  }
+}
+
+}  // namespace
+}  // namespace geardyn
