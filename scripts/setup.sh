@@ -19,6 +19,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py
   python3-scipy  # bench/rotor_scipy_compare.py only
+  libopenmpi-dev openmpi-bin  # mpirun -n N geardyn sweep
 )
 
 missing=()

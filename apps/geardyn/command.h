@@ -29,6 +29,7 @@ struct CommandOptions {
   std::vector<std::string> overrides;
   int threads = 0;  ///< 0: all hardware threads
   bool quiet = false;
+  bool resume = false;  ///< sweep: continue from the journal of an interrupted run
 
   /// The folder results go to.
   std::filesystem::path resultFolder() const;
@@ -43,6 +44,8 @@ struct Command {
   /// When set, the schema depends on the configuration file (e.g. `rotor` with [model] type =
   /// "fe_geared_rotor"); `schema` stays the default one.
   std::function<io::ConfigSchema(const std::filesystem::path&)> schema_for_file;
+  /// When set, the command reads its file itself (no schema validation by the caller): `sweep`.
+  std::function<int(const CommandOptions&)> run_file;
   /// Further schemas `geardyn schema COMMAND` prints after the default one.
   std::vector<std::function<io::ConfigSchema()>> variant_schemas;
 };

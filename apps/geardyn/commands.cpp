@@ -10,6 +10,7 @@
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
 #include "geardyn/io/stiffness_io.h"
+#include "geardyn/io/sweep_io.h"
 
 namespace geardyn::cli {
 
@@ -20,6 +21,7 @@ int runStats(const io::Config& config, const CommandOptions& options);
 int runHbm(const io::Config& config, const CommandOptions& options);
 int runRotor(const io::Config& config, const CommandOptions& options);
 int runFeRotor(const io::Config& config, const CommandOptions& options);
+int runSweep(const CommandOptions& options);
 int runSpectrum(const io::Config& config, const CommandOptions& options);
 int runIdentify(const io::Config& config, const CommandOptions& options);
 int runLtca(const io::Config& config, const CommandOptions& options);
@@ -40,6 +42,7 @@ std::vector<Command> allCommands() {
         return io::peekConfigString(file, "model.type") == "fe_geared_rotor" ? io::feRotorSchema()
                                                                              : io::rotorSchema();
       },
+      nullptr,
       {io::feRotorSchema}};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
@@ -73,6 +76,15 @@ std::vector<Command> allCommands() {
        "loaded tooth contact analysis with flank modifications: loaded STE, load sharing, "
        "secant/tangent stiffness, Harris map, Gelman statistics against load",
        io::ltcaSchema, runLtca},
+      {"sweep",
+       "any analysis over a grid or random sample of its configuration keys, on all cores or "
+       "across machines (mpirun -n N geardyn sweep ...), resumable (--resume), gathered into "
+       "sweep.h5 and sweep.csv",
+       io::sweepSchema,
+       nullptr,
+       nullptr,
+       runSweep,
+       {}},
   };
 }
 

@@ -16,6 +16,7 @@ using geardyn::cli::CommandOptions;
 
 int runCommand(const geardyn::cli::Command& command, const CommandOptions& options) {
   try {
+    if (command.run_file) return command.run_file(options);
     const auto schema =
         command.schema_for_file ? command.schema_for_file(options.config_file) : command.schema();
     const auto config = geardyn::io::loadConfigFile(options.config_file, schema, options.overrides);
@@ -58,6 +59,10 @@ int main(int argc, char** argv) {
     sub->add_option("--threads,-j", o.threads, "worker threads (default: all cores)")
         ->check(CLI::PositiveNumber);
     sub->add_flag("--quiet,-q", o.quiet, "print nothing but warnings and errors");
+    if (command.run_file) {
+      sub->add_flag("--resume", o.resume,
+                    "continue an interrupted sweep from its journal in the result folder");
+    }
   }
 
   std::string schema_command;

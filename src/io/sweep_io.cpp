@@ -1,0 +1,569 @@
+/// Study definition, journal and result files of `geardyn sweep` (see sweep_io.h).
+
+#include "geardyn/io/sweep_io.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <hdf5.h>
+#include <toml++/toml.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "geardyn/error.h"
+#include "geardyn/io/did_you_mean.h"
+#include "geardyn/version.h"
+
+namespace geardyn::io {
+namespace fs = std::filesystem;
+namespace {
+
+const std::vector<std::string> kStudyKeys = {
+    "command",  "base", "design",  "samples",           "seed",
+    "seed_key", "set",  "outputs", "keep_case_results", "parameters"};
+
+[[noreturn]] void unknownKey(const std::string& section, const std::string& key,
+                             const std::vector<std::string>& known) {
+  const auto suggestion = closestMatch(key, known);
+  throw InputError(section + "." + key, "",
+                   suggestion ? fmt::format("an unknown key; did you mean '{}'?", *suggestion)
+                              : fmt::format("an unknown key (known: {})", fmt::join(known, ", ")));
+}
+
+nlohmann::json toJson(const toml::node& node, const std::string& key) {
+  if (auto v = node.as_integer()) return v->get();
+  if (auto v = node.as_floating_point()) return v->get();
+  if (auto v = node.as_boolean()) return v->get();
+  if (auto v = node.as_string()) return v->get();
+  throw InputError(key, "", "a number, string or boolean");
+}
+
+double number(const toml::node& node, const std::string& key) {
+  if (auto v = node.as_integer()) return static_cast<double>(v->get());
+  if (auto v = node.as_floating_point()) return v->get();
+  throw InputError(key, "", "a number");
+}
+
+StudyParameter parameterOf(const std::string& key, const toml::node& node, StudyDesign design) {
+  StudyParameter p;
+  p.key = key;
+  const std::string full = "study.parameters." + key;
+  if (const toml::array* list = node.as_array()) {
+    for (std::size_t i = 0; i < list->size(); ++i)
+      p.values.push_back(toJson(*list->get(i), fmt::format("{}[{}]", full, i)));
+  } else if (const toml::table* t = node.as_table()) {
+    const bool has_distribution = t->contains("distribution");
+    if (has_distribution) {
+      const std::string name = t->get("distribution")->value_or(std::string());
+      const std::vector<std::string> names{"uniform", "normal", "truncated_normal"};
+      if (name == "uniform")
+        p.distribution = StudyDistribution::kUniform;
+      else if (name == "normal")
+        p.distribution = StudyDistribution::kNormal;
+      else if (name == "truncated_normal")
+        p.distribution = StudyDistribution::kTruncatedNormal;
+      else {
+        const auto s = closestMatch(name, names);
+        throw InputError(full + ".distribution", "\"" + name + "\"",
+                         s ? fmt::format("one of uniform, normal, truncated_normal; did you mean "
+                                         "'{}'?",
+                                         *s)
+                           : "one of uniform, normal, truncated_normal");
+      }
+      std::vector<std::string> allowed{"distribution"};
+      if (p.distribution != StudyDistribution::kUniform)
+        allowed.insert(allowed.end(), {"mean", "std"});
+      if (p.distribution != StudyDistribution::kNormal)
+        allowed.insert(allowed.end(), {"min", "max"});
+      for (const auto& [k, v] : *t) {
+        const std::string name_k(k.str());
+        if (std::find(allowed.begin(), allowed.end(), name_k) == allowed.end())
+          unknownKey(full, name_k, allowed);
+        if (name_k == "distribution") continue;
+        const double x = number(v, full + "." + name_k);
+        if (name_k == "mean") p.mean = x;
+        if (name_k == "std") p.std = x;
+        if (name_k == "min") p.min = x;
+        if (name_k == "max") p.max = x;
+      }
+      for (const auto& required : allowed)
+        if (!t->contains(required)) throw InputError(full + "." + required, "", "required");
+      if (design != StudyDesign::kRandom)
+        throw InputError(full + ".distribution", "\"" + name + "\"",
+                         "distributions need study.design = \"random\"");
+    } else {
+      const std::vector<std::string> allowed{"min", "max", "num"};
+      for (const auto& [k, v] : *t) {
+        if (std::find(allowed.begin(), allowed.end(), std::string(k.str())) == allowed.end())
+          unknownKey(full, std::string(k.str()), allowed);
+      }
+      for (const auto& required : allowed)
+        if (!t->contains(required)) throw InputError(full + "." + required, "", "required");
+      const double lo = number(*t->get("min"), full + ".min");
+      const double hi = number(*t->get("max"), full + ".max");
+      const auto* num = t->get("num")->as_integer();
+      if (!num || num->get() < 1)
+        throw InputError(full + ".num", "", "an integer >= 1 (number of values)");
+      const long long n = num->get();
+      for (long long i = 0; i < n; ++i)
+        p.values.push_back(n == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (n - 1));
+    }
+  } else {
+    p.values.push_back(toJson(node, full));
+  }
+  p.validate(design);
+  return p;
+}
+
+std::string tomlLiteral(const nlohmann::json& v) {
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number_integer()) return std::to_string(v.get<long long>());
+  if (v.is_number()) {
+    std::string s = fmt::format("{:.17g}", v.get<double>());
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+  }
+  std::string out = "\"";
+  for (char c : v.get<std::string>()) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
+  return fmt::format("{:016x}", h);
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+ConfigSchema sweepSchema() {
+  ConfigSchema schema(
+      "sweep",
+      "A study over any analysis command: `geardyn sweep FILE` (threads) or `mpirun -n N geardyn "
+      "sweep FILE` (MPI ranks, dynamic work queue); `--resume` continues a killed run from "
+      "sweep_journal.jsonl. [study.parameters] maps configuration keys of the base command to a "
+      "list of values, to {min, max, num} (evenly spaced), or in a random design to {distribution "
+      "= \"uniform\", min, max}, {distribution = \"normal\", mean, std} or {distribution = "
+      "\"truncated_normal\", mean, std, min, max} (a list is then drawn from uniformly). Every "
+      "case draws from its own stream seeded by (seed, case index): the same values whatever the "
+      "threads or ranks.");
+  schema.string("title").defaultValue("").doc("free text copied into the summary");
+  schema.section("study", "The study.");
+  schema.string("study.command").required().doc("the analysis command run for every case");
+  schema.string("study.base").required().doc("its configuration file, relative to this file");
+  schema.string("study.design")
+      .choices({"grid", "zip", "random"})
+      .defaultValue("grid")
+      .doc(
+          "grid: full factorial (last parameter fastest); zip: the i-th values together; random: "
+          "`samples` draws");
+  schema.integer("study.samples").min(1).optional().doc("random: number of cases");
+  schema.integer("study.seed").min(0).defaultValue(1).doc("study seed");
+  schema.string("study.seed_key")
+      .defaultValue("")
+      .doc("a key of the base configuration set to each case's own seed (e.g. a Monte Carlo seed)");
+  schema.stringList("study.set")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc("fixed overrides \"key=value\" of every case (the command line's --set adds to them)");
+  schema.stringList("study.outputs")
+      .required()
+      .doc("\"name=/json/pointer\" (or just the pointer) into each case's summary results");
+  schema.boolean("study.keep_case_results")
+      .defaultValue(false)
+      .doc("keep every case's own result folder under cases/");
+  schema.section("study.parameters", "The swept keys (see above).");
+  schema.section("output", "Output.");
+  schema.boolean("output.plots").defaultValue(true).doc("sweep.png with matplotlib");
+  return schema;
+}
+
+long long SweepDefinition::caseCount() const {
+  return studyCaseCount(design, parameters, samples);
+}
+
+StudyCase SweepDefinition::caseAt(long long index) const {
+  return studyCase(design, parameters, index, seed);
+}
+
+std::vector<std::string> SweepDefinition::overridesOf(const StudyCase& c) const {
+  std::vector<std::string> o = set;
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    o.push_back(parameters[i].key + "=" + tomlLiteral(c.values[i]));
+  if (!seed_key.empty()) o.push_back(fmt::format("{}={}", seed_key, c.seed >> 1));
+  return o;
+}
+
+std::string SweepDefinition::fingerprint() const {
+  return fnv1a(resolved.dump() + "\n" + readText(base));
+}
+
+SweepDefinition loadSweepDefinition(const fs::path& file,
+                                    const std::vector<std::string>& extra_set) {
+  toml::table root;
+  try {
+    root = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    if (!fs::exists(file)) throw InputError("config", file.string(), "an existing file");
+    throw InputError("config", file.string(),
+                     fmt::format("valid TOML ({} at line {})", std::string(e.description()),
+                                 e.source().begin.line));
+  }
+  SweepDefinition d;
+  for (const auto& [k, v] : root) {
+    const std::string key(k.str());
+    if (key == "title") {
+      d.title = v.value_or(std::string());
+    } else if (key == "output") {
+      const toml::table* t = v.as_table();
+      for (const auto& [ok, ov] : *t) {
+        if (ok.str() != "plots") unknownKey("output", std::string(ok.str()), {"plots"});
+        if (!ov.is_boolean()) throw InputError("output.plots", "", "true or false");
+        d.plots = ov.value_or(true);
+      }
+    } else if (key != "study") {
+      unknownKey("", key, {"title", "study", "output"});
+    }
+  }
+  const toml::table* study = root["study"].as_table();
+  if (!study) throw InputError("study", "", "a [study] section");
+  for (const auto& [k, v] : *study) {
+    if (std::find(kStudyKeys.begin(), kStudyKeys.end(), std::string(k.str())) == kStudyKeys.end())
+      unknownKey("study", std::string(k.str()), kStudyKeys);
+  }
+  auto str = [&](const char* key, const std::string& fallback, bool required) {
+    const toml::node* n = study->get(key);
+    if (!n) {
+      if (required) throw InputError(std::string("study.") + key, "", "required");
+      return fallback;
+    }
+    if (!n->is_string()) throw InputError(std::string("study.") + key, "", "a string");
+    return n->value_or(std::string());
+  };
+  d.command = str("command", "", true);
+  const fs::path base = str("base", "", true);
+  d.base = base.is_absolute() ? base : fs::absolute(file).parent_path() / base;
+  if (!fs::exists(d.base)) throw InputError("study.base", d.base.string(), "an existing file");
+  const std::string design = str("design", "grid", false);
+  if (design == "grid")
+    d.design = StudyDesign::kGrid;
+  else if (design == "zip")
+    d.design = StudyDesign::kZip;
+  else if (design == "random")
+    d.design = StudyDesign::kRandom;
+  else
+    throw InputError("study.design", "\"" + design + "\"", "one of grid, zip, random");
+  if (const toml::node* n = study->get("samples")) {
+    if (!n->is_integer()) throw InputError("study.samples", "", "an integer >= 1");
+    d.samples = n->value_or(0LL);
+  } else if (d.design == StudyDesign::kRandom) {
+    throw InputError("study.samples", "", "required with design = \"random\"");
+  }
+  if (const toml::node* n = study->get("seed")) {
+    if (!n->is_integer() || n->value_or(-1LL) < 0)
+      throw InputError("study.seed", "", "an integer >= 0");
+    d.seed = static_cast<std::uint64_t>(n->value_or(0LL));
+  }
+  d.seed_key = str("seed_key", "", false);
+  if (const toml::node* n = study->get("keep_case_results")) {
+    if (!n->is_boolean()) throw InputError("study.keep_case_results", "", "true or false");
+    d.keep_case_results = n->value_or(false);
+  }
+  if (const toml::node* n = study->get("set")) {
+    const toml::array* a = n->as_array();
+    if (!a) throw InputError("study.set", "", "a list of \"key=value\" strings");
+    for (const auto& e : *a) {
+      if (!e.is_string()) throw InputError("study.set", "", "a list of \"key=value\" strings");
+      d.set.push_back(e.value_or(std::string()));
+    }
+  }
+  for (const auto& e : extra_set) {
+    d.set.push_back(e);
+    // The sweep's own plots follow the command line's output.plots too.
+    if (e.rfind("output.plots=", 0) == 0) d.plots = e.substr(13) == "true";
+  }
+  const toml::array* outputs = study->get("outputs") ? study->get("outputs")->as_array() : nullptr;
+  if (!outputs || outputs->empty())
+    throw InputError("study.outputs", "",
+                     "a list of JSON pointers into results, e.g. \"/dynamic_factor\"");
+  std::set<std::string> names;
+  for (const auto& e : *outputs) {
+    const std::string text = e.value_or(std::string());
+    const auto eq = text.find('=');
+    SweepOutput o{eq == std::string::npos ? "" : text.substr(0, eq),
+                  eq == std::string::npos ? text : text.substr(eq + 1)};
+    if (o.pointer.empty() || o.pointer[0] != '/')
+      throw InputError("study.outputs", "\"" + text + "\"",
+                       "\"name=/json/pointer\" or \"/json/pointer\" into the summary's results");
+    if (o.name.empty()) {
+      o.name = o.pointer.substr(1);
+      std::replace(o.name.begin(), o.name.end(), '/', '.');
+    }
+    if (!names.insert(o.name).second)
+      throw InputError("study.outputs", "\"" + o.name + "\"", "distinct output names");
+    d.outputs.push_back(o);
+  }
+  const toml::table* params =
+      study->get("parameters") ? study->get("parameters")->as_table() : nullptr;
+  if (!params || params->empty())
+    throw InputError("study.parameters", "",
+                     "a table of swept keys, e.g. \"excitation.speed_rpm\" = [1000, 2000]");
+  for (const auto& [k, v] : *params)
+    d.parameters.push_back(parameterOf(std::string(k.str()), v, d.design));
+  (void)d.caseCount();  // validates the design as a whole
+
+  nlohmann::ordered_json params_json = nlohmann::ordered_json::object();
+  for (const auto& p : d.parameters) {
+    nlohmann::ordered_json j = {{"distribution", toString(p.distribution)}};
+    if (p.distribution == StudyDistribution::kValues) j["values"] = p.values;
+    if (p.distribution == StudyDistribution::kUniform ||
+        p.distribution == StudyDistribution::kTruncatedNormal)
+      j["min"] = p.min, j["max"] = p.max;
+    if (p.distribution == StudyDistribution::kNormal ||
+        p.distribution == StudyDistribution::kTruncatedNormal)
+      j["mean"] = p.mean, j["std"] = p.std;
+    params_json[p.key] = j;
+  }
+  nlohmann::ordered_json outputs_json = nlohmann::ordered_json::object();
+  for (const auto& o : d.outputs) outputs_json[o.name] = o.pointer;
+  d.resolved = {{"title", d.title},        {"command", d.command},
+                {"base", d.base.string()}, {"design", toString(d.design)},
+                {"samples", d.samples},    {"seed", d.seed},
+                {"seed_key", d.seed_key},  {"set", d.set},
+                {"outputs", outputs_json}, {"parameters", params_json},
+                {"cases", d.caseCount()}};
+  return d;
+}
+
+nlohmann::json SweepCaseRecord::toJson() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (double x : outputs) out.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json());
+  return {{"case", index},    {"status", status}, {"seed", seed},
+          {"values", values}, {"outputs", out},   {"message", message}};
+}
+
+SweepCaseRecord SweepCaseRecord::fromJson(const nlohmann::json& j) {
+  SweepCaseRecord r;
+  r.index = j.at("case").get<long long>();
+  r.status = j.at("status").get<std::string>();
+  r.seed = j.at("seed").get<std::uint64_t>();
+  for (const auto& v : j.at("values")) r.values.push_back(v);
+  for (const auto& v : j.at("outputs"))
+    r.outputs.push_back(v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>());
+  r.message = j.at("message").get<std::string>();
+  return r;
+}
+
+SweepJournal::SweepJournal(const fs::path& path, const std::string& fingerprint, bool resume) {
+  const std::string header = nlohmann::json({{"geardyn_sweep_journal", fingerprint}}).dump();
+  std::string kept = header + "\n";
+  if (resume) {
+    if (!fs::exists(path))
+      throw InputError("--resume", path.string(), "a sweep journal to resume (none found)");
+    std::ifstream in(path);
+    std::string line;
+    bool first = true;
+    while (std::getline(in, line)) {
+      if (in.eof() && !line.empty()) break;  // no newline: cut by a kill, dropped
+      nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+      if (first) {
+        if (j.is_discarded() || j.value("geardyn_sweep_journal", std::string()) != fingerprint)
+          throw InputError("--resume", path.string(),
+                           "the journal of this very study (the study or its base configuration "
+                           "changed since; run without --resume to start again)");
+        first = false;
+        continue;
+      }
+      if (j.is_discarded()) continue;
+      previous_.push_back(SweepCaseRecord::fromJson(j));
+      kept += line + "\n";
+    }
+  }
+  // Rewrite the journal with the kept lines (atomically), then append to it.
+  const fs::path temp = path.parent_path() / (path.filename().string() + ".tmp");
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    out << kept;
+    if (!out) throw IoError("cannot write " + temp.string());
+  }
+  fs::rename(temp, path);
+  fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND);
+  if (fd_ < 0) throw IoError("cannot open " + path.string());
+}
+
+SweepJournal::~SweepJournal() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void SweepJournal::append(const SweepCaseRecord& record) {
+  const std::string line = record.toJson().dump() + "\n";
+  std::size_t done = 0;
+  while (done < line.size()) {
+    const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+    if (n < 0) throw IoError("cannot append to the sweep journal");
+    done += static_cast<std::size_t>(n);
+  }
+  ::fdatasync(fd_);
+}
+
+double outputValue(const nlohmann::json& results, const std::string& pointer, bool* ok) {
+  *ok = false;
+  try {
+    const nlohmann::json& v = results.at(nlohmann::json::json_pointer(pointer));
+    if (v.is_boolean()) {
+      *ok = true;
+      return v.get<bool>() ? 1.0 : 0.0;
+    }
+    if (v.is_number()) {
+      *ok = true;
+      return v.get<double>();
+    }
+  } catch (const std::exception&) {
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+CsvTable sweepTable(const SweepDefinition& study, const std::vector<SweepCaseRecord>& records) {
+  std::vector<std::string> columns{"case", "status", "seed"};
+  for (const auto& p : study.parameters) columns.push_back(p.key);
+  for (const auto& o : study.outputs) columns.push_back(o.name);
+  columns.push_back("message");
+  CsvTable table(columns);
+  for (const auto& r : records) {
+    std::vector<CsvCell> row{r.index, r.status, std::to_string(r.seed)};
+    for (const auto& v : r.values) {
+      if (v.is_number())
+        row.push_back(v.get<double>());
+      else if (v.is_boolean())
+        row.push_back(v.get<bool>() ? "true" : "false");
+      else
+        row.push_back(v.get<std::string>());
+    }
+    for (double x : r.outputs) row.push_back(x);
+    row.push_back(r.message);
+    table.addRow(row);
+  }
+  return table;
+}
+
+namespace {
+
+struct H5 {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~H5() {
+    if (id >= 0) close(id);
+  }
+};
+
+void writeStrings(hid_t file, const char* name, const std::vector<std::string>& values,
+                  hsize_t rows, hsize_t cols) {
+  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
+  H5Tset_size(type.id, H5T_VARIABLE);
+  H5Tset_cset(type.id, H5T_CSET_UTF8);
+  const hsize_t dims[2] = {rows, cols};
+  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
+  H5 set{H5Dcreate2(file, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+         H5Dclose};
+  std::vector<const char*> ptrs;
+  for (const auto& s : values) ptrs.push_back(s.c_str());
+  if (set.id < 0 ||
+      (!ptrs.empty() && H5Dwrite(set.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0))
+    throw IoError(fmt::format("cannot write dataset {}", name));
+}
+
+template <typename T>
+void writeNumbers(hid_t file, const char* name, hid_t file_type, hid_t memory_type,
+                  const std::vector<T>& values, hsize_t rows, hsize_t cols) {
+  const hsize_t dims[2] = {rows, cols};
+  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
+  H5 set{H5Dcreate2(file, name, file_type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+         H5Dclose};
+  if (set.id < 0 || (!values.empty() && H5Dwrite(set.id, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                                 values.data()) < 0))
+    throw IoError(fmt::format("cannot write dataset {}", name));
+}
+
+void writeAttribute(hid_t object, const char* name, const std::string& value) {
+  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
+  H5Tset_size(type.id, H5T_VARIABLE);
+  H5Tset_cset(type.id, H5T_CSET_UTF8);
+  H5 space{H5Screate(H5S_SCALAR), H5Sclose};
+  H5 attr{H5Acreate2(object, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  const char* p = value.c_str();
+  if (attr.id < 0 || H5Awrite(attr.id, type.id, &p) < 0)
+    throw IoError(fmt::format("cannot write attribute {}", name));
+}
+
+}  // namespace
+
+void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
+                    const std::vector<SweepCaseRecord>& records, const std::string& base_config) {
+  static std::atomic<int> counter{0};
+  const fs::path temp = path.parent_path() / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
+                                                         ::getpid(), counter++);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  try {
+    H5 file{H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
+    if (file.id < 0) throw IoError("cannot create " + temp.string());
+    const hsize_t n = records.size(), np = study.parameters.size(), no = study.outputs.size();
+    std::vector<long long> index;
+    std::vector<unsigned long long> seeds;
+    std::vector<std::string> status, message, text;
+    std::vector<double> params, outputs;
+    for (const auto& r : records) {
+      index.push_back(r.index);
+      seeds.push_back(r.seed);
+      status.push_back(r.status);
+      message.push_back(r.message);
+      for (const auto& v : r.values) {
+        params.push_back(v.is_number() ? v.get<double>()
+                                       : std::numeric_limits<double>::quiet_NaN());
+        text.push_back(v.is_string() ? v.get<std::string>() : v.dump());
+      }
+      outputs.insert(outputs.end(), r.outputs.begin(), r.outputs.end());
+    }
+    writeNumbers(file.id, "case", H5T_STD_I64LE, H5T_NATIVE_LLONG, index, n, 0);
+    writeNumbers(file.id, "seed", H5T_STD_U64LE, H5T_NATIVE_ULLONG, seeds, n, 0);
+    writeStrings(file.id, "status", status, n, 0);
+    writeStrings(file.id, "message", message, n, 0);
+    writeNumbers(file.id, "parameters", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, params, n, np);
+    writeStrings(file.id, "parameter_text", text, n, np);
+    writeNumbers(file.id, "outputs", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, outputs, n, no);
+    std::vector<std::string> pnames, onames;
+    for (const auto& p : study.parameters) pnames.push_back(p.key);
+    for (const auto& o : study.outputs) onames.push_back(o.name);
+    writeStrings(file.id, "parameter_names", pnames, np, 0);
+    writeStrings(file.id, "output_names", onames, no, 0);
+    writeAttribute(file.id, "geardyn_version", kVersion);
+    writeAttribute(file.id, "study", study.resolved.dump());
+    writeAttribute(file.id, "base_config", base_config);
+    if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) throw IoError("cannot flush " + temp.string());
+  } catch (...) {
+    fs::remove(temp);
+    throw;
+  }
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) {
+    fs::remove(temp);
+    throw IoError(
+        fmt::format("cannot rename {} to {}: {}", temp.string(), path.string(), ec.message()));
+  }
+}
+
+}  // namespace geardyn::io
