@@ -322,8 +322,13 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
   if (!params || params->empty())
     throw InputError("study.parameters", "",
                      "a table of swept keys, e.g. \"excitation.speed_rpm\" = [1000, 2000]");
+  // In the order of the file (toml++ keeps tables sorted by key).
+  std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::string>> order;
   for (const auto& [k, v] : *params)
-    d.parameters.push_back(parameterOf(std::string(k.str()), v, d.design));
+    order.push_back({{k.source().begin.line, k.source().begin.column}, std::string(k.str())});
+  std::sort(order.begin(), order.end());
+  for (const auto& [position, key] : order)
+    d.parameters.push_back(parameterOf(key, *params->get(key), d.design));
   (void)d.caseCount();  // validates the design as a whole
 
   nlohmann::ordered_json params_json = nlohmann::ordered_json::object();
