@@ -151,18 +151,20 @@ void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
       std::string payload(static_cast<std::size_t>(count), '\0');
       MPI_Recv(payload.data(), count, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD,
                MPI_STATUS_IGNORE);
-      if (!payload.empty()) {
-        done(io::SweepCaseRecord::fromJson(nlohmann::json::parse(payload)));
-        ++received;
-      }
+      // Hand out the next case first, then record (the journal's fdatasync must not keep the
+      // worker waiting).
       long long index = -1;
       if (!work.next(&index)) {
         index = -1;
         ++stopped;
       }
       MPI_Send(&index, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
+      if (!payload.empty()) {
+        done(io::SweepCaseRecord::fromJson(nlohmann::json::parse(payload)));
+        ++received;
+      }
     }
-    if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(100));
   }
   for (auto& t : pool) t.join();
 }

@@ -110,8 +110,16 @@ StudyParameter parameterOf(const std::string& key, const toml::node& node, Study
       if (!num || num->get() < 1)
         throw InputError(full + ".num", "", "an integer >= 1 (number of values)");
       const long long n = num->get();
-      for (long long i = 0; i < n; ++i)
-        p.values.push_back(n == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (n - 1));
+      // Integer endpoints with integral steps stay integers (for integer keys such as teeth).
+      const bool integers = t->get("min")->is_integer() && t->get("max")->is_integer() &&
+                            (n == 1 || std::fmod(hi - lo, static_cast<double>(n - 1)) == 0.0);
+      for (long long i = 0; i < n; ++i) {
+        const double x = n == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (n - 1);
+        if (integers)
+          p.values.push_back(std::llround(x));
+        else
+          p.values.push_back(x);
+      }
     }
   } else {
     p.values.push_back(toJson(node, full));
