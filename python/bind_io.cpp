@@ -5,18 +5,41 @@
 
 #include "geardyn/error.h"
 #include "geardyn/io/config.h"
+#include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/geometry_io.h"
+#include "geardyn/io/hbm_io.h"
+#include "geardyn/io/identify_io.h"
+#include "geardyn/io/ltca_io.h"
+#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/simulate_io.h"
+#include "geardyn/io/stats_io.h"
 #include "geardyn/io/stiffness_io.h"
+#include "geardyn/io/sweep_io.h"
 
 namespace py = pybind11;
 
 namespace geardyn::python {
 namespace {
 
-io::ConfigSchema schemaOf(const std::string& command) {
+/// The schema of a command; `rotor` files with [model] type = "fe_geared_rotor" use the FE one.
+io::ConfigSchema schemaOf(const std::string& command, const std::string& path = "") {
   if (command == "geometry") return io::geometrySchema();
   if (command == "stiffness") return io::stiffnessSchema();
-  throw InputError("command", command, "must be one of: geometry, stiffness");
+  if (command == "simulate") return io::simulateSchema();
+  if (command == "stats") return io::statsSchema();
+  if (command == "hbm") return io::hbmSchema();
+  if (command == "rotor")
+    return !path.empty() && io::peekConfigString(path, "model.type") == "fe_geared_rotor"
+               ? io::feRotorSchema()
+               : io::rotorSchema();
+  if (command == "rotor_fe") return io::feRotorSchema();
+  if (command == "spectrum") return io::spectrumSchema();
+  if (command == "identify") return io::identifySchema();
+  if (command == "ltca") return io::ltcaSchema();
+  if (command == "sweep") return io::sweepSchema();
+  throw InputError("command", command,
+                   "one of geometry, stiffness, simulate, stats, hbm, rotor, rotor_fe, spectrum, "
+                   "identify, ltca, sweep");
 }
 
 }  // namespace
@@ -26,7 +49,7 @@ void bindIo(py::module_& m) {
       "load_config",
       [](const std::string& command, const std::string& path,
          const std::vector<std::string>& overrides) {
-        const auto config = io::loadConfigFile(path, schemaOf(command), overrides);
+        const auto config = io::loadConfigFile(path, schemaOf(command, path), overrides);
         return py::module_::import("json").attr("loads")(config.resolved().dump());
       },
       py::arg("command"), py::arg("path"), py::arg("overrides") = std::vector<std::string>{},

@@ -14,6 +14,7 @@ void bindContact(py::module_& m);
 void bindIo(py::module_& m);
 void bindRotor(py::module_& m);
 void bindStiffness(py::module_& m);
+void bindFeRotor(py::module_& m);
 }  // namespace geardyn::python
 
 PYBIND11_MODULE(_geardyn, m) {
@@ -33,4 +34,5 @@ PYBIND11_MODULE(_geardyn, m) {
   geardyn::python::bindIo(m);
   geardyn::python::bindRotor(m);
   geardyn::python::bindStiffness(m);
+  geardyn::python::bindFeRotor(m);
 }

@@ -12,6 +12,8 @@ core lives in ``geardyn._geardyn``; this package re-exports it and adds helpers 
 
 from ._geardyn import (  # noqa: F401  (re-exported API)
     ConstantMeshStiffness,
+    FeGearedRotor,
+    FeTimeResponse,
     FourierMeshStiffness,
     Gear,
     GearGeometry,
@@ -34,6 +36,8 @@ from ._geardyn import (  # noqa: F401  (re-exported API)
     mesh_phase_from_roll_angle,
     roll_angle_from_mesh_phase,
 )
+
+from .run import Result, run, sweep, to_toml  # noqa: F401,E402
 
 MESH_STIFFNESS_MODELS = ("potential_energy", "api", "step", "fourier", "iso6336")
 

@@ -1,0 +1,195 @@
+/// Python bindings of the finite-element geared rotor (models/fe_geared_rotor.h), its Newmark
+/// response, modal analysis and Campbell diagram. The model is built from a `geardyn rotor`
+/// configuration file (with `[model] type = "fe_geared_rotor"`) and overrides with the same
+/// keys; SI units; numpy arrays out (the response matrices without copies: they are handed to
+/// numpy with the response as owner).
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/io/config.h"
+#include "geardyn/io/fe_rotor_io.h"
+#include "geardyn/solvers/fe_rotor_response.h"
+#include "geardyn/solvers/rotor_modal.h"
+
+namespace py = pybind11;
+
+namespace geardyn::python {
+namespace {
+
+constexpr double kRpm = std::numbers::pi / 30.0;
+
+/// A column-major Eigen matrix handed to numpy without a copy; `owner` keeps it alive.
+py::array matrixView(const Eigen::MatrixXd& m, py::handle owner) {
+  return py::array_t<double>({m.rows(), m.cols()},
+                             {static_cast<py::ssize_t>(sizeof(double)),
+                              static_cast<py::ssize_t>(sizeof(double) * m.rows())},
+                             m.data(), owner);
+}
+
+py::dict modeDict(const RotorMode& m) {
+  py::dict d;
+  d["frequency_hz"] = m.frequency;
+  d["damping_ratio"] = m.damping_ratio;
+  d["eigenvalue"] = m.eigenvalue;
+  d["whirl"] = m.whirl;
+  d["forward_fraction"] = m.forward_fraction;
+  d["lateral_fraction"] = m.lateral_fraction;
+  d["torsional_fraction"] = m.torsional_fraction;
+  d["axial_fraction"] = m.axial_fraction;
+  d["shape"] = py::array_t<std::complex<double>>(m.shape.size(), m.shape.data());
+  return d;
+}
+
+}  // namespace
+
+void bindFeRotor(py::module_& m) {
+  py::class_<FeTimeResponse, std::shared_ptr<FeTimeResponse>>(
+      m, "FeTimeResponse", "Newmark response of the FE geared rotor at the recorded channels.")
+      .def_readonly("t", &FeTimeResponse::t, "[s]")
+      .def_property_readonly(
+          "displacement",
+          [](py::object self) {
+            return matrixView(self.cast<const FeTimeResponse&>().displacement, self);
+          },
+          "samples × channels [m or rad] (a view, no copy)")
+      .def_property_readonly(
+          "velocity",
+          [](py::object self) {
+            return matrixView(self.cast<const FeTimeResponse&>().velocity, self);
+          },
+          "samples × channels [m/s or rad/s] (a view)")
+      .def_property_readonly(
+          "acceleration",
+          [](py::object self) {
+            return matrixView(self.cast<const FeTimeResponse&>().acceleration, self);
+          },
+          "samples × channels [m/s² or rad/s²] (a view)")
+      .def_readonly("speed", &FeTimeResponse::speed, "pinion speed [rad/s]")
+      .def_readonly("mesh_stiffness", &FeTimeResponse::mesh_stiffness, "k_m [N/m]")
+      .def_readonly("mesh_force", &FeTimeResponse::mesh_force, "[N]")
+      .def_readonly("channels", &FeTimeResponse::channels, "active DOF indices")
+      .def_readonly("steps", &FeTimeResponse::steps)
+      .def_readonly("factorisations", &FeTimeResponse::factorisations)
+      .def_readonly("message", &FeTimeResponse::message)
+      .def_property_readonly("status", [](const FeTimeResponse& r) { return toString(r.status); });
+
+  py::class_<FeGearedRotor, std::shared_ptr<FeGearedRotor>>(
+      m, "FeGearedRotor",
+      "The finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3): build it from a "
+      "`geardyn rotor` configuration with [model] type = \"fe_geared_rotor\".")
+      .def(py::init([](const std::string& config, const std::vector<std::string>& overrides,
+                       const std::string& stiffness) {
+             const auto c = io::loadConfigFile(config, io::feRotorSchema(), overrides);
+             return std::make_shared<FeGearedRotor>(io::feRotorSpecFromConfig(c, stiffness).spec);
+           }),
+           py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
+           py::arg("stiffness") = "",
+           "config: path of the TOML file; overrides: [\"key=value\", ...] as --set; stiffness: "
+           "a [mesh_stiffness] model name (default: mesh.stiffness)")
+      .def_property_readonly("dof_count", &FeGearedRotor::dofCount)
+      .def_property_readonly("dof_names",
+                             [](const FeGearedRotor& r) {
+                               std::vector<std::string> names;
+                               for (int i = 0; i < r.dofCount(); ++i) names.push_back(r.dofName(i));
+                               return names;
+                             })
+      .def("dof_index", &FeGearedRotor::dofIndex, py::arg("shaft"), py::arg("node"), py::arg("dof"),
+           "active index of (shaft 0/1, node, dof 0-5 = ux uy uz rx ry rz), -1 if removed")
+      .def_property_readonly("mass", &FeGearedRotor::mass, "M [kg, kg m, kg m²]")
+      .def_property_readonly("stiffness", &FeGearedRotor::stiffness, "K without the mesh")
+      .def_property_readonly("damping", &FeGearedRotor::damping, "C without gyroscopics")
+      .def_property_readonly("gyroscopic", &FeGearedRotor::gyroscopic,
+                             "G₁ per rad/s of pinion speed")
+      .def_property_readonly("mesh_vector", &FeGearedRotor::meshVector, "v = ∂δ/∂q")
+      .def_property_readonly("static_load", &FeGearedRotor::staticLoad, "F [N, N m]")
+      .def_property_readonly("mean_mesh_stiffness", &FeGearedRotor::meanMeshStiffness, "[N/m]")
+      .def(
+          "time_response",
+          [](const FeGearedRotor& r, double duration, double time_step,
+             std::vector<std::string> channels, bool start_from_static) {
+            FeTimeOptions o;
+            o.duration = duration;
+            o.time_step = time_step;
+            o.start_from_static = start_from_static;
+            for (const auto& name : channels) {
+              int found = -1;
+              for (int i = 0; i < r.dofCount(); ++i)
+                if (r.dofName(i) == name) found = i;
+              if (found < 0) throw InputError("channels", name, "a name of dof_names");
+              o.channels.push_back(found);
+            }
+            auto response = std::make_shared<FeTimeResponse>();
+            {
+              py::gil_scoped_release release;
+              *response = solveFeRotorTimeResponse(r, o);
+            }
+            return response;
+          },
+          py::kw_only(), py::arg("duration") = 0.5, py::arg("time_step") = 1e-5,
+          py::arg("channels") = std::vector<std::string>{}, py::arg("start_from_static") = false,
+          "Newmark (γ = 1/2, β = 1/4) over `duration` [s] with step `time_step` [s] at the "
+          "configured speed profile; channels: DOF names (default all).")
+      .def(
+          "modal",
+          [](const FeGearedRotor& r, double speed_rpm, int modes) {
+            ModalOptions o;
+            o.modes = modes;
+            py::list out;
+            for (const auto& mode : modalAnalysis(r, speed_rpm * kRpm, o))
+              out.append(modeDict(mode));
+            return out;
+          },
+          py::arg("speed_rpm"), py::arg("modes") = 12,
+          "Damped modes at a pinion speed [rpm], ascending: frequency_hz, damping_ratio, whirl, "
+          "energy fractions, complex shape.")
+      .def(
+          "campbell",
+          [](const FeGearedRotor& r, const std::vector<double>& speeds_rpm, int modes) {
+            std::vector<double> speeds;
+            for (double s : speeds_rpm) speeds.push_back(s * kRpm);
+            ModalOptions o;
+            o.modes = modes;
+            const CampbellDiagram d = campbellDiagram(r, speeds, o, standardOrderLines(r));
+            py::array_t<double> freq(
+                {static_cast<py::ssize_t>(speeds.size()), static_cast<py::ssize_t>(modes)});
+            std::vector<std::vector<std::string>> whirl(speeds.size());
+            auto f = freq.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < speeds.size(); ++i) {
+              for (int j = 0; j < modes; ++j) {
+                const bool have = j < static_cast<int>(d.modes[i].size());
+                f(i, j) = have ? d.modes[i][j].frequency : std::nan("");
+                whirl[i].push_back(have ? d.modes[i][j].whirl : "");
+              }
+            }
+            py::list critical, lines;
+            for (const auto& c : d.critical_speeds) {
+              py::dict x;
+              x["mode"] = c.mode;
+              x["line"] = c.line;
+              x["speed_rpm"] = c.speed / kRpm;
+              x["frequency_hz"] = c.frequency;
+              x["whirl"] = c.whirl;
+              critical.append(x);
+            }
+            for (const auto& l : d.lines) lines.append(py::make_tuple(l.name, l.order));
+            py::dict out;
+            out["speeds_rpm"] = speeds_rpm;
+            out["frequency_hz"] = freq;
+            out["whirl"] = whirl;
+            out["lines"] = lines;
+            out["critical_speeds"] = critical;
+            return out;
+          },
+          py::arg("speeds_rpm"), py::arg("modes") = 8,
+          "Campbell diagram: tracked modes over pinion speeds [rpm] (frequency_hz: speeds × "
+          "modes), the order lines and the critical speeds.");
+}
+
+}  // namespace geardyn::python

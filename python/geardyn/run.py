@@ -1,0 +1,176 @@
+"""Every analysis command from Python: ``geardyn.run(command, config)``.
+
+``config`` is a TOML file or a nested dict with the configuration keys of the command (the same
+names as in the files and ``geardyn schema COMMAND``). The run goes through the ``geardyn``
+executable, so it is exactly the command-line analysis, with its validation, result files and
+plots. Bad input raises ``ValueError`` (with the key, value and allowed range); a numerical
+failure raises ``RuntimeError`` unless ``check=False``, with the result attached.
+
+>>> import geardyn
+>>> result = geardyn.run("stiffness", "examples/stiffness_visnadi2021_spur.toml",
+...                      overrides={"mesh_stiffness.models": ["api"]})      # doctest: +SKIP
+>>> result.results["mesh_stiffness"]["mean"]                                # doctest: +SKIP
+241140000.0
+"""
+
+import csv
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import tempfile
+
+import numpy as np
+
+__all__ = ["Result", "run", "sweep", "cli_path", "to_toml"]
+
+
+def cli_path():
+    """The geardyn executable: $GEARDYN_CLI, the build tree beside this package
+    (build/python/geardyn -> build/bin/geardyn), or `geardyn` on PATH."""
+    override = os.environ.get("GEARDYN_CLI")
+    if override:
+        return override
+    beside = pathlib.Path(__file__).resolve().parents[2] / "bin" / "geardyn"
+    if beside.exists():
+        return str(beside)
+    found = shutil.which("geardyn")
+    if found:
+        return found
+    raise FileNotFoundError("the geardyn executable: set GEARDYN_CLI or build the project")
+
+
+def _toml_value(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        text = repr(float(value))
+        return text if any(c in text for c in ".eEn") else text + ".0"
+    if isinstance(value, str):
+        return json.dumps(value)  # a TOML basic string is a JSON string
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{json.dumps(str(k))} = {_toml_value(v)}" for k, v in value.items()) + " }"
+    raise ValueError(f"{value!r}: cannot be written as a TOML value")
+
+
+def to_toml(config):
+    """A nested dict of configuration sections as TOML text (None values are left out).
+    Tables whose keys contain dots (sweep parameters) are written with quoted keys."""
+    lines = []
+
+    def section(path, table):
+        scalars = {k: v for k, v in table.items() if not isinstance(v, dict) or "." in k
+                   or (isinstance(v, dict) and path.endswith("parameters"))}
+        tables = {k: v for k, v in table.items() if k not in scalars}
+        if path and scalars:
+            lines.append(f"[{path}]")
+        for k, v in scalars.items():
+            if v is not None:
+                key = json.dumps(k) if "." in k else k
+                lines.append(f"{key} = {_toml_value(v)}")
+        for k, v in tables.items():
+            section(f"{path}.{k}" if path else k, v)
+
+    section("", config)
+    return "\n".join(lines) + "\n"
+
+
+class Result:
+    """A finished run: its folder, summary (dict), results (dict) and tables (CSV files as
+    {column: numpy array}, read on first access)."""
+
+    def __init__(self, folder, returncode, stdout, stderr):
+        self.folder = pathlib.Path(folder)
+        self.returncode = returncode
+        self.stdout = stdout
+        self.stderr = stderr
+        summary_path = self.folder / "summary.json"
+        self.summary = json.loads(summary_path.read_text()) if summary_path.exists() else {}
+        self.results = self.summary.get("results", {})
+        self.status = self.summary.get("status")
+        self._tables = {}
+
+    @property
+    def files(self):
+        return self.summary.get("files", [])
+
+    def table(self, name):
+        """A CSV result file as {column: numpy array} (numbers as float arrays, text as str)."""
+        if name not in self._tables:
+            path = self.folder / (name if name.endswith(".csv") else name + ".csv")
+            with open(path, newline="") as handle:
+                rows = list(csv.DictReader(handle))
+            columns = {}
+            for column in (rows[0].keys() if rows else []):
+                values = [r[column] for r in rows]
+                try:
+                    columns[column] = np.array([float(v) for v in values])
+                except ValueError:
+                    columns[column] = np.array(values)
+            self._tables[name] = columns
+        return self._tables[name]
+
+    def __repr__(self):
+        return f"Result(folder={str(self.folder)!r}, status={self.status!r})"
+
+
+def run(command, config, out=None, overrides=None, threads=None, check=True, plots=None,
+        resume=False, timeout=None):
+    """Runs `geardyn COMMAND` on a configuration file or dict and returns a Result.
+
+    - ``overrides``: {"section.key": value} or ["section.key=value", ...] (as --set).
+    - ``out``: the result folder (default: a new temporary folder).
+    - ``plots``: True/False to force output.plots.
+    - ``threads``: worker threads (default: all cores).
+    Raises ValueError for bad input (exit code 2), RuntimeError for a numerical failure (exit
+    code 1, unless check=False) and OSError for I/O errors (3)."""
+    work = None
+    if isinstance(config, dict):
+        work = tempfile.mkdtemp(prefix="geardyn-")
+        path = pathlib.Path(work) / "config.toml"
+        path.write_text(to_toml(config))
+    else:
+        path = pathlib.Path(config)
+    if out is None:
+        out = tempfile.mkdtemp(prefix=f"geardyn-{command}-")
+    args = [cli_path(), command, str(path), "--out", str(out), "--quiet"]
+    sets = []
+    if isinstance(overrides, dict):
+        sets = [f"{k}={_toml_value(v)}" for k, v in overrides.items()]
+    elif overrides:
+        sets = list(overrides)
+    if plots is not None:
+        sets.append(f"output.plots={'true' if plots else 'false'}")
+    for s in sets:
+        args += ["--set", s]
+    if threads:
+        args += ["--threads", str(int(threads))]
+    if resume:
+        args.append("--resume")
+    done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+    if work:
+        shutil.rmtree(work, ignore_errors=True)
+    message = done.stderr.strip().splitlines()[-1] if done.stderr.strip() else ""
+    if done.returncode == 2:
+        raise ValueError(message or f"geardyn {command}: bad input")
+    if done.returncode in (3,):
+        raise OSError(message)
+    if done.returncode == 4:
+        raise RuntimeError(message)
+    result = Result(out, done.returncode, done.stdout, done.stderr)
+    if done.returncode == 1 and check:
+        error = RuntimeError(f"geardyn {command}: {result.status}: {message}")
+        error.result = result
+        raise error
+    return result
+
+
+def sweep(study, out=None, threads=None, resume=False, check=True, plots=None):
+    """`geardyn sweep`: ``study`` is a sweep file or a dict {"study": {...}} (see
+    docs/config/sweep.md); returns a Result whose ``table("sweep")`` has one row per case."""
+    return run("sweep", study, out=out, threads=threads, resume=resume, check=check, plots=plots)
