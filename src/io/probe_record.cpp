@@ -15,6 +15,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
 #include "geardyn/io/csv_reader.h"
+#include "geardyn/io/hdf5_lock.h"
 
 namespace geardyn::io {
 namespace {
@@ -222,6 +223,7 @@ std::vector<double> readDataset(hid_t file, const std::string& name, const fs::p
 }
 
 ProbeRecord readHdf5(const fs::path& path, const RecordReadOptions& o) {
+  const std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   if (H5Fis_hdf5(path.c_str()) <= 0) bad(o, path, "is not an HDF5 file (or is truncated)");
   H5Handle file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
@@ -297,6 +299,7 @@ std::string wavBytes(const ProbeRecord& r) {
 }
 
 void writeHdf5(const fs::path& path, const ProbeRecord& r) {
+  const std::lock_guard<std::mutex> lock(hdf5Mutex());
   static std::atomic<int> counter{0};
   fs::create_directories(path.parent_path().empty() ? fs::path(".") : path.parent_path());
   const fs::path temp = path.parent_path() / fmt::format(".{}.tmp-{}-{}", path.filename().string(),

@@ -17,6 +17,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/io/did_you_mean.h"
+#include "geardyn/io/hdf5_lock.h"
 #include "geardyn/version.h"
 
 namespace geardyn::io {
@@ -529,6 +530,7 @@ void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
   static std::atomic<int> counter{0};
   const fs::path temp = path.parent_path() / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
                                                          ::getpid(), counter++);
+  const std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   try {
     H5 file{H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
