@@ -224,6 +224,8 @@ int runSweep(const CommandOptions& options) {
   if (!root) return kExitOk;
 
   const double elapsed = progress.elapsed();
+  std::error_code ec;
+  if (fs::is_empty(cases_dir, ec)) fs::remove(cases_dir, ec);  // nothing kept
   io::ResultWriter writer(folder);
   // The journal is not listed among the summary's files: a later run's ResultWriter removes
   // listed files, and the journal must survive for --resume.

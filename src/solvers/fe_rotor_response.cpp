@@ -165,6 +165,7 @@ FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const FeTime
   record();
   for (long long s = 1; s <= steps; ++s) {
     stepper.step();
+    r.steps = s;
     if (s % options.record_every == 0) {
       if (!std::isfinite(stepper.displacement().squaredNorm())) {
         r.status = FeTimeStatus::kDiverged;
@@ -173,7 +174,6 @@ FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const FeTime
       }
       record();
     }
-    r.steps = s;
   }
   r.displacement.conservativeResize(row, nc);
   r.velocity.conservativeResize(row, nc);
