@@ -37,6 +37,13 @@ struct CommandOptions {
 
 /// One subcommand: its name, one-line help, configuration schema and what it runs.
 struct Command {
+  Command(std::string name_, std::string help_, std::function<io::ConfigSchema()> schema_,
+          std::function<int(const io::Config&, const CommandOptions&)> run_)
+      : name(std::move(name_)),
+        help(std::move(help_)),
+        schema(std::move(schema_)),
+        run(std::move(run_)) {}
+
   std::string name;
   std::string help;
   std::function<io::ConfigSchema()> schema;

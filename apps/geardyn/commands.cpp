@@ -33,17 +33,21 @@ std::vector<Command> allCommands() {
       "frequency domain, full spectra, probe records, study) or, with [model] type = "
       "\"fe_geared_rotor\", the finite-element two-shaft rotor of Visnadi 2021 (Newmark, run-up, "
       "modal, Campbell, mesh-stiffness comparison)",
-      io::rotorSchema,
-      [](const io::Config& config, const CommandOptions& options) {
+      io::rotorSchema, [](const io::Config& config, const CommandOptions& options) {
         return config.resolved().contains("model") ? runFeRotor(config, options)
                                                    : runRotor(config, options);
-      },
-      [](const std::filesystem::path& file) {
-        return io::peekConfigString(file, "model.type") == "fe_geared_rotor" ? io::feRotorSchema()
-                                                                             : io::rotorSchema();
-      },
-      nullptr,
-      {io::feRotorSchema}};
+      }};
+  rotor.schema_for_file = [](const std::filesystem::path& file) {
+    return io::peekConfigString(file, "model.type") == "fe_geared_rotor" ? io::feRotorSchema()
+                                                                         : io::rotorSchema();
+  };
+  rotor.variant_schemas = {io::feRotorSchema};
+  Command sweep{"sweep",
+                "any analysis over a grid or random sample of its configuration keys, on all "
+                "cores or across machines (mpirun -n N geardyn sweep ...), resumable "
+                "(--resume), gathered into sweep.h5 and sweep.csv",
+                io::sweepSchema, nullptr};
+  sweep.run_file = runSweep;
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
        io::geometrySchema, runGeometry},
@@ -76,15 +80,7 @@ std::vector<Command> allCommands() {
        "loaded tooth contact analysis with flank modifications: loaded STE, load sharing, "
        "secant/tangent stiffness, Harris map, Gelman statistics against load",
        io::ltcaSchema, runLtca},
-      {"sweep",
-       "any analysis over a grid or random sample of its configuration keys, on all cores or "
-       "across machines (mpirun -n N geardyn sweep ...), resumable (--resume), gathered into "
-       "sweep.h5 and sweep.csv",
-       io::sweepSchema,
-       nullptr,
-       nullptr,
-       runSweep,
-       {}},
+      sweep,
   };
 }
 

@@ -235,8 +235,8 @@ void runUpOutputs(const io::Config& config, const FeGearedRotor& model, const Fe
       predicted.size());
 }
 
-int runTime(const io::Config& config, const CommandOptions& options, io::RunSummary& summary,
-            io::ResultWriter& writer, std::string& text) {
+int runTime(const io::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+            std::string& text) {
   const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
@@ -503,7 +503,7 @@ int runFeRotor(const io::Config& config, const CommandOptions& options) {
   const std::string analysis = config.string("analysis.type");
   std::string text = fmt::format("finite-element geared rotor: {} analysis\n", analysis);
   int code = kExitOk;
-  if (analysis == "time") code = runTime(config, options, summary, writer, text);
+  if (analysis == "time") code = runTime(config, summary, writer, text);
   if (analysis == "modal") code = runModal(config, summary, writer, text);
   if (analysis == "campbell") code = runCampbell(config, summary, writer, text);
   if (analysis == "compare_stiffness") code = runCompare(config, options, summary, writer, text);
