@@ -27,9 +27,7 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view content
   std::filesystem::create_directories(folder, ec);
   if (ec) fail(folder, "create folder", ec.value());
 
-  const std::filesystem::path temporary =
-      folder / fmt::format(".{}.tmp-{}-{}", path.filename().string(), ::getpid(),
-                           temporary_counter.fetch_add(1));
+  const std::filesystem::path temporary = temporaryPathFor(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(temporary, "create", errno);
 
@@ -52,6 +50,16 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view content
     ::unlink(temporary.c_str());
     fail(temporary, "flush", error);
   }
+  commitTemporary(temporary, path);
+}
+
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+  return folder / fmt::format(".{}.tmp-{}-{}", path.filename().string(), ::getpid(),
+                              temporary_counter.fetch_add(1));
+}
+
+void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path) {
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     const int error = errno;
     ::unlink(temporary.c_str());

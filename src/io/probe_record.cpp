@@ -300,10 +300,8 @@ std::string wavBytes(const ProbeRecord& r) {
 
 void writeHdf5(const fs::path& path, const ProbeRecord& r) {
   const std::lock_guard<std::mutex> lock(hdf5Mutex());
-  static std::atomic<int> counter{0};
   fs::create_directories(path.parent_path().empty() ? fs::path(".") : path.parent_path());
-  const fs::path temp = path.parent_path() / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
-                                                         ::getpid(), counter++);
+  const fs::path temp = temporaryPathFor(path);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   {
     H5Handle file{H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
@@ -328,13 +326,7 @@ void writeHdf5(const fs::path& path, const ProbeRecord& r) {
       throw IoError(fmt::format("cannot write {}", temp.string()));
     }
   }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    fs::remove(temp);
-    throw IoError(
-        fmt::format("cannot rename {} to {}: {}", temp.string(), path.string(), ec.message()));
-  }
+  commitTemporary(temp, path);
 }
 
 }  // namespace

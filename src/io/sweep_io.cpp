@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "geardyn/error.h"
+#include "geardyn/io/atomic_file.h"
 #include "geardyn/io/did_you_mean.h"
 #include "geardyn/io/hdf5_lock.h"
 #include "geardyn/version.h"
@@ -408,13 +409,7 @@ SweepJournal::SweepJournal(const fs::path& path, const std::string& fingerprint,
     }
   }
   // Rewrite the journal with the kept lines (atomically), then append to it.
-  const fs::path temp = path.parent_path() / (path.filename().string() + ".tmp");
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << kept;
-    if (!out) throw IoError("cannot write " + temp.string());
-  }
-  fs::rename(temp, path);
+  writeFileAtomic(path, kept);
   fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND);
   if (fd_ < 0) throw IoError("cannot open " + path.string());
 }
@@ -527,9 +522,7 @@ void writeAttribute(hid_t object, const char* name, const std::string& value) {
 
 void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
                     const std::vector<SweepCaseRecord>& records, const std::string& base_config) {
-  static std::atomic<int> counter{0};
-  const fs::path temp = path.parent_path() / fmt::format(".{}.tmp-{}-{}", path.filename().string(),
-                                                         ::getpid(), counter++);
+  const fs::path temp = temporaryPathFor(path);
   const std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   try {
@@ -572,13 +565,7 @@ void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
     fs::remove(temp);
     throw;
   }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    fs::remove(temp);
-    throw IoError(
-        fmt::format("cannot rename {} to {}: {}", temp.string(), path.string(), ec.message()));
-  }
+  commitTemporary(temp, path);
 }
 
 }  // namespace geardyn::io

@@ -13,4 +13,10 @@ namespace geardyn::io {
 /// result. Throws IoError naming the path and the system's reason.
 void writeFileAtomic(const std::filesystem::path& path, std::string_view content);
 
+/// For writers that need a file of their own (HDF5): a temporary path beside `path`, named as
+/// above; write it, then commitTemporary.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
+/// Renames `temporary` over `path`; on failure removes it and throws IoError.
+void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
 }  // namespace geardyn::io
