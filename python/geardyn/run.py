@@ -131,6 +131,10 @@ def run(command, config, out=None, overrides=None, threads=None, check=True, plo
     code 1, unless check=False) and OSError for I/O errors (3)."""
     work = None
     if isinstance(config, dict):
+        study = config.get("study")
+        if isinstance(study, dict) and "base" in study and not os.path.isabs(str(study["base"])):
+            # The file is written to a temporary folder: a relative base is relative to here.
+            config = dict(config, study=dict(study, base=os.path.abspath(str(study["base"]))))
         work = tempfile.mkdtemp(prefix="geardyn-")
         path = pathlib.Path(work) / "config.toml"
         path.write_text(to_toml(config))

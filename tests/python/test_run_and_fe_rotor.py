@@ -58,3 +58,13 @@ def test_fe_rotor_from_python():
     with pytest.raises(ValueError, match="time.outputs|pinion_shaft.gear_node"):
         geardyn.FeGearedRotor(str(EXAMPLES / "rotor_visnadi2021_time.toml"),
                               overrides=["pinion_shaft.gear_node=9"])
+
+
+def test_sweep_from_a_dict_with_a_relative_base(tmp_path, monkeypatch):
+    monkeypatch.chdir(EXAMPLES)
+    result = geardyn.sweep({"study": {"command": "simulate", "base": "simulate_gear_pair_backlash.toml",
+                                      "outputs": ["df=/dynamic_factor"],
+                                      "parameters": {"model.damping_ratio": [0.05, 0.1]}}},
+                           out=tmp_path / "s", plots=False)
+    assert list(result.table("sweep")["status"]) == ["ok", "ok"]
+    assert result.results["cases"] == 2
