@@ -254,7 +254,10 @@ int runTime(const io::Config& config, io::RunSummary& summary, io::ResultWriter&
   text += fmt::format("  {}\n", r.message);
   if (!r.converged()) return kExitNumericalFailure;
   const auto names = channelNames(model, r);
-  if (model.spec().speed.constant()) {
+  if (model.spec().speed.constant() && model.spec().speed.start == 0.0) {
+    summary.results["steady"] = nullptr;  // at rest: no mesh period, no harmonics
+    text += "  at rest (speed.rpm = 0): no mesh harmonics\n";
+  } else if (model.spec().speed.constant()) {
     const SteadyAnalysis a = analyseSteady(config, model, r);
     io::CsvTable harmonics({"channel", "order", "frequency_hz", "displacement", "acceleration"});
     addHarmonicRows(harmonics, "", names, a);
@@ -392,6 +395,9 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
   }
   if (!cases.front().model->spec().speed.constant()) {
     throw InputError("speed.end_rpm", "", "compare_stiffness runs at constant speed (no end_rpm)");
+  }
+  if (!(cases.front().model->spec().speed.start > 0.0)) {
+    throw InputError("speed.rpm", "0", "a speed > 0 rpm: the comparison is of mesh harmonics");
   }
   // The cases are independent: run them on the worker threads (options are read first, so that
   // configuration errors surface here, on the main thread).

@@ -85,6 +85,7 @@ def test_modal_analysis_lists_modes_and_shapes(tmp_path):
     ("pinion_shaft.element_lengths=[0.1, -0.1]", "pinion_shaft.element_lengths", "> 0"),
     ("model.axial=true", "pinion_shaft.bearings.kxx", "axial"),
     ("speed.end_rpm=800.0", "speed.end_rpm", "constant speed"),
+    ("speed.rpm=0.0", "speed.rpm", "speed > 0"),
 ])
 def test_bad_input_is_rejected_naming_the_key(tmp_path, override, key, fragment):
     config = EXAMPLES / "rotor_visnadi2021_compare_spur.toml"
@@ -101,3 +102,10 @@ def test_schema_depends_on_the_model_type(tmp_path):
     assert result.returncode == 2 and "damping" in result.stderr
     reference = run("schema", "rotor").stdout
     assert "`pinion_mass`" in reference and "one of \"fe_geared_rotor\"" in reference
+
+
+def test_time_analysis_at_rest_has_no_harmonics(tmp_path):
+    result = run("rotor", TIME, "--out", tmp_path, "--set", "output.plots=false",
+                 "--set", "speed.rpm=0.0", "--set", "time.duration=0.01")
+    assert result.returncode == 0, result.stderr
+    assert json.loads((tmp_path / "summary.json").read_text())["results"]["steady"] is None
