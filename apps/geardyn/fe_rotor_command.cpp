@@ -53,11 +53,16 @@ SteadyAnalysis analyseSteady(const io::Config& config, const FeGearedRotor& mode
   a.window = n * dt;
   const long long first = static_cast<long long>(r.t.size()) - n;
   double change = 0.0, scale = 0.0;
-  for (int c = 0; c < r.displacement.cols(); ++c) {
-    const Eigen::VectorXd q = r.displacement.col(c).segment(first, n);
-    const Eigen::VectorXd acc = r.acceleration.col(c).segment(first, n);
-    a.displacement.push_back(harmonicAmplitudes(q, fs, a.frequencies));
-    a.acceleration.push_back(harmonicAmplitudes(acc, fs, a.frequencies));
+  // One least-squares design for every channel, displacement and acceleration together.
+  const Eigen::Index channels = r.displacement.cols();
+  Eigen::MatrixXd window(n, 2 * channels);
+  window << r.displacement.middleRows(first, n), r.acceleration.middleRows(first, n);
+  const auto amplitudes = harmonicAmplitudesPerColumn(window, fs, a.frequencies);
+  a.displacement.assign(amplitudes.begin(), amplitudes.begin() + channels);
+  a.acceleration.assign(amplitudes.begin() + channels, amplitudes.end());
+  for (Eigen::Index c = 0; c < channels; ++c) {
+    const Eigen::VectorXd q = window.col(c);
+    const Eigen::VectorXd acc = window.col(channels + c);
     a.displacement_spectrum.push_back(amplitudeSpectrum(q, fs));
     a.acceleration_spectrum.push_back(amplitudeSpectrum(acc, fs));
     if (n > period) {
@@ -180,9 +185,13 @@ void runUpOutputs(const io::Config& config, const FeGearedRotor& model, const Fe
   io::CsvTable track_table({"channel", "t", "speed_rpm", "mesh_order_displacement",
                             "mesh_order_acceleration", "x1_displacement"});
   nlohmann::ordered_json peaks = nlohmann::ordered_json::object();
+  const Eigen::Index channels = r.displacement.cols();
+  Eigen::MatrixXd signals(r.displacement.rows(), 2 * channels);
+  signals << r.displacement, r.acceleration;
+  const std::vector<OrderTrack> tracks = trackOrdersPerColumn(signals, fs, r.speed, orders, window);
   for (std::size_t c = 0; c < names.size(); ++c) {
-    const OrderTrack disp = trackOrders(r.displacement.col(c), fs, r.speed, orders, window);
-    const OrderTrack acc = trackOrders(r.acceleration.col(c), fs, r.speed, orders, window);
+    const OrderTrack& disp = tracks[c];
+    const OrderTrack& acc = tracks[channels + c];
     double best = -1.0, best_speed = 0.0;
     for (std::size_t w = 0; w < disp.time.size(); ++w) {
       track_table.addRow({names[c], disp.time[w], disp.speed[w] / kRpm, disp.amplitude[0][w],

@@ -14,9 +14,10 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586;
 }
 
-std::vector<double> harmonicAmplitudes(const Eigen::Ref<const Eigen::VectorXd>& x,
-                                       double sample_rate, const std::vector<double>& frequencies) {
-  const Eigen::Index n = x.size();
+std::vector<std::vector<double>> harmonicAmplitudesPerColumn(
+    const Eigen::Ref<const Eigen::MatrixXd>& signals, double sample_rate,
+    const std::vector<double>& frequencies) {
+  const Eigen::Index n = signals.rows();
   const int m = static_cast<int>(frequencies.size());
   for (double f : frequencies) {
     if (!(f > 0.0) || !(f < sample_rate / 2))
@@ -40,10 +41,17 @@ std::vector<double> harmonicAmplitudes(const Eigen::Ref<const Eigen::VectorXd>& 
   if (qr.rank() < A.cols()) {
     throw InputError("frequencies", "", "distinct frequencies resolvable in the record");
   }
-  const Eigen::VectorXd c = qr.solve(x);
-  std::vector<double> amplitude(m);
-  for (int j = 0; j < m; ++j) amplitude[j] = std::hypot(c(1 + 2 * j), c(2 + 2 * j));
+  const Eigen::MatrixXd c = qr.solve(signals);
+  std::vector<std::vector<double>> amplitude(signals.cols(), std::vector<double>(m));
+  for (Eigen::Index col = 0; col < signals.cols(); ++col)
+    for (int j = 0; j < m; ++j)
+      amplitude[col][j] = std::hypot(c(1 + 2 * j, col), c(2 + 2 * j, col));
   return amplitude;
+}
+
+std::vector<double> harmonicAmplitudes(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                       double sample_rate, const std::vector<double>& frequencies) {
+  return harmonicAmplitudesPerColumn(x, sample_rate, frequencies).front();
 }
 
 AmplitudeSpectrum amplitudeSpectrum(const Eigen::Ref<const Eigen::VectorXd>& x,
@@ -60,20 +68,18 @@ AmplitudeSpectrum amplitudeSpectrum(const Eigen::Ref<const Eigen::VectorXd>& x,
   return s;
 }
 
-OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample_rate,
-                       const std::vector<double>& speed, const std::vector<double>& orders,
-                       int window) {
-  if (static_cast<Eigen::Index>(speed.size()) != x.size())
+std::vector<OrderTrack> trackOrdersPerColumn(const Eigen::Ref<const Eigen::MatrixXd>& signals,
+                                             double sample_rate, const std::vector<double>& speed,
+                                             const std::vector<double>& orders, int window) {
+  if (static_cast<Eigen::Index>(speed.size()) != signals.rows())
     throw InputError("speed", std::to_string(speed.size()), "one speed per sample");
   if (window < 8) throw InputError("window", std::to_string(window), "at least 8 samples");
-  OrderTrack track;
-  track.amplitude.resize(orders.size());
-  for (Eigen::Index start = 0; start + window <= x.size(); start += window) {
+  std::vector<OrderTrack> tracks(signals.cols());
+  for (auto& track : tracks) track.amplitude.resize(orders.size());
+  for (Eigen::Index start = 0; start + window <= signals.rows(); start += window) {
     double mean = 0.0;
     for (int k = 0; k < window; ++k) mean += speed[start + k];
     mean /= window;
-    track.time.push_back((start + 0.5 * window) / sample_rate);
-    track.speed.push_back(mean);
     std::vector<double> freqs;
     for (double o : orders) freqs.push_back(o * std::abs(mean) / kTwoPi);
     bool usable = true;
@@ -81,12 +87,24 @@ OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample
       if (!(freqs[i] > 0.0 && freqs[i] < sample_rate / 2)) usable = false;
       for (std::size_t j = 0; j < i; ++j) usable = usable && freqs[i] != freqs[j];
     }
-    const std::vector<double> a =
-        usable ? harmonicAmplitudes(x.segment(start, window), sample_rate, freqs)
-               : std::vector<double>(orders.size(), std::nan(""));
-    for (std::size_t o = 0; o < orders.size(); ++o) track.amplitude[o].push_back(a[o]);
+    // One design per window, solved for every signal.
+    const auto a =
+        usable ? harmonicAmplitudesPerColumn(signals.middleRows(start, window), sample_rate, freqs)
+               : std::vector<std::vector<double>>(signals.cols(),
+                                                  std::vector<double>(orders.size(), std::nan("")));
+    for (Eigen::Index c = 0; c < signals.cols(); ++c) {
+      tracks[c].time.push_back((start + 0.5 * window) / sample_rate);
+      tracks[c].speed.push_back(mean);
+      for (std::size_t o = 0; o < orders.size(); ++o) tracks[c].amplitude[o].push_back(a[c][o]);
+    }
   }
-  return track;
+  return tracks;
+}
+
+OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample_rate,
+                       const std::vector<double>& speed, const std::vector<double>& orders,
+                       int window) {
+  return trackOrdersPerColumn(x, sample_rate, speed, orders, window).front();
 }
 
 }  // namespace geardyn

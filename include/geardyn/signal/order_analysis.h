@@ -15,6 +15,11 @@ namespace geardyn {
 /// otherwise. Frequencies must be distinct, > 0 and below f_s/2 (InputError otherwise).
 std::vector<double> harmonicAmplitudes(const Eigen::Ref<const Eigen::VectorXd>& x,
                                        double sample_rate, const std::vector<double>& frequencies);
+/// The same for every column of `signals` (samples × channels), with the least-squares design
+/// factorised once: amplitudes[column][frequency].
+std::vector<std::vector<double>> harmonicAmplitudesPerColumn(
+    const Eigen::Ref<const Eigen::MatrixXd>& signals, double sample_rate,
+    const std::vector<double>& frequencies);
 
 /// One-sided amplitude spectrum: amplitude[0] = |mean|, amplitude[k] = 2|X_k|/N (0-peak of a
 /// sinusoid on a bin), frequencies k f_s/N up to f_s/2 (FFTW).
@@ -34,5 +39,9 @@ struct OrderTrack {
 OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample_rate,
                        const std::vector<double>& speed, const std::vector<double>& orders,
                        int window);
+/// The same for every column of `signals` (one design per window for all of them).
+std::vector<OrderTrack> trackOrdersPerColumn(const Eigen::Ref<const Eigen::MatrixXd>& signals,
+                                             double sample_rate, const std::vector<double>& speed,
+                                             const std::vector<double>& orders, int window);
 
 }  // namespace geardyn
