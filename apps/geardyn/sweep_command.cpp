@@ -36,8 +36,9 @@ const Command& findCommand(const std::vector<Command>& commands, const std::stri
 }
 
 /// Runs one case in-process into its own folder and reads its summary.
-io::SweepCaseRecord runCase(const Command& command, const io::SweepDefinition& study,
-                            long long index, const fs::path& cases_dir) {
+io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& schema,
+                            const io::SweepDefinition& study, long long index,
+                            const fs::path& cases_dir) {
   const StudyCase c = study.caseAt(index);
   io::SweepCaseRecord r;
   r.index = index;
@@ -52,8 +53,6 @@ io::SweepCaseRecord runCase(const Command& command, const io::SweepDefinition& s
   o.threads = 1;  // the sweep owns the cores
   o.quiet = true;
   try {
-    const auto schema =
-        command.schema_for_file ? command.schema_for_file(o.config_file) : command.schema();
     const auto config = io::loadConfigFile(o.config_file, schema, o.overrides);
     const int code = command.run(config, o);
     const auto summary = nlohmann::json::parse(std::ifstream(o.out_dir / "summary.json"));
@@ -208,7 +207,7 @@ int runSweep(const CommandOptions& options) {
         mpi ? fmt::format("{} MPI ranks", mpi->size()) : fmt::format("{} threads", threads));
   }
   const CaseFunction run_case = [&](long long index) {
-    return runCase(command, study, index, cases_dir);
+    return runCase(command, base_schema, study, index, cases_dir);
   };
   const DoneFunction done = [&](const io::SweepCaseRecord& r) {
     journal->append(r);
