@@ -75,4 +75,15 @@ void GearSpec::validate(const std::string& name) const {
   requireRange(key("density"), density, 0.0, true, kInf, true, "density [kg/m^3]");
 }
 
+GearBodyMass gearBodyMass(const GearSpec& g) {
+  const double r = 0.5 * g.teeth * g.normal_module / std::cos(g.helix_angle);
+  const double r_bore = 0.5 * g.bore_diameter;
+  const double b = g.face_width;
+  GearBodyMass out;
+  out.mass = g.density * std::numbers::pi * (r * r - r_bore * r_bore) * b;
+  out.polar_inertia = 0.5 * out.mass * (r * r + r_bore * r_bore);
+  out.diametral_inertia = out.mass * (3.0 * (r * r + r_bore * r_bore) + b * b) / 12.0;
+  return out;
+}
+
 }  // namespace geardyn

@@ -87,16 +87,6 @@ double toothThicknessAt(const MemberRadii& m, double alpha_t, double radius) {
   return 2.0 * radius * (m.s_t / (2.0 * m.r) + involute(alpha_t) - involute(alpha_y));
 }
 
-/// Solid disc of the reference diameter minus the bore (the teeth above and the tooth spaces
-/// below the reference circle roughly cancel). Mass [kg], polar and diametral inertia [kg m²].
-void fillMassProperties(const GearSpec& g, double r, GearGeometry& out) {
-  const double r_bore = 0.5 * g.bore_diameter;
-  const double b = g.face_width;
-  out.mass = g.density * kPi * (r * r - r_bore * r_bore) * b;
-  out.polar_inertia = 0.5 * out.mass * (r * r + r_bore * r_bore);
-  out.diametral_inertia = out.mass * (3.0 * (r * r + r_bore * r_bore) + b * b) / 12.0;
-}
-
 }  // namespace
 
 std::string toString(Driver driver) {
@@ -295,7 +285,10 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
           fmt::format("{}: tip thickness {} is below 0.2 m_n = {} (thin, pointed tip)", name,
                       mm(out.tip_thickness_normal), mm(kThinTipFraction * m_n)));
     }
-    fillMassProperties(g, m.r, out);
+    const GearBodyMass body = gearBodyMass(g);
+    out.mass = body.mass;
+    out.polar_inertia = body.polar_inertia;
+    out.diametral_inertia = body.diametral_inertia;
   };
   fill_member("pinion", g1, m1, r_w1, contact_begin, roll_form1, pinion_);
   fill_member("gear", g2, m2, r_w2, line_of_action_ - contact_end, roll_form2, gear_);

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -83,7 +85,8 @@ void Resolver::throwUnknownKey(const std::string& path, const std::string& locat
   const auto siblings = schema_.keyNamesIn(section);
   for (const auto& key : siblings) leaves.push_back(splitPath(key).back());
   for (const auto& sub : schema_.sections()) {
-    if (parentPath(sub.path) == section) leaves.push_back(splitPath(sub.path).back());
+    if (parentPath(sub.path) == schema_.patternOf(section) && splitPath(sub.path).back() != "*")
+      leaves.push_back(splitPath(sub.path).back());
   }
   std::string hint;
   if (auto match = closestMatch(leaf, leaves)) {
@@ -288,15 +291,19 @@ nlohmann::ordered_json Resolver::resolve(const toml::table& root) const {
   // Keys in schema order (sections appear where their first key is declared); sections with no
   // keys of their own still appear, as empty objects.
   nlohmann::ordered_json resolved = nlohmann::ordered_json::object();
-  for (const KeySpec& spec : schema_.keys()) {
+  const auto in_collection = [](const std::string& path) {
+    return path.find(".*") != std::string::npos;
+  };
+  // One key at a concrete path (`path` replaces the spec's pattern inside collections).
+  const auto resolve_key = [&](const KeySpec& spec, const std::string& path) {
     nlohmann::ordered_json value;
-    const toml::node* node = root.at_path(spec.path).node();
+    const toml::node* node = root.at_path(path).node();
     if (node) {
       value = convert(spec, *node);
     } else if (spec.required) {
-      const std::string section = spec.section();
+      const std::string section = parentPath(path);
       throw InputError(
-          spec.path, "",
+          path, "",
           fmt::format("missing required key: {} ({}){}", spec.description, spec.allowedText(),
                       section.empty()
                           ? ""
@@ -305,13 +312,44 @@ nlohmann::ordered_json Resolver::resolve(const toml::table& root) const {
       value = spec.default_value;
     }
     nlohmann::ordered_json* target = &resolved;
-    for (const auto& part : splitPath(spec.path)) target = &(*target)[part];
+    for (const auto& part : splitPath(path)) target = &(*target)[part];
     *target = std::move(value);
+  };
+  for (const KeySpec& spec : schema_.keys()) {
+    if (!in_collection(spec.path)) resolve_key(spec, spec.path);
   }
   for (const SectionSpec& section : schema_.sections()) {
+    if (in_collection(section.path)) continue;
     nlohmann::ordered_json* target = &resolved;
     for (const auto& part : splitPath(section.path)) target = &(*target)[part];
     if (target->is_null()) *target = nlohmann::ordered_json::object();
+  }
+  // Named tables of each collection, in the order of the file.
+  for (const std::string& collection : schema_.collections()) {
+    std::vector<std::pair<std::string, std::uint32_t>> instances;
+    if (const toml::table* table = root.at_path(collection).as_table()) {
+      for (const auto& [name, node] : *table) {
+        instances.emplace_back(std::string(name.str()), node.source().begin.line);
+      }
+    }
+    std::stable_sort(instances.begin(), instances.end(),
+                     [](const auto& a, const auto& b) { return a.second < b.second; });
+    const std::string prefix = collection + ".*";
+    for (const auto& [name, line] : instances) {
+      const std::string concrete = collection + "." + name;
+      for (const SectionSpec& section : schema_.sections()) {
+        if (section.path.rfind(prefix, 0) != 0) continue;
+        nlohmann::ordered_json* target = &resolved;
+        for (const auto& part : splitPath(concrete + section.path.substr(prefix.size())))
+          target = &(*target)[part];
+        if (target->is_null()) *target = nlohmann::ordered_json::object();
+      }
+      for (const KeySpec& spec : schema_.keys()) {
+        if (spec.path.rfind(prefix + ".", 0) == 0) {
+          resolve_key(spec, concrete + spec.path.substr(prefix.size()));
+        }
+      }
+    }
   }
   return resolved;
 }
@@ -353,6 +391,12 @@ std::vector<double> Config::realList(const std::string& path) const {
 std::vector<std::string> Config::stringList(const std::string& path) const {
   return at(path).get<std::vector<std::string>>();
 }
+std::vector<std::string> Config::names(const std::string& collection) const {
+  std::vector<std::string> out;
+  for (const auto& [name, value] : at(collection).items()) out.push_back(name);
+  return out;
+}
+
 std::optional<double> Config::optionalReal(const std::string& path) const {
   const auto& value = at(path);
   if (value.is_null()) return std::nullopt;

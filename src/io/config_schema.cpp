@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "geardyn/error.h"
 
 namespace geardyn::io {
@@ -172,24 +174,53 @@ KeyBuilder ConfigSchema::stringList(const std::string& path) {
   return add(path, ValueKind::kStringList);
 }
 
+void ConfigSchema::collection(const std::string& path, std::string description) {
+  section(path, std::move(description));
+  collections_.push_back(path);
+}
+
+bool ConfigSchema::isCollection(const std::string& path) const {
+  return std::find(collections_.begin(), collections_.end(), path) != collections_.end();
+}
+
+std::string ConfigSchema::patternOf(const std::string& path) const {
+  if (collections_.empty()) return path;
+  std::string pattern, rest = path;
+  while (!rest.empty()) {
+    const auto dot = rest.find('.');
+    const std::string part = rest.substr(0, dot);
+    rest = dot == std::string::npos ? std::string() : rest.substr(dot + 1);
+    pattern += (pattern.empty() ? "" : ".") + part;
+    if (isCollection(pattern) && !rest.empty()) {
+      const auto next = rest.find('.');
+      pattern += ".*";
+      rest = next == std::string::npos ? std::string() : rest.substr(next + 1);
+    }
+  }
+  return pattern;
+}
+
 const KeySpec* ConfigSchema::findKey(const std::string& path) const {
+  const std::string pattern = patternOf(path);
   for (const KeySpec& key : keys_) {
-    if (key.path == path) return &key;
+    if (key.path == pattern) return &key;
   }
   return nullptr;
 }
 
 const SectionSpec* ConfigSchema::findSection(const std::string& path) const {
+  const std::string pattern = patternOf(path);
   for (const SectionSpec& section : sections_) {
-    if (section.path == path) return &section;
+    if (section.path == pattern) return &section;
   }
   return nullptr;
 }
 
 std::vector<std::string> ConfigSchema::keyNamesIn(const std::string& section) const {
+  const std::string pattern = patternOf(section);
   std::vector<std::string> names;
   for (const KeySpec& key : keys_) {
-    if (key.section() == section) names.push_back(key.path);
+    if (key.section() == pattern) names.push_back(key.path);
   }
   return names;
 }
@@ -213,7 +244,10 @@ std::string ConfigSchema::referenceMarkdown() const {
                           key.description);
     }
     if (rows.empty()) return;
-    out += fmt::format("\n## {}\n\n", title);
+    std::string shown = title;
+    for (auto star = shown.find(".*"); star != std::string::npos; star = shown.find(".*"))
+      shown.replace(star, 2, ".<name>");
+    out += fmt::format("\n## {}\n\n", shown);
     if (!description.empty()) out += description + "\n\n";
     out += "| key | type | unit | default | allowed | description |\n";
     out += "|---|---|---|---|---|---|\n" + rows;

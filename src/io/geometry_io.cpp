@@ -11,6 +11,8 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
+}  // namespace
+
 void addGearSection(ConfigSchema& schema, const std::string& name, const std::string& role,
                     bool required) {
   schema.section(name, "The " + role + ": an external involute cylindrical gear.");
@@ -107,6 +109,8 @@ GearSpec gearSpecFromConfig(const Config& config, const std::string& name) {
   gear.density = config.real(key("density"));
   return gear;
 }
+
+namespace {
 
 nlohmann::ordered_json memberJson(const GearGeometry& g, int teeth) {
   nlohmann::ordered_json json;

@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "geardyn/error.h"
+#include "geardyn/solvers/detail/damped_modes.h"
+#include "geardyn/solvers/detail/mode_tracking.h"
 
 namespace geardyn {
 namespace {
@@ -54,10 +56,6 @@ void classify(const FeGearedRotor& model, RotorMode& mode) {
   }
 }
 
-double mac(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b) {
-  return std::norm(a.dot(b)) / (a.squaredNorm() * b.squaredNorm());
-}
-
 }  // namespace
 
 void ModalOptions::validate() const {
@@ -75,46 +73,20 @@ void ModalOptions::validate() const {
 std::vector<RotorMode> modalAnalysis(const FeGearedRotor& model, double pinion_speed,
                                      const ModalOptions& options) {
   options.validate();
-  const int n = model.dofCount();
   const double k = options.mesh_stiffness > 0 ? options.mesh_stiffness : model.meanMeshStiffness();
   const Eigen::VectorXd& v = model.meshVector();
   const Eigen::MatrixXd K = model.stiffness() + k * v * v.transpose();
   const Eigen::MatrixXd D = model.damping() + pinion_speed * model.gyroscopic();
-  // Balanced first-order form. With M = L Lᵀ and L⁻¹ K L⁻ᵀ = Φ diag(w²) Φᵀ (undamped modes,
-  // symmetric and accurate), z = Φᵀ Lᵀ q obeys z̈ + D̂ ż + diag(w²) z = 0, D̂ = Φᵀ L⁻¹ D L⁻ᵀ Φ,
-  // and the state [diag(w) z; ż] has the matrix [[0, diag(w)], [−diag(w), −D̂]], whose entries
-  // are all frequencies. (The textbook [[0, I], [−M⁻¹K, −M⁻¹D]] mixes 1 with ‖M⁻¹K‖ ~ 1e14
-  // for stiff bearings and loses the low modes to round-off: 0.25 % on the tilting-disk test.)
-  const Eigen::LLT<Eigen::MatrixXd> chol(model.mass());
-  const Eigen::MatrixXd Linv = chol.matrixL().solve(Eigen::MatrixXd::Identity(n, n));
-  const Eigen::MatrixXd Kt = Linv * K * Linv.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> undamped(0.5 * (Kt + Kt.transpose()));
-  const Eigen::MatrixXd& Phi = undamped.eigenvectors();
-  const Eigen::VectorXd w = undamped.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  const Eigen::MatrixXd Dh = Phi.transpose() * Linv * D * Linv.transpose() * Phi;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  A.topRightCorner(n, n) = w.asDiagonal();
-  A.bottomLeftCorner(n, n) = -Eigen::MatrixXd(w.asDiagonal());
-  A.bottomRightCorner(n, n) = -Dh;
-  Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
-  if (solver.info() != Eigen::Success) {
-    throw std::runtime_error("modal analysis: the eigenvalue solver did not converge");
-  }
-  const Eigen::MatrixXcd back = (Linv.transpose() * Phi).cast<std::complex<double>>();
   std::vector<RotorMode> modes;
-  for (int j = 0; j < 2 * n; ++j) {
-    const std::complex<double> lambda = solver.eigenvalues()(j);
-    if (lambda.imag() <= 0.0) continue;  // one of each conjugate pair; overdamped skipped
+  for (detail::DampedMode& found : detail::dampedModes(model.mass(), D, K)) {
+    const std::complex<double> lambda = found.eigenvalue;
     if (std::abs(lambda) / kTwoPi < options.rigid_frequency) continue;
     if (-lambda.real() / std::abs(lambda) > options.max_damping_ratio) continue;
     RotorMode mode;
     mode.eigenvalue = lambda;
     mode.frequency = lambda.imag() / kTwoPi;
     mode.damping_ratio = -lambda.real() / std::abs(lambda);
-    mode.shape = back * (solver.eigenvectors().col(j).tail(n) / lambda);  // z = ż / λ
-    Eigen::Index largest = 0;
-    mode.shape.cwiseAbs().maxCoeff(&largest);
-    mode.shape /= mode.shape(largest);
+    mode.shape = std::move(found.shape);
     classify(model, mode);
     modes.push_back(std::move(mode));
   }
@@ -150,44 +122,16 @@ CampbellDiagram campbellDiagram(const FeGearedRotor& model, const std::vector<do
       d.modes.push_back(std::move(found));
       continue;
     }
-    const std::vector<RotorMode>& previous = d.modes.back();
-    // All (track, candidate) pairs by descending MAC; greedy assignment.
-    struct Pair {
-      double mac;
-      std::size_t track, candidate;
-    };
-    std::vector<Pair> pairs;
-    for (std::size_t a = 0; a < previous.size(); ++a)
-      for (std::size_t b = 0; b < found.size(); ++b)
-        pairs.push_back({mac(previous[a].shape, found[b].shape), a, b});
-    std::sort(pairs.begin(), pairs.end(),
-              [](const Pair& x, const Pair& y) { return x.mac > y.mac; });
-    std::vector<int> assigned(previous.size(), -1);
-    std::vector<bool> taken(found.size(), false);
-    for (const Pair& p : pairs) {
-      if (assigned[p.track] >= 0 || taken[p.candidate]) continue;
-      assigned[p.track] = static_cast<int>(p.candidate);
-      taken[p.candidate] = true;
-    }
-    std::vector<RotorMode> tracked;
-    for (std::size_t a = 0; a < previous.size(); ++a) {
-      tracked.push_back(assigned[a] >= 0 ? found[assigned[a]] : previous[a]);
-    }
+    std::vector<RotorMode> tracked = detail::trackByMac(d.modes.back(), found);
     d.modes.push_back(std::move(tracked));
   }
-  for (std::size_t j = 0; j < d.modes.front().size(); ++j) {
-    for (const OrderLine& line : lines) {
-      for (std::size_t i = 1; i < speeds.size(); ++i) {
-        const double g0 = d.modes[i - 1][j].frequency - line.order * speeds[i - 1] / kTwoPi;
-        const double g1 = d.modes[i][j].frequency - line.order * speeds[i] / kTwoPi;
-        if (g0 == 0.0 || g0 * g1 >= 0.0) continue;
-        const double s = g0 / (g0 - g1);
-        const double speed = speeds[i - 1] + s * (speeds[i] - speeds[i - 1]);
-        d.critical_speeds.push_back({static_cast<int>(j), line.name, speed,
-                                     line.order * speed / kTwoPi,
-                                     (s < 0.5 ? d.modes[i - 1][j] : d.modes[i][j]).whirl});
-      }
-    }
+  for (const OrderLine& line : lines) {
+    detail::findCrossings(
+        d.speeds, d.modes, line.order / kTwoPi,
+        [&](std::size_t j, std::size_t i, double speed, double f, double s) {
+          d.critical_speeds.push_back({static_cast<int>(j), line.name, speed, f,
+                                       (s < 0.5 ? d.modes[i - 1][j] : d.modes[i][j]).whirl});
+        });
   }
   std::sort(d.critical_speeds.begin(), d.critical_speeds.end(),
             [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });

@@ -37,4 +37,14 @@ struct GearSpec {
   void validate(const std::string& name) const;
 };
 
+/// Mass properties of a gear body: a solid disc of the reference diameter minus the bore (the
+/// teeth above and the tooth spaces below the reference circle roughly cancel).
+struct GearBodyMass {
+  double mass = 0.0;               ///< [kg]
+  double polar_inertia = 0.0;      ///< about the axis [kg m²]
+  double diametral_inertia = 0.0;  ///< about a diameter through the centre [kg m²]
+};
+/// For the reference radius r = z m_n / (2 cos β) of `gear`.
+GearBodyMass gearBodyMass(const GearSpec& gear);
+
 }  // namespace geardyn

@@ -36,6 +36,8 @@ class Config {
   std::vector<double> realList(const std::string& path) const;
   std::vector<std::string> stringList(const std::string& path) const;
   std::optional<double> optionalReal(const std::string& path) const;
+  /// The instance names of a collection (ConfigSchema::collection), in the file's order.
+  std::vector<std::string> names(const std::string& collection) const;
 
  private:
   const nlohmann::ordered_json& at(const std::string& path) const;

@@ -70,6 +70,16 @@ class ConfigSchema {
 
   /// Declares a section; keys may only be added to declared sections (or the top level).
   void section(std::string path, std::string description);
+  /// Declares a collection of named tables, `[path.<name>]` (e.g. `[shafts.input]`): declare
+  /// the item next as the section "path.*", and its keys and sub-sections under it (e.g.
+  /// "shafts.*.mass"); they apply to every instance, kept in the order of the file.
+  void collection(const std::string& path, std::string description);
+  /// Whether `path` is a declared collection.
+  bool isCollection(const std::string& path) const;
+  const std::vector<std::string>& collections() const noexcept { return collections_; }
+  /// The declared pattern of a concrete path: "shafts.input.mass" → "shafts.*.mass" (the path
+  /// itself when no collection is involved).
+  std::string patternOf(const std::string& path) const;
 
   KeyBuilder integer(const std::string& path);
   KeyBuilder real(const std::string& path);
@@ -82,6 +92,7 @@ class ConfigSchema {
   const std::string& description() const noexcept { return description_; }
   const std::deque<KeySpec>& keys() const noexcept { return keys_; }
   const std::vector<SectionSpec>& sections() const noexcept { return sections_; }
+  /// The key or section at a path (concrete collection paths are matched to their pattern).
   const KeySpec* findKey(const std::string& path) const;
   const SectionSpec* findSection(const std::string& path) const;
   /// Full paths of the keys in a section (for suggestions).
@@ -96,6 +107,7 @@ class ConfigSchema {
   std::string command_;
   std::string description_;
   std::vector<SectionSpec> sections_;
+  std::vector<std::string> collections_;
   std::deque<KeySpec> keys_;  // declaration order; a deque keeps KeyBuilder pointers valid
 };
 

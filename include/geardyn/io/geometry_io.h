@@ -18,6 +18,15 @@ namespace geardyn::io {
 /// for some choices); hasGearPair then says whether one was given.
 void addGearPairSections(ConfigSchema& schema, bool required = true);
 
+/// Adds the keys of one gear ([pinion], [gear], or a collection item such as "gears.*"):
+/// teeth, module, pressure_angle_deg, helix_angle_deg, face_width, profile shift, rack,
+/// bore and material. Without `required` the keys without a default are optional.
+void addGearSection(ConfigSchema& schema, const std::string& name, const std::string& role,
+                    bool required);
+/// The gear at a section of a configuration (InputError naming the key when teeth, module or
+/// face_width is missing).
+GearSpec gearSpecFromConfig(const Config& config, const std::string& name);
+
 /// Whether a configuration describes a gear pair (pinion.teeth given).
 bool hasGearPair(const Config& config);
 

@@ -1,0 +1,77 @@
+#pragma once
+/// \file
+/// Modal analysis of a gear train at an input speed: the damped complex modes of
+///   M q̈ + (C + Ω G₁) q̇ + (K + Ω² K_Ω + Σ k̄_m v_m v_mᵀ) q = 0,
+/// or, when the model has no damping and no speed-dependent terms at Ω, the real modes of the
+/// symmetric problem K φ = ω² M φ (exact multiplicities: Lin & Parker's degenerate pairs stay
+/// degenerate to round-off). Each mode carries the strain-energy fraction of every mesh and
+/// element, the kinetic-energy fraction of every body, and, for each planetary stage, its type
+/// after Lin & Parker (1999): rotational, translational or planet mode. The Campbell diagram
+/// tracks modes over speeds by MAC and finds where shaft and mesh orders cross them.
+
+#include <Eigen/Dense>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+
+struct TrainMode {
+  std::complex<double> eigenvalue;            ///< λ [1/s]
+  double frequency = 0.0;                     ///< Im λ / 2π, or ω / 2π for real modes [Hz]
+  double damping_ratio = 0.0;                 ///< −Re λ / |λ| [-]
+  Eigen::VectorXcd shape;                     ///< displacement, largest entry 1
+  std::vector<double> body_kinetic_energy;    ///< fraction per body [-], sums to 1
+  std::vector<double> mesh_strain_energy;     ///< fraction per mesh (of the total) [-]
+  std::vector<double> element_strain_energy;  ///< fraction per element [-]
+  double translational_fraction = 0.0;        ///< kinetic energy in translations [-]
+  /// Per planetary stage: "rotational", "translational", "planet" or "mixed" (Lin & Parker
+  /// 1999 §3), judged from the central members' kinetic energy; "" for trains without stages.
+  std::vector<std::string> stage_type;
+  int multiplicity = 1;  ///< modes within 1e-6 relative of this frequency (itself included)
+};
+
+struct TrainModalOptions {
+  int modes = 0;  ///< lowest modes returned; 0: all
+  /// Eigenvalues with |λ|/2π below this are rigid-body modes [Hz]; < 0: derived from the
+  /// model (1e-6 × the largest natural frequency).
+  double rigid_frequency = -1.0;
+  bool keep_rigid = true;  ///< return rigid-body modes (0 Hz) too
+  void validate() const;
+};
+
+/// Modes at input speed Ω [rad/s], ascending in frequency.
+std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_speed,
+                                  const TrainModalOptions& options = {});
+
+/// An order line of the Campbell diagram: frequency = slope × |Ω| [Hz per rad/s].
+struct TrainOrderLine {
+  std::string name;  ///< "1x input", "mesh stage1", "2x mesh stage1"
+  double slope = 0.0;
+};
+/// 1× every shaft and planet set that turns, and harmonics 1..mesh_harmonics of every distinct
+/// mesh frequency.
+std::vector<TrainOrderLine> trainOrderLines(const GearTrainModel& model, int mesh_harmonics);
+
+struct TrainCriticalSpeed {
+  int mode = 0;            ///< tracked mode index
+  std::string line;        ///< order line name
+  double speed = 0.0;      ///< input speed [rad/s]
+  double frequency = 0.0;  ///< [Hz]
+};
+
+struct TrainCampbell {
+  std::vector<double> speeds;                 ///< input speeds [rad/s]
+  std::vector<std::vector<TrainMode>> modes;  ///< modes[i][j]: tracked mode j at speed i
+  std::vector<TrainOrderLine> lines;
+  std::vector<TrainCriticalSpeed> critical_speeds;  ///< ascending in speed
+};
+
+/// Modes over ascending speeds, tracked by the MAC of neighbouring speeds' shapes.
+TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<double>& speeds,
+                            const TrainModalOptions& options,
+                            const std::vector<TrainOrderLine>& lines);
+
+}  // namespace geardyn

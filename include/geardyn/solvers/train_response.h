@@ -1,0 +1,97 @@
+#pragma once
+/// \file
+/// Static and periodic steady-state response of a gear train at a constant input speed.
+///
+/// Statics: (K + Ω² K_Ω + Σ k̄ v vᵀ) q = F₀ + Σ k̄ ē v, solved for the minimum-norm q when the
+/// train has rigid-body modes (the loads are balanced: lossless torques), with the residual
+/// checked; mesh forces, bearing forces, coupling torques and planet load sharing.
+///
+/// Steady state: the exact periodic solution of the linear time-periodic equations of
+/// gear_train_model.h by harmonic balance over the train's common period. Every mesh
+/// frequency is an integer multiple P_m of a base frequency f₀ (the greatest common divisor of
+/// the mesh frequencies, from the tooth counts); with q(t) = Σ_{|h|≤H} X_h e^{i h ω₀ t},
+///
+///   [K + Ω²K_Ω + i h ω₀ (C + ΩG₁) − h²ω₀² M] X_h + Σ_m v_m v_mᵀ Σ_j k̂_{m,j} X_{h−j}
+///       = F₀ δ_h0 + Σ_m v_m (k e)^_{m,h},
+///
+/// where k̂_{m,j} = c_l e^{i 2π l φ_m0} for j = l P_m (c_l the Fourier coefficients of k_m over
+/// one mesh period, exact for piecewise models), truncated at |l| <= L mesh harmonics and
+/// |h| <= H = L max P_m. One sparse complex LU per speed. This is the linear case of the
+/// harmonic balance (no AFT needed): the parametric excitation of the static load through the
+/// stiffness variation and the transmission-error excitation are both in it.
+
+#include <Eigen/Dense>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+
+struct TrainStageLoadSharing {
+  std::string stage;
+  std::vector<double> sun_planet_force, ring_planet_force;  ///< per planet [N]
+  double load_sharing_factor = 1.0;                         ///< max sun–planet force / mean [-]
+};
+
+struct TrainStaticResult {
+  Eigen::VectorXd displacement;    ///< q [m, rad]
+  std::vector<double> mesh_force;  ///< k̄ (vᵀq − ē) along each line of action [N]
+  /// Per element: the force (bearings, pins: |k d| [N]) or torque (torsional elements [N m]).
+  std::vector<double> element_force;
+  std::vector<TrainStageLoadSharing> load_sharing;
+  int rigid_modes = 0;        ///< dimension of the null space of the stiffness
+  double residual = 0.0;      ///< ‖K q − F‖ / ‖F‖
+  std::string status = "ok";  ///< "ok" or "unbalanced" (loads on a rigid-body mode)
+  std::string message;
+};
+
+TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_speed);
+
+struct TrainSteadyOptions {
+  int mesh_harmonics = 10;  ///< L: harmonics of each mesh frequency kept (>= 1)
+  /// H above which the common period is refused (memory and time grow with it): trains whose
+  /// mesh frequencies have no small common divisor should use time integration.
+  int max_base_harmonics = 4000;
+  /// Samples of one base period for the time-domain quantities (mesh-force peaks); 0: derived
+  /// (at least 8 per highest harmonic, a power of two).
+  int samples = 0;
+  void validate() const;
+};
+
+/// The base frequency of a train per unit input speed and the multiples P_m of every mesh:
+/// f_m = P_m f₀ [Hz per rad/s]. InputError (key "steady.mesh_harmonics") when the mesh
+/// frequencies have no common divisor within `max_base_harmonics`.
+struct TrainBaseFrequency {
+  double ratio = 0.0;              ///< f₀ / |Ω| [Hz per rad/s]
+  std::vector<int> mesh_multiple;  ///< P_m
+};
+TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harmonics,
+                                      int max_base_harmonics);
+
+struct TrainSteadyState {
+  double input_speed = 0.0;     ///< Ω [rad/s]
+  double base_frequency = 0.0;  ///< f₀ [Hz]
+  int harmonics = 0;            ///< H
+  std::vector<int> mesh_multiple;
+  /// X_h for h = 0..H (column h); q(t) = Re[X_0 + 2 Σ_{h≥1} X_h e^{i h ω₀ t}].
+  Eigen::MatrixXcd harmonic;
+  /// One base period sampled: t [s], mesh forces k(φ)(vᵀq − e) [N] per mesh (rows: samples).
+  Eigen::VectorXd t;
+  Eigen::MatrixXd mesh_force;
+  std::vector<double> mesh_force_mean, mesh_force_max, mesh_force_min;  ///< [N]
+  /// Dynamic factor max F / mean F per mesh [-] (1 without dynamics).
+  std::vector<double> dynamic_factor;
+  /// Amplitude of the mesh force at harmonics 1..L of each mesh's own frequency [N].
+  std::vector<std::vector<double>> mesh_force_harmonics;
+  /// Peak dynamic force of each element over the period, |k d(t) − k d̄| max [N, N m].
+  std::vector<double> element_dynamic_force;
+  /// q(t) at the samples (rows: samples, cols: DOFs).
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& times) const;
+};
+
+TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input_speed,
+                                       const TrainSteadyOptions& options = {});
+
+}  // namespace geardyn

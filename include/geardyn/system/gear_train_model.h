@@ -1,0 +1,155 @@
+#pragma once
+/// \file
+/// The assembled gear train: bodies with their degrees of freedom, kinematics, mesh geometry
+/// and phasing, and the matrices of
+///
+///   M q̈ + (C + Ω G₁) q̇ + (K + Ω² K_Ω + Σ_m k_m(φ_m) v_m v_mᵀ) q
+///       = F₀ + Σ_m k_m(φ_m) e_m(φ_m) v_m,                                     φ_m = f_m t + φ_m0
+///
+/// with Ω the input speed [rad/s]; G₁ and K_Ω the Coriolis and centripetal terms of bodies
+/// formulated in a rotating carrier frame, per unit input speed and per unit input speed squared
+/// (Lin & Parker 1999, eq. 1); v_m the gradient of mesh m's deflection along its line of action
+/// (docs/theory/gear_trains.md); K excludes the meshes. Immutable once built; validated on
+/// construction (InputError naming the component and key); solvers keep their own workspace.
+///
+/// Degrees of freedom of a body: its rotation θ [rad] (TrainDofs::kTorsional), or the
+/// translation (y, z) of its centre [m] and θ (kPlanar). Planets and the members of a planetary
+/// stage with carrier-frame terms have their translations in the carrier frame.
+
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geardyn/system/gear_train.h"
+#include "geardyn/system/train_kinematics.h"
+
+namespace geardyn {
+
+enum class TrainBodyKind { kShaft, kPlanet };
+
+struct TrainBody {
+  std::string name;
+  TrainBodyKind kind = TrainBodyKind::kShaft;
+  double mass = 0.0;                                 ///< [kg]
+  double polar_inertia = 0.0;                        ///< [kg m²]
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  ///< (y, z) [m] (carrier frame: at t = 0)
+  double speed_ratio = 0.0;                          ///< ω / Ω_input [-]
+  int stage = -1;     ///< planetary stage whose carrier frame it uses; −1: fixed frame
+  int planet = -1;    ///< planet index within its stage, −1 otherwise
+  int first_dof = 0;  ///< index of its first DOF (y, or θ when torsional)
+  bool grounded_torsion = false;  ///< held against rotation by the housing (speed 0)
+};
+
+/// What kind of mesh: a fixed-axis external or internal pair, or a planetary mesh.
+enum class TrainMeshKind { kExternal, kInternal, kSunPlanet, kRingPlanet };
+std::string toString(TrainMeshKind kind);
+
+struct TrainMesh {
+  std::string name;
+  TrainMeshKind kind = TrainMeshKind::kExternal;
+  int body_a = 0, body_b = 0;  ///< a drives the mesh's phase; for planetary meshes b = planet
+  int teeth_a = 0, teeth_b = 0;
+  int stage = -1, planet = -1;
+  double centre_distance = 0.0;                           ///< a_w [m]
+  double pressure_angle = 0.0;                            ///< operating α_wt [rad]
+  double base_helix_angle = 0.0;                          ///< β_b [rad]
+  double base_radius_a = 0.0, base_radius_b = 0.0;        ///< [m]
+  double contact_ratio = 0.0;                             ///< ε_γ [-]
+  Eigen::Vector2d pitch_point = Eigen::Vector2d::Zero();  ///< contact point c (y, z) [m]
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();       ///< transverse line of action n_t (unit)
+  /// ∂δ/∂q: the nonzero entries of v_m (DOF indices and coefficients; 2 or 6 entries).
+  std::vector<int> dofs;
+  std::vector<double> gradient;
+  std::shared_ptr<const MeshStiffness> stiffness;  ///< k(φ) [N/m]
+  double mean_stiffness = 0.0;                     ///< k̄ [N/m]
+  TransmissionError transmission_error;            ///< e(φ) [m]
+  double damping = 0.0;                            ///< c_m [N s/m]
+  double damping_ratio = 0.0;                      ///< [-]
+  double equivalent_mass = 0.0;  ///< m_e = 1 / Σ v_θ² / I over the two rotations [kg]
+  /// Mesh frequency per unit input speed: f_m = frequency_ratio |Ω| [Hz per rad/s].
+  double frequency_ratio = 0.0;
+  double phase = 0.0;  ///< φ_m0 [mesh periods]
+  /// Mesh phase at time t for the input speed Ω [rad/s].
+  double phaseAt(double t, double input_speed) const;
+};
+
+/// A stiffness/damping element for reports (strain energy per component): its DOFs and its
+/// small symmetric stiffness matrix over them (the meshes are separate: k̄ v vᵀ).
+struct TrainElement {
+  std::string name;
+  std::string kind;  ///< "bearing", "coupling", "pin", "support"
+  std::vector<int> dofs;
+  Eigen::MatrixXd stiffness;  ///< Jᵀ k J over `dofs`
+  /// Its deformation d = J q[dofs] (relative displacement (y, z) [m], or relative rotation
+  /// [rad]) and the force (or torque) k d it transmits [N, N m].
+  Eigen::MatrixXd jacobian, local_stiffness;
+};
+
+class GearTrainModel {
+ public:
+  /// Validates the description (InputError naming the component and key) and assembles.
+  explicit GearTrainModel(GearTrainSpec spec);
+
+  const GearTrainSpec& spec() const noexcept { return spec_; }
+  const TrainKinematics& kinematics() const noexcept { return kinematics_; }
+  int dofCount() const noexcept { return dof_count_; }
+  int dofsPerBody() const noexcept { return spec_.dofs == TrainDofs::kPlanar ? 3 : 1; }
+  const std::vector<TrainBody>& bodies() const noexcept { return bodies_; }
+  const std::vector<TrainMesh>& meshes() const noexcept { return meshes_; }
+  const std::vector<TrainElement>& elements() const noexcept { return elements_; }
+  int bodyIndex(const std::string& name) const;  ///< −1 when absent
+  /// "input.y", "stage1.planet2.theta", … for DOF i.
+  std::string dofName(int i) const;
+  /// The θ DOF of body b; its y DOF (−1 when torsional).
+  int rotationDof(int body) const;
+  int translationDof(int body) const;
+
+  const Eigen::MatrixXd& mass() const noexcept { return M_; }
+  const Eigen::MatrixXd& stiffness() const noexcept { return K_; }   ///< without the meshes
+  const Eigen::MatrixXd& damping() const noexcept { return C_; }     ///< incl. mesh dashpots
+  const Eigen::MatrixXd& gyroscopic() const noexcept { return G_; }  ///< G₁ per unit Ω [kg]
+  const Eigen::MatrixXd& centripetal() const noexcept { return Komega_; }  ///< K_Ω per Ω² [kg]
+  /// Σ_m k̄_m v_m v_mᵀ.
+  const Eigen::MatrixXd& meanMeshStiffness() const noexcept { return Kmesh_; }
+  /// F₀: input and output torques and pin-position-error loads [N, N m].
+  const Eigen::VectorXd& staticLoad() const noexcept { return F0_; }
+  /// v_m as a dense vector.
+  Eigen::VectorXd meshVector(int mesh) const;
+  /// The operating input speed [rad/s] and torque [N m], and the output's load torque [N m].
+  double inputSpeed() const noexcept { return spec_.operating.input_speed; }
+  double outputTorque() const noexcept { return output_torque_; }
+
+  /// K + Ω² K_Ω + Σ k̄ v vᵀ at input speed Ω [rad/s].
+  Eigen::MatrixXd meanStiffnessAt(double input_speed) const;
+  /// C + Ω G₁.
+  Eigen::MatrixXd dampingAt(double input_speed) const;
+
+  const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+  /// Body index of the spec's shaft i.
+  int shaftBody(int shaft) const { return shaft_body_[shaft]; }
+  /// The stage whose rotating carrier frame body b's translations are written in (−1: fixed
+  /// frame, or a stage without carrier-frame terms).
+  int rotatingFrame(int body) const;
+
+ private:
+  void buildBodies();
+  void buildMeshes();
+  void buildElements();
+  void assemble();
+
+  GearTrainSpec spec_;
+  TrainKinematics kinematics_;
+  std::vector<TrainBody> bodies_;
+  std::vector<TrainMesh> meshes_;
+  std::vector<TrainElement> elements_;
+  std::vector<Eigen::MatrixXd> element_damping_;  // over each element's DOFs
+  std::vector<int> shaft_body_;                   // spec shaft index → body index
+  int dof_count_ = 0;
+  double output_torque_ = 0.0;
+  Eigen::MatrixXd M_, K_, C_, G_, Komega_, Kmesh_;
+  Eigen::VectorXd F0_;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace geardyn

@@ -1,0 +1,433 @@
+/// The gearbox description file: schema and reader (gearbox_config.h).
+
+#include "geardyn/config/gearbox_config.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/geometry/internal_gear_pair.h"
+#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/stiffness_io.h"
+#include "geardyn/stiffness/api_stiffness.h"
+
+namespace geardyn::config {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kRpm = std::numbers::pi / 30.0;
+using Json = nlohmann::ordered_json;
+
+const std::vector<std::string> kStiffnessChoices = {"constant", "api",  "potential_energy",
+                                                    "iso6336",  "step", "fourier"};
+
+/// Mesh stiffness, damping and transmission error keys of a mesh (prefix "meshes.*") or of a
+/// planetary stage's sun or ring meshes (prefix "planetary.*.sun_planet").
+void addMeshModelKeys(io::ConfigSchema& schema, const std::string& prefix,
+                      const std::string& what) {
+  schema.string(prefix + "stiffness")
+      .choices(kStiffnessChoices)
+      .defaultValue("potential_energy")
+      .doc("mesh-stiffness model of " + what +
+           " (options in [mesh_stiffness.<model>]; ring meshes: constant or api)");
+  schema.real(prefix + "stiffness_value")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("k along the line of action when stiffness = \"constant\"");
+  schema.real(prefix + "damping_ratio")
+      .unit("-")
+      .min(0.0)
+      .max(1.0)
+      .defaultValue(0.05)
+      .doc("damping ratio of the mesh on its equivalent torsional mass");
+  schema.realList(prefix + "te_amplitudes")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("transmission error e(φ) = Σ a_r cos(2π r φ + φ_r) over mesh orders r = 1, 2, …");
+  schema.realList(prefix + "te_phases_deg")
+      .unit("deg")
+      .defaultValue(Json::array())
+      .doc("phases φ_r of the TE orders (one per amplitude; empty: 0)");
+}
+
+TransmissionError teFromConfig(const io::Config& config, const std::string& prefix) {
+  TransmissionError te;
+  const auto amplitudes = config.realList(prefix + "te_amplitudes");
+  auto phases = config.realList(prefix + "te_phases_deg");
+  if (phases.empty()) phases.assign(amplitudes.size(), 0.0);
+  for (double& p : phases) p *= kDeg;
+  if (!amplitudes.empty()) te.addFourier(amplitudes, phases, prefix + "te_phases_deg");
+  return te;
+}
+
+/// The stiffness model a mesh asks for. `pair` is null for ring meshes (no model needs more
+/// than the face width and helix angle there).
+std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const io::Config& config,
+                                                         const std::string& prefix,
+                                                         const GearPair* pair, double face_width,
+                                                         double helix, double contact_ratio,
+                                                         std::vector<std::string>& warnings) {
+  const std::string model = config.string(prefix + "stiffness");
+  if (model == "constant") {
+    if (!config.has(prefix + "stiffness_value")) {
+      throw InputError(prefix + "stiffness_value", "",
+                       "required with stiffness = \"constant\" [N/m]");
+    }
+    return std::make_shared<ConstantMeshStiffness>(
+        "constant", config.real(prefix + "stiffness_value"), contact_ratio);
+  }
+  if (model == "api") {
+    return std::make_shared<ConstantMeshStiffness>("api", apiMeshStiffness(face_width, helix),
+                                                   contact_ratio);
+  }
+  if (!pair) {
+    throw InputError(prefix + "stiffness", "\"" + model + "\"",
+                     "\"constant\" or \"api\" on a ring (internal) mesh: the tooth models are "
+                     "written for external pairs");
+  }
+  return io::buildMeshStiffnessModel(model, config, *pair, warnings);
+}
+
+}  // namespace
+
+const std::vector<std::string>& gearboxSectionNames() {
+  static const std::vector<std::string> names = {"gearbox",   "shafts",          "gears",
+                                                 "meshes",    "bearings",        "couplings",
+                                                 "planetary", "operating_point", "mesh_stiffness"};
+  return names;
+}
+
+void addGearboxSections(io::ConfigSchema& schema) {
+  schema.section("gearbox", "The gearbox as a whole.");
+  schema.string("gearbox.name").defaultValue("").doc("free text");
+  schema.string("gearbox.dofs")
+      .choices({"torsional", "planar"})
+      .defaultValue("planar")
+      .doc("DOFs of every body: rotation only, or rotation and the translation of its centre");
+  schema.real("gearbox.mass_proportional_damping")
+      .unit("1/s")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("α of the Rayleigh damping α M + β K");
+  schema.real("gearbox.stiffness_proportional_damping")
+      .unit("s")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("β of the Rayleigh damping (on bearings, couplings and mean meshes)");
+
+  schema.collection("shafts",
+                    "Rigid bodies turning about axes parallel to x: shafts with what is "
+                    "mounted on them, carriers, a housing-held ring.");
+  schema.section("shafts.*", "One shaft; its gears' bodies are added to it.");
+  schema.real("shafts.*.mass").unit("kg").min(0.0).defaultValue(0.0).doc("own mass");
+  schema.real("shafts.*.polar_inertia")
+      .unit("kg m^2")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("own polar moment of inertia");
+  schema.realList("shafts.*.section_lengths")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("solid-of-revolution sections added to mass and inertia");
+  schema.realList("shafts.*.outer_diameters")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("one per section, or one for all");
+  schema.realList("shafts.*.inner_diameters")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("bores: one per section, one for all, or none (solid)");
+  schema.real("shafts.*.density").unit("kg/m^3").positive().defaultValue(7850.0).doc("ρ");
+
+  schema.collection("gears", "Gears on shafts.");
+  io::addGearSection(schema, "gears.*", "gear", true);
+  schema.string("gears.*.shaft").required().doc("the shaft it sits on");
+  schema.boolean("gears.*.internal").defaultValue(false).doc("a ring gear with internal teeth");
+  schema.boolean("gears.*.body")
+      .defaultValue(true)
+      .doc("add the gear body's mass and inertia to its shaft (external gears)");
+
+  schema.collection("meshes",
+                    "Meshes between two gears on fixed axes (planetary meshes come "
+                    "from their stage).");
+  schema.section("meshes.*", "One mesh.");
+  schema.stringList("meshes.*.gears").required().doc("the two gears [a, b]");
+  schema.real("meshes.*.position_angle_deg")
+      .unit("deg")
+      .defaultValue(0.0)
+      .doc("direction from gear a's centre to gear b's, from +y towards +z");
+  schema.real("meshes.*.centre_distance")
+      .unit("m")
+      .positive()
+      .optional()
+      .doc("operating centre distance (default: zero backlash)");
+  schema.real("meshes.*.phase")
+      .unit("-")
+      .optional()
+      .doc("mesh phase at t = 0 in mesh periods (default 0)");
+  addMeshModelKeys(schema, "meshes.*.", "this mesh");
+
+  schema.collection("bearings",
+                    "Linear bearings from a shaft to the housing or to another "
+                    "shaft; a torsional stiffness to the housing holds the shaft.");
+  schema.section("bearings.*", "One bearing.");
+  schema.string("bearings.*.shaft").required().doc("the shaft it carries");
+  schema.string("bearings.*.other_shaft")
+      .defaultValue("")
+      .doc("the other shaft of an inter-shaft bearing (empty: the housing)");
+  for (auto [key, unit, doc] : std::initializer_list<std::array<const char*, 3>>{
+           {"kyy", "N/m", "stiffness along y"},
+           {"kzz", "N/m", "stiffness along z"},
+           {"kyz", "N/m", "cross stiffness (force y per displacement z)"},
+           {"kzy", "N/m", "cross stiffness (force z per displacement y)"},
+           {"cyy", "N s/m", "damping along y"},
+           {"czz", "N s/m", "damping along z"},
+           {"cyz", "N s/m", "cross damping"},
+           {"czy", "N s/m", "cross damping"},
+           {"k_torsion", "N m/rad", "torsional stiffness (to the housing: the shaft is held)"},
+           {"c_torsion", "N m s/rad", "torsional damping"}}) {
+    auto k = schema.real(std::string("bearings.*.") + key).unit(unit).defaultValue(0.0).doc(doc);
+    if (std::string(key).size() == 3 && key[1] == key[2]) k.min(0.0);
+    if (std::string(key).rfind("k_", 0) == 0 || std::string(key).rfind("c_", 0) == 0) k.min(0.0);
+  }
+
+  schema.collection("couplings", "Couplings between two coaxial shafts (one speed).");
+  schema.section("couplings.*", "One coupling.");
+  schema.stringList("couplings.*.shafts").required().doc("the two shafts");
+  schema.real("couplings.*.k_torsion")
+      .unit("N m/rad")
+      .positive()
+      .required()
+      .doc("torsional stiffness");
+  schema.real("couplings.*.c_torsion")
+      .unit("N m s/rad")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("torsional damping");
+  schema.real("couplings.*.k_lateral")
+      .unit("N/m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("lateral stiffness (planar DOFs)");
+  schema.real("couplings.*.c_lateral")
+      .unit("N s/m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("lateral damping");
+
+  schema.collection("planetary",
+                    "Planetary (epicyclic) stages: sun and ring are gears on "
+                    "shafts, the carrier a shaft; the stage adds the planets.");
+  schema.section("planetary.*", "One stage.");
+  schema.string("planetary.*.sun").required().doc("the sun gear");
+  schema.string("planetary.*.ring").required().doc("the ring gear (internal = true)");
+  schema.string("planetary.*.carrier").required().doc("the carrier shaft");
+  schema.integer("planetary.*.planets").min(1).max(32).defaultValue(3).doc("number N");
+  schema.realList("planetary.*.planet_angles_deg")
+      .unit("deg")
+      .defaultValue(Json::array())
+      .doc("planet positions in the carrier (empty: equally spaced)");
+  schema.real("planetary.*.planet_mass")
+      .unit("kg")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("extra to the planet gear's body");
+  schema.real("planetary.*.planet_inertia")
+      .unit("kg m^2")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("extra to the planet gear's body");
+  schema.boolean("planetary.*.planet_body")
+      .defaultValue(true)
+      .doc("add the planet gear's body mass and inertia");
+  schema.real("planetary.*.pin_radial_stiffness")
+      .unit("N/m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("planet bearing on its pin, radial (required > 0 with planar DOFs)");
+  schema.real("planetary.*.pin_tangential_stiffness")
+      .unit("N/m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("planet bearing, tangential");
+  schema.real("planetary.*.pin_damping")
+      .unit("N s/m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("planet bearing damping");
+  schema.realList("planetary.*.pin_position_errors")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("tangential pin position errors, one per planet (load sharing)");
+  schema.boolean("planetary.*.carrier_frame_terms")
+      .defaultValue(true)
+      .doc("Coriolis and centripetal terms of the carrier frame (Lin & Parker 1999)");
+  io::addGearSection(schema, "planetary.*.planet", "planet gear", true);
+  schema.section("planetary.*.sun_planet", "The sun–planet meshes.");
+  addMeshModelKeys(schema, "planetary.*.sun_planet.", "the sun–planet meshes");
+  schema.section("planetary.*.ring_planet", "The ring–planet meshes.");
+  addMeshModelKeys(schema, "planetary.*.ring_planet.", "the ring–planet meshes");
+
+  schema.section("operating_point", "Where the power goes in and out.");
+  schema.string("operating_point.input").required().doc("the input shaft");
+  schema.real("operating_point.speed_rpm")
+      .unit("rpm")
+      .defaultValue(0.0)
+      .doc("input speed, signed (positive about +x)");
+  schema.real("operating_point.torque")
+      .unit("N m")
+      .defaultValue(0.0)
+      .doc("torque applied to the input shaft, signed");
+  schema.string("operating_point.output")
+      .required()
+      .doc("the shaft that takes the balancing load (lossless train)");
+
+  schema.section("mesh_stiffness", "Options of the mesh-stiffness models, shared by the meshes.");
+  io::addMeshStiffnessModelSections(schema);
+}
+
+io::ConfigSchema gearboxSchema() {
+  io::ConfigSchema schema("gearbox",
+                          "A gearbox description: shafts, gears, meshes, bearings, couplings, "
+                          "planetary stages and the operating point, read by `geardyn train` "
+                          "(gearbox = \"file.toml\").");
+  addGearboxSections(schema);
+  return schema;
+}
+
+GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::string>& warnings) {
+  GearTrainSpec spec;
+  spec.name = config.string("gearbox.name");
+  spec.dofs = parseTrainDofs(config.string("gearbox.dofs"), "gearbox.dofs");
+  spec.mass_proportional_damping = config.real("gearbox.mass_proportional_damping");
+  spec.stiffness_proportional_damping = config.real("gearbox.stiffness_proportional_damping");
+  for (const std::string& name : config.names("shafts")) {
+    const std::string p = "shafts." + name + ".";
+    spec.shafts.push_back({name, config.real(p + "mass"), config.real(p + "polar_inertia"),
+                           config.realList(p + "section_lengths"),
+                           config.realList(p + "outer_diameters"),
+                           config.realList(p + "inner_diameters"), config.real(p + "density")});
+  }
+  for (const std::string& name : config.names("gears")) {
+    const std::string p = "gears." + name;
+    spec.gears.push_back({name, config.string(p + ".shaft"), io::gearSpecFromConfig(config, p),
+                          config.boolean(p + ".internal"), config.boolean(p + ".body")});
+  }
+  auto gear_named = [&](const std::string& gear, const std::string& key) -> const TrainGearSpec& {
+    for (const auto& g : spec.gears) {
+      if (g.name == gear) return g;
+    }
+    throw InputError(key, "\"" + gear + "\"", "the name of a gear in [gears.<name>]");
+  };
+  for (const std::string& name : config.names("meshes")) {
+    const std::string p = "meshes." + name + ".";
+    const auto gears = config.stringList(p + "gears");
+    if (gears.size() != 2) {
+      throw InputError(p + "gears", fmt::format("{} names", gears.size()), "two gear names");
+    }
+    TrainMeshSpec m;
+    m.name = name;
+    m.gear_a = gears[0];
+    m.gear_b = gears[1];
+    m.position_angle = config.real(p + "position_angle_deg") * kDeg;
+    m.centre_distance = config.optionalReal(p + "centre_distance");
+    if (config.has(p + "phase")) m.phase = config.real(p + "phase");
+    m.damping_ratio = config.real(p + "damping_ratio");
+    m.transmission_error = teFromConfig(config, p);
+    const TrainGearSpec& a = gear_named(m.gear_a, p + "gears");
+    const TrainGearSpec& b = gear_named(m.gear_b, p + "gears");
+    const double width = std::min(a.gear.face_width, b.gear.face_width);
+    if (a.internal || b.internal) {
+      const InternalGearPair pair(a.internal ? b.gear : a.gear, a.internal ? a.gear : b.gear,
+                                  m.centre_distance, "meshes." + name);
+      m.stiffness =
+          stiffnessFromConfig(config, p, nullptr, width, a.gear.helix_angle,
+                              pair.contactRatioTransverse() + pair.overlapRatio(), warnings);
+    } else {
+      GearPairSpec pair_spec;
+      pair_spec.pinion = a.gear;
+      pair_spec.gear = b.gear;
+      pair_spec.centre_distance = m.centre_distance;
+      // The pair's own validation names its keys; GearTrainModel re-checks with the train's
+      // names, so only the stiffness needs the pair here.
+      const GearPair pair(pair_spec);
+      m.stiffness = stiffnessFromConfig(config, p, &pair, width, a.gear.helix_angle,
+                                        pair.contactRatioTotal(), warnings);
+    }
+    spec.meshes.push_back(std::move(m));
+  }
+  for (const std::string& name : config.names("bearings")) {
+    const std::string p = "bearings." + name + ".";
+    TrainBearingSpec b;
+    b.name = name;
+    b.shaft = config.string(p + "shaft");
+    b.other_shaft = config.string(p + "other_shaft");
+    b.kyy = config.real(p + "kyy"), b.kzz = config.real(p + "kzz");
+    b.kyz = config.real(p + "kyz"), b.kzy = config.real(p + "kzy");
+    b.cyy = config.real(p + "cyy"), b.czz = config.real(p + "czz");
+    b.cyz = config.real(p + "cyz"), b.czy = config.real(p + "czy");
+    b.k_torsion = config.real(p + "k_torsion"), b.c_torsion = config.real(p + "c_torsion");
+    spec.bearings.push_back(b);
+  }
+  for (const std::string& name : config.names("couplings")) {
+    const std::string p = "couplings." + name + ".";
+    const auto shafts = config.stringList(p + "shafts");
+    if (shafts.size() != 2) {
+      throw InputError(p + "shafts", fmt::format("{} names", shafts.size()), "two shaft names");
+    }
+    spec.couplings.push_back({name, shafts[0], shafts[1], config.real(p + "k_torsion"),
+                              config.real(p + "c_torsion"), config.real(p + "k_lateral"),
+                              config.real(p + "c_lateral")});
+  }
+  for (const std::string& name : config.names("planetary")) {
+    const std::string p = "planetary." + name + ".";
+    PlanetaryStageSpec st;
+    st.name = name;
+    st.sun = config.string(p + "sun");
+    st.ring = config.string(p + "ring");
+    st.carrier = config.string(p + "carrier");
+    st.planet = io::gearSpecFromConfig(config, p + "planet");
+    st.planets = static_cast<int>(config.integer(p + "planets"));
+    st.planet_angles = config.realList(p + "planet_angles_deg");
+    for (double& a : st.planet_angles) a *= kDeg;
+    st.planet_mass = config.real(p + "planet_mass");
+    st.planet_inertia = config.real(p + "planet_inertia");
+    st.planet_body = config.boolean(p + "planet_body");
+    st.pin_radial_stiffness = config.real(p + "pin_radial_stiffness");
+    st.pin_tangential_stiffness = config.real(p + "pin_tangential_stiffness");
+    st.pin_damping = config.real(p + "pin_damping");
+    st.pin_position_errors = config.realList(p + "pin_position_errors");
+    st.carrier_frame_terms = config.boolean(p + "carrier_frame_terms");
+    const TrainGearSpec& sun = gear_named(st.sun, p + "sun");
+    const TrainGearSpec& ring = gear_named(st.ring, p + "ring");
+    GearPairSpec sp;
+    sp.pinion = sun.gear;
+    sp.gear = st.planet;
+    const GearPair sun_pair(sp);
+    const InternalGearPair ring_pair(st.planet, ring.gear, sun_pair.centreDistance(),
+                                     "planetary." + name);
+    st.sun_planet_stiffness = stiffnessFromConfig(
+        config, p + "sun_planet.", &sun_pair, std::min(sun.gear.face_width, st.planet.face_width),
+        sun.gear.helix_angle, sun_pair.contactRatioTotal(), warnings);
+    st.ring_planet_stiffness = stiffnessFromConfig(
+        config, p + "ring_planet.", nullptr, std::min(ring.gear.face_width, st.planet.face_width),
+        ring.gear.helix_angle, ring_pair.contactRatioTransverse() + ring_pair.overlapRatio(),
+        warnings);
+    st.sun_planet_damping_ratio = config.real(p + "sun_planet.damping_ratio");
+    st.ring_planet_damping_ratio = config.real(p + "ring_planet.damping_ratio");
+    st.sun_planet_error = teFromConfig(config, p + "sun_planet.");
+    st.ring_planet_error = teFromConfig(config, p + "ring_planet.");
+    spec.stages.push_back(std::move(st));
+  }
+  spec.operating.input_shaft = config.string("operating_point.input");
+  spec.operating.output_shaft = config.string("operating_point.output");
+  spec.operating.input_speed = config.real("operating_point.speed_rpm") * kRpm;
+  spec.operating.input_torque = config.real("operating_point.torque");
+  return spec;
+}
+
+}  // namespace geardyn::config

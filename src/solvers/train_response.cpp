@@ -1,0 +1,330 @@
+/// Static and periodic steady-state response of a gear train (train_response.h).
+
+#include "geardyn/solvers/train_response.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "geardyn/error.h"
+#include "geardyn/stiffness/mesh_stiffness_summary.h"
+
+namespace geardyn {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using Complex = std::complex<double>;
+
+/// x ≈ p/q by continued fractions (q <= 10⁶, |x − p/q| <= 1e-9 x).
+std::pair<long long, long long> rational(double x) {
+  long long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
+  double r = x;
+  for (int i = 0; i < 40; ++i) {
+    const long long a = static_cast<long long>(std::floor(r));
+    const long long p2 = a * p1 + p0, q2 = a * q1 + q0;
+    if (q2 > 1000000) break;
+    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+    if (std::abs(x - static_cast<double>(p1) / q1) <= 1e-9 * x) break;
+    const double frac = r - a;
+    if (frac < 1e-12) break;
+    r = 1.0 / frac;
+  }
+  return {p1, q1};
+}
+
+/// Element deformation d = J q[dofs].
+Eigen::VectorXd deformation(const TrainElement& e, const Eigen::VectorXd& q) {
+  Eigen::VectorXd local(e.dofs.size());
+  for (std::size_t i = 0; i < e.dofs.size(); ++i) local(i) = q(e.dofs[i]);
+  return e.jacobian * local;
+}
+
+double meshDeflection(const TrainMesh& m, const Eigen::VectorXd& q) {
+  double d = 0.0;
+  for (std::size_t i = 0; i < m.dofs.size(); ++i) d += m.gradient[i] * q(m.dofs[i]);
+  return d;
+}
+
+/// Mass-normalised rigid-body modes of (K, M): eigenvalues below 1e-10 of the largest.
+Eigen::MatrixXd rigidModes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (K + K.transpose()),
+                                                                         M);
+  const Eigen::VectorXd& w2 = solver.eigenvalues();
+  const double largest = std::max(std::abs(w2(w2.size() - 1)), 1e-300);
+  int count = 0;
+  while (count < w2.size() && std::abs(w2(count)) < 1e-10 * largest) ++count;
+  return solver.eigenvectors().leftCols(count);
+}
+
+}  // namespace
+
+TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_speed) {
+  TrainStaticResult r;
+  const Eigen::MatrixXd K = model.meanStiffnessAt(input_speed);
+  Eigen::VectorXd F = model.staticLoad();
+  std::vector<double> mean_error;
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    const TrainMesh& mesh = model.meshes()[m];
+    // ē: the mean transmission error over a mesh period.
+    const double e =
+        integrateOverPeriod([&](double phi) { return mesh.transmission_error.value(phi); }, {});
+    mean_error.push_back(e);
+    F += mesh.mean_stiffness * e * model.meshVector(static_cast<int>(m));
+  }
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(K);
+  cod.setThreshold(1e-12);
+  r.displacement = cod.solve(F);
+  r.rigid_modes = static_cast<int>(K.rows() - cod.rank());
+  const double scale = std::max(F.norm(), 1e-300);
+  r.residual = (K * r.displacement - F).norm() / scale;
+  if (F.norm() > 0.0 && r.residual > 1e-8) {
+    r.status = "unbalanced";
+    r.message = fmt::format(
+        "the static loads act on a rigid-body mode of the train ({} rigid "
+        "modes; relative residual {:.3g}): support the train or balance "
+        "the input and output torques",
+        r.rigid_modes, r.residual);
+  }
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    const TrainMesh& mesh = model.meshes()[m];
+    r.mesh_force.push_back(mesh.mean_stiffness *
+                           (meshDeflection(mesh, r.displacement) - mean_error[m]));
+  }
+  for (const TrainElement& e : model.elements()) {
+    r.element_force.push_back((e.local_stiffness * deformation(e, r.displacement)).norm());
+  }
+  for (std::size_t s = 0; s < model.spec().stages.size(); ++s) {
+    TrainStageLoadSharing share;
+    share.stage = model.spec().stages[s].name;
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      const TrainMesh& mesh = model.meshes()[m];
+      if (mesh.stage != static_cast<int>(s)) continue;
+      (mesh.kind == TrainMeshKind::kSunPlanet ? share.sun_planet_force : share.ring_planet_force)
+          .push_back(r.mesh_force[m]);
+    }
+    double sum = 0.0, largest = 0.0;
+    for (double f : share.sun_planet_force) sum += f, largest = std::max(largest, std::abs(f));
+    const double mean = sum / static_cast<double>(share.sun_planet_force.size());
+    share.load_sharing_factor = std::abs(mean) > 0.0 ? largest / std::abs(mean) : 1.0;
+    r.load_sharing.push_back(std::move(share));
+  }
+  return r;
+}
+
+void TrainSteadyOptions::validate() const {
+  if (mesh_harmonics < 1 || mesh_harmonics > 200) {
+    throw InputError("steady.mesh_harmonics", std::to_string(mesh_harmonics),
+                     "an integer in [1, 200]");
+  }
+  if (max_base_harmonics < 1) {
+    throw InputError("steady.max_base_harmonics", std::to_string(max_base_harmonics),
+                     "an integer >= 1");
+  }
+  if (samples < 0) throw InputError("steady.samples", std::to_string(samples), ">= 0 (0: derived)");
+}
+
+TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harmonics,
+                                      int max_base_harmonics) {
+  TrainBaseFrequency base;
+  if (model.meshes().empty()) {
+    base.ratio = 1.0 / kTwoPi;
+    return base;
+  }
+  long long g = 0, l = 1;
+  std::vector<std::pair<long long, long long>> fractions;
+  for (const TrainMesh& m : model.meshes()) {
+    // Mesh events per input revolution: z |ω/Ω|, a ratio of tooth counts.
+    const auto [p, q] = rational(m.frequency_ratio * kTwoPi);
+    fractions.push_back({p, q});
+    g = std::gcd(g, p);
+    l = std::lcm(l, q);
+  }
+  // gcd of p_i/q_i (reduced) = gcd(p_i) / lcm(q_i).
+  base.ratio = static_cast<double>(g) / static_cast<double>(l) / kTwoPi;
+  long long largest = 0;
+  for (const auto& [p, q] : fractions) {
+    const long long multiple = (p / g) * (l / q);
+    base.mesh_multiple.push_back(static_cast<int>(std::min<long long>(multiple, 1 << 30)));
+    largest = std::max(largest, multiple);
+  }
+  if (largest * mesh_harmonics > max_base_harmonics) {
+    throw InputError(
+        "steady.mesh_harmonics", std::to_string(mesh_harmonics),
+        fmt::format("fewer harmonics: the mesh frequencies share a common period of {} mesh "
+                    "periods of the fastest mesh, so {} harmonics of each mesh need {} harmonics "
+                    "of the common period (limit steady.max_base_harmonics = {}); use the time "
+                    "analysis for this train",
+                    largest, mesh_harmonics, largest * mesh_harmonics, max_base_harmonics));
+  }
+  return base;
+}
+
+Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) const {
+  Eigen::MatrixXd q(times.size(), harmonic.rows());
+  const double w0 = kTwoPi * base_frequency;
+  for (Eigen::Index k = 0; k < times.size(); ++k) {
+    Eigen::VectorXcd sum = harmonic.col(0);
+    for (int h = 1; h <= harmonics; ++h) {
+      sum += 2.0 * harmonic.col(h) * std::polar(1.0, h * w0 * times(k));
+    }
+    q.row(k) = sum.real().transpose();
+  }
+  return q;
+}
+
+TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input_speed,
+                                       const TrainSteadyOptions& options) {
+  options.validate();
+  if (!(std::abs(input_speed) > 0.0) || !std::isfinite(input_speed)) {
+    throw InputError("operating_point.speed_rpm", fmt::format("{:g} rad/s", input_speed),
+                     "a speed != 0: the steady state of a train at rest is its static response");
+  }
+  const TrainBaseFrequency base =
+      trainBaseFrequency(model, options.mesh_harmonics, options.max_base_harmonics);
+  TrainSteadyState s;
+  s.input_speed = input_speed;
+  s.base_frequency = base.ratio * std::abs(input_speed);
+  s.mesh_multiple = base.mesh_multiple;
+  const int L = options.mesh_harmonics;
+  int H = 0;
+  for (int p : base.mesh_multiple) H = std::max(H, p * L);
+  s.harmonics = H;
+  const int n = model.dofCount();
+  const int blocks = 2 * H + 1;
+  const double w0 = kTwoPi * s.base_frequency;
+
+  // Fourier coefficients of every mesh's k and k·e over its own period, with its phase.
+  const auto& meshes = model.meshes();
+  std::vector<std::vector<Complex>> k_hat(meshes.size()), ke_hat(meshes.size());
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const TrainMesh& mesh = meshes[m];
+    const MeshStiffnessSummary summary = summarizeMeshStiffness(*mesh.stiffness, L);
+    const auto breaks = mesh.stiffness->discontinuities();
+    k_hat[m].assign(2 * L + 1, 0.0);
+    ke_hat[m].assign(2 * L + 1, 0.0);
+    const bool has_error = !mesh.transmission_error.isZero();
+    for (int l = 0; l <= L; ++l) {
+      Complex c = l == 0 ? Complex(summary.mean)
+                         : 0.5 * Complex(summary.cosine[l - 1], -summary.sine[l - 1]);
+      const Complex shift = std::polar(1.0, kTwoPi * l * mesh.phase);
+      k_hat[m][L + l] = c * shift;
+      k_hat[m][L - l] = std::conj(c * shift);
+      if (has_error) {
+        const auto ke = [&](double phi) {
+          return mesh.stiffness->stiffness(phi) * mesh.transmission_error.value(phi);
+        };
+        const double re = integrateOverPeriod(
+            [&](double phi) { return ke(phi) * std::cos(kTwoPi * l * phi); }, breaks);
+        const double im = integrateOverPeriod(
+            [&](double phi) { return -ke(phi) * std::sin(kTwoPi * l * phi); }, breaks);
+        ke_hat[m][L + l] = Complex(re, im) * shift;
+        ke_hat[m][L - l] = std::conj(ke_hat[m][L + l]);
+      }
+    }
+  }
+
+  // Assembly of the (2H+1) n complex system, block b = h + H.
+  const Eigen::MatrixXd K = model.stiffness() + input_speed * input_speed * model.centripetal();
+  const Eigen::MatrixXd C = model.dampingAt(input_speed);
+  const Eigen::MatrixXd& M = model.mass();
+  const Eigen::MatrixXd R = rigidModes(model.meanStiffnessAt(input_speed), M);
+  const double penalty = std::max(K.diagonal().cwiseAbs().maxCoeff(),
+                                  model.meanMeshStiffness().diagonal().cwiseAbs().maxCoeff());
+  std::vector<Eigen::Triplet<Complex>> triplets;
+  triplets.reserve(static_cast<std::size_t>(blocks) * n * n);
+  for (int h = -H; h <= H; ++h) {
+    const int b = (h + H) * n;
+    const double w = h * w0;
+    Eigen::MatrixXcd D = (K - w * w * M).cast<Complex>() + Complex(0.0, w) * C.cast<Complex>();
+    // At h = 0 the rigid-body modes (rolling, which no mesh deflects) are fixed by their
+    // mass-weighted amplitude: Rᵀ M X₀ = 0 (their equation is 0 = Rᵀ F₀ = 0, balanced loads).
+    if (h == 0 && R.cols() > 0) D += (penalty * (M * R) * (M * R).transpose()).cast<Complex>();
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        if (D(i, j) != 0.0) triplets.emplace_back(b + i, b + j, D(i, j));
+  }
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(blocks) * n);
+  rhs.segment(H * n, n) = model.staticLoad().cast<Complex>();
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const TrainMesh& mesh = meshes[m];
+    const int P = base.mesh_multiple[m];
+    for (int l = -L; l <= L; ++l) {
+      const int j = l * P;
+      const Complex k = k_hat[m][L + l];
+      for (int h = -H; h <= H; ++h) {
+        const int g = h - j;
+        if (g < -H || g > H || k == 0.0) continue;
+        for (std::size_t a = 0; a < mesh.dofs.size(); ++a)
+          for (std::size_t c = 0; c < mesh.dofs.size(); ++c)
+            triplets.emplace_back((h + H) * n + mesh.dofs[a], (g + H) * n + mesh.dofs[c],
+                                  k * mesh.gradient[a] * mesh.gradient[c]);
+      }
+      if (std::abs(j) <= H && ke_hat[m][L + l] != 0.0) {
+        for (std::size_t a = 0; a < mesh.dofs.size(); ++a)
+          rhs((j + H) * n + mesh.dofs[a]) += ke_hat[m][L + l] * mesh.gradient[a];
+      }
+    }
+  }
+  Eigen::SparseMatrix<Complex> A(blocks * n, blocks * n);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<Complex>> lu;
+  lu.compute(A);
+  if (lu.info() != Eigen::Success) {
+    throw std::runtime_error(
+        fmt::format("steady state at {:g} rad/s: the harmonic-balance matrix is singular ({})",
+                    input_speed, lu.lastErrorMessage()));
+  }
+  const Eigen::VectorXcd X = lu.solve(rhs);
+  s.harmonic.resize(n, H + 1);
+  for (int h = 0; h <= H; ++h) s.harmonic.col(h) = X.segment((h + H) * n, n);
+
+  // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.
+  int samples = options.samples;
+  if (samples == 0) {
+    samples = 64;
+    while (samples < 8 * H) samples *= 2;
+  }
+  s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
+  const Eigen::MatrixXd q = s.displacement(s.t);
+  s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const TrainMesh& mesh = meshes[m];
+    for (int k = 0; k < samples; ++k) {
+      const double phi = mesh.phaseAt(s.t(k), input_speed);
+      s.mesh_force(k, m) =
+          mesh.stiffness->stiffness(phi) *
+          (meshDeflection(mesh, q.row(k).transpose()) - mesh.transmission_error.value(phi));
+    }
+    const Eigen::VectorXd f = s.mesh_force.col(m);
+    s.mesh_force_mean.push_back(f.mean());
+    s.mesh_force_max.push_back(f.maxCoeff());
+    s.mesh_force_min.push_back(f.minCoeff());
+    s.dynamic_factor.push_back(
+        std::abs(f.mean()) > 0.0 ? f.cwiseAbs().maxCoeff() / std::abs(f.mean()) : 0.0);
+    std::vector<double> amplitudes;
+    for (int l = 1; l <= L; ++l) {
+      Complex sum = 0.0;
+      const double step = kTwoPi * l * base.mesh_multiple[m] / samples;
+      for (int k = 0; k < samples; ++k) sum += f(k) * std::polar(1.0, -step * k);
+      amplitudes.push_back(2.0 * std::abs(sum) / samples);
+    }
+    s.mesh_force_harmonics.push_back(std::move(amplitudes));
+  }
+  for (const TrainElement& e : model.elements()) {
+    Eigen::MatrixXd forces(samples, e.local_stiffness.rows());
+    for (int k = 0; k < samples; ++k) {
+      forces.row(k) = (e.local_stiffness * deformation(e, q.row(k).transpose())).transpose();
+    }
+    const Eigen::RowVectorXd mean = forces.colwise().mean();
+    double peak = 0.0;
+    for (int k = 0; k < samples; ++k) peak = std::max(peak, (forces.row(k) - mean).norm());
+    s.element_dynamic_force.push_back(peak);
+  }
+  return s;
+}
+
+}  // namespace geardyn

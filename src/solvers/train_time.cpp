@@ -1,0 +1,198 @@
+/// Newmark integration of a gear train with time-varying mesh stiffness (train_time.h).
+
+#include "geardyn/solvers/train_time.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/solvers/train_modal.h"
+#include "geardyn/solvers/train_response.h"
+
+namespace geardyn {
+namespace {
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+}
+
+void TrainTimeOptions::validate() const {
+  newmark.validate();
+  if (!(time_step >= 0.0) || !std::isfinite(time_step)) {
+    throw InputError("time.time_step", fmt::format("{:g} s", time_step),
+                     "a step >= 0 s (0: derived)");
+  }
+  if (steps_per_mesh_period < 8) {
+    throw InputError("time.steps_per_mesh_period", std::to_string(steps_per_mesh_period),
+                     "an integer >= 8");
+  }
+  if (!(duration >= 0.0) || !std::isfinite(duration)) {
+    throw InputError("time.duration", fmt::format("{:g} s", duration),
+                     "a duration >= 0 s (0: derived)");
+  }
+  if (record_periods < 1) {
+    throw InputError("time.record_periods", std::to_string(record_periods), "an integer >= 1");
+  }
+}
+
+TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double input_speed,
+                                         double time_step, NewmarkParameters newmark)
+    : model_(model),
+      speed_(input_speed),
+      dt_(time_step),
+      beta_(newmark.beta),
+      gamma_(newmark.gamma) {
+  newmark.validate();
+  a0_ = 1.0 / (beta_ * dt_ * dt_);
+  a1_ = gamma_ / (beta_ * dt_);
+  a2_ = 1.0 / (beta_ * dt_);
+  a3_ = 0.5 / beta_ - 1.0;
+  a4_ = gamma_ / beta_ - 1.0;
+  a5_ = dt_ * (0.5 * gamma_ / beta_ - 1.0);
+  const int n = model.dofCount();
+  const int r = static_cast<int>(model.meshes().size());
+  Cg_ = model.dampingAt(speed_);
+  K0_ = model.meanStiffnessAt(speed_);
+  V_.resize(n, r);
+  for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
+  lu_.compute(K0_ + a0_ * model.mass() + a1_ * Cg_);
+  Z_ = lu_.solve(V_);
+  S_ = V_.transpose() * Z_;  // W = Vᵀ A⁻¹ V; the step's matrix is I + D W
+  small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
+  small_matrix_ = Eigen::MatrixXd::Zero(r, r);
+  q_ = v_ = a_ = f_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
+  w_ = dk_ = ke_ = k_ = Eigen::VectorXd::Zero(r);
+}
+
+void TrainNewmarkStepper::meshState(double t) {
+  const auto& meshes = model_.meshes();
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const double phi = meshes[m].phaseAt(t, speed_);
+    k_(m) = meshes[m].stiffness->stiffness(phi);
+    dk_(m) = k_(m) - meshes[m].mean_stiffness;
+    ke_(m) = k_(m) * meshes[m].transmission_error.value(phi);
+  }
+}
+
+void TrainNewmarkStepper::reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+  t_ = t;
+  q_ = q;
+  v_ = qdot;
+  meshState(t);
+  // M a = F − C v − K(t) q.
+  f_ = model_.staticLoad() + V_ * ke_ - Cg_ * v_ - K0_ * q_ -
+       V_ * (dk_.asDiagonal() * (V_.transpose() * q_));
+  a_ = model_.mass().llt().solve(f_);
+}
+
+void TrainNewmarkStepper::step() {
+  const double t1 = t_ + dt_;
+  meshState(t1);
+  rhs_.noalias() = model_.staticLoad();
+  rhs_.noalias() += V_ * ke_;
+  y_ = a0_ * q_ + a2_ * v_ + a3_ * a_;
+  rhs_.noalias() += model_.mass() * y_;
+  y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
+  rhs_.noalias() += Cg_ * y_;
+  y_ = lu_.solve(rhs_);
+  if (dk_.size() > 0) {
+    // Woodbury: (A + V D Vᵀ)⁻¹ b = y − Z (I + D W)⁻¹ D Vᵀ y.
+    w_.noalias() = V_.transpose() * y_;
+    w_.array() *= dk_.array();
+    small_matrix_.noalias() = dk_.asDiagonal() * S_;
+    small_matrix_.diagonal().array() += 1.0;
+    small_.compute(small_matrix_);
+    w_ = small_.solve(w_);
+    y_.noalias() -= Z_ * w_;
+  }
+  // y_ is q_{n+1}.
+  rhs_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * a_;  // a_{n+1}
+  v_ += dt_ * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
+  a_ = rhs_;
+  q_ = y_;
+  t_ = t1;
+}
+
+double TrainNewmarkStepper::meshForce(int mesh) const {
+  const TrainMesh& m = model_.meshes()[mesh];
+  const double phi = m.phaseAt(t_, speed_);
+  return m.stiffness->stiffness(phi) * (V_.col(mesh).dot(q_) - m.transmission_error.value(phi));
+}
+
+TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
+                                         const TrainTimeOptions& options) {
+  options.validate();
+  if (model.meshes().empty()) throw InputError("meshes", "", "a train with at least one mesh");
+  if (!(std::abs(input_speed) > 0.0)) {
+    throw InputError("operating_point.speed_rpm", "0", "a speed != 0 for a time response");
+  }
+  double fastest = 0.0;
+  for (const TrainMesh& m : model.meshes()) fastest = std::max(fastest, m.frequency_ratio);
+  fastest *= std::abs(input_speed);
+  // The common period of all meshes (1e9 base harmonics: no limit for the time domain).
+  const double base = trainBaseFrequency(model, 1, 1000000000).ratio * std::abs(input_speed);
+  const double period = 1.0 / base;
+  double dt =
+      options.time_step > 0 ? options.time_step : 1.0 / (fastest * options.steps_per_mesh_period);
+  const long long per_period = static_cast<long long>(std::ceil(period / dt - 1e-9));
+  dt = period / static_cast<double>(per_period);  // whole steps per common period
+
+  double duration = options.duration;
+  if (duration == 0.0) {
+    // Long enough for the slowest-decaying elastic mode to fall by 1e-6, then the window.
+    double decay = HUGE_VAL;
+    for (const TrainMode& mode : trainModes(model, input_speed, {0, -1.0, false})) {
+      if (mode.eigenvalue.real() < 0.0) decay = std::min(decay, -mode.eigenvalue.real());
+    }
+    if (!std::isfinite(decay) || decay <= 0.0) {
+      throw InputError("time.duration", "0 (derived)",
+                       "a duration > 0 s: the train has an undamped mode, so no transient decays "
+                       "(add mesh or bearing damping, or give the duration)");
+    }
+    duration = std::log(1e6) / decay + options.record_periods * period;
+  }
+  const long long periods = std::max<long long>(
+      options.record_periods, static_cast<long long>(std::ceil(duration / period)));
+  const long long steps = periods * per_period;
+  if (steps > 200000000LL) {
+    throw InputError(
+        "time.duration", fmt::format("{:g} s", duration),
+        fmt::format("fewer than 2e8 steps of {:.3g} s (this run needs {:.3g}); shorten "
+                    "it or coarsen time.steps_per_mesh_period",
+                    dt, static_cast<double>(steps)));
+  }
+  TrainNewmarkStepper stepper(model, input_speed, dt, options.newmark);
+  const int n = model.dofCount();
+  Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n);
+  if (options.start_from_static) q0 = solveTrainStatic(model, input_speed).displacement;
+  stepper.reset(0.0, q0, Eigen::VectorXd::Zero(n));
+
+  TrainTimeResponse r;
+  r.time_step = dt;
+  const long long recorded = options.record_periods * per_period;
+  const long long first = steps - recorded;
+  r.t.resize(recorded);
+  r.displacement.resize(recorded, n);
+  r.mesh_force.resize(recorded, static_cast<Eigen::Index>(model.meshes().size()));
+  for (long long k = 1; k <= steps; ++k) {
+    stepper.step();
+    if (k % per_period == 0 && !stepper.displacement().allFinite()) {
+      r.status = "diverged";
+      r.message = fmt::format("Newmark diverged at t = {:.6g} s", stepper.time());
+      r.steps = k;
+      return r;
+    }
+    if (k > first) {
+      const long long i = k - first - 1;
+      r.t(i) = stepper.time();
+      r.displacement.row(i) = stepper.displacement().transpose();
+      for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) {
+        r.mesh_force(i, m) = stepper.meshForce(static_cast<int>(m));
+      }
+    }
+  }
+  r.steps = steps;
+  return r;
+}
+
+}  // namespace geardyn

@@ -1,0 +1,383 @@
+/// Gear-train assembly: bodies, kinematics, layout, elements and matrices (gear_train_model.h).
+/// The meshes are built in train_meshes.cpp.
+
+#include "geardyn/system/gear_train_model.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "geardyn/error.h"
+#include "geardyn/system/detail/train_building.h"
+
+namespace geardyn {
+namespace {
+
+using detail::PointJacobian;
+
+void requireNonNegative(double value, const std::string& key, const std::string& unit) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw InputError(key, fmt::format("{:g} {}", value, unit), "a finite number >= 0");
+  }
+}
+
+/// Mass and polar inertia of solid-of-revolution sections.
+void addSections(const TrainShaftSpec& shaft, double& mass, double& inertia) {
+  const std::string key = "shafts." + shaft.name;
+  const std::size_t n = shaft.section_lengths.size();
+  auto item = [&](const std::vector<double>& values, std::size_t i, const char* name) {
+    if (values.empty()) return 0.0;
+    if (values.size() == 1) return values[0];
+    if (values.size() != n) {
+      throw InputError(key + "." + name, fmt::format("{} values", values.size()),
+                       fmt::format("one value or one per section ({})", n));
+    }
+    return values[i];
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const double length = shaft.section_lengths[i];
+    const double ro = 0.5 * item(shaft.outer_diameters, i, "outer_diameters");
+    const double ri = 0.5 * item(shaft.inner_diameters, i, "inner_diameters");
+    if (!(length > 0.0) || !(ro > 0.0) || !(ri >= 0.0 && ri < ro)) {
+      throw InputError(key + ".section_lengths",
+                       fmt::format("section {}: length {:g} m, diameters {:g}/{:g} m", i, length,
+                                   2 * ro, 2 * ri),
+                       "lengths > 0 and 0 <= inner < outer diameter");
+    }
+    const double m = shaft.density * std::numbers::pi * (ro * ro - ri * ri) * length;
+    mass += m;
+    inertia += 0.5 * m * (ro * ro + ri * ri);
+  }
+}
+
+}  // namespace
+
+std::string toString(TrainDofs dofs) {
+  return dofs == TrainDofs::kPlanar ? "planar" : "torsional";
+}
+
+TrainDofs parseTrainDofs(const std::string& text, const std::string& key) {
+  if (text == "planar") return TrainDofs::kPlanar;
+  if (text == "torsional") return TrainDofs::kTorsional;
+  throw InputError(key, "\"" + text + "\"", "\"torsional\" or \"planar\"");
+}
+
+std::string toString(TrainMeshKind kind) {
+  switch (kind) {
+    case TrainMeshKind::kExternal:
+      return "external";
+    case TrainMeshKind::kInternal:
+      return "internal";
+    case TrainMeshKind::kSunPlanet:
+      return "sun_planet";
+    case TrainMeshKind::kRingPlanet:
+      return "ring_planet";
+  }
+  return "?";
+}
+
+double TrainMesh::phaseAt(double t, double input_speed) const {
+  return frequency_ratio * std::abs(input_speed) * t + phase;
+}
+
+GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {
+  buildBodies();
+  buildMeshes();
+  buildElements();
+  assemble();
+}
+
+int GearTrainModel::bodyIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int GearTrainModel::rotationDof(int body) const {
+  return bodies_[body].first_dof + (spec_.dofs == TrainDofs::kPlanar ? 2 : 0);
+}
+
+int GearTrainModel::translationDof(int body) const {
+  return spec_.dofs == TrainDofs::kPlanar ? bodies_[body].first_dof : -1;
+}
+
+std::string GearTrainModel::dofName(int i) const {
+  const int per = dofsPerBody();
+  const int body = i / per;
+  static constexpr const char* kNames[3] = {"y", "z", "theta"};
+  return bodies_[body].name + "." + (per == 3 ? kNames[i % 3] : "theta");
+}
+
+void GearTrainModel::buildBodies() {
+  if (spec_.shafts.empty()) throw InputError("shafts", "", "at least one shaft");
+  std::set<std::string> names;
+  auto unique = [&](const std::string& name, const std::string& key) {
+    if (name.empty()) throw InputError(key, "\"\"", "a non-empty name");
+    if (!names.insert(name).second) {
+      throw InputError(key, "\"" + name + "\"",
+                       "a name used once: shafts, gears, meshes, bearings, couplings and stages "
+                       "share one name space");
+    }
+  };
+  for (const auto& s : spec_.shafts) unique(s.name, "shafts." + s.name);
+  for (const auto& g : spec_.gears) unique(g.name, "gears." + g.name);
+  for (const auto& m : spec_.meshes) unique(m.name, "meshes." + m.name);
+  for (const auto& b : spec_.bearings) unique(b.name, "bearings." + b.name);
+  for (const auto& c : spec_.couplings) unique(c.name, "couplings." + c.name);
+  for (const auto& st : spec_.stages) unique(st.name, "planetary." + st.name);
+
+  for (const auto& shaft : spec_.shafts) {
+    TrainBody body;
+    body.name = shaft.name;
+    const std::string key = "shafts." + shaft.name;
+    requireNonNegative(shaft.mass, key + ".mass", "kg");
+    requireNonNegative(shaft.polar_inertia, key + ".polar_inertia", "kg m^2");
+    body.mass = shaft.mass;
+    body.polar_inertia = shaft.polar_inertia;
+    addSections(shaft, body.mass, body.polar_inertia);
+    shaft_body_.push_back(static_cast<int>(bodies_.size()));
+    bodies_.push_back(body);
+  }
+  for (const auto& gear : spec_.gears) {
+    const int b = detail::shaftBodyOf(*this, spec_, gear.shaft, "gears." + gear.name + ".shaft");
+    gear.gear.validate("gears." + gear.name);
+    if (gear.body && !gear.internal) {
+      const GearBodyMass mass = gearBodyMass(gear.gear);
+      bodies_[b].mass += mass.mass;
+      bodies_[b].polar_inertia += mass.polar_inertia;
+    }
+  }
+  // Planets: one body each, in the stage's carrier frame.
+  for (std::size_t s = 0; s < spec_.stages.size(); ++s) {
+    const PlanetaryStageSpec& st = spec_.stages[s];
+    const std::string key = "planetary." + st.name;
+    if (st.planets < 1 || st.planets > 32) {
+      throw InputError(key + ".planets", std::to_string(st.planets), "an integer in [1, 32]");
+    }
+    st.planet.validate(key + ".planet");
+    requireNonNegative(st.planet_mass, key + ".planet_mass", "kg");
+    requireNonNegative(st.planet_inertia, key + ".planet_inertia", "kg m^2");
+    const GearBodyMass planet_body = gearBodyMass(st.planet);
+    for (int n = 0; n < st.planets; ++n) {
+      TrainBody body;
+      body.name = fmt::format("{}.planet{}", st.name, n + 1);
+      body.kind = TrainBodyKind::kPlanet;
+      body.stage = static_cast<int>(s);
+      body.planet = n;
+      body.mass = st.planet_mass + (st.planet_body ? planet_body.mass : 0.0);
+      body.polar_inertia = st.planet_inertia + (st.planet_body ? planet_body.polar_inertia : 0.0);
+      bodies_.push_back(body);
+    }
+  }
+  const int per = dofsPerBody();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    bodies_[b].first_dof = static_cast<int>(b) * per;
+    if (!(bodies_[b].polar_inertia > 0.0)) {
+      throw InputError(bodies_[b].kind == TrainBodyKind::kPlanet
+                           ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_inertia"
+                           : "shafts." + bodies_[b].name + ".polar_inertia",
+                       "0 kg m^2",
+                       "a body needs a polar inertia > 0 (its own, its sections' or its gears')");
+    }
+    if (spec_.dofs == TrainDofs::kPlanar && !(bodies_[b].mass > 0.0)) {
+      throw InputError(bodies_[b].kind == TrainBodyKind::kPlanet
+                           ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_mass"
+                           : "shafts." + bodies_[b].name + ".mass",
+                       "0 kg", "planar DOFs need a mass > 0 on every body");
+    }
+  }
+  dof_count_ = static_cast<int>(bodies_.size()) * per;
+}
+
+void GearTrainModel::buildElements() {
+  const bool planar = spec_.dofs == TrainDofs::kPlanar;
+  auto add = [&](std::string name, std::string kind, const std::vector<PointJacobian>& parts,
+                 const Eigen::Matrix2d& k2, const Eigen::Matrix2d& c2) {
+    // Relative displacement d = Σ J_i q: K = Jᵀ k J over the union of the DOFs.
+    TrainElement e{std::move(name), std::move(kind), {}, {}, {}, k2};
+    Eigen::MatrixXd J;
+    detail::stackJacobians(parts, e.dofs, J);
+    e.stiffness = J.transpose() * k2 * J;
+    e.jacobian = J;
+    const Eigen::MatrixXd c = J.transpose() * c2 * J;
+    elements_.push_back(e);
+    element_damping_.push_back(c);
+  };
+  auto add_torsion = [&](std::string name, std::string kind, std::vector<int> dofs,
+                         std::vector<double> signs, double k, double c) {
+    TrainElement e{std::move(name), std::move(kind), std::move(dofs), {}, {}, {}};
+    Eigen::VectorXd s = Eigen::Map<Eigen::VectorXd>(signs.data(), signs.size());
+    e.stiffness = k * s * s.transpose();
+    e.jacobian = s.transpose();
+    e.local_stiffness = Eigen::MatrixXd::Constant(1, 1, k);
+    elements_.push_back(e);
+    element_damping_.push_back(c * s * s.transpose());
+  };
+
+  for (const auto& b : spec_.bearings) {
+    const std::string key = "bearings." + b.name;
+    const int body = detail::shaftBodyOf(*this, spec_, b.shaft, key + ".shaft");
+    const int other = b.other_shaft.empty()
+                          ? -1
+                          : detail::shaftBodyOf(*this, spec_, b.other_shaft, key + ".other_shaft");
+    if (other == body) {
+      throw InputError(key + ".other_shaft", "\"" + b.other_shaft + "\"",
+                       "another shaft than `shaft` (or empty for the housing)");
+    }
+    for (auto [v, n] : {std::pair{b.kyy, "kyy"},
+                        {b.kzz, "kzz"},
+                        {b.cyy, "cyy"},
+                        {b.czz, "czz"},
+                        {b.k_torsion, "k_torsion"},
+                        {b.c_torsion, "c_torsion"}}) {
+      requireNonNegative(v, key + "." + n, n[0] == 'k' ? "N/m" : "N s/m");
+    }
+    const bool isotropic =
+        b.kyy == b.kzz && b.kyz == 0 && b.kzy == 0 && b.cyy == b.czz && b.cyz == 0 && b.czy == 0;
+    if (planar && !isotropic &&
+        (bodies_[body].stage >= 0 || (other >= 0 && bodies_[other].stage >= 0))) {
+      throw InputError(key + ".kzz", fmt::format("{:g} N/m", b.kzz),
+                       fmt::format("equal to kyy ({:g} N/m) without cross terms: the bearing "
+                                   "holds a member formulated in a rotating carrier frame, where "
+                                   "an anisotropic support would vary in time (set the stage's "
+                                   "carrier_frame_terms = false for the fixed-frame model)",
+                                   b.kyy));
+    }
+    if (planar && (b.kyy > 0 || b.kzz > 0 || b.cyy > 0 || b.czz > 0 || b.kyz != 0 || b.kzy != 0)) {
+      Eigen::Matrix2d k, c;
+      k << b.kyy, b.kyz, b.kzy, b.kzz;
+      c << b.cyy, b.cyz, b.czy, b.czz;
+      std::vector<PointJacobian> parts{detail::translationJacobian(*this, body, 1.0)};
+      if (other >= 0) {
+        detail::requireSameFrame(*this, body, other, key);
+        parts.push_back(detail::translationJacobian(*this, other, -1.0));
+      }
+      add(b.name, "bearing", parts, k, c);
+    }
+    if (b.k_torsion > 0 || b.c_torsion > 0) {
+      std::vector<int> dofs{rotationDof(body)};
+      std::vector<double> signs{1.0};
+      if (other >= 0) dofs.push_back(rotationDof(other)), signs.push_back(-1.0);
+      add_torsion(b.name + ".torsion", other >= 0 ? "coupling" : "support", dofs, signs,
+                  b.k_torsion, b.c_torsion);
+    }
+  }
+  for (const auto& c : spec_.couplings) {
+    const std::string key = "couplings." + c.name;
+    const int a = detail::shaftBodyOf(*this, spec_, c.shaft_a, key + ".shafts");
+    const int b = detail::shaftBodyOf(*this, spec_, c.shaft_b, key + ".shafts");
+    if (a == b) throw InputError(key + ".shafts", "\"" + c.shaft_a + "\"", "two different shafts");
+    requireNonNegative(c.c_torsion, key + ".c_torsion", "N m s/rad");
+    requireNonNegative(c.k_lateral, key + ".k_lateral", "N/m");
+    requireNonNegative(c.c_lateral, key + ".c_lateral", "N s/m");
+    if (!(c.k_torsion > 0.0)) {
+      throw InputError(key + ".k_torsion", fmt::format("{:g} N m/rad", c.k_torsion),
+                       "a torsional stiffness > 0 (a coupling transmits torque)");
+    }
+    add_torsion(c.name, "coupling", {rotationDof(a), rotationDof(b)}, {1.0, -1.0}, c.k_torsion,
+                c.c_torsion);
+    if (planar && (c.k_lateral > 0 || c.c_lateral > 0)) {
+      detail::requireSameFrame(*this, a, b, key);
+      add(c.name + ".lateral", "coupling",
+          {detail::translationJacobian(*this, a, 1.0), detail::translationJacobian(*this, b, -1.0)},
+          c.k_lateral * Eigen::Matrix2d::Identity(), c.c_lateral * Eigen::Matrix2d::Identity());
+    }
+  }
+  // Planet pins: the planet centre against the carrier's point at the planet's position,
+  // radial and tangential springs (Lin & Parker 1999: k_p both ways).
+  if (planar) {
+    for (std::size_t p = 0; p < bodies_.size(); ++p) {
+      const TrainBody& planet = bodies_[p];
+      if (planet.kind != TrainBodyKind::kPlanet) continue;
+      const PlanetaryStageSpec& st = spec_.stages[planet.stage];
+      const std::string key = "planetary." + st.name;
+      requireNonNegative(st.pin_radial_stiffness, key + ".pin_radial_stiffness", "N/m");
+      requireNonNegative(st.pin_tangential_stiffness, key + ".pin_tangential_stiffness", "N/m");
+      requireNonNegative(st.pin_damping, key + ".pin_damping", "N s/m");
+      if (!(st.pin_radial_stiffness > 0.0 && st.pin_tangential_stiffness > 0.0)) {
+        throw InputError(key + ".pin_radial_stiffness",
+                         fmt::format("{:g} N/m", st.pin_radial_stiffness),
+                         "pin stiffnesses > 0 radially and tangentially with planar DOFs");
+      }
+      const int carrier = detail::carrierBody(*this, planet.stage);
+      const Eigen::Vector2d r = planet.centre - bodies_[carrier].centre;
+      const Eigen::Vector2d er = r.normalized(), et(-er.y(), er.x());
+      const Eigen::Matrix2d k = st.pin_radial_stiffness * er * er.transpose() +
+                                st.pin_tangential_stiffness * et * et.transpose();
+      add(planet.name + ".pin", "pin",
+          {detail::translationJacobian(*this, static_cast<int>(p), 1.0),
+           detail::pointJacobian(*this, carrier, planet.centre, -1.0)},
+          k, st.pin_damping * Eigen::Matrix2d::Identity());
+    }
+  }
+}
+
+void GearTrainModel::assemble() {
+  const int n = dof_count_;
+  const bool planar = spec_.dofs == TrainDofs::kPlanar;
+  M_ = Eigen::MatrixXd::Zero(n, n);
+  K_ = M_, C_ = M_, G_ = M_, Komega_ = M_, Kmesh_ = M_;
+  F0_ = Eigen::VectorXd::Zero(n);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const TrainBody& body = bodies_[b];
+    M_(rotationDof(b), rotationDof(b)) = body.polar_inertia;
+    if (!planar) continue;
+    const int y = body.first_dof;
+    M_(y, y) = M_(y + 1, y + 1) = body.mass;
+    if (rotatingFrame(static_cast<int>(b)) >= 0) {
+      // Carrier frame turning at Ω_c = r_c Ω: m(ü + 2Ω_c J u̇ − Ω_c² u), J = [[0, −1], [1, 0]]
+      // (Lin & Parker 1999 eq. 1; Ω_c about +x, (y, z) the carrier's axes).
+      const double rc = detail::carrierSpeedRatio(*this, spec_, rotatingFrame(static_cast<int>(b)));
+      G_(y, y + 1) -= 2.0 * body.mass * rc;
+      G_(y + 1, y) += 2.0 * body.mass * rc;
+      Komega_(y, y) -= body.mass * rc * rc;
+      Komega_(y + 1, y + 1) -= body.mass * rc * rc;
+    }
+  }
+  Eigen::MatrixXd K_structure = Eigen::MatrixXd::Zero(n, n);
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const auto& dofs = elements_[e].dofs;
+    for (std::size_t i = 0; i < dofs.size(); ++i) {
+      for (std::size_t j = 0; j < dofs.size(); ++j) {
+        K_structure(dofs[i], dofs[j]) += elements_[e].stiffness(i, j);
+        C_(dofs[i], dofs[j]) += element_damping_[e](i, j);
+      }
+    }
+  }
+  K_ = K_structure;
+  for (const TrainMesh& m : meshes_) {
+    const Eigen::VectorXd v = meshVector(static_cast<int>(&m - meshes_.data()));
+    Kmesh_ += m.mean_stiffness * v * v.transpose();
+    C_ += m.damping * v * v.transpose();
+  }
+  C_ += spec_.mass_proportional_damping * M_ + spec_.stiffness_proportional_damping * (K_ + Kmesh_);
+  detail::applyOperatingLoads(*this, spec_, F0_, output_torque_);
+}
+
+int GearTrainModel::rotatingFrame(int body) const {
+  const int stage = bodies_[body].stage;
+  return spec_.dofs == TrainDofs::kPlanar && stage >= 0 && spec_.stages[stage].carrier_frame_terms
+             ? stage
+             : -1;
+}
+
+Eigen::VectorXd GearTrainModel::meshVector(int mesh) const {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(dof_count_);
+  const TrainMesh& m = meshes_[mesh];
+  for (std::size_t i = 0; i < m.dofs.size(); ++i) v(m.dofs[i]) += m.gradient[i];
+  return v;
+}
+
+Eigen::MatrixXd GearTrainModel::meanStiffnessAt(double input_speed) const {
+  return K_ + Kmesh_ + input_speed * input_speed * Komega_;
+}
+
+Eigen::MatrixXd GearTrainModel::dampingAt(double input_speed) const {
+  return C_ + input_speed * G_;
+}
+
+}  // namespace geardyn

@@ -1,0 +1,256 @@
+/// Gear-train statics, frequency-domain steady state (linear harmonic balance) and Newmark,
+/// checked against closed forms and against each other.
+
+#include "geardyn/solvers/train_response.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/error.h"
+#include "geardyn/solvers/train_time.h"
+#include "geardyn/stiffness/fourier_stiffness.h"
+#include "system/sample_trains.h"
+
+namespace geardyn {
+namespace {
+
+using testing::kDeg;
+using testing::linParker1999;
+using testing::twoStageReducer;
+
+TEST(TrainKinematics, TwoStageReducerRatiosAndMeshFrequencies) {
+  const GearTrainModel model(twoStageReducer());
+  const auto& b = model.bodies();
+  EXPECT_DOUBLE_EQ(b[model.bodyIndex("input")].speed_ratio, 1.0);
+  EXPECT_NEAR(b[model.bodyIndex("intermediate")].speed_ratio, -23.0 / 51.0, 1e-14);
+  EXPECT_NEAR(b[model.bodyIndex("output")].speed_ratio, 23.0 / 51.0 * 17.0 / 47.0, 1e-14);
+  EXPECT_NEAR(model.meshes()[0].frequency_ratio * 2 * std::numbers::pi, 23.0, 1e-12);
+  EXPECT_NEAR(model.meshes()[1].frequency_ratio * 2 * std::numbers::pi, 23.0 / 3.0, 1e-12);
+  const TrainBaseFrequency base = trainBaseFrequency(model, 10, 4000);
+  EXPECT_NEAR(base.ratio * 2 * std::numbers::pi, 23.0 / 3.0, 1e-12);
+  EXPECT_EQ(base.mesh_multiple, (std::vector<int>{3, 1}));
+}
+
+TEST(TrainStatics, MeshForcesFollowTheTorqueFlow) {
+  const GearTrainModel model(twoStageReducer());
+  const TrainStaticResult r = solveTrainStatic(model, model.inputSpeed());
+  ASSERT_EQ(r.status, "ok") << r.message;
+  EXPECT_EQ(r.rigid_modes, 1);  // the rolling of the whole train
+  // F₁ = T / r_b1, F₂ = T (r_b2 / r_b1) / r_b3 (lossless), to round-off.
+  const double T = 200.0;
+  const auto& m = model.meshes();
+  const double f1 = T / m[0].base_radius_a;
+  const double f2 = T * m[0].base_radius_b / m[0].base_radius_a / m[1].base_radius_a;
+  EXPECT_NEAR(r.mesh_force[0], f1, 1e-9 * f1);
+  EXPECT_NEAR(r.mesh_force[1], f2, 1e-9 * f2);
+  EXPECT_NEAR(model.outputTorque(), -T * 51.0 / 23.0 * 47.0 / 17.0, 1e-9 * T);
+  // The input shaft's two bearings carry the stage-1 mesh force (the coupling carries torque
+  // and no lateral load at equilibrium): |Σ F_bearings| = F₁.
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    const TrainElement& el = model.elements()[e];
+    if (el.name.rfind("input_", 0) != 0) continue;
+    Eigen::VectorXd local(el.dofs.size());
+    for (std::size_t i = 0; i < el.dofs.size(); ++i) local(i) = r.displacement(el.dofs[i]);
+    sum += el.local_stiffness * el.jacobian * local;
+  }
+  EXPECT_NEAR(sum.norm(), f1, 1e-8 * f1);
+}
+
+TEST(TrainStatics, PlanetLoadSharingWithPinErrors) {
+  GearTrainSpec spec = linParker1999(3);
+  spec.operating.input_torque = 500.0;
+  const TrainStaticResult even = solveTrainStatic(GearTrainModel(spec), 0.0);
+  ASSERT_EQ(even.load_sharing.size(), 1u);
+  EXPECT_NEAR(even.load_sharing[0].load_sharing_factor, 1.0, 1e-9);
+  // Each planet carries a third of the sun torque: F = T / (3 r_bs).
+  const GearTrainModel model(spec);
+  const double f = 500.0 / (3.0 * model.meshes()[0].base_radius_a);
+  for (double force : even.load_sharing[0].sun_planet_force) EXPECT_NEAR(force, f, 1e-8 * f);
+  // A tangential pin error on one planet changes its load and the others' (the factor rises
+  // above 1), linearly in the error, while the planets together still carry the sun torque.
+  auto forces = [&](double error) {
+    spec.stages[0].pin_position_errors = {error, 0.0, 0.0};
+    return solveTrainStatic(GearTrainModel(spec), 0.0).load_sharing[0];
+  };
+  const TrainStageLoadSharing e1 = forces(20e-6), e2 = forces(40e-6);
+  EXPECT_GT(e1.load_sharing_factor, 1.005);
+  for (int n = 0; n < 3; ++n) {
+    const double d1 = e1.sun_planet_force[n] - f, d2 = e2.sun_planet_force[n] - f;
+    EXPECT_NEAR(d2, 2.0 * d1, 1e-8 * f) << "planet " << n + 1;
+  }
+  double total = 0.0;
+  for (double force : e1.sun_planet_force) total += force;
+  EXPECT_NEAR(total, 3 * f, 1e-8 * f);
+}
+
+std::shared_ptr<const MeshStiffness> smoothStiffness(double mean, double phase_deg) {
+  // Smooth k (three harmonics), so that the harmonic balance converges spectrally and the
+  // comparison is not limited by Gibbs oscillations of a step.
+  return std::make_shared<FourierMeshStiffness>(mean, std::vector<double>{0.12, 0.05, 0.02},
+                                                std::vector<double>{phase_deg * kDeg, 0.3, 1.1},
+                                                1.6);
+}
+
+/// Newmark (Δt = mesh period / 512) against the harmonic-balance steady state (20 harmonics of
+/// each mesh) over one common period: mesh forces sample by sample. The tolerance 0.5 % of the
+/// peak-to-peak is the acceptance of the gear-train issue; the Newmark period error at the
+/// tenth mesh harmonic is (ω Δt)²/12 ≈ 1.5e-3 of a percent, the truncation of the balance at
+/// 20 harmonics of a three-harmonic stiffness below 1e-6.
+void compareTimeAndFrequencyDomain(const GearTrainModel& model, double speed) {
+  TrainSteadyOptions steady;
+  steady.mesh_harmonics = 20;
+  const TrainSteadyState hbm = solveTrainSteadyState(model, speed, steady);
+  TrainTimeOptions time;
+  time.steps_per_mesh_period = 512;
+  const TrainTimeResponse newmark = solveTrainTimeResponse(model, speed, time);
+  ASSERT_EQ(newmark.status, "completed") << newmark.message;
+  // Shift Newmark's window to the balance's time origin (both are one common period).
+  const double period = 1.0 / hbm.base_frequency;
+  const Eigen::VectorXd t = newmark.t.array() - period * std::floor(newmark.t(0) / period);
+  const Eigen::MatrixXd q = hbm.displacement(t);
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    const TrainMesh& mesh = model.meshes()[m];
+    const double p2p = hbm.mesh_force_max[m] - hbm.mesh_force_min[m];
+    ASSERT_GT(p2p, 1e-3 * std::abs(hbm.mesh_force_mean[m])) << "no dynamics to compare";
+    double worst = 0.0;
+    for (Eigen::Index k = 0; k < t.size(); ++k) {
+      const double phi = mesh.phaseAt(t(k), speed);
+      double d = 0.0;
+      for (std::size_t i = 0; i < mesh.dofs.size(); ++i) d += mesh.gradient[i] * q(k, mesh.dofs[i]);
+      const double f = mesh.stiffness->stiffness(phi) * (d - mesh.transmission_error.value(phi));
+      worst = std::max(worst, std::abs(f - newmark.mesh_force(k, m)));
+    }
+    EXPECT_LT(worst, 5e-3 * p2p) << mesh.name << ": worst " << worst / p2p << " of p2p";
+    ::testing::Test::RecordProperty(mesh.name + "_relative_difference",
+                                    std::to_string(worst / p2p));
+  }
+}
+
+TEST(TrainSteadyState, NewmarkAgreesWithHarmonicBalanceTwoStage) {
+  GearTrainSpec spec = twoStageReducer(smoothStiffness(4e8, 0.0), smoothStiffness(6e8, 40.0));
+  spec.meshes[0].transmission_error.addFourier({5e-6, 1e-6}, {0.0, 0.5});
+  const GearTrainModel model(spec);
+  compareTimeAndFrequencyDomain(model, model.inputSpeed());
+}
+
+TEST(TrainSteadyState, NewmarkAgreesWithHarmonicBalancePlanetary) {
+  GearTrainSpec spec = linParker1999(3);
+  spec.stages[0].sun_planet_stiffness = smoothStiffness(5e8, 0.0);
+  spec.stages[0].ring_planet_stiffness = smoothStiffness(5e8, 70.0);
+  spec.stages[0].sun_planet_damping_ratio = spec.stages[0].ring_planet_damping_ratio = 0.04;
+  spec.bearings[0].cyy = spec.bearings[0].czz = 2e3;
+  spec.bearings[2].cyy = spec.bearings[2].czz = 2e3;
+  spec.stages[0].pin_damping = 2e3;
+  spec.bearings[1].c_torsion = 50.0;
+  spec.operating.input_torque = 300.0;
+  spec.operating.input_speed = 300.0;  // carrier at 75 rad/s: Coriolis terms on
+  const GearTrainModel model(spec);
+  compareTimeAndFrequencyDomain(model, model.inputSpeed());
+}
+
+TEST(TrainSteadyState, ConstantStiffnessWithoutErrorIsStatic) {
+  const GearTrainModel model(twoStageReducer());
+  const TrainSteadyState s = solveTrainSteadyState(model, model.inputSpeed());
+  const TrainStaticResult st = solveTrainStatic(model, model.inputSpeed());
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    EXPECT_NEAR(s.mesh_force_max[m], st.mesh_force[m], 1e-9 * st.mesh_force[m]);
+    EXPECT_NEAR(s.dynamic_factor[m], 1.0, 1e-9);
+  }
+}
+
+/// Parker (2000) in the forced response: a sun–planet transmission error of one order l,
+/// phased planet by planet, moves the central members only as the rule says — rotation only
+/// (l z_s / N integer), translation only ((l z_s ± 1)/N integer), or not at all.
+TEST(PlanetPhasing, ForcedResponseFollowsParkerRules) {
+  const int planets = 4, zs = 21, zp = 27;
+  for (int l = 1; l <= 4; ++l) {
+    GearTrainSpec spec = linParker1999(planets);
+    spec.gears[0].gear.teeth = zs;
+    spec.gears[1].gear.teeth = zs + 2 * zp;
+    spec.stages[0].planet.teeth = zp;
+    std::vector<double> amplitudes(l, 0.0), phases(l, 0.0);
+    amplitudes[l - 1] = 1e-6;
+    spec.stages[0].sun_planet_error.addFourier(amplitudes, phases);
+    spec.stages[0].sun_planet_damping_ratio = spec.stages[0].ring_planet_damping_ratio = 0.03;
+    spec.operating.input_speed = 100.0;
+    const GearTrainModel model(spec);
+    TrainSteadyOptions options;
+    options.mesh_harmonics = 4;
+    const TrainSteadyState s = solveTrainSteadyState(model, 100.0, options);
+    const int h = l * s.mesh_multiple[0];
+    double central_rotation = 0.0, central_translation = 0.0, planet_motion = 0.0;
+    for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+      const TrainBody& body = model.bodies()[b];
+      const int y = model.translationDof(static_cast<int>(b));
+      const int r = model.rotationDof(static_cast<int>(b));
+      const double rot = std::abs(s.harmonic(r, h)) * 0.05;  // ~ radius: metres at the teeth
+      const double trans = std::hypot(std::abs(s.harmonic(y, h)), std::abs(s.harmonic(y + 1, h)));
+      if (body.kind == TrainBodyKind::kPlanet) {
+        planet_motion = std::max(planet_motion, std::max(rot, trans));
+      } else {
+        central_rotation = std::max(central_rotation, rot);
+        central_translation = std::max(central_translation, trans);
+      }
+    }
+    const bool rotational = (l * zs) % planets == 0;
+    const bool translational = (l * zs + 1) % planets == 0 || (l * zs - 1) % planets == 0;
+    ASSERT_GT(planet_motion, 0.0);
+    const double zero = 1e-9 * planet_motion;  // exact cancellation leaves round-off
+    if (rotational) {
+      EXPECT_LT(central_translation, zero) << "l = " << l;
+      EXPECT_GT(central_rotation, 1e-3 * planet_motion) << "l = " << l;
+    } else if (translational) {
+      EXPECT_LT(central_rotation, zero) << "l = " << l;
+      EXPECT_GT(central_translation, 1e-3 * planet_motion) << "l = " << l;
+    } else {
+      EXPECT_LT(central_rotation, zero) << "l = " << l;
+      EXPECT_LT(central_translation, zero) << "l = " << l;
+    }
+  }
+}
+
+TEST(TrainInput, BadTrainsNameTheComponent) {
+  auto key_of = [](GearTrainSpec spec) {
+    try {
+      GearTrainModel model(std::move(spec));
+    } catch (const InputError& e) {
+      return e.key() + " | " + e.what();
+    }
+    return std::string("accepted");
+  };
+  GearTrainSpec a = twoStageReducer();
+  a.gears[1].shaft = "input";  // both gears of stage 1 on one shaft
+  EXPECT_NE(key_of(a).find("meshes.stage1.gears"), std::string::npos) << key_of(a);
+  GearTrainSpec b = twoStageReducer();
+  b.gears[1].gear.normal_module = 3.5e-3;
+  EXPECT_NE(key_of(b).find("gears.z2"), std::string::npos) << key_of(b);
+  GearTrainSpec c = twoStageReducer();
+  c.bearings[0].shaft = "inptu";
+  EXPECT_NE(key_of(c).find("did you mean \"input\""), std::string::npos) << key_of(c);
+  GearTrainSpec d = twoStageReducer();  // a third shaft meshing with both: a locked loop
+  d.shafts.push_back({"idler", 1.0, 1e-3, {}, {}, {}, 7850.0});
+  d.gears.push_back({"zi", "idler", testing::spurGear(30, 3e-3, 20.0, 0.03), false, true});
+  d.meshes.push_back({"loop_a",
+                      "z1",
+                      "zi",
+                      120 * kDeg,
+                      std::nullopt,
+                      d.meshes[0].stiffness,
+                      {},
+                      0.05,
+                      std::nullopt});
+  d.meshes.push_back(
+      {"loop_b", "zi", "z2", 0.0, std::nullopt, d.meshes[0].stiffness, {}, 0.05, std::nullopt});
+  const std::string locked = key_of(d);
+  EXPECT_NE(locked.find("locked"), std::string::npos) << locked;
+  EXPECT_NE(locked.find("loop_a"), std::string::npos) << locked;
+  GearTrainSpec e = twoStageReducer();
+  e.meshes[0].centre_distance = 0.1;  // not the distance the teeth need
+  EXPECT_NE(key_of(e).find("meshes.stage1.centre_distance"), std::string::npos) << key_of(e);
+}
+
+}  // namespace
+}  // namespace geardyn
