@@ -1,6 +1,8 @@
 /// The table of analysis commands. A new command adds one line here and one *_command.cpp.
 
 #include "command.h"
+#include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/train_analysis.h"
 #include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/geometry_io.h"
 #include "geardyn/io/hbm_io.h"
@@ -25,6 +27,7 @@ int runSweep(const CommandOptions& options);
 int runSpectrum(const io::Config& config, const CommandOptions& options);
 int runIdentify(const io::Config& config, const CommandOptions& options);
 int runLtca(const io::Config& config, const CommandOptions& options);
+int runTrain(const CommandOptions& options);
 
 std::vector<Command> allCommands() {
   Command rotor{
@@ -48,6 +51,13 @@ std::vector<Command> allCommands() {
                 "(--resume), gathered into sweep.h5 and sweep.csv",
                 io::sweepSchema, nullptr};
   sweep.run_file = runSweep;
+  Command train{"train",
+                "any gear train described once (shafts, gears, meshes, bearings, couplings, "
+                "planetary stages): kinematics and mesh phasing, static load sharing, modes, "
+                "Campbell, frequency-domain forced response and Newmark time response",
+                [] { return config::trainSchema(false); }, nullptr};
+  train.run_file = runTrain;
+  train.variant_schemas = {config::gearboxSchema};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
        io::geometrySchema, runGeometry},
@@ -68,6 +78,7 @@ std::vector<Command> allCommands() {
        "stability and Newmark checks",
        io::hbmSchema, runHbm},
       rotor,
+      train,
       {"spectrum",
        "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
        "compensation, forward/backward whirl peaks of a gear pair",

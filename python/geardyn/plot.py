@@ -15,6 +15,7 @@ import sys
 from ._plot_common import _read_columns, _save_atomically, plt
 from .plot_fe_rotor import plot_campbell, plot_rotor_fe  # noqa: F401  (re-exported)
 from .plot_sweep import plot_histograms, plot_sweep  # noqa: F401  (re-exported)
+from .plot_train import plot_train  # noqa: F401  (re-exported)
 
 
 def _read_profiles(path):
@@ -451,7 +452,7 @@ def plot_ltca(result_dir):
 PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
             "stats": plot_stats, "hbm": plot_hbm, "rotor": plot_rotor, "spectrum": plot_spectrum,
             "identify": plot_identify, "ltca": plot_ltca, "rotor_fe": plot_rotor_fe,
-            "sweep": plot_sweep}
+            "sweep": plot_sweep, "train": plot_train}
 
 
 def main(argv=None):

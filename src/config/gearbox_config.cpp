@@ -89,7 +89,11 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const io::Config& confi
                      "\"constant\" or \"api\" on a ring (internal) mesh: the tooth models are "
                      "written for external pairs");
   }
-  return io::buildMeshStiffnessModel(model, config, *pair, warnings);
+  std::vector<std::string> own;
+  auto k = io::buildMeshStiffnessModel(model, config, *pair, own);
+  const std::string where = prefix.substr(0, prefix.size() - 1);
+  for (const auto& w : own) warnings.push_back(where + " (" + model + " model): " + w);
+  return k;
 }
 
 }  // namespace
@@ -144,7 +148,7 @@ void addGearboxSections(io::ConfigSchema& schema) {
   schema.real("shafts.*.density").unit("kg/m^3").positive().defaultValue(7850.0).doc("ρ");
 
   schema.collection("gears", "Gears on shafts.");
-  io::addGearSection(schema, "gears.*", "gear", true);
+  io::addGearSection(schema, "gears.*", "gear (internal = true makes it a ring gear)", true);
   schema.string("gears.*.shaft").required().doc("the shaft it sits on");
   schema.boolean("gears.*.internal").defaultValue(false).doc("a ring gear with internal teeth");
   schema.boolean("gears.*.body")
@@ -294,7 +298,8 @@ io::ConfigSchema gearboxSchema() {
   io::ConfigSchema schema("gearbox",
                           "A gearbox description: shafts, gears, meshes, bearings, couplings, "
                           "planetary stages and the operating point, read by `geardyn train` "
-                          "(gearbox = \"file.toml\").");
+                          "([gearbox] file = \"gearbox.toml\" in the analysis file).");
+  schema.setTitle("Gearbox description file");
   addGearboxSections(schema);
   return schema;
 }
@@ -352,9 +357,8 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
       pair_spec.pinion = a.gear;
       pair_spec.gear = b.gear;
       pair_spec.centre_distance = m.centre_distance;
-      // The pair's own validation names its keys; GearTrainModel re-checks with the train's
-      // names, so only the stiffness needs the pair here.
-      const GearPair pair(pair_spec);
+      const GearPair pair =
+          makeGearPair(pair_spec, "gears." + a.name, "gears." + b.name, "meshes." + name);
       m.stiffness = stiffnessFromConfig(config, p, &pair, width, a.gear.helix_angle,
                                         pair.contactRatioTotal(), warnings);
     }
@@ -407,7 +411,8 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     GearPairSpec sp;
     sp.pinion = sun.gear;
     sp.gear = st.planet;
-    const GearPair sun_pair(sp);
+    const GearPair sun_pair =
+        makeGearPair(sp, "gears." + st.sun, p + "planet", "planetary." + name);
     const InternalGearPair ring_pair(st.planet, ring.gear, sun_pair.centreDistance(),
                                      "planetary." + name);
     st.sun_planet_stiffness = stiffnessFromConfig(

@@ -302,4 +302,22 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
   }
 }
 
+GearPair makeGearPair(const GearPairSpec& spec, const std::string& pinion_key,
+                      const std::string& gear_key, const std::string& pair_key) {
+  try {
+    return GearPair(spec);
+  } catch (const InputError& error) {
+    std::string key = error.key();
+    for (const auto& [from, to] : {std::pair{std::string("pinion"), pinion_key},
+                                   {std::string("gear"), gear_key},
+                                   {std::string("pair"), pair_key}}) {
+      if (key == from || key.rfind(from + ".", 0) == 0) {
+        key = to + key.substr(from.size());
+        break;
+      }
+    }
+    throw InputError(key, error.value(), error.allowed());
+  }
+}
+
 }  // namespace geardyn

@@ -299,7 +299,13 @@ nlohmann::ordered_json Resolver::resolve(const toml::table& root) const {
     nlohmann::ordered_json value;
     const toml::node* node = root.at_path(path).node();
     if (node) {
-      value = convert(spec, *node);
+      if (path == spec.path) {
+        value = convert(spec, *node);
+      } else {  // an item of a collection: messages name its concrete path
+        KeySpec concrete = spec;
+        concrete.path = path;
+        value = convert(concrete, *node);
+      }
     } else if (spec.required) {
       const std::string section = parentPath(path);
       throw InputError(

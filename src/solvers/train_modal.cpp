@@ -113,7 +113,8 @@ std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_spee
   const Eigen::MatrixXd D = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
   std::vector<TrainMode> modes;
-  if (D.cwiseAbs().maxCoeff() == 0.0) {
+  const bool undamped = D.cwiseAbs().maxCoeff() == 0.0;
+  if (undamped) {
     // Undamped, no Coriolis: the symmetric problem gives exact real modes (multiplicities to
     // round-off) and keeps the rigid-body modes.
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
@@ -151,7 +152,9 @@ std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_spee
   for (TrainMode& mode : modes) {
     const bool is_rigid = std::abs(mode.eigenvalue) / kTwoPi < rigid;
     if (is_rigid) {
-      if (!options.keep_rigid) continue;
+      // The damped eigensolver returns a rigid-body pair at λ ≈ 0 with either sign of Im λ:
+      // only the symmetric path reports them, deterministically.
+      if (!options.keep_rigid || !undamped) continue;
       mode.frequency = 0.0;
     }
     kept.push_back(std::move(mode));

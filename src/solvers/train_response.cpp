@@ -4,8 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -176,43 +174,29 @@ Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) con
   return q;
 }
 
-TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input_speed,
-                                       const TrainSteadyOptions& options) {
+TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSteadyOptions& options)
+    : model_(model), options_(options) {
   options.validate();
-  if (!(std::abs(input_speed) > 0.0) || !std::isfinite(input_speed)) {
-    throw InputError("operating_point.speed_rpm", fmt::format("{:g} rad/s", input_speed),
-                     "a speed != 0: the steady state of a train at rest is its static response");
-  }
-  const TrainBaseFrequency base =
-      trainBaseFrequency(model, options.mesh_harmonics, options.max_base_harmonics);
-  TrainSteadyState s;
-  s.input_speed = input_speed;
-  s.base_frequency = base.ratio * std::abs(input_speed);
-  s.mesh_multiple = base.mesh_multiple;
+  base_ = trainBaseFrequency(model, options.mesh_harmonics, options.max_base_harmonics);
   const int L = options.mesh_harmonics;
-  int H = 0;
-  for (int p : base.mesh_multiple) H = std::max(H, p * L);
-  s.harmonics = H;
-  const int n = model.dofCount();
-  const int blocks = 2 * H + 1;
-  const double w0 = kTwoPi * s.base_frequency;
-
+  for (int p : base_.mesh_multiple) harmonics_ = std::max(harmonics_, p * L);
   // Fourier coefficients of every mesh's k and k·e over its own period, with its phase.
   const auto& meshes = model.meshes();
-  std::vector<std::vector<Complex>> k_hat(meshes.size()), ke_hat(meshes.size());
+  k_hat_.resize(meshes.size());
+  ke_hat_.resize(meshes.size());
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const TrainMesh& mesh = meshes[m];
     const MeshStiffnessSummary summary = summarizeMeshStiffness(*mesh.stiffness, L);
     const auto breaks = mesh.stiffness->discontinuities();
-    k_hat[m].assign(2 * L + 1, 0.0);
-    ke_hat[m].assign(2 * L + 1, 0.0);
+    k_hat_[m].assign(2 * L + 1, 0.0);
+    ke_hat_[m].assign(2 * L + 1, 0.0);
     const bool has_error = !mesh.transmission_error.isZero();
     for (int l = 0; l <= L; ++l) {
       Complex c = l == 0 ? Complex(summary.mean)
                          : 0.5 * Complex(summary.cosine[l - 1], -summary.sine[l - 1]);
       const Complex shift = std::polar(1.0, kTwoPi * l * mesh.phase);
-      k_hat[m][L + l] = c * shift;
-      k_hat[m][L - l] = std::conj(c * shift);
+      k_hat_[m][L + l] = c * shift;
+      k_hat_[m][L - l] = std::conj(c * shift);
       if (has_error) {
         const auto ke = [&](double phi) {
           return mesh.stiffness->stiffness(phi) * mesh.transmission_error.value(phi);
@@ -221,69 +205,111 @@ TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input
             [&](double phi) { return ke(phi) * std::cos(kTwoPi * l * phi); }, breaks);
         const double im = integrateOverPeriod(
             [&](double phi) { return -ke(phi) * std::sin(kTwoPi * l * phi); }, breaks);
-        ke_hat[m][L + l] = Complex(re, im) * shift;
-        ke_hat[m][L - l] = std::conj(ke_hat[m][L + l]);
+        ke_hat_[m][L + l] = Complex(re, im) * shift;
+        ke_hat_[m][L - l] = std::conj(ke_hat_[m][L + l]);
       }
     }
   }
+}
 
-  // Assembly of the (2H+1) n complex system, block b = h + H.
-  const Eigen::MatrixXd K = model.stiffness() + input_speed * input_speed * model.centripetal();
+TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input_speed,
+                                       const TrainSteadyOptions& options) {
+  return TrainSteadySolver(model, options).solve(input_speed);
+}
+
+TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
+  const GearTrainModel& model = model_;
+  const TrainBaseFrequency& base = base_;
+  const auto& k_hat = k_hat_;
+  const auto& ke_hat = ke_hat_;
+  if (!(std::abs(input_speed) > 0.0) || !std::isfinite(input_speed)) {
+    throw InputError("operating_point.speed_rpm", fmt::format("{:g} rad/s", input_speed),
+                     "a speed != 0: the steady state of a train at rest is its static response");
+  }
+  TrainSteadyState s;
+  s.input_speed = input_speed;
+  s.base_frequency = base.ratio * std::abs(input_speed);
+  s.mesh_multiple = base.mesh_multiple;
+  const int L = options_.mesh_harmonics;
+  const int H = harmonics_;
+  s.harmonics = H;
+  const int n = model.dofCount();
+  const int blocks = 2 * H + 1;
+  const double w0 = kTwoPi * s.base_frequency;
+  const auto& meshes = model.meshes();
+
+  // Exact condensation onto the mesh deflections. With D(h) = K + Ω²K_Ω + Σ k̄ v vᵀ
+  // + i h ω₀ (C + ΩG₁) − h²ω₀² M (time-invariant, one n × n block per harmonic) and
+  // k̃ = k − k̄ the varying part, the balance reads D(h) X_h + V Σ_j K̃_j δ_{h−j} = F_h with
+  // δ_h = Vᵀ X_h the mesh deflections (r per harmonic) and K̃_j = diag(k̃_{m,j}). So
+  //   δ_h + (Vᵀ D(h)⁻¹ V) Σ_j K̃_j δ_{h−j} = Vᵀ D(h)⁻¹ F_h,
+  // a dense system of r (2H + 1) unknowns, and then X_h = D(h)⁻¹ (F_h − V Σ_j K̃_j δ_{h−j}).
+  const int r = static_cast<int>(meshes.size());
+  const Eigen::MatrixXd Kbar = model.meanStiffnessAt(input_speed);
   const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
-  const Eigen::MatrixXd R = rigidModes(model.meanStiffnessAt(input_speed), M);
-  const double penalty = std::max(K.diagonal().cwiseAbs().maxCoeff(),
-                                  model.meanMeshStiffness().diagonal().cwiseAbs().maxCoeff());
-  std::vector<Eigen::Triplet<Complex>> triplets;
-  triplets.reserve(static_cast<std::size_t>(blocks) * n * n);
-  for (int h = -H; h <= H; ++h) {
-    const int b = (h + H) * n;
-    const double w = h * w0;
-    Eigen::MatrixXcd D = (K - w * w * M).cast<Complex>() + Complex(0.0, w) * C.cast<Complex>();
-    // At h = 0 the rigid-body modes (rolling, which no mesh deflects) are fixed by their
-    // mass-weighted amplitude: Rᵀ M X₀ = 0 (their equation is 0 = Rᵀ F₀ = 0, balanced loads).
-    if (h == 0 && R.cols() > 0) D += (penalty * (M * R) * (M * R).transpose()).cast<Complex>();
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        if (D(i, j) != 0.0) triplets.emplace_back(b + i, b + j, D(i, j));
-  }
-  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(blocks) * n);
-  rhs.segment(H * n, n) = model.staticLoad().cast<Complex>();
-  for (std::size_t m = 0; m < meshes.size(); ++m) {
-    const TrainMesh& mesh = meshes[m];
-    const int P = base.mesh_multiple[m];
+  const Eigen::MatrixXd R = rigidModes(Kbar, M);
+  const double penalty = std::max(Kbar.diagonal().cwiseAbs().maxCoeff(), 1e-300);
+  Eigen::MatrixXcd V(n, r);
+  for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
+  // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.
+  Eigen::MatrixXcd F = Eigen::MatrixXcd::Zero(n, blocks);
+  F.col(H) = model.staticLoad().cast<Complex>();
+  for (int m = 0; m < r; ++m) {
     for (int l = -L; l <= L; ++l) {
-      const int j = l * P;
-      const Complex k = k_hat[m][L + l];
-      for (int h = -H; h <= H; ++h) {
-        const int g = h - j;
-        if (g < -H || g > H || k == 0.0) continue;
-        for (std::size_t a = 0; a < mesh.dofs.size(); ++a)
-          for (std::size_t c = 0; c < mesh.dofs.size(); ++c)
-            triplets.emplace_back((h + H) * n + mesh.dofs[a], (g + H) * n + mesh.dofs[c],
-                                  k * mesh.gradient[a] * mesh.gradient[c]);
-      }
-      if (std::abs(j) <= H && ke_hat[m][L + l] != 0.0) {
-        for (std::size_t a = 0; a < mesh.dofs.size(); ++a)
-          rhs((j + H) * n + mesh.dofs[a]) += ke_hat[m][L + l] * mesh.gradient[a];
+      const int j = l * base.mesh_multiple[m];
+      if (std::abs(j) <= H) F.col(j + H) += ke_hat[m][L + l] * V.col(m);
+    }
+  }
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu(blocks);
+  Eigen::MatrixXcd DinvV(n, r), DinvF(n, blocks);
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Identity(r * blocks, r * blocks);
+  Eigen::VectorXcd b(r * blocks);
+  for (int h = -H; h <= H; ++h) {
+    const double w = h * w0;
+    Eigen::MatrixXcd D = (Kbar - w * w * M).cast<Complex>() + Complex(0.0, w) * C.cast<Complex>();
+    // At h = 0 the rigid-body modes (rolling, which no mesh deflects) are fixed by their
+    // mass-weighted amplitude Rᵀ M X₀ = 0; their own equation is 0 = Rᵀ F₀ = 0 (balanced loads).
+    if (h == 0 && R.cols() > 0) D += (penalty * (M * R) * (M * R).transpose()).cast<Complex>();
+    lu[h + H].compute(D);
+    DinvV = lu[h + H].solve(V);
+    DinvF.col(h + H) = lu[h + H].solve(F.col(h + H));
+    const Eigen::MatrixXcd B = V.transpose() * DinvV;  // Vᵀ D(h)⁻¹ V (r × r)
+    b.segment((h + H) * r, r) = V.transpose() * DinvF.col(h + H);
+    for (int m = 0; m < r; ++m) {
+      const int P = base.mesh_multiple[m];
+      for (int l = -L; l <= L; ++l) {
+        const int g = h - l * P;
+        if (l == 0 || g < -H || g > H) continue;
+        // Row block h, column (g, m): B(:, m) k̃_{m,l}.
+        A.block((h + H) * r, (g + H) * r + m, r, 1) += B.col(m) * k_hat[m][L + l];
       }
     }
   }
-  Eigen::SparseMatrix<Complex> A(blocks * n, blocks * n);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<Complex>> lu;
-  lu.compute(A);
-  if (lu.info() != Eigen::Success) {
+  const Eigen::VectorXcd delta = A.partialPivLu().solve(b);
+  if (!delta.allFinite()) {
     throw std::runtime_error(
-        fmt::format("steady state at {:g} rad/s: the harmonic-balance matrix is singular ({})",
-                    input_speed, lu.lastErrorMessage()));
+        fmt::format("steady state at {:g} rad/s: the condensed harmonic-balance system is singular",
+                    input_speed));
   }
-  const Eigen::VectorXcd X = lu.solve(rhs);
   s.harmonic.resize(n, H + 1);
-  for (int h = 0; h <= H; ++h) s.harmonic.col(h) = X.segment((h + H) * n, n);
+  for (int h = 0; h <= H; ++h) {
+    Eigen::VectorXcd load = F.col(h + H);
+    for (int m = 0; m < r; ++m) {
+      const int P = base.mesh_multiple[m];
+      Complex g_sum = 0.0;
+      for (int l = -L; l <= L; ++l) {
+        const int g = h - l * P;
+        if (l == 0 || g < -H || g > H) continue;
+        g_sum += k_hat[m][L + l] * delta((g + H) * r + m);
+      }
+      load -= g_sum * V.col(m);
+    }
+    s.harmonic.col(h) = lu[h + H].solve(load);
+  }
 
   // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.
-  int samples = options.samples;
+  int samples = options_.samples;
   if (samples == 0) {
     samples = 64;
     while (samples < 8 * H) samples *= 2;

@@ -36,42 +36,23 @@ struct PairGeometry {
   double centre_distance, pressure_angle, base_helix, rb_a, rb_b, rw_a, rw_b, contact_ratio;
 };
 
-/// GearPair's messages name "pinion.*", "gear.*" and "pair.*": rename them for the train.
-[[noreturn]] void rethrowRenamed(const InputError& error, const std::string& a,
-                                 const std::string& b, const std::string& pair) {
-  std::string key = error.key();
-  for (auto [from, to] : {std::pair{std::string("pinion"), a},
-                          {std::string("gear"), b},
-                          {std::string("pair"), pair}}) {
-    if (key.rfind(from + ".", 0) == 0 || key == from) {
-      key = to + key.substr(from.size());
-      break;
-    }
-  }
-  throw InputError(key, error.value(), error.allowed());
-}
-
 PairGeometry externalPair(const GearSpec& a, const GearSpec& b, std::optional<double> distance,
                           const std::string& key_a, const std::string& key_b,
                           const std::string& key_pair, std::vector<std::string>& warnings) {
-  try {
-    GearPairSpec spec;
-    spec.pinion = a;
-    spec.gear = b;
-    spec.centre_distance = distance;
-    const GearPair pair(spec);
-    for (const auto& w : pair.warnings()) warnings.push_back(key_pair + ": " + w);
-    return {pair.centreDistance(),
-            pair.operatingPressureAngle(),
-            pair.baseHelixAngle(),
-            pair.pinion().base_radius,
-            pair.gear().base_radius,
-            pair.pinion().operating_pitch_radius,
-            pair.gear().operating_pitch_radius,
-            pair.contactRatioTotal()};
-  } catch (const InputError& error) {
-    rethrowRenamed(error, key_a, key_b, key_pair);
-  }
+  GearPairSpec spec;
+  spec.pinion = a;
+  spec.gear = b;
+  spec.centre_distance = distance;
+  const GearPair pair = makeGearPair(spec, key_a, key_b, key_pair);
+  for (const auto& w : pair.warnings()) warnings.push_back(key_pair + ": " + w);
+  return {pair.centreDistance(),
+          pair.operatingPressureAngle(),
+          pair.baseHelixAngle(),
+          pair.pinion().base_radius,
+          pair.gear().base_radius,
+          pair.pinion().operating_pitch_radius,
+          pair.gear().operating_pitch_radius,
+          pair.contactRatioTotal()};
 }
 
 /// `ring_is_a`: the ring is member a (its radii go first).
@@ -392,8 +373,13 @@ void GearTrainModel::buildMeshes() {
       sun.frequency_ratio = ring.frequency_ratio = zs * std::abs(relative) / kTwoPi;
       // Parker & Lin 2004: the teeth of a central member j at planet n repeat those at planet 1
       // a rotation ψ_n later, so φ_jn = φ_j1 − sgn(ω_j − ω_c) z_j ψ_n / 2π (mod 1).
-      sun.phase = wrapPhase(-sign_s * zs * psi / kTwoPi);
-      ring.phase = wrapPhase(-sign_r * zr * psi / kTwoPi);
+      // (Rounded to 1e-12 so that whole periods read 0, not 1 − ε.)
+      auto snapped = [](double phase) {
+        const double p = wrapPhase(std::round(phase * 1e12) / 1e12);
+        return p >= 1.0 ? 0.0 : p;
+      };
+      sun.phase = snapped(-sign_s * zs * psi / kTwoPi);
+      ring.phase = snapped(-sign_r * zr * psi / kTwoPi);
       meshes_.push_back(std::move(sun));
       meshes_.push_back(std::move(ring));
     }

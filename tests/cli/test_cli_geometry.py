@@ -162,7 +162,7 @@ def test_unwritable_output_exits_3(tmp_path):
     assert result.returncode == 3 and "I/O error" in result.stderr
 
 
-@pytest.mark.parametrize("command", ["geometry", "stiffness", "simulate", "stats", "hbm", "rotor", "spectrum", "identify", "ltca", "sweep"])
+@pytest.mark.parametrize("command", ["geometry", "stiffness", "simulate", "stats", "hbm", "rotor", "spectrum", "identify", "ltca", "sweep", "train"])
 def test_schema_reference_in_docs_is_current(command):
     result = run("schema", command)
     assert result.returncode == 0

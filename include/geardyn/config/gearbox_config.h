@@ -4,7 +4,7 @@
 /// planetary stages, the operating point and the shared mesh-stiffness model options — its
 /// schema (unknown keys and names get a did-you-mean, every value range-checked) and the
 /// GearTrainSpec it describes. One gearbox file, many analyses: an analysis file names it with
-/// `gearbox = "path"` (relative to the analysis file) or holds the same sections inline.
+/// `[gearbox] file = "path"` (relative to the analysis file) or holds the same sections inline.
 
 #include <string>
 #include <vector>

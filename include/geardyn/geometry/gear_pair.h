@@ -106,6 +106,12 @@ class GearPair {
   std::vector<std::string> warnings_;
 };
 
+/// A GearPair whose validation messages name the caller's keys: "pinion.*", "gear.*" and
+/// "pair.*" become `pinion_key.*`, `gear_key.*` and `pair_key.*` (e.g. "gears.z1",
+/// "gears.z2", "meshes.stage1" in a gearbox description).
+GearPair makeGearPair(const GearPairSpec& spec, const std::string& pinion_key,
+                      const std::string& gear_key, const std::string& pair_key);
+
 /// "pinion" or "gear"; parseDriver throws InputError(key) for anything else.
 std::string toString(Driver driver);
 Driver parseDriver(const std::string& text, const std::string& key = "pair.driver");

@@ -89,6 +89,9 @@ class ConfigSchema {
   KeyBuilder stringList(const std::string& path);  ///< choices apply to every element
 
   const std::string& command() const noexcept { return command_; }
+  /// The reference's heading (default: "`geardyn <command>` configuration"), for schemas of
+  /// files that no command runs directly (a gearbox description).
+  void setTitle(std::string title) { title_ = std::move(title); }
   const std::string& description() const noexcept { return description_; }
   const std::deque<KeySpec>& keys() const noexcept { return keys_; }
   const std::vector<SectionSpec>& sections() const noexcept { return sections_; }
@@ -106,6 +109,7 @@ class ConfigSchema {
 
   std::string command_;
   std::string description_;
+  std::string title_;
   std::vector<SectionSpec> sections_;
   std::vector<std::string> collections_;
   std::deque<KeySpec> keys_;  // declaration order; a deque keeps KeyBuilder pointers valid

@@ -38,7 +38,9 @@ struct TrainModalOptions {
   /// Eigenvalues with |λ|/2π below this are rigid-body modes [Hz]; < 0: derived from the
   /// model (1e-6 × the largest natural frequency).
   double rigid_frequency = -1.0;
-  bool keep_rigid = true;  ///< return rigid-body modes (0 Hz) too
+  /// Return rigid-body modes (0 Hz) too; only undamped models at rest (symmetric eigenproblem)
+  /// have them in their list, damped ones report elastic modes only.
+  bool keep_rigid = true;
   void validate() const;
 };
 

@@ -16,9 +16,12 @@
 ///
 /// where k̂_{m,j} = c_l e^{i 2π l φ_m0} for j = l P_m (c_l the Fourier coefficients of k_m over
 /// one mesh period, exact for piecewise models), truncated at |l| <= L mesh harmonics and
-/// |h| <= H = L max P_m. One sparse complex LU per speed. This is the linear case of the
-/// harmonic balance (no AFT needed): the parametric excitation of the static load through the
-/// stiffness variation and the transmission-error excitation are both in it.
+/// |h| <= H = L max P_m. The time-invariant part is block-diagonal over harmonics and the
+/// stiffness variation acts only through the mesh deflections δ_m = v_mᵀ q, so the system is
+/// condensed exactly onto r (2H + 1) mesh-deflection harmonics (r meshes): per speed, one
+/// n × n LU per harmonic and one dense solve of the condensed system. This is the linear case
+/// of the harmonic balance (no AFT needed): the parametric excitation of the static load
+/// through the stiffness variation and the transmission-error excitation are both in it.
 
 #include <Eigen/Dense>
 #include <complex>
@@ -91,6 +94,25 @@ struct TrainSteadyState {
   Eigen::MatrixXd displacement(const Eigen::VectorXd& times) const;
 };
 
+/// The steady-state solver of one model: what does not depend on the speed (the base
+/// frequency, the Fourier coefficients of every mesh's k and k·e) is computed once, so a speed
+/// sweep pays one sparse LU per speed. Thread-safe for concurrent solve() calls.
+class TrainSteadySolver {
+ public:
+  TrainSteadySolver(const GearTrainModel& model, const TrainSteadyOptions& options = {});
+  TrainSteadyState solve(double input_speed) const;
+  const TrainBaseFrequency& base() const noexcept { return base_; }
+
+ private:
+  const GearTrainModel& model_;
+  TrainSteadyOptions options_;
+  TrainBaseFrequency base_;
+  int harmonics_ = 0;
+  // [mesh][L + l]: Fourier coefficient l of k_m and of k_m e_m, with the mesh phase applied.
+  std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_;
+};
+
+/// One speed: TrainSteadySolver(model, options).solve(input_speed).
 TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input_speed,
                                        const TrainSteadyOptions& options = {});
 

@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// The analysis file of `geardyn train`: which analyses to run on a gearbox (static, modal,
+/// campbell, forced, time) and their options. The gearbox is named by `[gearbox] file = "path"`
+/// (relative to the analysis file) or written inline in the same file.
+
+#include <vector>
+
+#include "geardyn/io/config.h"
+#include "geardyn/io/config_schema.h"
+#include "geardyn/solvers/train_modal.h"
+#include "geardyn/solvers/train_response.h"
+#include "geardyn/solvers/train_time.h"
+
+namespace geardyn::config {
+
+/// The analysis sections; with `inline_gearbox` also the gearbox sections (gearbox_config.h).
+io::ConfigSchema trainSchema(bool inline_gearbox);
+
+/// Input speed [rad/s] of a section's optional speed_rpm (default: the operating point's).
+double analysisSpeed(const io::Config& analysis, const std::string& section, double operating);
+
+TrainModalOptions trainModalOptionsFromConfig(const io::Config& analysis,
+                                              const std::string& section);
+TrainSteadyOptions trainSteadyOptionsFromConfig(const io::Config& analysis);
+TrainTimeOptions trainTimeOptionsFromConfig(const io::Config& analysis);
+
+/// Ascending input speeds [rad/s] of a section with speed_min_rpm, speed_max_rpm (defaults: 0
+/// and 1.5 × the operating speed) and points; InputError naming the keys when the range is
+/// empty or the operating speed is 0 and no maximum is given.
+std::vector<double> speedRangeFromConfig(const io::Config& analysis, const std::string& section,
+                                         double operating, double default_min_fraction);
+
+}  // namespace geardyn::config

@@ -1,0 +1,187 @@
+"""Figures of a gear train (`geardyn train`): the layout with its mode shapes, the Campbell
+diagram with shaft and mesh orders, the forced response against speed, and the Newmark time
+response over the frequency-domain steady state."""
+
+import json
+import math
+import pathlib
+
+from ._plot_common import _long_table, _read_columns, _save_atomically, plt
+
+_TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
+                 "mixed": "tab:purple", "": "0.3"}
+
+
+def _bodies(folder):
+    table = _read_columns(folder / "bodies.csv")
+    return [dict(name=n, kind=k, y=y, z=z) for n, k, y, z in
+            zip(table["body"], table["kind"], table["centre_y_m"], table["centre_z_m"])]
+
+
+def _draw_layout(ax, bodies, meshes, scale_mm):
+    """Bodies as circles at their centres (mm), meshes as lines between them."""
+    where = {b["name"]: (1e3 * b["y"], 1e3 * b["z"]) for b in bodies}
+    for a, b in zip(meshes["body_a"], meshes["body_b"]):
+        (ya, za), (yb, zb) = where[a], where[b]
+        ax.plot([ya, yb], [za, zb], color="0.8", lw=1.0, zorder=0)
+    for body in bodies:
+        y, z = where[body["name"]]
+        r = 0.06 * scale_mm * (0.6 if body["kind"] == "planet" else 1.0)
+        ax.add_patch(plt.Circle((y, z), r, fill=False, color="0.55", lw=0.8))
+    return where
+
+
+def _mode_shapes(folder, summary, title):
+    bodies = _bodies(folder)
+    meshes = _read_columns(folder / "meshes.csv")
+    modes = _read_columns(folder / "modes.csv")
+    shapes = _long_table(folder / "mode_shapes.csv", ["mode"])
+    count = min(8, len(modes["mode"]))
+    ys = [1e3 * b["y"] for b in bodies]
+    zs = [1e3 * b["z"] for b in bodies]
+    span = max(max(ys) - min(ys), max(zs) - min(zs), 50.0)
+    columns = 4 if count > 4 else count
+    rows = math.ceil(count / columns)
+    figure, axes = plt.subplots(rows, columns, figsize=(3.3 * columns, 3.3 * rows + 0.6),
+                                squeeze=False)
+    for j in range(rows * columns):
+        ax = axes[j // columns][j % columns]
+        if j >= count:
+            ax.axis("off")
+            continue
+        where = _draw_layout(ax, bodies, meshes, span)
+        shape = shapes[(str(int(modes["mode"][j])),)]
+        values = dict(zip(shape["dof"], shape["real"]))
+        largest = max(abs(v) for v in values.values()) or 1.0
+        for body in bodies:
+            y0, z0 = where[body["name"]]
+            uy = values.get(body["name"] + ".y", 0.0) / largest
+            uz = values.get(body["name"] + ".z", 0.0) / largest
+            th = values.get(body["name"] + ".theta", 0.0) / largest
+            if abs(uy) + abs(uz) > 1e-3:
+                ax.annotate("", xy=(y0 + 0.25 * span * uy, z0 + 0.25 * span * uz), xytext=(y0, z0),
+                            arrowprops=dict(arrowstyle="->", color="tab:blue", lw=1.4))
+            if abs(th) > 1e-3:
+                ax.scatter([y0], [z0], s=300 * abs(th), color="tab:red" if th > 0 else "tab:orange",
+                           alpha=0.6, zorder=3)
+        kind = modes["stage_type"][j] if "stage_type" in modes else ""
+        kind = kind if isinstance(kind, str) else ""
+        ax.set_title(f"mode {j + 1}: {modes['frequency_Hz'][j]:.1f} Hz"
+                     + (f"\n{kind}" if kind else ""), fontsize=8,
+                     color=_TYPE_COLOURS.get(kind.split('/')[0], "0.2"))
+        ax.set_aspect("equal")
+        ax.set_xlim(min(ys) - 0.45 * span, max(ys) + 0.45 * span)
+        ax.set_ylim(min(zs) - 0.45 * span, max(zs) + 0.45 * span)
+        ax.tick_params(labelsize=6)
+        ax.set_xlabel("y [mm]", fontsize=7)
+        ax.set_ylabel("z [mm]", fontsize=7)
+    speed = summary["results"]["modal"]["speed_rpm"]
+    figure.suptitle(f"{title}: mode shapes at {speed:g} rpm (blue arrows: translation of the "
+                    "body centre; red/orange discs: rotation +/-, area ~ amplitude)", fontsize=9)
+    figure.tight_layout()
+    return _save_atomically(figure, folder / "modes.png")
+
+
+def _campbell(folder, summary, title):
+    table = _read_columns(folder / "campbell.csv")
+    lines = _read_columns(folder / "order_lines.csv")
+    critical = _read_columns(folder / "critical_speeds.csv") if (folder / "critical_speeds.csv").stat().st_size else {}
+    speeds = table["speed_rpm"]
+    figure, ax = plt.subplots(figsize=(9.5, 6))
+    top = 0.0
+    for name, values in table.items():
+        if name.startswith("mode_"):
+            ax.plot(speeds, values, color="0.25", lw=1.0)
+            top = max(top, max(values))
+    top *= 1.1
+    for name, slope in zip(lines["line"], lines["Hz_per_rpm"]):
+        y = [slope * s for s in speeds]
+        style = "--" if name.startswith("1x ") else "-."
+        (line,) = ax.plot(speeds, y, style, lw=0.9)
+        # Label each order line where it leaves the plotted frequency range or at its end.
+        s_end = min(speeds[-1], top / slope if slope > 0 else speeds[-1])
+        ax.text(s_end, slope * s_end, " " + name, fontsize=6, color=line.get_color(),
+                va="bottom", ha="right" if s_end < speeds[-1] else "left")
+    if critical:
+        ax.plot(critical["speed_rpm"], critical["frequency_Hz"], "kx", ms=5,
+                label="critical speeds (order line crosses a mode)")
+    operating = summary["results"]["kinematics"]["input_speed_rpm"]
+    if operating:
+        ax.axvline(abs(operating), color="tab:red", lw=0.8, ls=":", label="operating speed")
+    ax.set_xlim(speeds[0], speeds[-1] * 1.12)
+    ax.set_ylim(0, top)
+    ax.set_xlabel("input speed [rpm]")
+    ax.set_ylabel("natural frequency [Hz]")
+    ax.set_title(f"{title}: Campbell diagram (dashed: 1× shaft orders, dash-dot: mesh orders)",
+                 fontsize=9)
+    ax.legend(fontsize=7, loc="upper left")
+    ax.grid(alpha=0.3)
+    figure.tight_layout()
+    return _save_atomically(figure, folder / "campbell.png")
+
+
+def _forced(folder, summary, title):
+    table = _read_columns(folder / "forced_response.csv")
+    speeds = table["speed_rpm"]
+    figure, (top_ax, bottom_ax) = plt.subplots(2, 1, figsize=(9.5, 7), sharex=True)
+    for name, values in table.items():
+        if name.startswith("dynamic_factor_"):
+            top_ax.plot(speeds, values, lw=1.1, label=name[len("dynamic_factor_"):])
+        if name.startswith("h1_N_"):
+            bottom_ax.semilogy(speeds, [max(v, 1e-12) for v in values], lw=1.1,
+                               label=name[len("h1_N_"):])
+    operating = abs(summary["results"]["kinematics"]["input_speed_rpm"])
+    for ax in (top_ax, bottom_ax):
+        if operating:
+            ax.axvline(operating, color="tab:red", lw=0.8, ls=":", label="operating speed")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=3)
+    top_ax.set_ylabel("dynamic factor max F / mean F [-]")
+    bottom_ax.set_ylabel("mesh force at the mesh frequency [N]")
+    bottom_ax.set_xlabel("input speed [rpm]")
+    top_ax.set_title(f"{title}: forced response to transmission error and mesh-stiffness "
+                     "variation (frequency domain)", fontsize=9)
+    figure.tight_layout()
+    return _save_atomically(figure, folder / "forced_response.png")
+
+
+def _time(folder, summary, title):
+    table = _read_columns(folder / "time_history.csv")
+    t_ms = [1e3 * (t - table["t_s"][0]) for t in table["t_s"]]
+    meshes = [n[len("mesh_force_N_"):] for n in table if n.startswith("mesh_force_N_")]
+    shown = meshes[:4]
+    figure, axes = plt.subplots(len(shown), 1, figsize=(9.5, 2.2 * len(shown) + 0.6), sharex=True,
+                                squeeze=False)
+    for ax, name in zip(axes[:, 0], shown):
+        ax.plot(t_ms, [1e-3 * f for f in table["mesh_force_N_" + name]], lw=1.4, label="Newmark")
+        steady = table.get("steady_mesh_force_N_" + name)
+        if steady:
+            ax.plot(t_ms, [1e-3 * f for f in steady], "--", lw=1.0, color="k",
+                    label="frequency-domain steady state")
+        ax.set_ylabel(f"{name}\nmesh force [kN]", fontsize=8)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, loc="upper right")
+    axes[-1, 0].set_xlabel("time in the steady-state window [ms]")
+    speed = summary["results"]["time"]["speed_rpm"]
+    figure.suptitle(f"{title}: dynamic mesh forces at {speed:g} rpm", fontsize=9)
+    figure.tight_layout()
+    return _save_atomically(figure, folder / "time_history.png")
+
+
+def plot_train(result_dir):
+    """modes.png, campbell.png, forced_response.png and time_history.png of the analyses run."""
+    folder = pathlib.Path(result_dir)
+    summary = json.loads((folder / "summary.json").read_text())
+    title = summary["config"].get("gearbox", {}).get("name") or \
+        summary["config"].get("gearbox_description", {}).get("gearbox", {}).get("name") or "gear train"
+    written = []
+    results = summary["results"]
+    if "modal" in results and (folder / "mode_shapes.csv").exists():
+        written.append(_mode_shapes(folder, summary, title))
+    if "campbell" in results:
+        written.append(_campbell(folder, summary, title))
+    if "forced" in results:
+        written.append(_forced(folder, summary, title))
+    if "time" in results and (folder / "time_history.csv").exists():
+        written.append(_time(folder, summary, title))
+    return written

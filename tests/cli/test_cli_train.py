@@ -1,0 +1,114 @@
+"""geardyn train: a gearbox file read by an analysis file (or inline), the result files of every
+analysis, the Lin & Parker table from the command line, --set into the gearbox file, and bad
+input named by component and key."""
+
+import csv
+import json
+import shutil
+
+import pytest
+
+from cli_support import EXAMPLES, run
+
+REDUCER = EXAMPLES / "train_two_stage_reducer.toml"
+PLANETARY = EXAMPLES / "train_planetary_parallel.toml"
+LIN_PARKER = EXAMPLES / "train_lin_parker1999.toml"
+
+
+def rows(path):
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+def quick(*extra):
+    return ["--set", "output.plots=false", *extra]
+
+
+def test_lin_parker_table_from_the_command_line(tmp_path):
+    result = run("train", LIN_PARKER, "--out", tmp_path, *quick())
+    assert result.returncode == 0, result.stderr
+    modes = rows(tmp_path / "modes.csv")
+    assert len(modes) == 18
+    found = {(round(float(m["frequency_Hz"]), 1), m["stage_type"]) for m in modes}
+    # Lin & Parker 1999 (N = 3): rotational and translational frequencies [Hz].
+    for hz, kind in [(1475.7, "rotational"), (11775.3, "rotational"), (743.2, "translational"),
+                     (9647.9, "translational")]:
+        assert (hz, kind) in found
+
+
+def test_reducer_writes_every_analysis_and_records_both_files(tmp_path):
+    result = run("train", REDUCER, "--out", tmp_path, *quick("--set", "forced.points=20",
+                                                             "--set", "campbell.points=11"))
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["geardyn_version"]
+    assert summary["config"]["gearbox"]["file"] == "gearboxes/two_stage_reducer.toml"
+    assert summary["config"]["gearbox_description"]["meshes"]["stage1"]["gears"] == ["z1", "z2"]
+    results = summary["results"]
+    assert results["kinematics"]["output_torque_N_m"] == pytest.approx(-200 * 51 / 23 * 47 / 17)
+    for name in ["bodies.csv", "meshes.csv", "static_forces.csv", "modes.csv", "mode_shapes.csv",
+                 "campbell.csv", "critical_speeds.csv", "forced_response.csv", "time_history.csv"]:
+        assert (tmp_path / name).exists(), name
+    meshes = {m["mesh"]: m for m in rows(tmp_path / "meshes.csv")}
+    assert float(meshes["stage1"]["mesh_frequency_Hz"]) == pytest.approx(23 * 1500 / 60)
+    # Newmark agrees with the frequency-domain steady state within 0.5 % of the p2p.
+    for mesh, difference in results["time"]["max_difference_to_steady_state_relative_to_p2p"].items():
+        assert difference < 5e-3, mesh
+
+
+def test_set_reaches_the_gearbox_file(tmp_path):
+    result = run("train", REDUCER, "--out", tmp_path,
+                 *quick("--set", "analysis.run=[\"static\"]", "--set", "operating_point.torque=400"))
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    forces = summary["results"]["static"]["mesh_force_N"]
+    half = run("train", REDUCER, "--out", tmp_path / "b", *quick("--set", "analysis.run=[\"static\"]"))
+    assert half.returncode == 0
+    base = json.loads((tmp_path / "b" / "summary.json").read_text())["results"]["static"]["mesh_force_N"]
+    assert forces["stage1"] == pytest.approx(2 * base["stage1"], rel=1e-9)
+
+
+def test_inline_and_file_descriptions_give_the_same_results(tmp_path):
+    inline = tmp_path / "inline.toml"
+    gearbox = (EXAMPLES / "gearboxes" / "two_stage_reducer.toml").read_text()
+    inline.write_text('[analysis]\nrun = ["static", "modal"]\n' + gearbox)
+    a = run("train", inline, "--out", tmp_path / "a", *quick())
+    b = run("train", REDUCER, "--out", tmp_path / "b", *quick("--set", 'analysis.run=["static","modal"]'))
+    assert a.returncode == 0 and b.returncode == 0, a.stderr + b.stderr
+    assert (tmp_path / "a" / "modes.csv").read_text() == (tmp_path / "b" / "modes.csv").read_text()
+
+
+@pytest.mark.parametrize("edit, key, words", [
+    (("[meshes.stage1]\n", "[meshes.stage1]\nposition_angel_deg = 3\n"),
+     "meshes.stage1.position_angel_deg", "did you mean"),
+    (('gears = ["z1", "z2"]', 'gears = ["z1", "z9"]'), "meshes.stage1.gears", "z9"),
+    (('shaft = "intermediate"\nteeth = 51', 'shaft = "input"\nteeth = 51'), "meshes.stage1.gears",
+     "both sit on shaft"),
+    (("teeth = 51\nmodule = 3e-3", "teeth = 51\nmodule = 3.5e-3"), "gears.z2", "module"),
+    (('input = "motor"', 'input = "motr"'), "operating_point.input", "did you mean \"motor\""),
+    (("k_torsion = 2.5e4", "k_torsion = -2.5e4"), "couplings.motor_coupling.k_torsion", "> 0"),
+])
+def test_bad_gearbox_input_exits_2_naming_the_key(tmp_path, edit, key, words):
+    folder = tmp_path / "case"
+    shutil.copytree(EXAMPLES, folder, ignore=shutil.ignore_patterns("data", "python"))
+    gearbox = folder / "gearboxes" / "two_stage_reducer.toml"
+    text = gearbox.read_text()
+    assert edit[0] in text
+    gearbox.write_text(text.replace(edit[0], edit[1], 1))
+    result = run("train", folder / REDUCER.name, "--out", tmp_path / "out", *quick())
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert key in result.stderr and words in result.stderr, result.stderr
+    assert not (tmp_path / "out" / "summary.json").exists()
+
+
+def test_planets_that_cannot_be_assembled_exit_2(tmp_path):
+    result = run("train", PLANETARY, "--out", tmp_path, *quick("--set", "planetary.stage1.planets=5"))
+    assert result.returncode == 2
+    assert "planetary.stage1.planets" in result.stderr and "96" in result.stderr
+
+
+def test_a_missing_gearbox_file_is_named(tmp_path):
+    analysis = tmp_path / "a.toml"
+    analysis.write_text('[gearbox]\nfile = "nowhere.toml"\n')
+    result = run("train", analysis, "--out", tmp_path / "o")
+    assert result.returncode == 2 and "nowhere.toml" in result.stderr
