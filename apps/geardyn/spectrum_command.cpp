@@ -25,6 +25,7 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
   read.channels = config.stringList("input.channels");
   read.sample_rate = config.optionalReal("input.sample_rate");
   read.scale = config.real("input.scale");
+  read.time_column = config.string("input.time_column");
   for (const char* role : {"x1", "y1", "x2", "y2"}) {
     if (std::find(read.channels.begin(), read.channels.end(), role) == read.channels.end()) {
       throw InputError("input.channels", fmt::format("[{}]", fmt::join(read.channels, ", ")),

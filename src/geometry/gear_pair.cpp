@@ -114,6 +114,18 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
   const GearSpec& g2 = spec.gear;
   g1.validate("pinion");
   g2.validate("gear");
+  // Plausible engineering ranges: a module of 3 is 3 m, not 3 mm (SI units throughout).
+  for (const auto& [name, g] : {std::pair{"pinion", &g1}, std::pair{"gear", &g2}}) {
+    if (g->normal_module < 0.1e-3 || g->normal_module > 0.1)
+      warnings_.push_back(fmt::format(
+          "{}.module = {:g} m is outside the usual 0.1 mm to 100 mm: lengths are in metres "
+          "(a 3 mm module is 0.003)",
+          name, g->normal_module));
+    if (g->face_width < 1e-3 || g->face_width > 2.0)
+      warnings_.push_back(fmt::format(
+          "{}.face_width = {:g} m is outside the usual 1 mm to 2 m: lengths are in metres", name,
+          g->face_width));
+  }
 
   // --- the two members must be cut by the same rack --------------------------------------
   if (std::abs(g2.normal_module - g1.normal_module) > kSameDesignTolerance * g1.normal_module) {
@@ -252,6 +264,15 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
   eps_alpha_ = path_length_ / p_bt_;
   face_width_ = std::min(g1.face_width, g2.face_width);
   eps_beta_ = face_width_ * std::sin(beta) / (kPi * m_n);
+  if (spec.centre_distance && eps_alpha_ + eps_beta_ < 1.0) {
+    // The centre distance the user gave pulls the teeth out of reach of each other.
+    throw InputError(
+        "pair.centre_distance", fmt::format("{:g} m", a_w_),
+        fmt::format("too large for these gears: the path of contact is {} long (contact ratio "
+                    "{:.4g} < 1), the tip circles r_a1 + r_a2 = {} leave the teeth out of reach; "
+                    "the tight-mesh centre distance is {}",
+                    mm(path_length_), eps_alpha_ + eps_beta_, mm(m1.ra + m2.ra), mm(a_tight_)));
+  }
   if (eps_alpha_ + eps_beta_ < 1.0) {
     throw InputError(
         "pinion, gear", fmt::format("contact ratio {:.6g}", eps_alpha_ + eps_beta_),
@@ -306,6 +327,9 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
       throw InputError("pair.speed_rpm", fmt::format("{:g}", n1), "must be finite and >= 0");
     }
     mesh_frequency_ = g1.teeth * n1 / 60.0;
+    if (n1 > 200000.0)
+      warnings_.push_back(fmt::format(
+          "pair.speed_rpm = {:g} rpm is above 200000 rpm: is it in rpm (not rad/s or Hz)?", n1));
   }
 }
 

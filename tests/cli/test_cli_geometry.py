@@ -149,9 +149,9 @@ def test_bad_override_exits_2(tmp_path):
     assert result.returncode == 2 and 'did you mean "pinion.module"?' in result.stderr
 
 
-def test_missing_config_file_exits_2():
+def test_missing_config_file_exits_3():
     result = run("geometry", "/nonexistent/pair.toml")
-    assert result.returncode == 2 and "no such configuration file" in result.stderr
+    assert result.returncode == 3 and "no such file" in result.stderr
 
 
 def test_unwritable_output_exits_3(tmp_path):
