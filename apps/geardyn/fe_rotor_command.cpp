@@ -277,7 +277,7 @@ int runTime(const io::Config& config, const CommandOptions& options, io::RunSumm
   const auto names = channelNames(model, r);
   if (model.spec().speed.constant() && model.spec().speed.start == 0.0) {
     summary.results["steady"] = nullptr;  // at rest: no mesh period, no harmonics
-    text += "  at rest (speed.rpm = 0): no mesh harmonics\n";
+    text += "  at rest (speed.speed_rpm = 0): no mesh harmonics\n";
   } else if (model.spec().speed.constant()) {
     const SteadyAnalysis a = analyseSteady(config, model, r);
     io::CsvTable harmonics({"channel", "order", "frequency_hz", "displacement", "acceleration"});
@@ -322,9 +322,9 @@ int runModal(const io::Config& config, io::RunSummary& summary, io::ResultWriter
   const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
-  const double speed =
-      (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm") : config.real("speed.rpm")) *
-      kRpm;
+  const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
+                                                      : config.real("speed.speed_rpm")) *
+                       kRpm;
   const auto modes = modalAnalysis(model, speed, io::modalOptionsFromConfig(config, "modal"));
   io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
                       "lateral_fraction", "torsional_fraction", "axial_fraction"});
@@ -415,10 +415,12 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
     cases.push_back(std::move(c));
   }
   if (!cases.front().model->spec().speed.constant()) {
-    throw InputError("speed.end_rpm", "", "compare_stiffness runs at constant speed (no end_rpm)");
+    throw InputError("speed.end_speed_rpm", "",
+                     "compare_stiffness runs at constant speed (no end_speed_rpm)");
   }
   if (!(cases.front().model->spec().speed.start > 0.0)) {
-    throw InputError("speed.rpm", "0 rpm", "a speed > 0 rpm: the comparison is of mesh harmonics");
+    throw InputError("speed.speed_rpm", "0 rpm",
+                     "a speed > 0 rpm: the comparison is of mesh harmonics");
   }
   // The cases are independent: run them on the worker threads (options are read first, so that
   // configuration errors surface here, on the main thread).

@@ -68,15 +68,15 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
 
   // The transmitted force (also needed by the loaded contact analysis below).
   const auto meanForce = [&]() {
-    if (config.has("model.mean_force") == config.has("model.pinion_torque")) {
+    if (config.has("model.mean_force") == config.has("model.torque")) {
       throw InputError("model.mean_force", "",
-                       config.has("model.mean_force") ? "give mean_force or pinion_torque, not both"
-                                                      : "required (or model.pinion_torque)");
+                       config.has("model.mean_force") ? "give mean_force or torque, not both"
+                                                      : "required (or model.torque)");
     }
     if (config.has("model.mean_force")) return config.real("model.mean_force");
     if (config.has("model.pinion_base_radius"))
-      return config.real("model.pinion_torque") / config.real("model.pinion_base_radius");
-    if (pair) return config.real("model.pinion_torque") / pair->pinion().base_radius;
+      return config.real("model.torque") / config.real("model.pinion_base_radius");
+    if (pair) return config.real("model.torque") / pair->pinion().base_radius;
     throw InputError("model.pinion_base_radius", "", "required (or give [pinion] and [gear])");
   };
   std::vector<double> ltca_phases, ltca_error;  // δ − F/K of the loaded contact (type ltca)

@@ -299,7 +299,7 @@ models = ["potential_energy"]
 positions = 200
 [model]
 damping_ratio = 0.05
-pinion_torque = 200.0
+torque = 200.0
 [model.stiffness]
 type = "potential_energy"
 [hbm]
@@ -335,6 +335,21 @@ def test_other_commands_sections_are_still_spell_checked(tmp_path):
     config.write_text(ONE_FILE.replace("harmonics = 6", "harmonix = 6"))
     result = run("geometry", config, "--out", tmp_path / "g")
     assert result.returncode == 2 and 'did you mean "hbm.harmonics"?' in result.stderr, result.stderr
+
+
+def test_old_spellings_work_with_a_warning_naming_the_new_key(tmp_path):
+    new = run("hbm", HBM, "--out", tmp_path / "new", "--set", "model.torque=200",
+              "--set", "sweep.start=2000.0", "--set", "sweep.stop=2200.0")
+    old = run("hbm", HBM, "--out", tmp_path / "old", "--set", "model.pinion_torque=200",
+              "--set", "sweep.start=2000.0", "--set", "sweep.stop=2200.0")
+    assert new.returncode == old.returncode == 0, old.stderr
+    assert "model.pinion_torque is deprecated" in old.stderr and "model.torque" in old.stderr
+    assert ((tmp_path / "new" / "sweep.csv").read_text() ==
+            (tmp_path / "old" / "sweep.csv").read_text())
+    file = tmp_path / "both.toml"
+    file.write_text(HBM.read_text().replace("torque = 100.0", "torque = 100.0\npinion_torque = 100.0"))
+    both = run("hbm", file, "--out", tmp_path / "both")
+    assert both.returncode == 2 and "keep only model.torque" in both.stderr, both.stderr
 
 
 # --- item 10: correctness loose ends ----------------------------------------------------------
