@@ -235,6 +235,19 @@ def test_geometry_and_stiffness_name_the_key_the_user_set(tmp_path):
     assert "mesh_stiffness.potential_energy.pinion_hub_radius" in solid.stderr
 
 
+def test_a_module_in_millimetres_is_flagged(tmp_path):
+    # 3 instead of 0.003: the error the wrong length causes says what is implausible.
+    rig = EXAMPLES / "geometry_rao2023_rig.toml"
+    result = run("geometry", rig, "--out", tmp_path, "--set", "pinion.module=3",
+                 "--set", "gear.module=3")
+    assert result.returncode == 2
+    assert "pinion.module = 3 m is outside the usual 0.1 mm to 100 mm" in result.stderr
+    wide = run("geometry", rig, "--out", tmp_path, "--set", "pinion.face_width=20",
+               "--set", "gear.face_width=20", "--set", "output.plots=false")
+    assert wide.returncode == 0, wide.stderr
+    assert "warning: pinion.face_width = 20 m is outside the usual 1 mm to 2 m" in wide.stderr
+
+
 def test_rotor_sampling_message_echoes_the_samples_as_given(tmp_path):
     result = run("rotor", ROTOR, "--out", tmp_path, "--set", "time.samples=16")
     assert result.returncode == 2
