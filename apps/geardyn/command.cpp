@@ -1,6 +1,10 @@
 #include "command.h"
 
+#include <fmt/format.h>
+
 #include <iostream>
+#include <mutex>
+#include <set>
 
 namespace geardyn::cli {
 
@@ -11,6 +15,25 @@ std::filesystem::path CommandOptions::resultFolder() const {
 
 void report(const CommandOptions& options, const std::string& text) {
   if (!options.quiet) std::cout << text << std::flush;
+}
+
+void warn(const std::string& text) {
+  static std::mutex mutex;
+  static std::set<std::string> shown;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (shown.insert(text).second) std::cerr << "warning: " << text << "\n";
+}
+
+std::string exitCodesText() {
+  const std::pair<int, const char*> codes[] = {
+      {kExitOk, "success"},
+      {kExitNumericalFailure, "numerical failure (results written, their status says so)"},
+      {kExitBadInput, "bad input (usage, configuration or data)"},
+      {kExitIoFailure, "I/O failure (a file could not be read or written)"},
+      {kExitInternalError, "internal error (a bug in geardyn; please report it)"}};
+  std::string text = "Exit codes:";
+  for (const auto& [code, meaning] : codes) text += fmt::format("\n  {}  {}", code, meaning);
+  return text;
 }
 
 }  // namespace geardyn::cli

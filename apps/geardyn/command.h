@@ -29,7 +29,9 @@ struct CommandOptions {
   std::vector<std::string> overrides;
   int threads = 0;  ///< 0: all hardware threads
   bool quiet = false;
-  bool resume = false;  ///< sweep: continue from the journal of an interrupted run
+  bool progress = false;   ///< progress lines on stderr even when it is not a terminal
+  bool resume = false;     ///< sweep: continue from the journal of an interrupted run
+  bool overwrite = false;  ///< sweep: discard the journal of a previous run in the folder
 
   /// The folder results go to.
   std::filesystem::path resultFolder() const;
@@ -60,7 +62,22 @@ struct Command {
 /// The analysis commands, in the order `geardyn --help` lists them.
 std::vector<Command> allCommands();
 
+/// The schema `command` validates `file` with: its own (chosen by the file when it has
+/// variants), knowing the other analysis commands' schemas so that their sections and keys in
+/// the same file are ignored with a note but still spell-checked (one file, many commands).
+io::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file);
+
+/// Loads `options.config_file` with commandSchema and prints its notes as warnings.
+io::Config loadCommandConfig(const Command& command, const CommandOptions& options);
+
 /// Prints "what" to stdout unless quiet.
 void report(const CommandOptions& options, const std::string& text);
+
+/// Prints "warning: TEXT" on stderr, once per distinct text in this process (a sweep's cases
+/// do not repeat the warning they share). Thread-safe.
+void warn(const std::string& text);
+
+/// The exit codes with their meaning, as `geardyn --help` and docs/cli.md list them.
+std::string exitCodesText();
 
 }  // namespace geardyn::cli

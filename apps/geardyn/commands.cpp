@@ -95,4 +95,22 @@ std::vector<Command> allCommands() {
   };
 }
 
+io::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file) {
+  io::ConfigSchema schema =
+      command.schema_for_file ? command.schema_for_file(file) : command.schema();
+  for (const Command& other : allCommands()) {
+    if (other.name == command.name || other.run_file) continue;
+    schema.addForeignSchema(other.schema());
+    for (const auto& variant : other.variant_schemas) schema.addForeignSchema(variant());
+  }
+  return schema;
+}
+
+io::Config loadCommandConfig(const Command& command, const CommandOptions& options) {
+  io::Config config = io::loadConfigFile(
+      options.config_file, commandSchema(command, options.config_file), options.overrides);
+  for (const auto& note : config.notes()) warn(note);
+  return config;
+}
+
 }  // namespace geardyn::cli

@@ -20,6 +20,8 @@
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
 
 namespace geardyn::cli {
 namespace {
@@ -244,12 +246,22 @@ void runUpOutputs(const io::Config& config, const FeGearedRotor& model, const Fe
       predicted.size());
 }
 
-int runTime(const io::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
-            std::string& text) {
+/// ζ for people: round-off of an undamped mode (|ζ| < 1e-10, the eigensolver's accuracy on
+/// ζ = −Re λ / |λ|) is 0, not "-0.0000"; a small real ζ keeps its sign and digits.
+std::string dampingRatioText(double zeta) {
+  if (std::abs(zeta) < 1e-10) return "0.0000";
+  return std::abs(zeta) < 5e-5 ? fmt::format("{:.1e}", zeta) : fmt::format("{:.4f}", zeta);
+}
+
+int runTime(const io::Config& config, const CommandOptions& options, io::RunSummary& summary,
+            io::ResultWriter& writer, std::string& text) {
   const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
-  const FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  checkRunEstimate(estimateFeRotorTime(config, model.dofCount()), options, "rotor");
+  FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  ProgressReporter progress("rotor: Newmark", "steps", ProgressReporter::enabledFor(options));
+  o.progress = progress.callback();
   const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
   reportDivergence(r, summary.warnings);
   summary.results["model"] = modelJson(model, build.stiffness_model);
@@ -265,7 +277,7 @@ int runTime(const io::Config& config, io::RunSummary& summary, io::ResultWriter&
   const auto names = channelNames(model, r);
   if (model.spec().speed.constant() && model.spec().speed.start == 0.0) {
     summary.results["steady"] = nullptr;  // at rest: no mesh period, no harmonics
-    text += "  at rest (speed.rpm = 0): no mesh harmonics\n";
+    text += "  at rest (speed.speed_rpm = 0): no mesh harmonics\n";
   } else if (model.spec().speed.constant()) {
     const SteadyAnalysis a = analyseSteady(config, model, r);
     io::CsvTable harmonics({"channel", "order", "frequency_hz", "displacement", "acceleration"});
@@ -310,9 +322,9 @@ int runModal(const io::Config& config, io::RunSummary& summary, io::ResultWriter
   const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
-  const double speed =
-      (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm") : config.real("speed.rpm")) *
-      kRpm;
+  const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
+                                                      : config.real("speed.speed_rpm")) *
+                       kRpm;
   const auto modes = modalAnalysis(model, speed, io::modalOptionsFromConfig(config, "modal"));
   io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
                       "lateral_fraction", "torsional_fraction", "axial_fraction"});
@@ -327,8 +339,8 @@ int runModal(const io::Config& config, io::RunSummary& summary, io::ResultWriter
                      m.shape(i).imag(), std::abs(m.shape(i))});
     }
     list.push_back(modeJson(m));
-    text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {:.4f}  {}\n", j + 1, m.frequency,
-                        m.damping_ratio, m.whirl);
+    text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {}  {}\n", j + 1, m.frequency,
+                        dampingRatioText(m.damping_ratio), m.whirl);
   }
   writer.writeCsv("modes.csv", table);
   writer.writeCsv("mode_shapes.csv", shapes);
@@ -403,10 +415,12 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
     cases.push_back(std::move(c));
   }
   if (!cases.front().model->spec().speed.constant()) {
-    throw InputError("speed.end_rpm", "", "compare_stiffness runs at constant speed (no end_rpm)");
+    throw InputError("speed.end_speed_rpm", "",
+                     "compare_stiffness runs at constant speed (no end_speed_rpm)");
   }
   if (!(cases.front().model->spec().speed.start > 0.0)) {
-    throw InputError("speed.rpm", "0", "a speed > 0 rpm: the comparison is of mesh harmonics");
+    throw InputError("speed.speed_rpm", "0 rpm",
+                     "a speed > 0 rpm: the comparison is of mesh harmonics");
   }
   // The cases are independent: run them on the worker threads (options are read first, so that
   // configuration errors surface here, on the main thread).
@@ -519,13 +533,13 @@ int runFeRotor(const io::Config& config, const CommandOptions& options) {
   const std::string analysis = config.string("analysis.type");
   std::string text = fmt::format("finite-element geared rotor: {} analysis\n", analysis);
   int code = kExitOk;
-  if (analysis == "time") code = runTime(config, summary, writer, text);
+  if (analysis == "time") code = runTime(config, options, summary, writer, text);
   if (analysis == "modal") code = runModal(config, summary, writer, text);
   if (analysis == "campbell") code = runCampbell(config, summary, writer, text);
   if (analysis == "compare_stiffness") code = runCompare(config, options, summary, writer, text);
   summary.status = code == kExitOk ? "ok" : "diverged";
   for (const auto& w : summary.warnings)
-    if (w.rfind("Newmark", 0) != 0) std::cerr << "warning: " << w << "\n";
+    if (w.rfind("Newmark", 0) != 0) warn(w);
   auto path = writer.writeSummary(summary);
   if (io::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("rotor_fe", writer.folder())) writer.recordFile(file);

@@ -15,7 +15,7 @@ namespace geardyn::cli {
 
 int runGeometry(const io::Config& config, const CommandOptions& options) {
   const GearPair pair(io::gearPairSpecFromConfig(config));
-  for (const auto& warning : pair.warnings()) std::cerr << "warning: " << warning << "\n";
+  for (const auto& warning : pair.warnings()) warn(warning);
 
   io::RunSummary summary;
   summary.command = "geometry";

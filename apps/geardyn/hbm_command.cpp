@@ -13,6 +13,8 @@
 #include "geardyn/io/result_writer.h"
 #include "geardyn/io/simulate_io.h"
 #include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
 
 namespace geardyn::cli {
 namespace {
@@ -35,6 +37,7 @@ std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f)
 }  // namespace
 
 int runHbm(const io::Config& config, const CommandOptions& options) {
+  checkRunEstimate(estimateHarmonicBalance(config), options, "hbm");
   const io::GearPairModelBuild build = io::buildGearPairModel(config, false);
   std::vector<std::string> warnings = build.warnings;
   const GearPairModel model(build.spec);
@@ -46,14 +49,17 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
   sweep.initial_step = config.real("sweep.initial_step") * scale;
   sweep.min_step = config.real("sweep.min_step") * scale;
   sweep.max_step = config.real("sweep.max_step") * scale;
+  sweep.display_scale = scale;
+  sweep.display_unit = build.nondimensional ? "(nondimensional)" : "Hz";
   sweep.stability = config.boolean("sweep.stability");
   sweep.stability_method = config.string("sweep.stability_method") == "hill"
                                ? StabilityMethod::kHill
                                : StabilityMethod::kMonodromy;
   const double start = config.real("sweep.start"), stop = config.real("sweep.stop");
   if (!(stop > start)) {
-    throw InputError("sweep.stop", fmt::format("{:g}", stop),
-                     fmt::format("must exceed sweep.start = {:g}", start));
+    const std::string unit = build.nondimensional ? "" : " Hz";
+    throw InputError("sweep.stop", fmt::format("{:g}{}", stop, unit),
+                     fmt::format("must exceed sweep.start = {:g}{}", start, unit));
   }
   const std::string direction = config.string("sweep.direction");
   std::vector<std::pair<std::string, ContinuationResult>> runs;
@@ -61,6 +67,8 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
     if (direction != "both" && direction != which) continue;
     sweep.start = (which == "up" ? start : stop) * scale;
     sweep.stop = (which == "up" ? stop : start) * scale;
+    ProgressReporter progress("hbm: sweep " + which, "", ProgressReporter::enabledFor(options));
+    sweep.progress = progress.callback();
     runs.emplace_back(which, continueInFrequency(hbm, sweep));
   }
 
@@ -190,23 +198,26 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
   }
 
   summary.warnings = warnings;
-  for (const auto& warning : warnings) std::cerr << "warning: " << warning << "\n";
+  for (const auto& warning : warnings) warn(warning);
   auto path = writer.writeSummary(summary);
   if (io::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("hbm", writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(summary);
   }
+  // Printed values carry the unit of the configuration (nondimensional models: none).
+  const std::string length_unit = build.nondimensional ? "" : " m";
+  const std::string frequency_unit = build.nondimensional ? "" : " Hz";
   std::string text = fmt::format(
       "harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
       hbm_options.harmonics, hbm_options.samples_per_period, points, folds.size(), failures);
   if (!peak.is_null()) {
-    text += fmt::format("  peak p2p {:.6g} at {:.6g}\n", peak["p2p"].get<double>(),
-                        peak["frequency"].get<double>());
+    text += fmt::format("  peak p2p {:.6g}{} at {:.6g}{}\n", peak["p2p"].get<double>(), length_unit,
+                        peak["frequency"].get<double>(), frequency_unit);
   }
   for (const auto& fold : folds) {
-    text +=
-        fmt::format("  fold ({} sweep) at {:.6g}, p2p {:.6g}\n", fold["sweep"].get<std::string>(),
-                    fold["frequency"].get<double>(), fold["p2p"].get<double>());
+    text += fmt::format("  fold ({} sweep) at {:.6g}{}, p2p {:.6g}{}\n",
+                        fold["sweep"].get<std::string>(), fold["frequency"].get<double>(),
+                        frequency_unit, fold["p2p"].get<double>(), length_unit);
   }
   text += fmt::format("results: {}\n", path.string());
   report(options, text);

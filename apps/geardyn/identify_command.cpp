@@ -172,7 +172,7 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
         {"gear_runout_relative_error", r.gear_runout.amplitude.value / truth->gear_runout - 1.0}};
   }
   if (!r.converged) std::cerr << "geardyn identify: " << r.message << "\n";
-  for (const auto& w : summary.warnings) std::cerr << "warning: " << w << "\n";
+  for (const auto& w : summary.warnings) warn(w);
   auto path = writer.writeSummary(summary);
   if (io::outputOptionsFromConfig(config).plots) {
     for (const auto& f : drawPlots("identify", writer.folder())) writer.recordFile(f);

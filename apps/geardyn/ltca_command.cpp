@@ -136,7 +136,7 @@ int runLtca(const io::Config& config, const CommandOptions& options) {
     for (const auto& f : drawPlots("ltca", writer.folder())) writer.recordFile(f);
     path = writer.writeSummary(summary);
   }
-  for (const auto& w : summary.warnings) std::cerr << "warning: " << w << "\n";
+  for (const auto& w : summary.warnings) warn(w);
   text += fmt::format("results: {}\n", path.string());
   report(options, text);
   return kExitOk;

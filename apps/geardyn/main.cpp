@@ -3,24 +3,72 @@
 /// A thin layer: it reads a configuration, calls the library and writes results (DESIGN.md).
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 
 #include "command.h"
 #include "geardyn/error.h"
+#include "geardyn/io/did_you_mean.h"
 #include "geardyn/version.h"
 
 namespace {
 
 using geardyn::cli::CommandOptions;
 
+/// The configuration file must be a readable, non-empty file before a command starts: a missing
+/// or unreadable file is an I/O failure (exit 3), stdin is refused, an empty one is bad input.
+int checkConfigFile(const geardyn::cli::Command& command, const CommandOptions& options) {
+  const std::string prefix = "geardyn " + command.name + ": ";
+  const std::filesystem::path& file = options.config_file;
+  if (file == "-") {
+    std::cerr << prefix
+              << "error: config = \"-\": reading the configuration from stdin is not supported; "
+                 "write it to a file and pass its path\n";
+    return geardyn::cli::kExitBadInput;
+  }
+  std::error_code ec;
+  std::ifstream in(file);
+  if (!std::filesystem::is_regular_file(file, ec) || !in) {
+    std::cerr << prefix << "I/O error: cannot read the configuration file " << file << ": "
+              << (std::filesystem::exists(file, ec) ? "not a readable regular file"
+                                                    : "no such file")
+              << "\n";
+    return geardyn::cli::kExitIoFailure;
+  }
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(" \t\r\xEF\xBB\xBF");
+    if (first != std::string::npos && line[first] != '#') return geardyn::cli::kExitOk;
+  }
+  if (!options.overrides.empty()) return geardyn::cli::kExitOk;
+  std::cerr << prefix << "error: " << file
+            << ": the configuration is empty; start from `geardyn schema " << command.name
+            << "` (the reference of every key)\n";
+  return geardyn::cli::kExitBadInput;
+}
+
+/// "simulat" → "did you mean simulate?", before CLI11's generic message.
+int rejectUnknownCommand(int argc, char** argv, const std::vector<std::string>& names) {
+  if (argc < 2 || argv[1][0] == '-') return geardyn::cli::kExitOk;
+  const std::string given = argv[1];
+  for (const auto& name : names)
+    if (name == given) return geardyn::cli::kExitOk;
+  std::string list;
+  for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+  const auto match = geardyn::io::closestMatch(given, names);
+  std::cerr << "geardyn: unknown command \"" << given << "\""
+            << (match ? "; did you mean " + *match + "?" : std::string())
+            << " The commands are: " << list << " (geardyn --help)\n";
+  return geardyn::cli::kExitBadInput;
+}
+
 int runCommand(const geardyn::cli::Command& command, const CommandOptions& options) {
+  if (const int code = checkConfigFile(command, options); code != geardyn::cli::kExitOk)
+    return code;
   try {
     if (command.run_file) return command.run_file(options);
-    const auto schema =
-        command.schema_for_file ? command.schema_for_file(options.config_file) : command.schema();
-    const auto config = geardyn::io::loadConfigFile(options.config_file, schema, options.overrides);
-    return command.run(config, options);
+    return command.run(geardyn::cli::loadCommandConfig(command, options), options);
   } catch (const geardyn::InputError& error) {
     std::cerr << "geardyn " << command.name << ": error: " << error.what() << "\n";
     return geardyn::cli::kExitBadInput;
@@ -42,26 +90,48 @@ int main(int argc, char** argv) {
       "dynamic response, spectra and identification."};
   app.set_version_flag("--version", std::string("geardyn ") + geardyn::kVersion);
   app.require_subcommand(1);
-  app.footer(
-      "Exit codes: 0 ok, 1 numerical failure (results written, status says so), 2 bad input, "
-      "3 I/O failure.\nConfiguration reference of a command: geardyn schema COMMAND");
+  app.footer(geardyn::cli::exitCodesText() +
+             "\nConfiguration reference of a command: geardyn schema COMMAND");
 
   const auto commands = geardyn::cli::allCommands();
+  std::vector<std::string> command_names{"schema"};
+  for (const auto& command : commands) command_names.push_back(command.name);
+  if (const int code = rejectUnknownCommand(argc, argv, command_names); code != 0) return code;
   std::map<std::string, CommandOptions> options;
   for (const auto& command : commands) {
     CommandOptions& o = options[command.name];
     CLI::App* sub = app.add_subcommand(command.name, command.help);
     sub->add_option("config", o.config_file, "configuration file (TOML)")->required();
-    sub->add_option("--out,-o", o.out_dir, "result folder (default: results/<config stem>/)");
+    sub->add_option("--out,-o", o.out_dir, "result folder (default: results/<config stem>/)")
+        ->check([](const std::string& value) {
+          return value.empty() ? std::string("--out needs a folder name (an empty path was given)")
+                               : std::string();
+        });
     sub->add_option("--set,-s", o.overrides,
                     "override a configuration value: section.key=value (repeatable)")
         ->allow_extra_args(false);
     sub->add_option("--threads,-j", o.threads, "worker threads (default: all cores)")
-        ->check(CLI::PositiveNumber);
+        ->check([](const std::string& value) {
+          std::size_t used = 0;
+          long long n = 0;
+          try {
+            n = std::stoll(value, &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          return used == value.size() && n >= 1 && n <= 4096
+                     ? std::string()
+                     : "--threads = " + value + ": must be an integer in [1, 4096]";
+        });
     sub->add_flag("--quiet,-q", o.quiet, "print nothing but warnings and errors");
+    sub->add_flag("--progress", o.progress,
+                  "progress lines with an ETA on stderr for runs over ~2 s (default: only when "
+                  "stderr is a terminal)");
     if (command.run_file) {
       sub->add_flag("--resume", o.resume,
                     "continue an interrupted sweep from its journal in the result folder");
+      sub->add_flag("--overwrite", o.overwrite,
+                    "discard the journal of a previous sweep in the result folder and start again");
     }
   }
 

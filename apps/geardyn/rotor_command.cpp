@@ -16,6 +16,8 @@
 #include "geardyn/io/result_writer.h"
 #include "geardyn/io/rotor_io.h"
 #include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
 
 namespace geardyn::cli {
 namespace {
@@ -28,12 +30,15 @@ GearWhirlSetup setupOf(const LateralRotorModel& model) {
 }
 
 /// Sampling must resolve the highest component (mesh harmonic n) without aliasing.
-void requireNyquist(const LateralRotorModel& model, double sample_rate, const std::string& key) {
+/// `key` = `shown` (the value as the user gave it) must give a sample rate above Nyquist.
+void requireNyquist(const LateralRotorModel& model, double sample_rate, const std::string& key,
+                    const std::string& shown) {
   const double highest = model.meshOmega() * std::max(1, model.harmonics()) / kTwoPi;
   if (sample_rate <= 2.0 * highest) {
-    throw InputError(
-        key, fmt::format("{:.6g} Hz sampling", sample_rate),
-        fmt::format("must exceed twice the highest mesh harmonic ({:.6g} Hz)", highest));
+    throw InputError(key, shown,
+                     fmt::format("too few: the sampling rate {:.6g} Hz must exceed twice the "
+                                 "highest mesh harmonic ({:.6g} Hz)",
+                                 sample_rate, highest));
   }
 }
 
@@ -168,16 +173,22 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
   bool ok = true;
   RotorTimeResponse time;
   if (config.boolean("time.enabled")) {
-    const RotorTimeOptions time_options = io::rotorTimeOptionsFromConfig(config);
+    checkRunEstimate(estimateRotorTime(config), options, "rotor");
+    RotorTimeOptions time_options = io::rotorTimeOptionsFromConfig(config);
+    ProgressReporter progress("rotor: time response", "s simulated",
+                              ProgressReporter::enabledFor(options));
+    time_options.progress = progress.callback();
     // Checked before integrating: the grid's rate (snapped to the common period) is within a
     // sample per period of duration/(samples − 1).
+    const std::string samples_shown = fmt::format("{} (over time.duration = {:g} s)",
+                                                  time_options.samples, time_options.duration);
     requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
-                   "time.samples");
+                   "time.samples", samples_shown);
     const auto start = std::chrono::steady_clock::now();
     time = solveRotorTimeResponse(model, time_options);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    requireNyquist(model, time.sample_rate, "time.samples");
+    requireNyquist(model, time.sample_rate, "time.samples", samples_shown);
     summary.results["time_domain"] = {{"status", toString(time.status)},
                                       {"message", time.message},
                                       {"wall_time_s", seconds},
@@ -260,7 +271,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
   const auto formats = config.stringList("measurement.formats");
   if (!formats.empty()) {
     const double fs = config.real("measurement.sample_rate");
-    requireNyquist(model, fs, "measurement.sample_rate");
+    requireNyquist(model, fs, "measurement.sample_rate", fmt::format("{:g} Hz", fs));
     const double period = model.commonPeriod();
     double start = 0.0;
     if (auto given = config.optionalReal("measurement.start")) {
@@ -407,7 +418,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
 
   summary.status = ok ? "ok" : (time.converged() ? "study_incomplete" : toString(time.status));
   summary.warnings = warnings;
-  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  for (const auto& w : warnings) warn(w);
   auto path = writer.writeSummary(summary);
   if (io::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("rotor", writer.folder())) writer.recordFile(file);

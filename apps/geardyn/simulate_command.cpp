@@ -9,14 +9,21 @@
 #include "geardyn/io/result_writer.h"
 #include "geardyn/io/simulate_io.h"
 #include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
 
 namespace geardyn::cli {
 
 int runSimulate(const io::Config& config, const CommandOptions& options) {
   const io::GearPairModelBuild build = io::buildGearPairModel(config);
-  for (const auto& warning : build.warnings) std::cerr << "warning: " << warning << "\n";
+  for (const auto& warning : build.warnings) warn(warning);
   const GearPairModel model(build.spec);
-  const TimeResponse response = solveTimeResponse(model, io::timeResponseOptionsFromConfig(config));
+  TimeResponseOptions solver = io::timeResponseOptionsFromConfig(config);
+  checkRunEstimate(estimateTimeResponse(config), options, "simulate");  // before it allocates
+  ProgressReporter progress("simulate", "periods of max_periods",
+                            ProgressReporter::enabledFor(options));
+  solver.progress = progress.callback();
+  const TimeResponse response = solveTimeResponse(model, solver);
   const io::TimeResponseChannels channels = io::channelsOf(model, response);
 
   io::RunSummary summary;
@@ -42,10 +49,11 @@ int runSimulate(const io::Config& config, const CommandOptions& options) {
   text += fmt::format("  {}\n", response.message);
   if (summary.results.contains("mesh_force")) {
     const auto& f = summary.results["mesh_force"];
+    const std::string force_unit = build.nondimensional ? "" : " N";
     text += fmt::format(
-        "  mesh force: mean {:.6g}, peak to peak {:.6g}, dynamic factor {:.4g}, contact loss "
-        "{:.1f} %\n",
-        f["mean"].get<double>(), f["peak_to_peak"].get<double>(),
+        "  mesh force: mean {:.6g}{}, peak to peak {:.6g}{}, dynamic factor {:.4g}, contact "
+        "loss {:.1f} %\n",
+        f["mean"].get<double>(), force_unit, f["peak_to_peak"].get<double>(), force_unit,
         summary.results["dynamic_factor"].is_null()
             ? 0.0
             : summary.results["dynamic_factor"].get<double>(),

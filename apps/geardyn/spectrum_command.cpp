@@ -25,6 +25,7 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
   read.channels = config.stringList("input.channels");
   read.sample_rate = config.optionalReal("input.sample_rate");
   read.scale = config.real("input.scale");
+  read.time_column = config.string("input.time_column");
   for (const char* role : {"x1", "y1", "x2", "y2"}) {
     if (std::find(read.channels.begin(), read.channels.end(), role) == read.channels.end()) {
       throw InputError("input.channels", fmt::format("[{}]", fmt::join(read.channels, ", ")),
@@ -40,14 +41,14 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
   setup.pinion_teeth = static_cast<int>(config.integer("gears.pinion_teeth"));
   setup.gear_teeth = static_cast<int>(config.integer("gears.gear_teeth"));
   setup.harmonics = static_cast<int>(config.integer("gears.harmonics"));
-  const auto configured_rpm = config.optionalReal("gears.pinion_speed_rpm");
+  const auto configured_rpm = config.optionalReal("gears.speed_rpm");
   const bool has_keyphasor =
       std::find(read.channels.begin(), read.channels.end(), "keyphasor") != read.channels.end();
   const bool use_keyphasor = config.boolean("keyphasor.enabled");
   if (use_keyphasor && !has_keyphasor) {
     throw InputError("keyphasor.enabled", "true",
                      "the record has no 'keyphasor' channel: add it to input.channels or set "
-                     "keyphasor.enabled = false (and gears.pinion_speed_rpm)");
+                     "keyphasor.enabled = false (and gears.speed_rpm)");
   }
   std::size_t begin = 0, end = record.samples();
   double reference = record.start_time;
@@ -59,7 +60,7 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
                             config.real("keyphasor.max_speed_variation"));
     setup.pinion_speed = pulses.speed;
     if (configured_rpm && std::abs(*configured_rpm / 60.0 / pulses.speed - 1.0) > 0.01) {
-      throw InputError("gears.pinion_speed_rpm", fmt::format("{:g}", *configured_rpm),
+      throw InputError("gears.speed_rpm", fmt::format("{:g}", *configured_rpm),
                        fmt::format("disagrees with the keyphasor's {:.6g} rpm by more than 1 %",
                                    60.0 * pulses.speed));
     }
@@ -73,8 +74,7 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
         {"speed_rpm", 60.0 * pulses.speed},    {"threshold", pulses.threshold}};
   } else {
     if (!configured_rpm) {
-      throw InputError("gears.pinion_speed_rpm", "(not set)",
-                       "needed when the keyphasor is not used");
+      throw InputError("gears.speed_rpm", "(not set)", "needed when the keyphasor is not used");
     }
     setup.pinion_speed = *configured_rpm / 60.0;
   }

@@ -11,6 +11,8 @@
 #include "geardyn/io/simulate_io.h"
 #include "geardyn/io/stats_io.h"
 #include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
 
 namespace geardyn::cli {
 
@@ -28,6 +30,12 @@ int runStats(const io::Config& config, const CommandOptions& options) {
   } else if (config.string("stats.source") == "csv") {
     stats = io::meanExcitationFromConfigCsv(config);
   } else {
+    const int threads =
+        options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    if (config.integer("monte_carlo.samples") > 0)
+      checkRunEstimate(estimateMonteCarlo(config, threads), options, "stats");
+    if (config.boolean("stats.simulate"))
+      checkRunEstimate(estimateTimeResponse(config), options, "stats");
     const io::GearPairModelBuild build = io::buildGearPairModel(config);
     summary.warnings = build.warnings;
     const GearPairModel model(build.spec);
@@ -36,9 +44,10 @@ int runStats(const io::Config& config, const CommandOptions& options) {
                                                            : model.meanForce();
     stats = meanExcitationFromModel(model, baseload);
     if (config.integer("monte_carlo.samples") > 0) {
-      const int threads =
-          options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-      const MonteCarloOptions mc = io::monteCarloOptionsFromConfig(config, baseload, threads);
+      MonteCarloOptions mc = io::monteCarloOptionsFromConfig(config, baseload, threads);
+      ProgressReporter progress("stats: Monte Carlo", "samples",
+                                ProgressReporter::enabledFor(options));
+      mc.progress = progress.callback();
       const auto samples = runMeanExcitationMonteCarlo(model, mc);
       summary.seed = mc.seed;
       summary.results["monte_carlo"] = io::monteCarloJson(mc, samples);
@@ -54,7 +63,11 @@ int runStats(const io::Config& config, const CommandOptions& options) {
             "the mean excitation statistics assume a linear contact (Gelman eq. 1); "
             "with contact loss the simulated mean of k·y differs from L_d");
       }
-      const TimeResponse r = solveTimeResponse(model, io::timeResponseOptionsFromConfig(config));
+      TimeResponseOptions solver = io::timeResponseOptionsFromConfig(config);
+      ProgressReporter progress("stats: simulation", "periods of max_periods",
+                                ProgressReporter::enabledFor(options));
+      solver.progress = progress.callback();
+      const TimeResponse r = solveTimeResponse(model, solver);
       double mean_kx = 0.0;
       for (std::size_t j = 0; j < r.t.size(); ++j) mean_kx += model.stiffness(r.t[j]) * r.x[j];
       mean_kx /= std::max<std::size_t>(1, r.t.size());
@@ -72,7 +85,7 @@ int runStats(const io::Config& config, const CommandOptions& options) {
       }
     }
   }
-  for (const auto& warning : summary.warnings) std::cerr << "warning: " << warning << "\n";
+  for (const auto& warning : summary.warnings) warn(warning);
   summary.results["mean_excitation"] = io::toJson(stats);
 
   io::ResultWriter writer(options.resultFolder());

@@ -24,7 +24,7 @@ int runStiffness(const io::Config& config, const CommandOptions& options) {
   summary.config = config.resolved();
   summary.warnings = pair.warnings();
   summary.warnings.insert(summary.warnings.end(), models.warnings.begin(), models.warnings.end());
-  for (const auto& warning : summary.warnings) std::cerr << "warning: " << warning << "\n";
+  for (const auto& warning : summary.warnings) warn(warning);
   summary.results = io::stiffnessResultsJson(config, pair, models);
   summary.results["geometry"] = {
       {"contact_ratio_transverse", pair.contactRatioTransverse()},

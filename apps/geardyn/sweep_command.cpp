@@ -16,9 +16,12 @@
 #include "command.h"
 #include "geardyn/error.h"
 #include "geardyn/io/config.h"
+#include "geardyn/io/did_you_mean.h"
 #include "geardyn/io/result_writer.h"
 #include "geardyn/io/sweep_io.h"
 #include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
 #include "sweep_runner.h"
 
 namespace geardyn::cli {
@@ -67,7 +70,14 @@ io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& sche
     }
     if (!missing.empty()) {
       if (r.status == "ok") r.status = "missing_output";
-      r.message = fmt::format("no number at {} in results", fmt::join(missing, ", "));
+      std::vector<std::string> keys;
+      for (const auto& [key, value] : summary["results"].items()) keys.push_back("/" + key);
+      const std::string first = "/" + missing.front().substr(1, missing.front().find('/', 1) - 1);
+      const auto match = io::closestMatch(first, keys);
+      r.message = fmt::format("no number at {} in results{}; the results of `{}` have {}",
+                              fmt::join(missing, ", "),
+                              match ? fmt::format(" (did you mean {}?)", *match) : "",
+                              study.command, fmt::join(keys, ", "));
     }
   } catch (const InputError& e) {
     r.status = "bad_input";
@@ -83,58 +93,134 @@ io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& sche
   return r;
 }
 
-/// Progress on stderr at most once a second: done/total, rate, ETA.
-class Progress {
- public:
-  Progress(long long total, long long already, bool quiet)
-      : total_(total), done_(already), start_done_(already), quiet_(quiet) {}
-  void tick(bool failed) {
-    ++done_;
-    failed_ += failed;
-    const auto now = std::chrono::steady_clock::now();
-    if (quiet_ || (now - last_ < std::chrono::seconds(1) && done_ < total_)) return;
-    last_ = now;
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double rate = (done_ - start_done_) / std::max(elapsed, 1e-9);
-    const double eta = rate > 0 ? (total_ - done_) / rate : 0.0;
-    std::cerr << fmt::format("sweep: {}/{} cases ({} failed), {:.3g} cases/s, ETA {:.0f} s\n",
-                             done_, total_, failed_, rate, eta);
-  }
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-  long long failed() const { return failed_; }
-
- private:
-  long long total_, done_, start_done_, failed_ = 0;
-  bool quiet_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
-};
-
 nlohmann::ordered_json outputStatistics(const io::SweepDefinition& study,
                                         const std::vector<io::SweepCaseRecord>& records) {
   nlohmann::ordered_json stats = nlohmann::ordered_json::object();
   for (std::size_t k = 0; k < study.outputs.size(); ++k) {
-    double sum = 0, sum2 = 0, lo = INFINITY, hi = -INFINITY;
+    // Two passes over the data shifted by its first value (Chan, Golub & LeVeque 1983): the
+    // mean of the deviations, then their corrected sum of squares. No cancellation of
+    // sum(x²) − n mean², and a constant column has mean x and std 0 exactly.
+    const auto usable = [&](const io::SweepCaseRecord& r) {
+      return r.status == "ok" && std::isfinite(r.outputs[k]);
+    };
+    double shift = NAN, sum = 0, lo = INFINITY, hi = -INFINITY;
     long long n = 0;
     for (const auto& r : records) {
+      if (!usable(r)) continue;
       const double x = r.outputs[k];
-      if (r.status != "ok" || !std::isfinite(x)) continue;
-      sum += x, sum2 += x * x, lo = std::min(lo, x), hi = std::max(hi, x), ++n;
+      if (n == 0) shift = x;
+      sum += x - shift, lo = std::min(lo, x), hi = std::max(hi, x), ++n;
     }
     if (n == 0) {
       stats[study.outputs[k].name] = {{"count", 0}};
       continue;
     }
-    const double mean = sum / n;
-    stats[study.outputs[k].name] = {
-        {"count", n},
-        {"mean", mean},
-        {"std", n > 1 ? std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1))) : 0.0},
-        {"min", lo},
-        {"max", hi}};
+    const double offset = sum / n;
+    double squares = 0;
+    for (const auto& r : records)
+      if (usable(r)) squares += (r.outputs[k] - shift - offset) * (r.outputs[k] - shift - offset);
+    const double mean = shift + offset;
+    stats[study.outputs[k].name] = {{"count", n},
+                                    {"mean", mean},
+                                    {"std", n > 1 ? std::sqrt(squares / (n - 1)) : 0.0},
+                                    {"min", lo},
+                                    {"max", hi}};
   }
   return stats;
+}
+
+/// Every value a parameter lists (or the bounds of its range) loaded into the base
+/// configuration: a bad value is an error before any case runs, named by its place in the study.
+void checkStudyValues(const io::SweepDefinition& study, const io::ConfigSchema& schema,
+                      const fs::path& file) {
+  for (const auto& p : study.parameters) {
+    const std::string where = "study.parameters." + p.key;
+    if (!schema.findKey(p.key)) {
+      io::loadConfigFile(study.base, schema, {p.key + "=0"});  // throws with did-you-mean
+      throw InputError(where, "", "a key of the base configuration");
+    }
+    std::vector<std::pair<std::string, nlohmann::json>> probes;
+    if (p.linspace_num > 0) {
+      probes = {{where + ".min", p.valueAt(0)}, {where + ".max", p.valueAt(p.linspace_num - 1)}};
+    } else if (p.distribution == StudyDistribution::kValues) {
+      for (std::size_t i = 0; i < p.values.size(); ++i)
+        probes.push_back({fmt::format("{}[{}]", where, i), p.values[i]});
+    } else if (p.distribution == StudyDistribution::kNormal) {
+      probes = {{where + ".mean", p.mean}};
+    } else {
+      probes = {{where + ".min", p.min}, {where + ".max", p.max}};
+    }
+    for (const auto& [label, value] : probes) {
+      std::vector<std::string> overrides = study.set;
+      overrides.push_back(p.key + "=" + io::tomlLiteral(value));
+      try {
+        io::loadConfigFile(study.base, schema, overrides);
+      } catch (const InputError& e) {
+        if (e.key() != p.key) throw;
+        std::string why = e.allowed();
+        const auto at = why.rfind("; --set)");
+        if (at != std::string::npos) why.replace(at, 8, "; " + file.string() + ")");
+        throw InputError(label, io::tomlLiteral(value), why);
+      }
+    }
+  }
+}
+
+/// A --set of a swept key would be overridden by every case: refused, with the way to do it.
+void rejectSweptOverrides(const io::SweepDefinition& study, const CommandOptions& options) {
+  for (const auto& assignment : options.overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    for (const auto& p : study.parameters) {
+      if (p.key != key) continue;
+      throw InputError("--set", assignment,
+                       fmt::format("not a swept key: {} is set by study.parameters in every case; "
+                                   "change the parameter itself, e.g. --set "
+                                   "'study.parameters.\"{}\"=[...]'",
+                                   key, key));
+    }
+  }
+}
+
+/// The journal of an interrupted sweep (finished cases, no summary written after them) is not
+/// discarded silently: --resume continues it, --overwrite discards it. A completed sweep's
+/// results are replaced like any command's (its summary.json is newer than its journal).
+void refuseToDiscardJournal(const fs::path& journal, const CommandOptions& options) {
+  std::error_code ec;
+  if (options.resume || options.overwrite || !fs::exists(journal, ec)) return;
+  const fs::path summary = journal.parent_path() / "summary.json";
+  if (fs::exists(summary, ec) &&
+      fs::last_write_time(summary, ec) >= fs::last_write_time(journal, ec))
+    return;
+  std::ifstream in(journal);
+  long long lines = 0;
+  for (std::string line; std::getline(in, line);) lines += !line.empty();
+  if (lines <= 1) return;  // only the header: nothing finished
+  throw InputError("--out", journal.parent_path().string(),
+                   fmt::format("a folder without an interrupted sweep: its journal holds {} "
+                               "finished case(s) of a sweep that did not complete; pass --resume "
+                               "to continue it or --overwrite to discard it and start again",
+                               lines - 1));
+}
+
+/// Memory of the gathered records and of the running cases, and the time of all cases.
+RunEstimate estimateSweep(const io::SweepDefinition& study, const io::Config& base, int workers) {
+  const double cases = static_cast<double>(study.caseCount());
+  const double p = static_cast<double>(study.parameters.size());
+  const double o = static_cast<double>(study.outputs.size());
+  // Per case: its record (~130 B + values + outputs + status and message), the HDF5 and CSV
+  // copies made when gathering (one 40 B cell per column), the pending index.
+  const double per_case = 450.0 + 100.0 * p + 60.0 * o;
+  const RunEstimate one = estimateCommand(study.command, base);
+  RunEstimate e;
+  e.key = study.design == StudyDesign::kRandom ? "study.samples" : "study.parameters";
+  e.value = fmt::format("{:g} cases", cases);
+  e.bytes = cases * per_case + workers * one.bytes;
+  e.seconds = cases * one.seconds / std::max(1, workers);
+  e.basis = fmt::format("{:g} cases × {:g} B gathered{}", cases, per_case,
+                        one.seconds > 0 ? fmt::format(", {} each on {} worker(s)",
+                                                      formatDuration(one.seconds), workers)
+                                        : "");
+  return e;
 }
 
 }  // namespace
@@ -143,20 +229,28 @@ int runSweep(const CommandOptions& options) {
   std::unique_ptr<MpiWorld> mpi;
   if (launchedByMpi()) mpi = std::make_unique<MpiWorld>();
   const bool root = !mpi || mpi->rank() == 0;
-  const io::SweepDefinition study = io::loadSweepDefinition(options.config_file, options.overrides);
+  io::SweepDefinition study = io::loadSweepDefinition(options.config_file, options.overrides);
   const auto commands = allCommands();
   const Command& command = findCommand(commands, study.command);
   // The base configuration with the study's fixed overrides must load: a typo in a key fails here,
   // before any case runs (each case's own values are checked by the case).
-  const auto base_schema =
-      command.schema_for_file ? command.schema_for_file(study.base) : command.schema();
+  const auto base_schema = commandSchema(command, study.base);
   const io::Config base = io::loadConfigFile(study.base, base_schema, study.set);
-  for (const auto& p : study.parameters) {
-    if (!base_schema.findKey(p.key)) {
-      io::loadConfigFile(study.base, base_schema, {p.key + "=0"});  // throws with did-you-mean
-      throw InputError("study.parameters." + p.key, "", "a key of the base configuration");
+  for (const auto& note : base.notes()) warn(note);
+  for (std::string* key : {&study.seed_key}) {
+    if (const std::string* renamed = base_schema.aliasTarget(*key)) {
+      warn(fmt::format("study.seed_key: {} is deprecated: write {}", *key, *renamed));
+      *key = *renamed;
     }
   }
+  for (auto& p : study.parameters) {
+    if (const std::string* renamed = base_schema.aliasTarget(p.key)) {
+      warn(fmt::format("study.parameters.{} is deprecated: write {}", p.key, *renamed));
+      p.key = *renamed;
+    }
+  }
+  rejectSweptOverrides(study, options);
+  checkStudyValues(study, base_schema, options.config_file);
   if (!study.seed_key.empty() && !base_schema.findKey(study.seed_key))
     throw InputError("study.seed_key", "\"" + study.seed_key + "\"",
                      "a key of the base configuration");
@@ -169,14 +263,19 @@ int runSweep(const CommandOptions& options) {
                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (mpi && options.threads == 0) threads = 1;  // one worker per rank unless told otherwise
 
-  std::vector<io::SweepCaseRecord> records(static_cast<std::size_t>(total));
-  std::vector<bool> have(static_cast<std::size_t>(total), false);
+  std::vector<io::SweepCaseRecord> records;
+  std::vector<bool> have;
   std::vector<long long> pending;
   std::unique_ptr<io::SweepJournal> journal;
   long long resumed = 0;
   std::exception_ptr setup_error;
   if (root) {
     try {
+      // Before anything of the size of the study is allocated (the cases themselves are
+      // generated one at a time, when they run).
+      checkRunEstimate(estimateSweep(study, base, threads * (mpi ? mpi->size() : 1)), options,
+                       "sweep");
+      refuseToDiscardJournal(folder / "sweep_journal.jsonl", options);
       fs::create_directories(cases_dir);
       journal = std::make_unique<io::SweepJournal>(folder / "sweep_journal.jsonl",
                                                    study.fingerprint(), options.resume);
@@ -186,9 +285,11 @@ int runSweep(const CommandOptions& options) {
   }
   // Every rank stops together when rank 0 cannot start (e.g. nothing to resume).
   if (mpi && !mpi->agree(!setup_error) && !setup_error)
-    throw InputError("--resume", "", "a sweep rank 0 can start (see its message)");
+    throw InputError("sweep", "", "a sweep rank 0 can start (see its message)");
   if (setup_error) std::rethrow_exception(setup_error);
   if (root) {
+    records.resize(static_cast<std::size_t>(total));
+    have.assign(static_cast<std::size_t>(total), false);
     for (const auto& r : journal->previous()) {
       if (r.index < 0 || r.index >= total || have[r.index]) continue;
       records[r.index] = r;
@@ -199,7 +300,9 @@ int runSweep(const CommandOptions& options) {
       if (!have[i]) pending.push_back(i);
   }
 
-  Progress progress(total, resumed, options.quiet || !root);
+  const auto computed = static_cast<long long>(pending.size());
+  ProgressReporter progress("sweep", "cases", root && ProgressReporter::enabledFor(options));
+  long long finished = resumed, failed_so_far = 0;
   if (root && !options.quiet) {
     std::cerr << fmt::format(
         "sweep: {} cases of `{}` ({}), {} already done, {} to run on {}\n", total, study.command,
@@ -213,8 +316,26 @@ int runSweep(const CommandOptions& options) {
     journal->append(r);
     records[r.index] = r;
     have[r.index] = true;
-    progress.tick(r.status != "ok");
+    failed_so_far += r.status != "ok";
+    progress.update(static_cast<double>(++finished), static_cast<double>(total), failed_so_far);
   };
+  // The first case runs alone: outputs that are not in its results are a mistake in the study
+  // (exit 2), found before the other cases run.
+  std::exception_ptr probe_error;
+  if (root && !pending.empty()) {
+    try {
+      const io::SweepCaseRecord first = run_case(pending.front());
+      done(first);
+      pending.erase(pending.begin());
+      if (first.status == "missing_output")
+        throw InputError("study.outputs", fmt::format("(case {})", first.index), first.message);
+    } catch (...) {
+      probe_error = std::current_exception();
+    }
+  }
+  if (mpi && !mpi->agree(!probe_error) && !probe_error)
+    throw InputError("study.outputs", "", "pointers into the results (see rank 0)");
+  if (probe_error) std::rethrow_exception(probe_error);
   if (mpi) {
     mpi->runCases(pending, threads, run_case, done);
   } else {
@@ -250,7 +371,7 @@ int runSweep(const CommandOptions& options) {
   summary.results = {{"cases", total},
                      {"by_status", by_status},
                      {"resumed", resumed},
-                     {"computed", static_cast<long long>(pending.size())},
+                     {"computed", computed},
                      {"workers", mpi ? fmt::format("{} MPI ranks", mpi->size())
                                      : fmt::format("{} threads", threads)},
                      {"wall_time_s", elapsed},
@@ -265,10 +386,10 @@ int runSweep(const CommandOptions& options) {
     std::cerr << fmt::format("geardyn sweep: {} of {} cases did not succeed (see sweep.csv)\n",
                              failed, total);
   }
-  report(options, fmt::format("sweep of `{}`: {} cases ({} computed, {} resumed, {} failed) in "
-                              "{:.3g} s\nresults: {}\n",
-                              study.command, total, pending.size(), resumed, failed, elapsed,
-                              path.string()));
+  report(options,
+         fmt::format("sweep of `{}`: {} cases ({} computed, {} resumed, {} failed) in "
+                     "{:.3g} s\nresults: {}\n",
+                     study.command, total, computed, resumed, failed, elapsed, path.string()));
   return failed == 0 ? kExitOk : kExitNumericalFailure;
 }
 

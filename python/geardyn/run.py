@@ -120,13 +120,15 @@ class Result:
 
 
 def run(command, config, out=None, overrides=None, threads=None, check=True, plots=None,
-        resume=False, timeout=None):
+        resume=False, timeout=None, overwrite=False):
     """Runs `geardyn COMMAND` on a configuration file or dict and returns a Result.
 
     - ``overrides``: {"section.key": value} or ["section.key=value", ...] (as --set).
     - ``out``: the result folder (default: a new temporary folder).
     - ``plots``: True/False to force output.plots.
     - ``threads``: worker threads (default: all cores).
+    - ``resume`` / ``overwrite`` (sweep): continue, or discard, the journal of a previous sweep
+      in ``out``.
     Raises ValueError for bad input (exit code 2), RuntimeError for a numerical failure (exit
     code 1, unless check=False) and OSError for I/O errors (3)."""
     work = None
@@ -156,6 +158,8 @@ def run(command, config, out=None, overrides=None, threads=None, check=True, plo
         args += ["--threads", str(int(threads))]
     if resume:
         args.append("--resume")
+    if overwrite:
+        args.append("--overwrite")
     done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
     if work:
         shutil.rmtree(work, ignore_errors=True)
@@ -174,7 +178,8 @@ def run(command, config, out=None, overrides=None, threads=None, check=True, plo
     return result
 
 
-def sweep(study, out=None, threads=None, resume=False, check=True, plots=None):
+def sweep(study, out=None, threads=None, resume=False, check=True, plots=None, overwrite=False):
     """`geardyn sweep`: ``study`` is a sweep file or a dict {"study": {...}} (see
     docs/config/sweep.md); returns a Result whose ``table("sweep")`` has one row per case."""
-    return run("sweep", study, out=out, threads=threads, resume=resume, check=check, plots=plots)
+    return run("sweep", study, out=out, threads=threads, resume=resume, check=check, plots=plots,
+               overwrite=overwrite)

@@ -99,11 +99,30 @@ Driver parseDriver(const std::string& text, const std::string& key) {
   throw InputError(key, "\"" + text + "\"", "must be \"pinion\" or \"gear\"");
 }
 
-GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
+/// Values outside the usual engineering ranges: a module of 3 is 3 m, not 3 mm (SI units).
+static std::vector<std::string> plausibilityNotes(const GearPairSpec& spec) {
+  std::vector<std::string> notes;
+  for (const auto& [name, g] : {std::pair{"pinion", &spec.pinion}, std::pair{"gear", &spec.gear}}) {
+    if (g->normal_module < 0.1e-3 || g->normal_module > 0.1)
+      notes.push_back(fmt::format(
+          "{}.module = {:g} m is outside the usual 0.1 mm to 100 mm: lengths are in metres "
+          "(a 3 mm module is 0.003)",
+          name, g->normal_module));
+    if (g->face_width < 1e-3 || g->face_width > 2.0)
+      notes.push_back(fmt::format(
+          "{}.face_width = {:g} m is outside the usual 1 mm to 2 m: lengths are in metres", name,
+          g->face_width));
+  }
+  return notes;
+}
+
+// A function-try-block: an error caused by an implausible value (a length in mm) says so.
+GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
   const GearSpec& g1 = spec.pinion;
   const GearSpec& g2 = spec.gear;
   g1.validate("pinion");
   g2.validate("gear");
+  warnings_ = plausibilityNotes(spec);
 
   // --- the two members must be cut by the same rack --------------------------------------
   if (std::abs(g2.normal_module - g1.normal_module) > kSameDesignTolerance * g1.normal_module) {
@@ -155,7 +174,7 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
     a_w_ = *spec.centre_distance;
     if (!std::isfinite(a_w_) || a_w_ <= m1.rb + m2.rb) {
       throw InputError(
-          "pair.centre_distance", fmt::format("{:g}", a_w_),
+          "pair.centre_distance", fmt::format("{:g} m", a_w_),
           fmt::format("must exceed the sum of the base radii r_b1 + r_b2 = {}", mm(m1.rb + m2.rb)));
     }
   } else {
@@ -170,7 +189,7 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
           toothThicknessAt(m2, alpha_t_, r_w2);
   j_bn_ = j_wt_ * std::cos(alpha_wt_) * std::cos(beta_b_);
   if (j_wt_ < -1e-9 * m_n) {
-    throw InputError("pair.centre_distance", fmt::format("{:g}", a_w_),
+    throw InputError("pair.centre_distance", fmt::format("{:g} m", a_w_),
                      fmt::format("must be at least the tight-mesh centre distance {} of these "
                                  "profile shifts: closer, the teeth would overlap",
                                  mm(a_tight_)));
@@ -180,7 +199,7 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
   const auto check_clearance = [&](const char* name, double ra, double rf_mate) {
     const double clearance = a_w_ - ra - rf_mate;
     if (clearance < 0.0) {
-      throw InputError("pair.centre_distance", fmt::format("{:g}", a_w_),
+      throw InputError("pair.centre_distance", fmt::format("{:g} m", a_w_),
                        fmt::format("the {} tip circle (r_a = {}) reaches the mate's root circle "
                                    "(r_f = {}): tip clearance {}",
                                    name, mm(ra), mm(rf_mate), mm(clearance)));
@@ -242,6 +261,15 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
   eps_alpha_ = path_length_ / p_bt_;
   face_width_ = std::min(g1.face_width, g2.face_width);
   eps_beta_ = face_width_ * std::sin(beta) / (kPi * m_n);
+  if (spec.centre_distance && eps_alpha_ + eps_beta_ < 1.0) {
+    // The centre distance the user gave pulls the teeth out of reach of each other.
+    throw InputError(
+        "pair.centre_distance", fmt::format("{:g} m", a_w_),
+        fmt::format("too large for these gears: the path of contact is {} long (contact ratio "
+                    "{:.4g} < 1), the tip circles r_a1 + r_a2 = {} leave the teeth out of reach; "
+                    "the tight-mesh centre distance is {}",
+                    mm(path_length_), eps_alpha_ + eps_beta_, mm(m1.ra + m2.ra), mm(a_tight_)));
+  }
   if (eps_alpha_ + eps_beta_ < 1.0) {
     throw InputError(
         "pinion, gear", fmt::format("contact ratio {:.6g}", eps_alpha_ + eps_beta_),
@@ -299,7 +327,14 @@ GearPair::GearPair(const GearPairSpec& spec) : spec_(spec) {
       throw InputError("pair.speed_rpm", fmt::format("{:g}", n1), "must be finite and >= 0");
     }
     mesh_frequency_ = g1.teeth * n1 / 60.0;
+    if (n1 > 200000.0)
+      warnings_.push_back(fmt::format(
+          "pair.speed_rpm = {:g} rpm is above 200000 rpm: is it in rpm (not rad/s or Hz)?", n1));
   }
+} catch (const InputError& error) {
+  const auto notes = plausibilityNotes(spec);
+  if (notes.empty()) throw;
+  throw InputError(error.key(), error.value(), error.allowed() + "; note: " + notes.front());
 }
 
 GearPair makeGearPair(const GearPairSpec& spec, const std::string& pinion_key,

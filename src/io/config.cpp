@@ -54,7 +54,11 @@ class Resolver {
       : schema_(schema), source_(std::move(source)) {}
 
   void applyOverride(toml::table& root, const std::string& assignment);
-  void rejectUnknown(const toml::table& table, const std::string& prefix) const;
+  /// Moves deprecated spellings to their new keys (a note each).
+  void applyAliases(toml::table& root);
+  /// Rejects keys no schema declares; drops (with a note) those only other commands declare.
+  void rejectUnknown(toml::table& table, const std::string& prefix);
+  const std::vector<std::string>& notes() const noexcept { return notes_; }
   nlohmann::ordered_json resolve(const toml::table& root) const;
 
  private:
@@ -66,9 +70,14 @@ class Resolver {
   void checkChoice(const KeySpec& spec, const std::string& value, const toml::node& node,
                    const std::string& shown) const;
 
+  /// Keys of a section only other commands declare: spell-checked against them.
+  void checkForeign(const toml::table& table, const std::string& prefix,
+                    const std::vector<const ConfigSchema*>& owners) const;
+
   const ConfigSchema& schema_;
   std::string source_;
   std::set<std::string> overridden_;
+  std::vector<std::string> notes_;
 };
 
 std::string Resolver::where(const std::string& path, const toml::node& node) const {
@@ -126,8 +135,12 @@ void Resolver::applyOverride(toml::table& root, const std::string& assignment) {
     const auto last = s.find_last_not_of(" \t");
     return first == std::string::npos ? std::string() : s.substr(first, last - first + 1);
   };
-  const std::string path = trim(assignment.substr(0, eq));
+  std::string path = trim(assignment.substr(0, eq));
   const std::string text = trim(assignment.substr(eq + 1));
+  if (const std::string* renamed = schema_.aliasTarget(path)) {
+    notes_.push_back(fmt::format("{} is deprecated: it now reads {} (--set)", path, *renamed));
+    path = *renamed;
+  }
   if (!schema_.findKey(path)) throwUnknownKey(path, "--set");
 
   // The value is TOML (20, 1e-3, true, "x", [1, 2]); a bare word is taken as a string.
@@ -156,18 +169,90 @@ void Resolver::applyOverride(toml::table& root, const std::string& assignment) {
   overridden_.insert(path);
 }
 
-void Resolver::rejectUnknown(const toml::table& table, const std::string& prefix) const {
+void Resolver::applyAliases(toml::table& root) {
+  for (const auto& [from, to] : schema_.aliases()) {
+    const toml::node* node = root.at_path(from).node();
+    if (!node) continue;
+    if (root.at_path(to).node()) {
+      throw InputError(from, describeNode(*node),
+                       fmt::format("is the deprecated spelling of {}, which is given too ({}): "
+                                   "keep only {}",
+                                   to, where(from, *node), to));
+    }
+    notes_.push_back(fmt::format("{} is deprecated: write {} ({}; read as {})", from, to,
+                                 where(from, *node), to));
+    const auto from_parts = splitPath(from), to_parts = splitPath(to);
+    toml::table* target = &root;
+    for (std::size_t i = 0; i + 1 < to_parts.size(); ++i) {
+      if (!target->get(to_parts[i])) target->insert(to_parts[i], toml::table{});
+      target = target->get(to_parts[i])->as_table();
+      if (!target) throw InputError(to, "", to_parts[i] + " is not a table in the file");
+    }
+    toml::table* source = &root;
+    for (std::size_t i = 0; i + 1 < from_parts.size(); ++i)
+      source = source->get(from_parts[i])->as_table();
+    source->get(from_parts.back())->visit([&](auto&& value) {
+      target->insert_or_assign(to_parts.back(), value);
+    });
+    source->erase(from_parts.back());
+  }
+}
+
+void Resolver::checkForeign(const toml::table& table, const std::string& prefix,
+                            const std::vector<const ConfigSchema*>& owners) const {
   for (const auto& [key, node] : table) {
+    const std::string path = joinPath(prefix, key.str());
+    bool known = false;
+    for (const ConfigSchema* owner : owners) {
+      known = known || owner->findKey(path) || owner->aliasTarget(path) ||
+              (node.is_table() && owner->findSection(path));
+    }
+    if (known && node.is_table()) {
+      checkForeign(*node.as_table(), path, owners);
+      continue;
+    }
+    if (known) continue;
+    // The did-you-mean of the command owning the section.
+    std::vector<std::string> names;
+    for (const ConfigSchema* owner : owners)
+      for (const auto& name : owner->keyNamesIn(prefix)) names.push_back(name);
+    std::string hint;
+    if (auto match = closestMatch(path, names))
+      hint = fmt::format("; did you mean \"{}\"?", *match);
+    throw InputError(
+        path, "",
+        fmt::format("unknown key ({}){}; [{}] belongs to `geardyn {}`, whose keys "
+                    "there are checked even though `geardyn {}` ignores them",
+                    where(path, node), hint, prefix, owners.front()->command(), schema_.command()));
+  }
+}
+
+void Resolver::rejectUnknown(toml::table& table, const std::string& prefix) {
+  std::vector<std::string> ignored;
+  for (auto&& [key, node] : table) {
     const std::string path = joinPath(prefix, key.str());
     if (schema_.findKey(path)) continue;
     if (schema_.findSection(path)) {
-      if (const auto* sub = node.as_table()) {
+      if (auto* sub = node.as_table()) {
         rejectUnknown(*sub, path);
         continue;
       }
       throw InputError(path, describeNode(node),
                        fmt::format("[{}] is a section (a TOML table), not a value ({})", path,
                                    where(path, node)));
+    }
+    // Another command's section or key: ignored here, with a note, but spell-checked.
+    const auto owners = schema_.foreignDeclaring(path, node.is_table());
+    if (!owners.empty() && !overridden_.count(path)) {
+      if (node.is_table()) checkForeign(*node.as_table(), path, owners);
+      std::vector<std::string> commands;
+      for (const ConfigSchema* owner : owners) commands.push_back(owner->command());
+      notes_.push_back(fmt::format("{} is for `geardyn {}`; `geardyn {}` ignores it ({})",
+                                   node.is_table() ? "[" + path + "]" : path,
+                                   fmt::format("{}", fmt::join(commands, "`, `geardyn ")),
+                                   schema_.command(), where(path, node)));
+      ignored.push_back(std::string(key.str()));
+      continue;
     }
     if (node.is_table()) {
       std::vector<std::string> names;
@@ -183,6 +268,7 @@ void Resolver::rejectUnknown(const toml::table& table, const std::string& prefix
     }
     throwUnknownKey(path, where(path, node));
   }
+  for (const auto& key : ignored) table.erase(key);
 }
 
 void Resolver::checkRange(const KeySpec& spec, double value, const toml::node& node,
@@ -421,9 +507,12 @@ Config parseConfig(std::string_view toml_text, const std::string& source_name,
                     error.source().begin.line, error.source().begin.column, error.description()));
   }
   Resolver resolver(schema, source_name);
+  resolver.applyAliases(root);
   for (const auto& assignment : overrides) resolver.applyOverride(root, assignment);
   resolver.rejectUnknown(root, "");
-  return Config(resolver.resolve(root), source_name);
+  Config config(resolver.resolve(root), source_name);
+  for (const auto& note : resolver.notes()) config.addNote(note);
+  return config;
 }
 
 Config loadConfigFile(const std::filesystem::path& file, const ConfigSchema& schema,

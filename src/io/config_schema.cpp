@@ -225,6 +225,34 @@ std::vector<std::string> ConfigSchema::keyNamesIn(const std::string& section) co
   return names;
 }
 
+void ConfigSchema::alias(std::string old_path, std::string new_path) {
+  if (!findKey(new_path)) throw std::logic_error("schema: alias to undeclared key " + new_path);
+  if (findKey(old_path)) throw std::logic_error("schema: alias of a declared key " + old_path);
+  aliases_.emplace_back(std::move(old_path), std::move(new_path));
+}
+
+const std::string* ConfigSchema::aliasTarget(const std::string& old_path) const {
+  for (const auto& [from, to] : aliases_)
+    if (from == old_path) return &to;
+  return nullptr;
+}
+
+void ConfigSchema::addForeignSchema(ConfigSchema other) {
+  other.foreign_.clear();  // one level: a foreign schema's own foreigners are not ours
+  foreign_.push_back(std::move(other));
+}
+
+std::vector<const ConfigSchema*> ConfigSchema::foreignDeclaring(const std::string& path,
+                                                                bool section) const {
+  std::vector<const ConfigSchema*> found;
+  for (const ConfigSchema& other : foreign_) {
+    if (section ? other.findSection(path) != nullptr
+                : other.findKey(path) != nullptr || other.aliasTarget(path) != nullptr)
+      found.push_back(&other);
+  }
+  return found;
+}
+
 std::string ConfigSchema::referenceMarkdown() const {
   std::string out = fmt::format(
       "# {}\n\n{}\n\n", title_.empty() ? "`geardyn " + command_ + "` configuration" : title_,
@@ -257,6 +285,12 @@ std::string ConfigSchema::referenceMarkdown() const {
   table_for("", "Top level", "");
   for (const SectionSpec& section : sections_) {
     table_for(section.path, "[" + section.path + "]", section.description);
+  }
+  if (!aliases_.empty()) {
+    out +=
+        "\n## Renamed keys\n\nThe old spelling is still read, with a warning naming the new "
+        "one.\n\n| old key | new key |\n|---|---|\n";
+    for (const auto& [from, to] : aliases_) out += fmt::format("| `{}` | `{}` |\n", from, to);
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -14,14 +15,14 @@
 namespace geardyn::io {
 namespace {
 
-std::vector<std::string> splitLine(const std::string& line) {
+std::vector<std::string> splitLine(const std::string& line, char delimiter) {
   std::vector<std::string> cells;
   std::string cell;
   bool quoted = false;
   for (char c : line) {
     if (c == '"') {
       quoted = !quoted;
-    } else if (c == ',' && !quoted) {
+    } else if (c == delimiter && !quoted) {
       cells.push_back(cell);
       cell.clear();
     } else if (c != '\r') {
@@ -46,19 +47,31 @@ NumericCsv::NumericCsv(const std::filesystem::path& file, const std::string& key
   if (!in) throw InputError(key, source_, "cannot be opened (no such file?)");
   std::string line;
   if (!std::getline(in, line)) throw InputError(key, source_, "is empty: expected a header row");
-  for (const auto& name : splitLine(line)) names_.push_back(trim(name));
+  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte-order mark (Excel)
+  // European spreadsheets write "t;x1" with decimal commas ("0,5"); tabs are common too.
+  if (line.find(',') == std::string::npos) {
+    if (line.find(';') != std::string::npos)
+      delimiter_ = ';';
+    else if (line.find('\t') != std::string::npos)
+      delimiter_ = '\t';
+  }
+  for (const auto& name : splitLine(line, delimiter_)) names_.push_back(trim(name));
   for (const auto& name : names_) data_[name];
   std::size_t row = 1;
   while (std::getline(in, line)) {
     ++row;
     if (trim(line).empty()) continue;
-    const auto cells = splitLine(line);
+    const auto cells = splitLine(line, delimiter_);
     if (cells.size() != names_.size()) {
+      const bool other =
+          delimiter_ == ',' && names_.size() == 1 && line.find_first_of(";\t") != std::string::npos;
       throw InputError(key, fmt::format("{} row {}", source_, row),
-                       fmt::format("has {} cells, the header {}", cells.size(), names_.size()));
+                       fmt::format("has {} cells, the header {}{}", cells.size(), names_.size(),
+                                   other ? " (the delimiter is not a comma?)" : ""));
     }
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      const std::string text = trim(cells[c]);
+      std::string text = trim(cells[c]);
+      if (delimiter_ == ';') std::replace(text.begin(), text.end(), ',', '.');  // decimal comma
       char* end = nullptr;
       errno = 0;
       const double value = std::strtod(text.c_str(), &end);

@@ -265,12 +265,18 @@ ConfigSchema feRotorSchema() {
       .defaultValue(9.81)
       .doc("gravity along -z (0: none)");
   schema.section("speed", "Pinion speed: constant, or a linear ramp (run-up / run-down).");
-  schema.real("speed.rpm").unit("rpm").min(0.0).required().doc("pinion speed (ramp: at the start)");
-  schema.real("speed.end_rpm")
+  schema.real("speed.speed_rpm")
+      .unit("rpm")
+      .min(0.0)
+      .required()
+      .doc("pinion speed (ramp: at the start)");
+  schema.real("speed.end_speed_rpm")
       .unit("rpm")
       .min(0.0)
       .optional()
-      .doc("speed at the end of the ramp (absent: constant speed)");
+      .doc("pinion speed at the end of the ramp (absent: constant speed)");
+  schema.alias("speed.rpm", "speed.speed_rpm");
+  schema.alias("speed.end_rpm", "speed.end_speed_rpm");
   schema.real("speed.ramp_start").unit("s").min(0.0).defaultValue(0.0).doc("ramp start");
   schema.real("speed.ramp_end")
       .unit("s")
@@ -282,7 +288,7 @@ ConfigSchema feRotorSchema() {
       .choices({"time", "modal", "campbell", "compare_stiffness"})
       .defaultValue("time")
       .doc(
-          "time: Newmark response; modal: damped modes at speed.rpm; campbell: modes over a "
+          "time: Newmark response; modal: damped modes at speed.speed_rpm; campbell: modes over a "
           "speed range; compare_stiffness: the time response with each mesh-stiffness model");
   schema.section("time", "Newmark time integration (γ = 1/2, β = 1/4).");
   schema.real("time.time_step").unit("s").positive().defaultValue(1e-5).doc("Δt (the paper: 1e-5)");
@@ -329,19 +335,25 @@ ConfigSchema feRotorSchema() {
       .unit("rpm")
       .min(0.0)
       .optional()
-      .doc("pinion speed of the modes (default speed.rpm)");
+      .doc("pinion speed of the modes (default speed.speed_rpm)");
   schema.real("modal.max_damping_ratio")
       .greaterThan(0.0)
       .max(1.0)
       .defaultValue(0.99)
       .doc("modes more damped than this are skipped (overdamped pairs)");
   schema.section("campbell", "Campbell diagram: modes tracked over pinion speeds.");
-  schema.real("campbell.start_rpm").unit("rpm").min(0.0).defaultValue(0.0).doc("first speed");
-  schema.real("campbell.end_rpm")
+  schema.real("campbell.start_speed_rpm")
+      .unit("rpm")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("first pinion speed");
+  schema.real("campbell.end_speed_rpm")
       .unit("rpm")
       .positive()
       .optional()
-      .doc("last speed (default 4 × speed.rpm)");
+      .doc("last pinion speed (default 4 × speed.speed_rpm)");
+  schema.alias("campbell.start_rpm", "campbell.start_speed_rpm");
+  schema.alias("campbell.end_rpm", "campbell.end_speed_rpm");
   schema.integer("campbell.points").min(2).max(10000).defaultValue(41).doc("speeds");
   schema.integer("campbell.modes").min(1).max(200).defaultValue(8).doc("modes tracked");
   schema.section("compare", "The paper's study: one time response per mesh-stiffness model.");
@@ -404,8 +416,9 @@ FeRotorBuild feRotorSpecFromConfig(const Config& config, const std::string& stif
   spec.load_node = load_node < 0 ? spec.shafts[1].nodeCount() - 1 : static_cast<int>(load_node);
   spec.gravity = config.real("load.gravity");
   spec.axial = config.boolean("model.axial");
-  const double start = config.real("speed.rpm") * kRpm;
-  const double end = config.has("speed.end_rpm") ? config.real("speed.end_rpm") * kRpm : start;
+  const double start = config.real("speed.speed_rpm") * kRpm;
+  const double end =
+      config.has("speed.end_speed_rpm") ? config.real("speed.end_speed_rpm") * kRpm : start;
   const double ramp_start = config.real("speed.ramp_start");
   const double ramp_end =
       config.has("speed.ramp_end") ? config.real("speed.ramp_end") : config.real("time.duration");
@@ -459,13 +472,14 @@ std::vector<int> feOutputChannels(const Config& config, const FeGearedRotor& mod
 }
 
 std::vector<double> campbellSpeedsFromConfig(const Config& config) {
-  const double start = config.real("campbell.start_rpm") * kRpm;
-  const double end = (config.has("campbell.end_rpm") ? config.real("campbell.end_rpm")
-                                                     : 4.0 * config.real("speed.rpm")) *
+  const double start = config.real("campbell.start_speed_rpm") * kRpm;
+  const double end = (config.has("campbell.end_speed_rpm") ? config.real("campbell.end_speed_rpm")
+                                                           : 4.0 * config.real("speed.speed_rpm")) *
                      kRpm;
   if (!(end > start)) {
-    throw InputError("campbell.end_rpm", fmt::format("{:g}", end / kRpm),
-                     "a speed above campbell.start_rpm");
+    throw InputError(
+        "campbell.end_speed_rpm", fmt::format("{:g} rpm", end / kRpm),
+        fmt::format("a speed above campbell.start_speed_rpm = {:g} rpm", start / kRpm));
   }
   const auto points = config.integer("campbell.points");
   std::vector<double> speeds;

@@ -84,8 +84,16 @@ ProbeRecord readCsv(const fs::path& path, const RecordReadOptions& o) {
   ProbeRecord r;
   std::optional<double> rate;
   const auto& columns = csv.columns();
-  if (std::find(columns.begin(), columns.end(), "time") != columns.end()) {
-    const auto& t = csv.column("time", o.key);
+  // The time column: the one named by time_column, else the first of time, time_s, t (geardyn's
+  // own tables write t and time_s).
+  std::string time_name = o.time_column;
+  if (time_name.empty()) {
+    for (const char* name : {"time", "time_s", "t"})
+      if (time_name.empty() && std::find(columns.begin(), columns.end(), name) != columns.end())
+        time_name = name;
+  }
+  if (!time_name.empty()) {
+    const auto& t = csv.column(time_name, o.time_column.empty() ? o.key : "input.time_column");
     rate = rateFromTime(o, path, t);
     r.start_time = t.front();
   }

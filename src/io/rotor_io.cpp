@@ -107,11 +107,12 @@ void addRotorSection(ConfigSchema& schema, bool with_speed) {
   schema.integer("rotor.pinion_teeth").min(2).max(100000).defaultValue(16).doc("t_p");
   schema.integer("rotor.gear_teeth").min(2).max(100000).defaultValue(35).doc("t_g");
   if (with_speed) {
-    schema.real("rotor.pinion_speed_rpm")
+    schema.real("rotor.speed_rpm")
         .unit("rpm")
         .positive()
         .defaultValue(660.0)
-        .doc("N_p; the pinion turns in -z, the gear in +z (Rao eq. 2.2)");
+        .doc("pinion speed N_p; the pinion turns in -z, the gear in +z (Rao eq. 2.2)");
+    schema.alias("rotor.pinion_speed_rpm", "rotor.speed_rpm");
   }
 }
 
@@ -305,6 +306,9 @@ ConfigSchema spectrumSchema() {
       .positive()
       .optional()
       .doc("when the file has none; must agree with the file's otherwise");
+  schema.string("input.time_column")
+      .defaultValue("")
+      .doc("CSV: the time column [s]; empty: the first of time, time_s, t in the header");
   schema.real("input.scale")
       .unit("m/unit")
       .defaultValue(1.0)
@@ -314,11 +318,12 @@ ConfigSchema spectrumSchema() {
   schema.integer("gears.pinion_teeth").min(2).max(100000).required().doc("t_p");
   schema.integer("gears.gear_teeth").min(2).max(100000).required().doc("t_g");
   schema.integer("gears.harmonics").min(0).max(1000).defaultValue(5).doc("mesh harmonics n");
-  schema.real("gears.pinion_speed_rpm")
+  schema.real("gears.speed_rpm")
       .unit("rpm")
       .positive()
       .optional()
-      .doc("needed without a keyphasor; with one, checked against it (1 %)");
+      .doc("pinion speed: needed without a keyphasor; with one, checked against it (1 %)");
+  schema.alias("gears.pinion_speed_rpm", "gears.speed_rpm");
 
   schema.section("keyphasor", "Once-per-revolution reference on the input (pinion) shaft.");
   schema.boolean("keyphasor.enabled")
@@ -395,8 +400,8 @@ LateralRotorSpec knownRotorFromConfig(const Config& config) {
   s.gravity = config.real("rotor.gravity");
   s.pinion_teeth = static_cast<int>(config.integer("rotor.pinion_teeth"));
   s.gear_teeth = static_cast<int>(config.integer("rotor.gear_teeth"));
-  if (config.resolved()["rotor"].contains("pinion_speed_rpm"))
-    s.pinion_speed = config.real("rotor.pinion_speed_rpm") / 60.0;
+  if (config.resolved()["rotor"].contains("speed_rpm"))
+    s.pinion_speed = config.real("rotor.speed_rpm") / 60.0;
   lateralRotorDamping(s, config.real("rotor.shaft_damping_ratio"), 0.0);
   if (auto c = config.optionalReal("rotor.pinion_shaft_damping")) s.pinion_shaft_damping = *c;
   if (auto c = config.optionalReal("rotor.gear_shaft_damping")) s.gear_shaft_damping = *c;

@@ -21,6 +21,9 @@
 namespace geardyn::io {
 namespace {
 
+/// Speeds above this are flagged as implausible (a unit mix-up more likely than a real gear).
+constexpr double kPlausibleMaxRpm = 200000.0;
+
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 using Json = nlohmann::ordered_json;
 
@@ -65,15 +68,15 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
 
   // The transmitted force (also needed by the loaded contact analysis below).
   const auto meanForce = [&]() {
-    if (config.has("model.mean_force") == config.has("model.pinion_torque")) {
+    if (config.has("model.mean_force") == config.has("model.torque")) {
       throw InputError("model.mean_force", "",
-                       config.has("model.mean_force") ? "give mean_force or pinion_torque, not both"
-                                                      : "required (or model.pinion_torque)");
+                       config.has("model.mean_force") ? "give mean_force or torque, not both"
+                                                      : "required (or model.torque)");
     }
     if (config.has("model.mean_force")) return config.real("model.mean_force");
     if (config.has("model.pinion_base_radius"))
-      return config.real("model.pinion_torque") / config.real("model.pinion_base_radius");
-    if (pair) return config.real("model.pinion_torque") / pair->pinion().base_radius;
+      return config.real("model.torque") / config.real("model.pinion_base_radius");
+    if (pair) return config.real("model.torque") / pair->pinion().base_radius;
     throw InputError("model.pinion_base_radius", "", "required (or give [pinion] and [gear])");
   };
   std::vector<double> ltca_phases, ltca_error;  // δ − F/K of the loaded contact (type ltca)
@@ -249,29 +252,46 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
     b.warnings.push_back("model.backlash is ignored unless model.contact = \"backlash\"");
   }
 
-  // Speed (not needed when the caller sweeps the frequency).
-  if (!require_speed && !config.has("excitation.mesh_frequency") &&
-      !config.has("excitation.speed_rpm")) {
-    b.spec.mesh_frequency = 0.0;
-  } else if (config.has("excitation.mesh_frequency") == config.has("excitation.speed_rpm")) {
-    throw InputError("excitation.mesh_frequency", "",
-                     config.has("excitation.speed_rpm")
-                         ? "give mesh_frequency or speed_rpm, not both"
-                         : "required (or excitation.speed_rpm)");
+  // Speed (not needed when the caller sweeps the frequency): excitation.mesh_frequency, or the
+  // pinion speed excitation.speed_rpm, or the gear pair's own pair.speed_rpm (the file that
+  // drives geometry and stiffness drives the dynamics at the same speed).
+  const bool has_frequency = config.has("excitation.mesh_frequency");
+  std::string speed_key = config.has("excitation.speed_rpm") ? "excitation.speed_rpm" : "";
+  if (pair && config.has("pair.speed_rpm")) {
+    if (!speed_key.empty() &&
+        config.real("pair.speed_rpm") != config.real("excitation.speed_rpm")) {
+      throw InputError("excitation.speed_rpm",
+                       fmt::format("{:g} rpm", config.real("excitation.speed_rpm")),
+                       fmt::format("must equal pair.speed_rpm = {:g} rpm when both are given "
+                                   "(better: give the speed once, as pair.speed_rpm)",
+                                   config.real("pair.speed_rpm")));
+    }
+    if (speed_key.empty() && !has_frequency) speed_key = "pair.speed_rpm";
   }
-  if (!require_speed && !config.has("excitation.mesh_frequency") &&
-      !config.has("excitation.speed_rpm")) {
-    // no speed: the caller sets it
-  } else if (config.has("excitation.mesh_frequency")) {
+  if (has_frequency && !speed_key.empty()) {
+    throw InputError("excitation.mesh_frequency", "",
+                     fmt::format("give mesh_frequency or {}, not both", speed_key));
+  }
+  if (!has_frequency && speed_key.empty()) {
+    if (require_speed)
+      throw InputError("excitation.mesh_frequency", "",
+                       "required (or excitation.speed_rpm, or pair.speed_rpm with [pinion])");
+    b.spec.mesh_frequency = 0.0;  // the caller sets it
+  } else if (has_frequency) {
     const double f = config.real("excitation.mesh_frequency");
     b.spec.mesh_frequency = b.nondimensional ? f / kTwoPi : f;  // Ω in rad per unit t₁
   } else {
-    if (!pair)
-      throw InputError("excitation.speed_rpm", "", "needs [pinion] teeth; or give mesh_frequency");
+    if (!pair) throw InputError(speed_key, "", "needs [pinion] teeth; or give mesh_frequency");
     if (b.nondimensional)
-      throw InputError("excitation.speed_rpm", "",
+      throw InputError(speed_key, "",
                        "not available in nondimensional units: give mesh_frequency (Ω)");
-    b.spec.mesh_frequency = pair->spec().pinion.teeth * config.real("excitation.speed_rpm") / 60.0;
+    const double rpm = config.real(speed_key);
+    b.spec.mesh_frequency = pair->spec().pinion.teeth * rpm / 60.0;
+    if (rpm > kPlausibleMaxRpm)
+      b.warnings.push_back(
+          fmt::format("{} = {:g} rpm is above {:g} rpm: is it in rpm (not "
+                      "rad/s or Hz)?",
+                      speed_key, rpm, kPlausibleMaxRpm));
   }
   b.spec.initial_phase = config.real("excitation.initial_phase");
 
@@ -289,6 +309,17 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
     // Hz → rad/s; nondimensional: ω_j/ω_n is already the angular frequency in t₁ = ω_n t.
     b.spec.extra_forces.push_back(
         {f_amp[j], b.nondimensional ? f_freq[j] : kTwoPi * f_freq[j], f_phase[j]});
+  }
+
+  // At rest the mesh does not turn: a time response needs a period from somewhere.
+  if (require_speed && !(b.spec.mesh_frequency > 0.0)) {
+    const bool rpm = !speed_key.empty();
+    const std::string key = rpm ? speed_key : "excitation.mesh_frequency";
+    throw InputError(
+        key,
+        fmt::format("{:g}{}", config.real(key), rpm ? " rpm" : (b.nondimensional ? "" : " Hz")),
+        "must be > 0: at rest the mesh does not turn and there is no mesh period to "
+        "integrate over (the static deflection is F / k)");
   }
 
   // Transmission error.

@@ -65,7 +65,11 @@ void addGearPairModelSections(ConfigSchema& schema) {
       .optional()
       .doc("c (instead of damping_ratio)");
   schema.real("model.mean_force").unit("N").optional().doc("F = T₁/R₁ (nondimensional: a = F/F₀)");
-  schema.real("model.pinion_torque").unit("N m").optional().doc("T₁ (instead of mean_force)");
+  schema.real("model.torque")
+      .unit("N m")
+      .optional()
+      .doc("pinion torque T₁ (instead of mean_force)");
+  schema.alias("model.pinion_torque", "model.torque");
   schema.realList("model.extra_force_amplitudes")
       .unit("N")
       .defaultValue(Json::array())

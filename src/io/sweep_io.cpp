@@ -4,7 +4,6 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
-#include <hdf5.h>
 #include <toml++/toml.h>
 #include <unistd.h>
 
@@ -18,8 +17,6 @@
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
 #include "geardyn/io/did_you_mean.h"
-#include "geardyn/io/hdf5_lock.h"
-#include "geardyn/version.h"
 
 namespace geardyn::io {
 namespace fs = std::filesystem;
@@ -108,20 +105,19 @@ StudyParameter parameterOf(const std::string& key, const toml::node& node, Study
         if (!t->contains(required)) throw InputError(full + "." + required, "", "required");
       const double lo = number(*t->get("min"), full + ".min");
       const double hi = number(*t->get("max"), full + ".max");
+      for (const auto& [bound, x] : {std::pair{".min", lo}, std::pair{".max", hi}})
+        if (!std::isfinite(x)) throw InputError(full + bound, fmt::format("{}", x), "finite");
       const auto* num = t->get("num")->as_integer();
       if (!num || num->get() < 1)
         throw InputError(full + ".num", "", "an integer >= 1 (number of values)");
       const long long n = num->get();
       // Integer endpoints with integral steps stay integers (for integer keys such as teeth).
-      const bool integers = t->get("min")->is_integer() && t->get("max")->is_integer() &&
+      // The values are generated case by case (StudyParameter::valueAt), never stored.
+      p.linspace_num = n;
+      p.min = lo;
+      p.max = hi;
+      p.linspace_integers = t->get("min")->is_integer() && t->get("max")->is_integer() &&
                             (n == 1 || std::fmod(hi - lo, static_cast<double>(n - 1)) == 0.0);
-      for (long long i = 0; i < n; ++i) {
-        const double x = n == 1 ? lo : lo + (hi - lo) * static_cast<double>(i) / (n - 1);
-        if (integers)
-          p.values.push_back(std::llround(x));
-        else
-          p.values.push_back(x);
-      }
     }
   } else {
     p.values.push_back(toJson(node, full));
@@ -129,6 +125,8 @@ StudyParameter parameterOf(const std::string& key, const toml::node& node, Study
   p.validate(design);
   return p;
 }
+
+}  // namespace
 
 std::string tomlLiteral(const nlohmann::json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
@@ -145,6 +143,8 @@ std::string tomlLiteral(const nlohmann::json& v) {
   }
   return out + "\"";
 }
+
+namespace {
 
 std::string fnv1a(const std::string& text) {
   std::uint64_t h = 1469598103934665603ULL;
@@ -233,6 +233,37 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
                      fmt::format("valid TOML ({} at line {})", std::string(e.description()),
                                  e.source().begin.line));
   }
+  // --set study.KEY=VALUE changes the study itself (study.parameters.<key> a swept key); other
+  // --set values are fixed overrides of the base configuration.
+  std::vector<std::string> base_set;
+  for (const auto& e : extra_set) {
+    const auto eq = e.find('=');
+    if (e.rfind("study.", 0) != 0 || eq == std::string::npos) {
+      base_set.push_back(e);
+      continue;
+    }
+    const std::string path = e.substr(6, eq - 6), text = e.substr(eq + 1);
+    toml::table parsed;
+    const std::string document = "v = " + text;
+    try {
+      parsed = toml::parse(std::string_view(document), std::string_view("--set"));
+    } catch (const toml::parse_error&) {
+      parsed.insert("v", text);  // a bare word is a string
+    }
+    if (!root["study"].as_table()) root.insert("study", toml::table{});
+    toml::table* table = root["study"].as_table();
+    std::string leaf = path;
+    if (path.rfind("parameters.", 0) == 0) {
+      if (!table->get("parameters")) table->insert("parameters", toml::table{});
+      table = table->get("parameters")->as_table();
+      leaf = path.substr(11);
+      // The key may be quoted as in the file: study.parameters."model.mass".
+      if (leaf.size() > 1 && leaf.front() == '"' && leaf.back() == '"')
+        leaf = leaf.substr(1, leaf.size() - 2);
+    }
+    if (!table) throw InputError("--set", e, "study.parameters is a table in the file");
+    parsed.get("v")->visit([&](auto&& value) { table->insert_or_assign(leaf, value); });
+  }
   SweepDefinition d;
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
@@ -301,7 +332,7 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
       d.set.push_back(e.value_or(std::string()));
     }
   }
-  for (const auto& e : extra_set) {
+  for (const auto& e : base_set) {
     d.set.push_back(e);
     // The sweep's own plots follow the command line's output.plots too.
     if (e.rfind("output.plots=", 0) == 0) d.plots = e.substr(13) == "true";
@@ -344,7 +375,10 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
   nlohmann::ordered_json params_json = nlohmann::ordered_json::object();
   for (const auto& p : d.parameters) {
     nlohmann::ordered_json j = {{"distribution", toString(p.distribution)}};
-    if (p.distribution == StudyDistribution::kValues) j["values"] = p.values;
+    if (p.linspace_num > 0)
+      j["linspace"] = {{"min", p.min}, {"max", p.max}, {"num", p.linspace_num}};
+    else if (p.distribution == StudyDistribution::kValues)
+      j["values"] = p.values;
     if (p.distribution == StudyDistribution::kUniform ||
         p.distribution == StudyDistribution::kTruncatedNormal)
       j["min"] = p.min, j["max"] = p.max;
@@ -467,105 +501,6 @@ CsvTable sweepTable(const SweepDefinition& study, const std::vector<SweepCaseRec
     table.addRow(row);
   }
   return table;
-}
-
-namespace {
-
-struct H5 {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5() {
-    if (id >= 0) close(id);
-  }
-};
-
-void writeStrings(hid_t file, const char* name, const std::vector<std::string>& values,
-                  hsize_t rows, hsize_t cols) {
-  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  const hsize_t dims[2] = {rows, cols};
-  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
-  H5 set{H5Dcreate2(file, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-         H5Dclose};
-  std::vector<const char*> ptrs;
-  for (const auto& s : values) ptrs.push_back(s.c_str());
-  if (set.id < 0 ||
-      (!ptrs.empty() && H5Dwrite(set.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0))
-    throw IoError(fmt::format("cannot write dataset {}", name));
-}
-
-template <typename T>
-void writeNumbers(hid_t file, const char* name, hid_t file_type, hid_t memory_type,
-                  const std::vector<T>& values, hsize_t rows, hsize_t cols) {
-  const hsize_t dims[2] = {rows, cols};
-  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
-  H5 set{H5Dcreate2(file, name, file_type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-         H5Dclose};
-  if (set.id < 0 || (!values.empty() && H5Dwrite(set.id, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                                 values.data()) < 0))
-    throw IoError(fmt::format("cannot write dataset {}", name));
-}
-
-void writeAttribute(hid_t object, const char* name, const std::string& value) {
-  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  H5 space{H5Screate(H5S_SCALAR), H5Sclose};
-  H5 attr{H5Acreate2(object, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  const char* p = value.c_str();
-  if (attr.id < 0 || H5Awrite(attr.id, type.id, &p) < 0)
-    throw IoError(fmt::format("cannot write attribute {}", name));
-}
-
-}  // namespace
-
-void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
-                    const std::vector<SweepCaseRecord>& records, const std::string& base_config) {
-  const fs::path temp = temporaryPathFor(path);
-  const std::lock_guard<std::mutex> lock(hdf5Mutex());
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  try {
-    H5 file{H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-    if (file.id < 0) throw IoError("cannot create " + temp.string());
-    const hsize_t n = records.size(), np = study.parameters.size(), no = study.outputs.size();
-    std::vector<long long> index;
-    std::vector<unsigned long long> seeds;
-    std::vector<std::string> status, message, text;
-    std::vector<double> params, outputs;
-    for (const auto& r : records) {
-      index.push_back(r.index);
-      seeds.push_back(r.seed);
-      status.push_back(r.status);
-      message.push_back(r.message);
-      for (const auto& v : r.values) {
-        params.push_back(v.is_number() ? v.get<double>()
-                                       : std::numeric_limits<double>::quiet_NaN());
-        text.push_back(v.is_string() ? v.get<std::string>() : v.dump());
-      }
-      outputs.insert(outputs.end(), r.outputs.begin(), r.outputs.end());
-    }
-    writeNumbers(file.id, "case", H5T_STD_I64LE, H5T_NATIVE_LLONG, index, n, 0);
-    writeNumbers(file.id, "seed", H5T_STD_U64LE, H5T_NATIVE_ULLONG, seeds, n, 0);
-    writeStrings(file.id, "status", status, n, 0);
-    writeStrings(file.id, "message", message, n, 0);
-    writeNumbers(file.id, "parameters", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, params, n, np);
-    writeStrings(file.id, "parameter_text", text, n, np);
-    writeNumbers(file.id, "outputs", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, outputs, n, no);
-    std::vector<std::string> pnames, onames;
-    for (const auto& p : study.parameters) pnames.push_back(p.key);
-    for (const auto& o : study.outputs) onames.push_back(o.name);
-    writeStrings(file.id, "parameter_names", pnames, np, 0);
-    writeStrings(file.id, "output_names", onames, no, 0);
-    writeAttribute(file.id, "geardyn_version", kVersion);
-    writeAttribute(file.id, "study", study.resolved.dump());
-    writeAttribute(file.id, "base_config", base_config);
-    if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) throw IoError("cannot flush " + temp.string());
-  } catch (...) {
-    fs::remove(temp);
-    throw;
-  }
-  commitTemporary(temp, path);
 }
 
 }  // namespace geardyn::io

@@ -166,6 +166,7 @@ FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const FeTime
   for (long long s = 1; s <= steps; ++s) {
     stepper.step();
     r.steps = s;
+    if (options.progress && s % 1000 == 0) options.progress(static_cast<double>(s), steps);
     if (s % options.record_every == 0) {
       if (!std::isfinite(stepper.displacement().squaredNorm())) {
         r.status = FeTimeStatus::kDiverged;

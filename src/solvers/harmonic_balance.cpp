@@ -357,19 +357,23 @@ void HarmonicBalance::stabilityMonodromy(HarmonicBalancePoint& point, bool sampl
 }
 
 void ContinuationOptions::validate() const {
+  // Values are echoed in the unit of the user's keys (display_unit).
+  const auto shown = [&](double omega) {
+    return fmt::format("{:g} {}", omega / display_scale, display_unit);
+  };
   if (!(start > 0.0) || !std::isfinite(start))
-    throw InputError("sweep.start", fmt::format("{:g}", start), "must be finite and > 0");
+    throw InputError("sweep.start", shown(start), "must be finite and > 0");
   if (!(stop > 0.0) || !std::isfinite(stop))
-    throw InputError("sweep.stop", fmt::format("{:g}", stop), "must be finite and > 0");
-  if (start == stop)
-    throw InputError("sweep.stop", fmt::format("{:g}", stop), "must differ from sweep.start");
-  if (!(min_step > 0.0))
-    throw InputError("sweep.min_step", fmt::format("{:g}", min_step), "must be > 0");
+    throw InputError("sweep.stop", shown(stop), "must be finite and > 0");
+  if (start == stop) throw InputError("sweep.stop", shown(stop), "must differ from sweep.start");
+  if (!(min_step > 0.0)) throw InputError("sweep.min_step", shown(min_step), "must be > 0");
   if (!(max_step >= min_step))
-    throw InputError("sweep.max_step", fmt::format("{:g}", max_step), "must be >= sweep.min_step");
+    throw InputError("sweep.max_step", shown(max_step),
+                     "must be >= sweep.min_step = " + shown(min_step));
   if (!(initial_step >= min_step && initial_step <= max_step)) {
-    throw InputError("sweep.initial_step", fmt::format("{:g}", initial_step),
-                     "must lie in [min_step, max_step]");
+    throw InputError("sweep.initial_step", shown(initial_step),
+                     fmt::format("must lie in [sweep.min_step, sweep.max_step] = [{}, {}]",
+                                 shown(min_step), shown(max_step)));
   }
 }
 
@@ -469,9 +473,9 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
       step *= 0.5;
       if (step < min_step) {
         out.message = fmt::format(
-            "continuation stopped at {:.6g} rad/s: the corrector failed with the "
+            "continuation stopped at {:.6g} {}: the corrector failed with the "
             "minimum step (residual {:.2g})",
-            z[n] * omega_ref, norm);
+            z[n] * omega_ref / options.display_scale, options.display_unit, norm);
         return out;
       }
       continue;
@@ -492,6 +496,10 @@ ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationO
     arclength += step;
     classify(point, true);
     out.points.push_back({point, branch, arclength});
+    if (options.progress) {
+      const double range = std::abs(options.stop - options.start);
+      options.progress(std::clamp(std::abs(point.omega - options.start), 0.0, range), range);
+    }
     t = t_new;
     z = y;
     if (iterations <= 4) step = std::min(step * 1.5, max_step);

@@ -47,7 +47,8 @@ RotorOde odeOf(const LateralRotorModel& model, long long* evaluations) {
 /// Integrates from rest and hands every sample to `observe(index, η)`; returns the steps taken.
 template <class Observer>
 long long integrateOnGrid(const LateralRotorModel& model, const std::vector<double>& times,
-                          double rtol, double atol, long long* evaluations, Observer observe) {
+                          double rtol, double atol, long long* evaluations, Observer observe,
+                          const ProgressCallback& progress = {}) {
   namespace odeint = boost::numeric::odeint;
   State s{};
   auto dense = odeint::make_dense_output(atol, rtol, odeint::runge_kutta_dopri5<State>());
@@ -56,8 +57,9 @@ long long integrateOnGrid(const LateralRotorModel& model, const std::vector<doub
   const double first_step = 0.05 / std::max(model.meshOmega(), model.pinionOmega());
   return static_cast<long long>(odeint::integrate_times(
       dense, odeOf(model, evaluations), s, times.begin(), times.end(), first_step,
-      [&](const State& state, double) {
+      [&](const State& state, double t) {
         observe(index++, Eigen::Vector4d(state[0], state[1], state[2], state[3]) * scale);
+        if (progress && index % 1024 == 0) progress(t, times.back());
       }));
 }
 
@@ -141,18 +143,19 @@ RotorTimeResponse solveRotorTimeResponse(const LateralRotorModel& model,
     std::vector<double> times;
     for (const auto& m : merged) times.push_back(m.first);
     shifted.resize(merged.size());
-    out.steps =
-        integrateOnGrid(model, times, options.relative_tolerance, options.absolute_tolerance,
-                        &out.rhs_evaluations, [&](std::size_t i, const Eigen::Vector4d& eta) {
-                          const long long tag = merged[i].second;
-                          (tag < count ? out.eta[tag] : shifted[tag - count]) = eta;
-                        });
+    out.steps = integrateOnGrid(
+        model, times, options.relative_tolerance, options.absolute_tolerance, &out.rhs_evaluations,
+        [&](std::size_t i, const Eigen::Vector4d& eta) {
+          const long long tag = merged[i].second;
+          (tag < count ? out.eta[tag] : shifted[tag - count]) = eta;
+        },
+        options.progress);
     shifted.resize(static_cast<std::size_t>(std::count_if(
         merged.begin(), merged.end(), [&](const auto& m) { return m.second >= count; })));
   } else {
     out.steps = integrateOnGrid(
         model, out.t, options.relative_tolerance, options.absolute_tolerance, &out.rhs_evaluations,
-        [&](std::size_t i, const Eigen::Vector4d& eta) { out.eta[i] = eta; });
+        [&](std::size_t i, const Eigen::Vector4d& eta) { out.eta[i] = eta; }, options.progress);
   }
 
   double scale = 0.0;

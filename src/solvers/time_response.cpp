@@ -107,8 +107,9 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
   const double f_m = model.meshFrequency();
   out.period = f_m > 0.0 ? 1.0 / f_m : options.period;
   if (!(out.period > 0.0) || !std::isfinite(out.period)) {
-    throw InputError("solver.period", fmt::format("{:g}", options.period),
-                     "with a mesh frequency of 0 the response period must be given (> 0)");
+    throw InputError("TimeResponseOptions.period", fmt::format("{:g} s", options.period),
+                     "with a mesh frequency of 0 the period of the extra forces must be given "
+                     "(> 0)");
   }
   const double T = out.period;
   const int m = options.output_points_per_period;
@@ -167,6 +168,7 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
                                                                   }));
     }
     out.periods = p + 1;
+    if (options.progress) options.progress(out.periods, options.max_periods);
 
     double peak = 0.0;
     bool finite = true;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -80,6 +81,7 @@ std::vector<MonteCarloSample> runMeanExcitationMonteCarlo(const GearPairModel& m
                                                           const MonteCarloOptions& options) {
   options.validate();
   std::vector<MonteCarloSample> samples(options.samples);
+  std::atomic<long long> finished{0};
   const auto work = [&](int first, int last) {
     std::vector<double> pitch(options.teeth), profile(options.teeth), kappa(options.teeth);
     for (int i = first; i < last; ++i) {
@@ -95,6 +97,8 @@ std::vector<MonteCarloSample> runMeanExcitationMonteCarlo(const GearPairModel& m
       const MeanExcitation s =
           meanExcitationOfRevolution(model, options.baseload, pitch, profile, kappa, phase);
       samples[i] = {s.ratio, s.dynamic_mean_excitation, s.r_ke, s.d_k, s.d_e, s.delta_m1_ef, phase};
+      const long long done = ++finished;
+      if (first == 0 && options.progress) options.progress(done, options.samples);
     }
   };
   const int threads = std::min(options.threads, options.samples);

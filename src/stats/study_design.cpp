@@ -42,13 +42,26 @@ std::uint64_t caseSeed(std::uint64_t study_seed, long long index) {
   return mix.next();
 }
 
+long long StudyParameter::valueCount() const {
+  return linspace_num > 0 ? linspace_num : static_cast<long long>(values.size());
+}
+
+nlohmann::json StudyParameter::valueAt(long long i) const {
+  if (linspace_num <= 0) return values[static_cast<std::size_t>(i)];
+  const double x = linspace_num == 1 ? min
+                                     : min + (max - min) * static_cast<double>(i) /
+                                                 static_cast<double>(linspace_num - 1);
+  if (linspace_integers) return std::llround(x);
+  return x;
+}
+
 void StudyParameter::validate(StudyDesign design) const {
   const std::string k = keyOf(*this);
   if (design != StudyDesign::kRandom) {
     if (distribution != StudyDistribution::kValues)
       throw InputError(k, toString(distribution),
                        "a list of values (or {min, max, num}) in a grid or zip design");
-    if (values.empty()) throw InputError(k, "[]", "at least one value");
+    if (valueCount() == 0) throw InputError(k, "[]", "at least one value");
     return;
   }
   auto finite = [&](double v, const char* name) {
@@ -57,7 +70,7 @@ void StudyParameter::validate(StudyDesign design) const {
   };
   switch (distribution) {
     case StudyDistribution::kValues:
-      if (values.empty()) throw InputError(k, "[]", "at least one value to draw from");
+      if (valueCount() == 0) throw InputError(k, "[]", "at least one value to draw from");
       break;
     case StudyDistribution::kUniform:
       finite(min, "min"), finite(max, "max");
@@ -88,7 +101,7 @@ long long studyCaseCount(StudyDesign design, const std::vector<StudyParameter>& 
   }
   long long count = design == StudyDesign::kGrid ? 1 : -1;
   for (const auto& p : parameters) {
-    const auto n = static_cast<long long>(p.values.size());
+    const long long n = p.valueCount();
     if (design == StudyDesign::kGrid) {
       if (count > (1LL << 40) / n)
         throw InputError("study.parameters", "", "a grid of at most 2^40 cases");
@@ -112,19 +125,20 @@ StudyCase studyCase(StudyDesign design, const std::vector<StudyParameter>& param
   if (design == StudyDesign::kGrid) {
     long long rest = index;
     for (std::size_t i = parameters.size(); i-- > 0;) {
-      const auto n = static_cast<long long>(parameters[i].values.size());
-      c.values[i] = parameters[i].values[rest % n];
+      const long long n = parameters[i].valueCount();
+      c.values[i] = parameters[i].valueAt(rest % n);
       rest /= n;
     }
   } else if (design == StudyDesign::kZip) {
-    for (std::size_t i = 0; i < parameters.size(); ++i) c.values[i] = parameters[i].values[index];
+    for (std::size_t i = 0; i < parameters.size(); ++i) c.values[i] = parameters[i].valueAt(index);
   } else {
     SplitMix64 stream{c.seed};
     for (std::size_t i = 0; i < parameters.size(); ++i) {
       const StudyParameter& p = parameters[i];
       switch (p.distribution) {
         case StudyDistribution::kValues:
-          c.values[i] = p.values[stream.next() % p.values.size()];
+          c.values[i] = p.valueAt(
+              static_cast<long long>(stream.next() % static_cast<std::uint64_t>(p.valueCount())));
           break;
         case StudyDistribution::kUniform:
           c.values[i] = p.min + (p.max - p.min) * stream.uniform();

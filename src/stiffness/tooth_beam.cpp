@@ -108,11 +108,13 @@ ToothBeam::ToothBeam(const GearPair& pair, Member member, ToothRoot root, Founda
   if (foundation_) {
     if (!(hub_radius > 0.0) || hub_radius >= rf_) {
       throw InputError(
-          name + " hub radius", fmt::format("{:g}", hub_radius),
+          name + ".bore_diameter",
+          fmt::format("{:g} m (hub radius r_int = {:g} m)", 2.0 * hub_radius, hub_radius),
           fmt::format("the fillet-foundation model (Sainsot 2004) needs the radius of the gear "
-                      "body's bore, 0 < r_int < r_f = {:g} m: set {}.bore_diameter or the hub "
-                      "radius of the potential-energy model",
-                      rf_, name));
+                      "body's bore, 0 < r_int < r_f = {:g} m: set {}.bore_diameter, or "
+                      "mesh_stiffness.potential_energy.{}_hub_radius, or "
+                      "mesh_stiffness.potential_energy.foundation = false",
+                      rf_, name, name));
     }
     const double h = rf_ / hub_radius;
     const double t = theta_f_;

@@ -84,8 +84,8 @@ def test_modal_analysis_lists_modes_and_shapes(tmp_path):
     ("pinion_shaft.element_lengths=[0.1, nan]", "pinion_shaft.element_lengths", "finite"),
     ("pinion_shaft.element_lengths=[0.1, -0.1]", "pinion_shaft.element_lengths", "> 0"),
     ("model.axial=true", "pinion_shaft.bearings.kxx", "axial"),
-    ("speed.end_rpm=800.0", "speed.end_rpm", "constant speed"),
-    ("speed.rpm=0.0", "speed.rpm", "speed > 0"),
+    ("speed.end_speed_rpm=800.0", "speed.end_speed_rpm", "constant speed"),
+    ("speed.speed_rpm=0.0", "speed.speed_rpm", "speed > 0"),
 ])
 def test_bad_input_is_rejected_naming_the_key(tmp_path, override, key, fragment):
     config = EXAMPLES / "rotor_visnadi2021_compare_spur.toml"

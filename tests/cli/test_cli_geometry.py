@@ -128,7 +128,7 @@ BAD_INPUTS = [
     (edited("face_width = 0.02\n", 'face_width = "wide"\n'), 'pinion.face_width = "wide": expected a number'),
     (edited("face_width = 0.02\n", "face_width = nan\n"), "pinion.face_width = nan: must be finite"),
     (edited("face_width = 0.02\n", "face_width = inf\n"), "pinion.face_width = inf: must be finite"),
-    (VALID + "\n[pair]\ncentre_distance = 0.07\n", "pair.centre_distance = 0.07: must exceed"),
+    (VALID + "\n[pair]\ncentre_distance = 0.07\n", "pair.centre_distance = 0.07 m: must exceed"),
     (edited("teeth = 30", "teeth = = 30"), "pair.toml line 8"),
 ]
 
@@ -149,9 +149,9 @@ def test_bad_override_exits_2(tmp_path):
     assert result.returncode == 2 and 'did you mean "pinion.module"?' in result.stderr
 
 
-def test_missing_config_file_exits_2():
+def test_missing_config_file_exits_3():
     result = run("geometry", "/nonexistent/pair.toml")
-    assert result.returncode == 2 and "no such configuration file" in result.stderr
+    assert result.returncode == 3 and "no such file" in result.stderr
 
 
 def test_unwritable_output_exits_3(tmp_path):

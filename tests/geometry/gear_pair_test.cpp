@@ -161,7 +161,7 @@ TEST(GearPair, RejectsCentreDistanceBelowBaseRadii) {
   GearPairSpec spec = standardPair(25, 30);
   spec.centre_distance = 0.07;  // r_b1 + r_b2 = 77.5 mm
   const std::string message = messageOf(spec);
-  EXPECT_NE(message.find("pair.centre_distance = 0.07"), std::string::npos) << message;
+  EXPECT_NE(message.find("pair.centre_distance = 0.07 m"), std::string::npos) << message;
   EXPECT_NE(message.find("base radii"), std::string::npos) << message;
 }
 

@@ -130,7 +130,7 @@ TEST(Config, NanAndInfAreRejected) {
 
 TEST(Config, CentreDistanceBelowBaseRadii) {
   EXPECT_HAS(errorOf(replaced(kValid, "speed_rpm = 1200", "centre_distance = 0.07")),
-             "pair.centre_distance = 0.07: must exceed the sum of the base radii");
+             "pair.centre_distance = 0.07 m: must exceed the sum of the base radii");
 }
 
 TEST(Config, InvalidTomlGivesTheLine) {

@@ -117,8 +117,8 @@ TEST(VisnadiCompare, QualitativeFindingsOfThePaperHold) {
 // the gear's torsion peaks where the Campbell diagram has the first (mesh-coupled) mode cross the
 // mesh line, to the 2 % that the 20 ms windows (≈ 8 rpm) and the sweep lag allow.
 TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
-  const io::Config config = exampleConfig(
-      {"analysis.type=time", "speed.rpm=1200", "speed.end_rpm=2000", "time.duration=2.0"});
+  const io::Config config = exampleConfig({"analysis.type=time", "speed.speed_rpm=1200",
+                                           "speed.end_speed_rpm=2000", "time.duration=2.0"});
   const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
   const FeGearedRotor model(build.spec);
   std::vector<double> speeds;

@@ -27,6 +27,10 @@ class Config {
   const nlohmann::ordered_json& resolved() const noexcept { return resolved_; }
   /// Where the configuration came from (file path or a name given to parseConfig).
   const std::string& source() const noexcept { return source_; }
+  /// Notes for the user made while loading: deprecated spellings read under their new name,
+  /// sections and keys of other commands that this one ignores.
+  const std::vector<std::string>& notes() const noexcept { return notes_; }
+  void addNote(std::string note) { notes_.push_back(std::move(note)); }
 
   bool has(const std::string& path) const;  ///< declared and not null
   double real(const std::string& path) const;
@@ -44,6 +48,7 @@ class Config {
 
   nlohmann::ordered_json resolved_;
   std::string source_;
+  std::vector<std::string> notes_;
 };
 
 /// Parses TOML text and validates it against `schema`. `overrides` are "section.key=value"

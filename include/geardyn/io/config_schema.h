@@ -104,6 +104,22 @@ class ConfigSchema {
   /// The configuration reference of this command as Markdown (one table per section).
   std::string referenceMarkdown() const;
 
+  /// A deprecated spelling: a file (or --set) giving `old_path` is read as `new_path`, with a
+  /// note naming the new key; giving both is an error. docs/config/renamed-keys.md lists them.
+  void alias(std::string old_path, std::string new_path);
+  const std::vector<std::pair<std::string, std::string>>& aliases() const noexcept {
+    return aliases_;
+  }
+  /// The new spelling of a deprecated key, or nullptr.
+  const std::string* aliasTarget(const std::string& old_path) const;
+
+  /// Another command's schema: keys and sections it declares that this one does not are
+  /// ignored with a note (so one file can drive several commands), but still spell-checked
+  /// against it. Keys that no schema declares stay errors.
+  void addForeignSchema(ConfigSchema other);
+  /// The foreign schemas declaring `path` as a key (or a section when `section`).
+  std::vector<const ConfigSchema*> foreignDeclaring(const std::string& path, bool section) const;
+
  private:
   KeyBuilder add(const std::string& path, ValueKind kind);
 
@@ -113,6 +129,8 @@ class ConfigSchema {
   std::vector<SectionSpec> sections_;
   std::vector<std::string> collections_;
   std::deque<KeySpec> keys_;  // declaration order; a deque keeps KeyBuilder pointers valid
+  std::vector<std::pair<std::string, std::string>> aliases_;  // (old, new)
+  std::vector<ConfigSchema> foreign_;
 };
 
 }  // namespace geardyn::io

@@ -18,6 +18,9 @@ class NumericCsv {
 
   const std::vector<std::string>& columns() const noexcept { return names_; }
   std::size_t rows() const noexcept { return rows_; }
+  /// The delimiter found in the header: ',' unless the header has none and has ';' (then
+  /// decimal commas are read too) or a tab.
+  char delimiter() const noexcept { return delimiter_; }
   /// The values of a column; InputError (with a did-you-mean) if there is no such column.
   const std::vector<double>& column(const std::string& name, const std::string& key) const;
 
@@ -26,6 +29,7 @@ class NumericCsv {
   std::vector<std::string> names_;
   std::map<std::string, std::vector<double>> data_;
   std::size_t rows_ = 0;
+  char delimiter_ = ',';
 };
 
 }  // namespace geardyn::io

@@ -40,6 +40,8 @@ struct RecordReadOptions {
                                       ///< must agree with the file's when both exist
   double scale = 1.0;                 ///< multiplies every value (e.g. m per full-scale unit)
   std::string key = "input.file";     ///< configuration key of the path, for messages
+  /// CSV: the time column; empty: the first of "time", "time_s", "t" present (none: no time).
+  std::string time_column;
 };
 
 /// Reads the wanted channels. InputError (file, channel, sample index) for: a missing or

@@ -61,6 +61,9 @@ struct SweepDefinition {
   std::string fingerprint() const;
 };
 
+/// A value of a study as a TOML literal ("0.10000000000000001", "\"text\"", "true").
+std::string tomlLiteral(const nlohmann::json& value);
+
 /// The reference of a sweep file for `geardyn schema sweep` (the parameters table takes any key
 /// of the base command; its forms are described there).
 ConfigSchema sweepSchema();

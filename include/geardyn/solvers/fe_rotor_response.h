@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "geardyn/models/fe_geared_rotor.h"
+#include "geardyn/progress.h"
 #include "geardyn/solvers/newmark.h"
 
 namespace geardyn {
@@ -31,6 +32,7 @@ struct FeTimeOptions {
   /// q(0) from the static equilibrium at t = 0 (mesh stiffness and loads at t = 0) instead of
   /// rest; the minimum-norm solution leaves the rolling rigid-body mode at zero.
   bool start_from_static = false;
+  ProgressCallback progress;  ///< (steps done, steps) every 1000 steps
   void validate() const;
 };
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "geardyn/models/gear_pair_model.h"
+#include "geardyn/progress.h"
 
 namespace geardyn {
 
@@ -127,6 +128,11 @@ struct ContinuationOptions {
   int max_points = 20000;
   bool stability = true;
   StabilityMethod stability_method = StabilityMethod::kHill;
+  ProgressCallback progress;  ///< (|ω − start|, |stop − start|) after every point [rad/s]
+  /// Messages show frequencies as ω / display_scale in display_unit (the unit of the user's
+  /// keys: 2π and "Hz" for a dimensional model).
+  double display_scale = 1.0;
+  std::string display_unit = "rad/s";
   void validate() const;
 };
 

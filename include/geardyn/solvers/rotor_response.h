@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geardyn/models/lateral_rotor.h"
+#include "geardyn/progress.h"
 
 namespace geardyn {
 
@@ -26,6 +27,7 @@ struct RotorTimeOptions {
   /// (rotorVelocityFrequency) for velocities: the integrator's state is scaled by them.
   double absolute_tolerance = 1e-8;
   double steady_tolerance = 1e-6;  ///< |z(t + T_c) − z(t)| ≤ tol · max|z| marks steady state
+  ProgressCallback progress;       ///< (simulated time, duration) [s] while integrating
 
   void validate() const;
 };

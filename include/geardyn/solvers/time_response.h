@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geardyn/models/gear_pair_model.h"
+#include "geardyn/progress.h"
 #include "geardyn/solvers/newmark.h"
 
 namespace geardyn {
@@ -33,6 +34,7 @@ struct TimeResponseOptions {
   bool start_from_static = true;  ///< x(0) = static deflection F / k(0) + e(0), v(0) = 0
   /// Period of the response when the mesh frequency is 0 (LTI): the extra forces' period.
   double period = 0.0;
+  ProgressCallback progress;  ///< called after every period with (periods, max_periods)
 
   void validate() const;
 };

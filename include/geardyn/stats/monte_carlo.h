@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geardyn/models/gear_pair_model.h"
+#include "geardyn/progress.h"
 #include "geardyn/stats/mean_excitation.h"
 
 namespace geardyn {
@@ -28,6 +29,7 @@ struct MonteCarloOptions {
   bool random_phase = true;        ///< φ₀ ~ U(0, 1)
   double baseload = 0.0;           ///< F₀ [N] (model units)
   int threads = 1;
+  ProgressCallback progress;  ///< (samples done, samples), from the first worker thread
   void validate() const;
 };
 

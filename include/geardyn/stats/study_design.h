@@ -20,11 +20,19 @@ enum class StudyDistribution { kValues, kUniform, kNormal, kTruncatedNormal };
 struct StudyParameter {
   std::string key;                     ///< dotted configuration key ("excitation.torque")
   std::vector<nlohmann::json> values;  ///< grid / zip: numbers, strings or booleans
+  /// {min, max, num}: `num` evenly spaced values from min to max, generated on demand (never
+  /// materialised, so a billion-point axis costs nothing until its cases run); 0: use `values`.
+  long long linspace_num = 0;
+  bool linspace_integers = false;  ///< integer endpoints and steps: the values are integers
   StudyDistribution distribution = StudyDistribution::kValues;
   double mean = 0.0, std = 0.0;  ///< normal, truncated normal
   double min = 0.0, max = 0.0;   ///< uniform; truncation bounds
   /// Throws InputError naming "study.parameters.<key>" for an inconsistent definition.
   void validate(StudyDesign design) const;
+  /// Number of listed values (linspace_num or values.size()).
+  long long valueCount() const;
+  /// Listed value i (0 ≤ i < valueCount()).
+  nlohmann::json valueAt(long long i) const;
 };
 
 /// The value of each parameter in one case (same order as the parameters).

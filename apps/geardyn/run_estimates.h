@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// What each long-running command will need, from its configuration alone (issue #18, item 1):
+/// the memory of its large arrays and its wall time on one core. The per-item costs are
+/// measured on the reference machine (Release build; see docs/cli.md, "Resource limits") and
+/// rounded up: an estimate errs on the large side.
+
+#include "geardyn/io/config.h"
+#include "run_budget.h"
+
+namespace geardyn::cli {
+
+/// simulate (and stats with stats.simulate): solver.steps_per_period × solver.max_periods
+/// steps; output_points_per_period × output_periods samples kept.
+RunEstimate estimateTimeResponse(const io::Config& config);
+/// stats: monte_carlo.samples samples, each over monte_carlo.teeth mesh periods.
+RunEstimate estimateMonteCarlo(const io::Config& config, int threads);
+/// hbm: (2H+1) unknowns, samples_per_period AFT samples, the frequency range over max_step.
+RunEstimate estimateHarmonicBalance(const io::Config& config);
+/// rotor (Rao): time.samples samples (time and frequency domain, spectra, tables).
+RunEstimate estimateRotorTime(const io::Config& config);
+/// rotor (finite element, analysis "time"): duration / time_step Newmark steps.
+RunEstimate estimateFeRotorTime(const io::Config& config, int dofs);
+/// The estimate of one run of `command` with this configuration ({} when it is small).
+RunEstimate estimateCommand(const std::string& command, const io::Config& config);
+
+}  // namespace geardyn::cli
