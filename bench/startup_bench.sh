@@ -3,7 +3,8 @@
 # Python wrappers and job arrays that call the CLI thousands of times pay it every time.
 #   bench/startup_bench.sh [build/bin/geardyn] [REPEATS]
 # Median (and min) of REPEATS runs (default 20) of each command, measured from bash with
-# `date +%s%N` around the process; /bin/true gives the cost of starting any process here.
+# $EPOCHREALTIME around the process (no clock process forked in between); /bin/true gives the
+# cost of starting any process here.
 # Also prints the shared libraries each kind of run maps and the dynamic loader's relocation
 # statistics (LD_DEBUG=statistics).
 set -euo pipefail
@@ -20,16 +21,16 @@ measure() {
   local times=() s e
   "$@" >/dev/null 2>&1 || { echo "$label: the command failed: $*" >&2; exit 1; }  # warm-up
   for ((i = 0; i < repeats; i++)); do
-    s=$(date +%s%N)
+    s=${EPOCHREALTIME/[.,]/}
     "$@" >/dev/null 2>&1
-    e=$(date +%s%N)
-    times+=($((e - s)))
+    e=${EPOCHREALTIME/[.,]/}
+    times+=($((e - s)))  # [µs]
   done
   printf '%s\n' "${times[@]}" | sort -n | awk -v label="$label" -v n="$repeats" '
     { t[NR] = $1 }
     END {
       median = (n % 2) ? t[(n + 1) / 2] : (t[n / 2] + t[n / 2 + 1]) / 2
-      printf "%-34s median %7.2f ms   min %7.2f ms\n", label, median / 1e6, t[1] / 1e6
+      printf "%-34s median %7.2f ms   min %7.2f ms\n", label, median / 1e3, t[1] / 1e3
     }'
 }
 
