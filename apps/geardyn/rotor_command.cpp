@@ -314,7 +314,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
                           : f == "wav" ? io::RecordFormat::kWav
                                        : io::RecordFormat::kHdf5;
       const std::string name = f == "hdf5" ? "measurement.h5" : fmt::format("measurement.{}", f);
-      io::writeProbeRecord(writer.folder() / name, format, record);
+      io::writeProbeRecord(writer.pathFor(name), format, record);
       writer.recordFile(name);
       files.push_back(name);
     }

@@ -349,7 +349,7 @@ int runSweep(const CommandOptions& options) {
   io::ResultWriter writer(folder);
   // The journal is not listed among the summary's files: a later run's ResultWriter removes
   // listed files, and the journal must survive for --resume.
-  io::writeSweepHdf5(folder / "sweep.h5", study, records, base.resolved().dump());
+  io::writeSweepHdf5(writer.pathFor("sweep.h5"), study, records, base.resolved().dump());
   writer.recordFile("sweep.h5");
   writer.writeCsv("sweep.csv", io::sweepTable(study, records));
   long long failed = 0;

@@ -1,4 +1,4 @@
-/// Thread pool and (when built with it) the MPI work queue of `geardyn sweep`.
+/// Thread pool and MPI work queue of `geardyn sweep` (MPI through libgeardyn_mpi.so).
 
 #include "sweep_runner.h"
 
@@ -11,10 +11,8 @@
 #include <thread>
 
 #include "geardyn/error.h"
-
-#ifdef GEARDYN_HAVE_MPI
-#include <mpi.h>
-#endif
+#include "geardyn/module_loader.h"
+#include "mpi_transport.h"
 
 namespace geardyn::cli {
 namespace {
@@ -91,27 +89,40 @@ bool launchedByMpi() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
 }
 
-#ifdef GEARDYN_HAVE_MPI
-
 namespace {
 constexpr int kTagResult = 1;  // worker → root: a record (or "" for the first request)
 constexpr int kTagWork = 2;    // root → worker: a case index, −1 to stop
+
+const MpiTransport& loadTransport() {
+  using Entry = const MpiTransport* (*)();
+  void* symbol = nullptr;
+  try {
+    // Global: OpenMPI's own components, loaded by MPI_Init, resolve libmpi's symbols.
+    symbol = loadModuleSymbol("libgeardyn_mpi.so", "geardyn_mpi_transport", true);
+  } catch (const IoError& e) {
+    throw InputError(
+        "mpirun", "",
+        std::string("a geardyn built with MPI (install libopenmpi-dev and rebuild): ") + e.what());
+  }
+  const MpiTransport* transport = reinterpret_cast<Entry>(symbol)();
+  if (transport->version != kMpiTransportVersion)
+    throw IoError("libgeardyn_mpi.so does not match this geardyn: rebuild");
+  return *transport;
+}
+
 }  // namespace
 
-MpiWorld::MpiWorld() {
-  int provided = 0;
-  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+MpiWorld::MpiWorld() : mpi_(&loadTransport()) {
+  if (mpi_->init(&rank_, &size_) != 0) throw IoError("MPI_Init_thread failed");
 }
 
 MpiWorld::~MpiWorld() {
-  MPI_Finalize();
+  mpi_->finalize();
 }
 
 bool MpiWorld::agree(bool ok_on_root) {
   int flag = ok_on_root ? 1 : 0;
-  MPI_Bcast(&flag, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  mpi_->broadcast_int(&flag);
   return flag == 1;
 }
 
@@ -120,10 +131,9 @@ void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
   if (rank_ != 0) {
     std::string payload;  // empty: "ready"
     for (;;) {
-      MPI_Send(payload.data(), static_cast<int>(payload.size()), MPI_CHAR, 0, kTagResult,
-               MPI_COMM_WORLD);
+      mpi_->send_bytes(payload.data(), static_cast<int>(payload.size()), 0, kTagResult);
       long long index = -1;
-      MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      mpi_->receive_index(&index, 0, kTagWork);
       if (index < 0) return;
       payload = run_case(index).toJson().dump();
     }
@@ -141,16 +151,12 @@ void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
       ++received;
       busy = true;
     }
-    int flag = 0;
-    MPI_Status status;
-    MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &status);
-    if (flag) {
+    int waiting = 0, source = 0, count = 0;
+    mpi_->probe_bytes(kTagResult, &waiting, &source, &count);
+    if (waiting) {
       busy = true;
-      int count = 0;
-      MPI_Get_count(&status, MPI_CHAR, &count);
       std::string payload(static_cast<std::size_t>(count), '\0');
-      MPI_Recv(payload.data(), count, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD,
-               MPI_STATUS_IGNORE);
+      mpi_->receive_bytes(payload.data(), count, source, kTagResult);
       // Hand out the next case first, then record (the journal's fdatasync must not keep the
       // worker waiting).
       long long index = -1;
@@ -158,7 +164,7 @@ void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
         index = -1;
         ++stopped;
       }
-      MPI_Send(&index, 1, MPI_LONG_LONG, status.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
+      mpi_->send_index(index, source, kTagWork);
       if (!payload.empty()) {
         done(io::SweepCaseRecord::fromJson(nlohmann::json::parse(payload)));
         ++received;
@@ -168,21 +174,5 @@ void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
   }
   for (auto& t : pool) t.join();
 }
-
-#else
-
-MpiWorld::MpiWorld() {
-  throw InputError("mpirun", "", "a geardyn built with MPI (install libopenmpi-dev and rebuild)");
-}
-MpiWorld::~MpiWorld() = default;
-bool MpiWorld::agree(bool ok_on_root) {
-  return ok_on_root;
-}
-void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
-                        const CaseFunction& run_case, const DoneFunction& done) {
-  runCasesOnThreads(pending, threads, run_case, done);
-}
-
-#endif
 
 }  // namespace geardyn::cli

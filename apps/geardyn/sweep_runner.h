@@ -3,7 +3,8 @@
 /// Where the cases of a sweep run: a local thread pool, or MPI ranks fed by a dynamic work queue
 /// (rank 0 hands out one case at a time to whichever rank asks, so cases of unequal cost balance
 /// themselves) with rank 0 gathering every record. Without mpirun the same binary runs on
-/// threads only; MPI is initialised only when the process was started by an MPI launcher.
+/// threads only; MPI (libgeardyn_mpi.so, see mpi_transport.h) is loaded and initialised only
+/// when the process was started by an MPI launcher.
 
 #include <functional>
 #include <vector>
@@ -11,6 +12,8 @@
 #include "geardyn/io/sweep_io.h"
 
 namespace geardyn::cli {
+
+struct MpiTransport;
 
 using CaseFunction = std::function<io::SweepCaseRecord(long long index)>;
 /// Called on the calling thread (rank 0), one record at a time.
@@ -27,7 +30,8 @@ bool launchedByMpi();
 /// The MPI world of this run, initialised on construction and finalised on destruction.
 class MpiWorld {
  public:
-  MpiWorld();  ///< throws InputError when this geardyn was built without MPI
+  /// Loads libgeardyn_mpi.so and initialises MPI; InputError when geardyn was built without MPI.
+  MpiWorld();
   ~MpiWorld();
   MpiWorld(const MpiWorld&) = delete;
   MpiWorld& operator=(const MpiWorld&) = delete;
@@ -41,6 +45,7 @@ class MpiWorld {
   bool agree(bool ok_on_root);
 
  private:
+  const MpiTransport* mpi_;
   int rank_ = 0, size_ = 1;
 };
 

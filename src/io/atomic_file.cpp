@@ -21,7 +21,7 @@ std::atomic<unsigned long> temporary_counter{0};
 
 }  // namespace
 
-void writeFileAtomic(const std::filesystem::path& path, std::string_view content) {
+void writeFileAtomic(const std::filesystem::path& path, std::string_view content, bool durable) {
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
@@ -45,12 +45,23 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view content
     data += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+  if ((durable && ::fsync(fd) != 0) || ::close(fd) != 0) {
     const int error = errno;
     ::unlink(temporary.c_str());
     fail(temporary, "flush", error);
   }
   commitTemporary(temporary, path);
+}
+
+void syncToDisk(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, "open", errno);
+  if (::fsync(fd) != 0) {
+    const int error = errno;
+    ::close(fd);
+    fail(path, "flush", error);
+  }
+  ::close(fd);
 }
 
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {

@@ -292,7 +292,13 @@ ConfigSchema feRotorSchema() {
           "speed range; compare_stiffness: the time response with each mesh-stiffness model");
   schema.section("time", "Newmark time integration (γ = 1/2, β = 1/4).");
   schema.real("time.time_step").unit("s").positive().defaultValue(1e-5).doc("Δt (the paper: 1e-5)");
-  schema.real("time.duration").unit("s").positive().defaultValue(0.5).doc("simulated time");
+  schema.real("time.duration")
+      .unit("s")
+      .positive()
+      .defaultValue(0.5)
+      .doc(
+          "simulated time; at constant speed at least time.window_mesh_periods mesh periods, "
+          "along a run-up at least time.runup_window (checked before the run)");
   schema.boolean("time.start_from_static")
       .defaultValue(false)
       .doc("start from the static deflection instead of rest (the paper starts from rest)");
@@ -430,6 +436,35 @@ FeRotorBuild feRotorSpecFromConfig(const Config& config, const std::string& stif
   return b;
 }
 
+void checkRecordLength(const Config& config, const FeGearedRotor& model, double duration) {
+  const auto& speed = model.spec().speed;
+  if (speed.constant() && speed.start > 0.0) {
+    // The steady window holds time.window_mesh_periods whole mesh periods: the mesh-order
+    // harmonics are fitted over it and its last two periods measure the periodicity. A shorter
+    // record cannot hold it (the least squares of the orders is then rank-deficient).
+    const double mesh_period = 2.0 * std::numbers::pi / (speed.start * model.spec().pinion_teeth);
+    const long long periods = config.integer("time.window_mesh_periods");
+    const double minimum = static_cast<double>(periods) * mesh_period;
+    if (duration < minimum * (1.0 - 1e-9)) {
+      throw InputError(
+          "time.duration", fmt::format("{:g} s", duration),
+          fmt::format("at least {:.4g} s, the steady window of time.window_mesh_periods = {} mesh "
+                      "periods of {:.4g} ms ({:g} rpm, {} pinion teeth); lengthen time.duration "
+                      "or lower time.window_mesh_periods",
+                      minimum, periods, mesh_period * 1e3, speed.start / kRpm,
+                      model.spec().pinion_teeth));
+    }
+  } else if (!speed.constant()) {
+    const double window = config.real("time.runup_window");
+    if (duration < window) {
+      throw InputError("time.duration", fmt::format("{:g} s", duration),
+                       fmt::format("at least time.runup_window = {:g} s, one order-tracking "
+                                   "window of the run-up",
+                                   window));
+    }
+  }
+}
+
 FeTimeOptions feTimeOptionsFromConfig(const Config& config, const FeGearedRotor& model) {
   FeTimeOptions o;
   o.time_step = config.real("time.time_step");
@@ -438,6 +473,7 @@ FeTimeOptions feTimeOptionsFromConfig(const Config& config, const FeGearedRotor&
   o.gyro_speed_tolerance = config.real("time.gyro_speed_tolerance");
   o.channels = feOutputChannels(config, model);
   o.validate();
+  checkRecordLength(config, model, o.duration);
   return o;
 }
 

@@ -1,7 +1,6 @@
 #include "geardyn/io/probe_record.h"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include "geardyn/io/atomic_file.h"
 #include "geardyn/io/csv_reader.h"
 #include "geardyn/io/hdf5_lock.h"
+#include "hdf5_module.h"
 
 namespace geardyn::io {
 namespace {
@@ -201,61 +201,60 @@ ProbeRecord readWav(const fs::path& path, const RecordReadOptions& o) {
   return r;
 }
 
-/// Closes an HDF5 handle on scope exit.
-struct H5Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5Handle() {
-    if (id >= 0) close(id);
-  }
+/// An open HDF5 file of the HDF5 module, closed on scope exit (the caller holds hdf5Mutex()).
+struct Hdf5Reading {
+  const detail::Hdf5ModuleApi& h5;
+  std::int64_t file;
+  ~Hdf5Reading() { h5.close(file); }
 };
 
-std::vector<double> readDataset(hid_t file, const std::string& name, const fs::path& path,
+std::vector<double> readDataset(const Hdf5Reading& f, const std::string& name, const fs::path& path,
                                 const RecordReadOptions& o) {
-  if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) {
+  if (!f.h5.has_dataset(f.file, name.c_str())) {
     bad(o, path, fmt::format("has no dataset '/{}'", name));
   }
-  H5Handle set{H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose};
-  if (set.id < 0) bad(o, path, fmt::format("dataset '/{}' cannot be opened", name));
-  H5Handle space{H5Dget_space(set.id), H5Sclose};
-  if (H5Sget_simple_extent_ndims(space.id) != 1) {
-    bad(o, path, fmt::format("dataset '/{}' must be one-dimensional", name));
-  }
-  hsize_t n = 0;
-  H5Sget_simple_extent_dims(space.id, &n, nullptr);
+  std::uint64_t n = 0;
+  int status = f.h5.dataset_length(f.file, name.c_str(), &n);
   std::vector<double> v(n);
-  if (n > 0 && H5Dread(set.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
-    bad(o, path, fmt::format("dataset '/{}' cannot be read as numbers (truncated file?)", name));
+  if (status == detail::kHdf5Ok) status = f.h5.read_doubles(f.file, name.c_str(), v.data(), n);
+  switch (status) {
+    case detail::kHdf5Ok:
+      return v;
+    case detail::kHdf5NotOneDim:
+      bad(o, path, fmt::format("dataset '/{}' must be one-dimensional", name));
+    case detail::kHdf5CannotOpen:
+      bad(o, path, fmt::format("dataset '/{}' cannot be opened", name));
+    default:
+      bad(o, path, fmt::format("dataset '/{}' cannot be read as numbers (truncated file?)", name));
   }
-  return v;
 }
 
 ProbeRecord readHdf5(const fs::path& path, const RecordReadOptions& o) {
+  const detail::Hdf5ModuleApi& h5 = detail::hdf5Module();
   const std::lock_guard<std::mutex> lock(hdf5Mutex());
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  if (H5Fis_hdf5(path.c_str()) <= 0) bad(o, path, "is not an HDF5 file (or is truncated)");
-  H5Handle file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-  if (file.id < 0) bad(o, path, "cannot be opened as HDF5 (truncated?)");
+  const std::int64_t handle = h5.open(path.c_str());
+  if (handle == -detail::kHdf5NotHdf5) bad(o, path, "is not an HDF5 file (or is truncated)");
+  if (handle < 0) bad(o, path, "cannot be opened as HDF5 (truncated?)");
+  const Hdf5Reading f{h5, handle};
   ProbeRecord r;
   std::optional<double> rate;
-  if (H5Aexists(file.id, "sample_rate") > 0) {
-    H5Handle attr{H5Aopen(file.id, "sample_rate", H5P_DEFAULT), H5Aclose};
+  if (h5.has_attribute(f.file, "sample_rate")) {
     double value = 0.0;
-    if (H5Aread(attr.id, H5T_NATIVE_DOUBLE, &value) < 0)
+    if (h5.read_number_attribute(f.file, "sample_rate", &value) != detail::kHdf5Ok)
       bad(o, path, "attribute 'sample_rate' cannot be read");
     if (!(value > 0.0) || !std::isfinite(value)) {
       bad(o, path, fmt::format("attribute sample_rate = {:g}: must be > 0 [Hz]", value));
     }
     rate = value;
-  } else if (H5Lexists(file.id, "time", H5P_DEFAULT) > 0) {
-    const auto t = readDataset(file.id, "time", path, o);
+  } else if (h5.has_dataset(f.file, "time")) {
+    const auto t = readDataset(f, "time", path, o);
     rate = rateFromTime(o, path, t);
     r.start_time = t.front();
   }
   r.sample_rate = agreeRate(o, path, rate);
   for (const auto& name : o.channels) {
     r.names.push_back(name);
-    r.channels.push_back(readDataset(file.id, name, path, o));
+    r.channels.push_back(readDataset(f, name, path, o));
     for (double& v : r.channels.back()) v *= o.scale;
   }
   return r;
@@ -307,34 +306,16 @@ std::string wavBytes(const ProbeRecord& r) {
 }
 
 void writeHdf5(const fs::path& path, const ProbeRecord& r) {
-  const std::lock_guard<std::mutex> lock(hdf5Mutex());
-  fs::create_directories(path.parent_path().empty() ? fs::path(".") : path.parent_path());
-  const fs::path temp = temporaryPathFor(path);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  {
-    H5Handle file{H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-    if (file.id < 0) throw IoError(fmt::format("cannot create {}", temp.string()));
-    const hsize_t one = 1;
-    H5Handle scalar{H5Screate_simple(1, &one, nullptr), H5Sclose};
-    H5Handle attr{
-        H5Acreate2(file.id, "sample_rate", H5T_IEEE_F64LE, scalar.id, H5P_DEFAULT, H5P_DEFAULT),
-        H5Aclose};
-    bool ok = attr.id >= 0 && H5Awrite(attr.id, H5T_NATIVE_DOUBLE, &r.sample_rate) >= 0;
-    const hsize_t n = r.samples();
-    for (std::size_t c = 0; c < r.channels.size() && ok; ++c) {
-      H5Handle space{H5Screate_simple(1, &n, nullptr), H5Sclose};
-      H5Handle set{H5Dcreate2(file.id, r.names[c].c_str(), H5T_IEEE_F64LE, space.id, H5P_DEFAULT,
-                              H5P_DEFAULT, H5P_DEFAULT),
-                   H5Dclose};
-      ok = set.id >= 0 && H5Dwrite(set.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                   r.channels[c].data()) >= 0;
-    }
-    if (!ok || H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) {
-      fs::remove(temp);
-      throw IoError(fmt::format("cannot write {}", temp.string()));
-    }
+  detail::Hdf5Content content;
+  content.attributes.push_back({"sample_rate", false, r.sample_rate, {}});
+  for (std::size_t c = 0; c < r.channels.size(); ++c) {
+    detail::Hdf5Dataset d;
+    d.name = r.names[c];
+    d.rows = r.samples();
+    d.f64 = r.channels[c];
+    content.datasets.push_back(std::move(d));
   }
-  commitTemporary(temp, path);
+  detail::writeHdf5File(path.string(), content);
 }
 
 }  // namespace

@@ -1,117 +1,54 @@
-/// sweep.h5, the gathered results of `geardyn sweep` (see sweep_io.h), written atomically.
-
-#include <fmt/format.h>
-#include <hdf5.h>
+/// sweep.h5, the gathered results of `geardyn sweep` (see sweep_io.h), written through the HDF5
+/// module that is loaded on demand (hdf5_module.h).
 
 #include <limits>
-#include <mutex>
 
-#include "geardyn/error.h"
-#include "geardyn/io/atomic_file.h"
-#include "geardyn/io/hdf5_lock.h"
 #include "geardyn/io/sweep_io.h"
 #include "geardyn/version.h"
+#include "hdf5_module.h"
 
 namespace geardyn::io {
 namespace fs = std::filesystem;
 
-namespace {
-
-struct H5 {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~H5() {
-    if (id >= 0) close(id);
-  }
-};
-
-void writeStrings(hid_t file, const char* name, const std::vector<std::string>& values,
-                  hsize_t rows, hsize_t cols) {
-  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  const hsize_t dims[2] = {rows, cols};
-  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
-  H5 set{H5Dcreate2(file, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-         H5Dclose};
-  std::vector<const char*> ptrs;
-  for (const auto& s : values) ptrs.push_back(s.c_str());
-  if (set.id < 0 ||
-      (!ptrs.empty() && H5Dwrite(set.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0))
-    throw IoError(fmt::format("cannot write dataset {}", name));
-}
-
-template <typename T>
-void writeNumbers(hid_t file, const char* name, hid_t file_type, hid_t memory_type,
-                  const std::vector<T>& values, hsize_t rows, hsize_t cols) {
-  const hsize_t dims[2] = {rows, cols};
-  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
-  H5 set{H5Dcreate2(file, name, file_type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-         H5Dclose};
-  if (set.id < 0 || (!values.empty() && H5Dwrite(set.id, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                                 values.data()) < 0))
-    throw IoError(fmt::format("cannot write dataset {}", name));
-}
-
-void writeAttribute(hid_t object, const char* name, const std::string& value) {
-  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  H5 space{H5Screate(H5S_SCALAR), H5Sclose};
-  H5 attr{H5Acreate2(object, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  const char* p = value.c_str();
-  if (attr.id < 0 || H5Awrite(attr.id, type.id, &p) < 0)
-    throw IoError(fmt::format("cannot write attribute {}", name));
-}
-
-}  // namespace
-
 void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
                     const std::vector<SweepCaseRecord>& records, const std::string& base_config) {
-  const fs::path temp = temporaryPathFor(path);
-  const std::lock_guard<std::mutex> lock(hdf5Mutex());
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  try {
-    H5 file{H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-    if (file.id < 0) throw IoError("cannot create " + temp.string());
-    const hsize_t n = records.size(), np = study.parameters.size(), no = study.outputs.size();
-    std::vector<long long> index;
-    std::vector<unsigned long long> seeds;
-    std::vector<std::string> status, message, text;
-    std::vector<double> params, outputs;
-    for (const auto& r : records) {
-      index.push_back(r.index);
-      seeds.push_back(r.seed);
-      status.push_back(r.status);
-      message.push_back(r.message);
-      for (const auto& v : r.values) {
-        params.push_back(v.is_number() ? v.get<double>()
-                                       : std::numeric_limits<double>::quiet_NaN());
-        text.push_back(v.is_string() ? v.get<std::string>() : v.dump());
-      }
-      outputs.insert(outputs.end(), r.outputs.begin(), r.outputs.end());
+  using Type = detail::Hdf5Dataset::Type;
+  const std::uint64_t n = records.size(), np = study.parameters.size(), no = study.outputs.size();
+  const auto dataset = [](const char* name, Type type, std::uint64_t rows, std::uint64_t cols) {
+    detail::Hdf5Dataset d;
+    d.name = name, d.type = type, d.rows = rows, d.cols = cols;
+    return d;
+  };
+  detail::Hdf5Dataset index = dataset("case", Type::kInt64, n, 0),
+                      seeds = dataset("seed", Type::kUInt64, n, 0),
+                      status = dataset("status", Type::kString, n, 0),
+                      message = dataset("message", Type::kString, n, 0),
+                      params = dataset("parameters", Type::kFloat64, n, np),
+                      text = dataset("parameter_text", Type::kString, n, np),
+                      outputs = dataset("outputs", Type::kFloat64, n, no),
+                      pnames = dataset("parameter_names", Type::kString, np, 0),
+                      onames = dataset("output_names", Type::kString, no, 0);
+  for (const auto& r : records) {
+    index.i64.push_back(r.index);
+    seeds.u64.push_back(r.seed);
+    status.text.push_back(r.status);
+    message.text.push_back(r.message);
+    for (const auto& v : r.values) {
+      params.f64.push_back(v.is_number() ? v.get<double>()
+                                         : std::numeric_limits<double>::quiet_NaN());
+      text.text.push_back(v.is_string() ? v.get<std::string>() : v.dump());
     }
-    writeNumbers(file.id, "case", H5T_STD_I64LE, H5T_NATIVE_LLONG, index, n, 0);
-    writeNumbers(file.id, "seed", H5T_STD_U64LE, H5T_NATIVE_ULLONG, seeds, n, 0);
-    writeStrings(file.id, "status", status, n, 0);
-    writeStrings(file.id, "message", message, n, 0);
-    writeNumbers(file.id, "parameters", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, params, n, np);
-    writeStrings(file.id, "parameter_text", text, n, np);
-    writeNumbers(file.id, "outputs", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, outputs, n, no);
-    std::vector<std::string> pnames, onames;
-    for (const auto& p : study.parameters) pnames.push_back(p.key);
-    for (const auto& o : study.outputs) onames.push_back(o.name);
-    writeStrings(file.id, "parameter_names", pnames, np, 0);
-    writeStrings(file.id, "output_names", onames, no, 0);
-    writeAttribute(file.id, "geardyn_version", kVersion);
-    writeAttribute(file.id, "study", study.resolved.dump());
-    writeAttribute(file.id, "base_config", base_config);
-    if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) throw IoError("cannot flush " + temp.string());
-  } catch (...) {
-    fs::remove(temp);
-    throw;
+    outputs.f64.insert(outputs.f64.end(), r.outputs.begin(), r.outputs.end());
   }
-  commitTemporary(temp, path);
+  for (const auto& p : study.parameters) pnames.text.push_back(p.key);
+  for (const auto& o : study.outputs) onames.text.push_back(o.name);
+  detail::Hdf5Content content;
+  content.attributes = {{"geardyn_version", true, 0.0, kVersion},
+                        {"study", true, 0.0, study.resolved.dump()},
+                        {"base_config", true, 0.0, base_config}};
+  for (auto* d : {&index, &seeds, &status, &message, &params, &text, &outputs, &pnames, &onames})
+    content.datasets.push_back(std::move(*d));
+  detail::writeHdf5File(path.string(), content);
 }
 
 }  // namespace geardyn::io

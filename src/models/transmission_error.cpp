@@ -13,6 +13,10 @@ namespace geardyn {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+/// A phase this close to a table point [mesh periods] is on it: far above the round-off of a
+/// phase of up to 10⁶ periods (2e-10), far below any table spacing (tables have at most 10⁶
+/// points per period).
+constexpr double kOnTablePoint = 1e-9;
 
 void requireFinite(const std::vector<double>& values, const std::string& key) {
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -121,8 +125,26 @@ double TransmissionError::derivative(double phase) const {
     d -= amplitudes_[r] * kTwoPi * (r + 1) * std::sin(kTwoPi * (r + 1) * phase + phases_[r]);
   }
   if (table_phases_.size() > 1) {
+    // The slope of segment i (from table point i to the next, periodically).
+    const std::size_t n = table_phases_.size();
+    const auto slope = [&](std::size_t i) {
+      const std::size_t j = (i + 1) % n;
+      const double width = table_phases_[j] - table_phases_[i] + (j <= i ? 1.0 : 0.0);
+      return (table_values_[j] - table_values_[i]) / width;
+    };
+    // On a table point the slope jumps. A fixed-step integrator lands there (Newmark with a
+    // multiple of the table's points per period), and round-off in the phase, which grows with
+    // time, would pick either side from one period to the next: the discrete system would not
+    // be periodic and never settle (issue 21). The mean of the one-sided slopes is the same
+    // every period, and with it the trapezoidal rule integrates the jump exactly.
     const TableSegment t = tableSegment(phase);
-    d += (table_values_[t.hi] - table_values_[t.lo]) / (t.x1 - t.x0);
+    if (t.x - t.x0 <= kOnTablePoint) {
+      d += 0.5 * (slope((t.lo + n - 1) % n) + slope(t.lo));
+    } else if (t.x1 - t.x <= kOnTablePoint) {
+      d += 0.5 * (slope(t.lo) + slope(t.hi));
+    } else {
+      d += slope(t.lo);
+    }
   }
   return d;
 }

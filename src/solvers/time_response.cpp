@@ -195,9 +195,13 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
     recent.push_back(std::move(period));
     if (static_cast<int>(recent.size()) > options.output_periods) recent.pop_front();
 
-    if (steady_at < 0 && out.periods >= options.min_periods &&
-        out.last_change <= options.steady_tolerance) {
-      steady_at = out.periods;
+    // Steady once a period agrees with the one before, and only while every later one does:
+    // a change that rises again (a beat, a chaotic or quasi-periodic response) starts the count
+    // anew, so that the returned periods all agree to steady_tolerance (issue 21).
+    if (out.periods >= options.min_periods && out.last_change <= options.steady_tolerance) {
+      if (steady_at < 0) steady_at = out.periods;
+    } else {
+      steady_at = -1;
     }
     // Once steady, keep integrating until output_periods steady periods are at hand.
     if (steady_at >= 0 && out.periods >= steady_at + options.output_periods - 1) {
@@ -224,8 +228,16 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
                                   out.last_change);
         break;
       case TimeResponseStatus::kMaxPeriods:
-        out.message = fmt::format("no steady state after {} periods (last change {:.2g} > {:.2g})",
-                                  out.periods, out.last_change, options.steady_tolerance);
+        out.message =
+            steady_at < 0
+                ? fmt::format("no steady state after {} periods (last change {:.2g} > {:.2g})",
+                              out.periods, out.last_change, options.steady_tolerance)
+                : fmt::format(
+                      "no steady state after {} periods: the change between periods (last "
+                      "{:.2g}) stayed within {:.2g} for only the last {} of the {} periods "
+                      "needed (output_periods)",
+                      out.periods, out.last_change, options.steady_tolerance,
+                      out.periods - steady_at + 1, options.output_periods);
         break;
       case TimeResponseStatus::kNewtonFailure:
         out.message = fmt::format("{} Newmark steps did not converge in {} Newton iterations",

@@ -109,3 +109,37 @@ def test_time_analysis_at_rest_has_no_harmonics(tmp_path):
                  "--set", "speed.rpm=0.0", "--set", "time.duration=0.01")
     assert result.returncode == 0, result.stderr
     assert json.loads((tmp_path / "summary.json").read_text())["results"]["steady"] is None
+
+
+def test_a_record_too_short_for_the_steady_window_is_refused_before_it_runs(tmp_path):
+    # 100 rpm, 25 pinion teeth: mesh period 24 ms; the example's window is 40 mesh periods,
+    # so 2 ms is refused (exit 2) before anything is integrated or written.
+    out = tmp_path / "new" / "out"
+    result = run("rotor", TIME, "--out", out, "--set", "speed.rpm=100.0",
+                 "--set", "time.duration=0.002")
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert "time.duration = 0.002 s" in result.stderr, result.stderr
+    assert "at least 0.96 s" in result.stderr and "mesh periods of 24 ms" in result.stderr
+    assert "time.window_mesh_periods = 40" in result.stderr
+    assert not (tmp_path / "new").exists()  # nothing written, not even the folder
+
+
+def test_a_failed_run_leaves_the_previous_results_of_the_folder_whole(tmp_path):
+    ok = run("rotor", TIME, "--out", tmp_path, "--set", "output.plots=false",
+             "--set", "speed.rpm=0.0", "--set", "time.duration=0.002")
+    assert ok.returncode == 0, ok.stderr
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert "summary.json" in before and "time_history.csv" in before
+    failed = run("rotor", TIME, "--out", tmp_path, "--set", "output.plots=false",
+                 "--set", "speed.rpm=100.0", "--set", "time.duration=0.002")
+    assert failed.returncode == 2, failed.stderr
+    # Same files, same bytes, no staging folder left behind.
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+
+
+def test_a_run_up_shorter_than_one_tracking_window_is_refused(tmp_path):
+    result = run("rotor", RUNUP, "--out", tmp_path / "out", "--set", "time.duration=0.01",
+                 "--set", "time.runup_window=0.02")
+    assert result.returncode == 2, result.stderr
+    assert "time.duration = 0.01 s" in result.stderr and "time.runup_window = 0.02 s" in result.stderr
+    assert not (tmp_path / "out").exists()

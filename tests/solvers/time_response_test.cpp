@@ -148,6 +148,48 @@ TEST(TimeResponse, ParametricInstabilityNearTwiceTheNaturalFrequency) {
   }
 }
 
+TEST(TransmissionError, TableSlopeOnATablePointIsTheMeanOfBothSidesWhateverTheRoundOff) {
+  // Slopes 4, 0, 8, −12 [m per period] on the four segments (the last one wraps to φ = 1).
+  TransmissionError e;
+  e.addTable({0.0, 0.25, 0.5, 0.75}, {0.0, 1.0, 1.0, 3.0});
+  EXPECT_EQ(e.derivative(0.1), 4.0);
+  EXPECT_EQ(e.derivative(0.9), -12.0);
+  // On a point: the mean, also a few ulps off it and after many periods (issue 21).
+  for (double p : {0.25, 0.25 + 1e-15, 0.25 - 1e-15, 1000.25, 1000.25 - 2e-13})
+    EXPECT_EQ(e.derivative(p), 2.0) << p;
+  EXPECT_EQ(e.derivative(0.75), -2.0);
+  EXPECT_EQ(e.derivative(0.0), -4.0);
+  EXPECT_EQ(e.derivative(1e3 - 1e-13), -4.0);
+}
+
+TEST(TimeResponse, ABeatThatDipsBelowTheToleranceIsNotASteadyState) {
+  // Nondimensional LTI (ω_n = 1, ζ = 0.1, x̄ = 1) at ω_m = 0.3 with two extra forces at
+  // ω_m (1 ± 0.01) whose period-to-period changes have equal size d = 6.9e-5: together they
+  // beat over 50 mesh periods, and near each node the change falls below the tolerance 2e-5 for
+  // about 4.6 periods. Steady means that every returned period agrees with the one before, so
+  // a dip shorter than output_periods is not a steady state (the solver once took it for one).
+  GearPairModelSpec spec;
+  spec.mass = 1.0;
+  spec.stiffness = std::make_shared<ConstantMeshStiffness>("constant", 1.0, 1.6);
+  spec.damping = 0.2;
+  spec.mean_force = 1.0;
+  const double w_m = 0.3, delta = 0.01;
+  spec.mesh_frequency = w_m / (2 * kPi);
+  const auto gain = [&](double w) { return 1.0 / std::hypot(1.0 - w * w, spec.damping * w); };
+  const double w1 = w_m * (1 + delta), w2 = w_m * (1 - delta);
+  spec.extra_forces = {{1e-3, w1, 0.0}, {1e-3 * gain(w1) / gain(w2), w2, 0.0}};
+  TimeResponseOptions options;
+  options.start_from_static = false;
+  options.steady_tolerance = 2e-5;
+  options.output_periods = 8;
+  options.max_periods = 200;  // four beats
+  const TimeResponse r = solveTimeResponse(GearPairModel(spec), options);
+  EXPECT_EQ(r.status, TimeResponseStatus::kMaxPeriods) << r.message;  // it was "converged"
+  // With a tolerance above the beat's largest change it is steady.
+  options.steady_tolerance = 3e-4;
+  EXPECT_TRUE(solveTimeResponse(GearPairModel(spec), options).converged());
+}
+
 TEST(TimeResponse, ContactLossWithBacklashConvergesEveryStep) {
   // Light load, large error, near resonance: the teeth separate and hit the back flank.
   GearPairModelSpec spec;

@@ -34,7 +34,13 @@ struct FeRotorBuild {
 };
 FeRotorBuild feRotorSpecFromConfig(const Config& config, const std::string& stiffness_model = "");
 
+/// The Newmark options of [time]; checks the record length with checkRecordLength.
 FeTimeOptions feTimeOptionsFromConfig(const Config& config, const FeGearedRotor& model);
+
+/// Refuses (InputError naming time.duration, the mesh period and the minimum) a record too short
+/// for its post-processing, before anything runs: at constant speed > 0 it must hold the steady
+/// window of time.window_mesh_periods mesh periods, along a run-up one time.runup_window.
+void checkRecordLength(const Config& config, const FeGearedRotor& model, double duration);
 
 /// The output channels of [time] outputs ("pinion_shaft.1.uy", …) as active DOF indices;
 /// default: the gear nodes' u_y, u_z and the first bearing node of each shaft (Visnadi Figs.

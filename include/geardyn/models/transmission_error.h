@@ -29,7 +29,8 @@ class TransmissionError {
                 const std::string& key = "transmission_error");
 
   double value(double phase) const;
-  /// de/dφ [m per mesh period] (the rectangular wave's jumps contribute nothing).
+  /// de/dφ [m per mesh period] (the rectangular wave's jumps contribute nothing; on a table
+  /// point, where the table's slope jumps, the mean of the slopes on either side).
   double derivative(double phase) const;
   bool isZero() const noexcept;
 
