@@ -9,7 +9,7 @@ import pathlib
 from ._plot_common import _long_table, _read_columns, _save_atomically, plt
 
 _TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
-                 "mixed": "tab:purple", "": "0.3"}
+                 "mixed": "tab:purple", "outside": "0.3", "": "0.3"}
 
 
 def _bodies(folder):

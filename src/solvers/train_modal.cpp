@@ -84,7 +84,14 @@ void describe(const GearTrainModel& model, TrainMode& mode) {
     // Thresholds: the exact structure gives round-off (~1e-20 of the energy); 1e-8 leaves
     // room for the near-degenerate mixing of a solver without being fooled by real coupling.
     constexpr double kZero = 1e-8;
-    if (central_rot + central_trans < kZero) {
+    double planets = 0.0;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (bodies[b].kind == TrainBodyKind::kPlanet && bodies[b].stage == static_cast<int>(s))
+        planets += (rot[b] + trans[b]) / total;
+    }
+    if (central_rot + central_trans + planets < kZero) {
+      mode.stage_type.push_back("outside");  // a mode of the rest of the train
+    } else if (central_rot + central_trans < kZero) {
       mode.stage_type.push_back("planet");
     } else if (per == 1 || central_trans < kZero) {
       mode.stage_type.push_back("rotational");
