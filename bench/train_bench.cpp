@@ -1,0 +1,62 @@
+// Gear trains (issue #16): the modal analysis of the 3-planet lumped stage of Lin & Parker
+// (1999) as one whole library call from the description (target < 1 ms), one Newmark step of
+// the two-stage reducer with both meshes' stiffness varying, and its frequency-domain steady
+// state at one speed (harmonic balance condensed onto the mesh deflections).
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+#include "geardyn/solvers/train_modal.h"
+#include "geardyn/solvers/train_response.h"
+#include "geardyn/solvers/train_time.h"
+#include "geardyn/stiffness/fourier_stiffness.h"
+#include "system/sample_trains.h"
+
+namespace geardyn {
+namespace {
+
+std::shared_ptr<const MeshStiffness> smooth(double mean) {
+  return std::make_shared<FourierMeshStiffness>(mean, std::vector<double>{0.12, 0.05, 0.02},
+                                                std::vector<double>{0.0, 0.3, 1.1}, 1.6);
+}
+
+void BM_PlanetaryModalWholeCall(benchmark::State& state) {
+  const GearTrainSpec spec = testing::linParker1999(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    const GearTrainModel model(spec);
+    auto modes = trainModes(model, 0.0);
+    benchmark::DoNotOptimize(modes.data());
+  }
+}
+BENCHMARK(BM_PlanetaryModalWholeCall)->Arg(3)->Arg(5)->Unit(benchmark::kMicrosecond);
+
+void BM_TrainNewmarkStep(benchmark::State& state) {
+  const GearTrainModel model(testing::twoStageReducer(smooth(4e8), smooth(6e8)));
+  TrainNewmarkStepper stepper(model, model.inputSpeed(), 1e-5,
+                              NewmarkParameters::averageAcceleration());
+  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                Eigen::VectorXd::Zero(model.dofCount()));
+  for (auto _ : state) {
+    stepper.step();
+    benchmark::DoNotOptimize(stepper.displacement().data());
+  }
+  state.counters["dofs"] = model.dofCount();
+}
+BENCHMARK(BM_TrainNewmarkStep);
+
+void BM_TrainSteadyStatePerSpeed(benchmark::State& state) {
+  const GearTrainModel model(testing::twoStageReducer(smooth(4e8), smooth(6e8)));
+  TrainSteadyOptions options;
+  options.mesh_harmonics = static_cast<int>(state.range(0));
+  const TrainSteadySolver solver(model, options);
+  double speed = model.inputSpeed();
+  for (auto _ : state) {
+    auto s = solver.solve(speed);
+    benchmark::DoNotOptimize(s.harmonic.data());
+  }
+}
+BENCHMARK(BM_TrainSteadyStatePerSpeed)->Arg(8)->Arg(20)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace geardyn
