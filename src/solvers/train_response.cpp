@@ -184,12 +184,14 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
   const auto& meshes = model.meshes();
   k_hat_.resize(meshes.size());
   ke_hat_.resize(meshes.size());
+  e_hat_.resize(meshes.size());
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const TrainMesh& mesh = meshes[m];
     const MeshStiffnessSummary summary = summarizeMeshStiffness(*mesh.stiffness, L);
     const auto breaks = mesh.stiffness->discontinuities();
     k_hat_[m].assign(2 * L + 1, 0.0);
     ke_hat_[m].assign(2 * L + 1, 0.0);
+    e_hat_[m].assign(2 * L + 1, 0.0);
     const bool has_error = !mesh.transmission_error.isZero();
     for (int l = 0; l <= L; ++l) {
       Complex c = l == 0 ? Complex(summary.mean)
@@ -207,6 +209,13 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
             [&](double phi) { return -ke(phi) * std::sin(kTwoPi * l * phi); }, breaks);
         ke_hat_[m][L + l] = Complex(re, im) * shift;
         ke_hat_[m][L - l] = std::conj(ke_hat_[m][L + l]);
+        const auto& e = mesh.transmission_error;
+        const double e_re = integrateOverPeriod(
+            [&](double phi) { return e.value(phi) * std::cos(kTwoPi * l * phi); }, breaks);
+        const double e_im = integrateOverPeriod(
+            [&](double phi) { return -e.value(phi) * std::sin(kTwoPi * l * phi); }, breaks);
+        e_hat_[m][L + l] = Complex(e_re, e_im) * shift;
+        e_hat_[m][L - l] = std::conj(e_hat_[m][L + l]);
       }
     }
   }
@@ -258,7 +267,12 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   for (int m = 0; m < r; ++m) {
     for (int l = -L; l <= L; ++l) {
       const int j = l * base.mesh_multiple[m];
-      if (std::abs(j) <= H) F.col(j + H) += ke_hat[m][L + l] * V.col(m);
+      // k e, and the mesh dashpot on the tooth deformation rate: c_m ė (ė at i j ω₀).
+      if (std::abs(j) <= H) {
+        F.col(j + H) +=
+            (ke_hat[m][L + l] + Complex(0.0, j * w0) * meshes[m].damping * e_hat_[m][L + l]) *
+            V.col(m);
+      }
     }
   }
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu(blocks);

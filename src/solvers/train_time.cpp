@@ -70,7 +70,10 @@ void TrainNewmarkStepper::meshState(double t) {
     const double phi = meshes[m].phaseAt(t, speed_);
     k_(m) = meshes[m].stiffness->stiffness(phi);
     dk_(m) = k_(m) - meshes[m].mean_stiffness;
-    ke_(m) = k_(m) * meshes[m].transmission_error.value(phi);
+    const TransmissionError& e = meshes[m].transmission_error;
+    // k e + c ė, ė = de/dφ f_m.
+    ke_(m) = k_(m) * e.value(phi) +
+             meshes[m].damping * e.derivative(phi) * meshes[m].frequency_ratio * std::abs(speed_);
   }
 }
 

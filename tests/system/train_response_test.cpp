@@ -9,6 +9,8 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/solvers/time_response.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "system/sample_trains.h"
@@ -250,6 +252,70 @@ TEST(TrainInput, BadTrainsNameTheComponent) {
   GearTrainSpec e = twoStageReducer();
   e.meshes[0].centre_distance = 0.1;  // not the distance the teeth need
   EXPECT_NE(key_of(e).find("meshes.stage1.centre_distance"), std::string::npos) << key_of(e);
+}
+
+}  // namespace
+}  // namespace geardyn
+
+namespace geardyn {
+namespace {
+
+/// Reduction: one external pair with torsional DOFs is the SDOF gear-pair model
+/// m_e ẍ + c ẋ + k(t)(x − e) = F (Gelman 2005) with x = r_b1 θ₁ + r_b2 θ₂,
+/// m_e = I₁I₂/(I₁r_b2² + I₂r_b1²), F = T/r_b1 and the same c. The train's steady state (harmonic
+/// balance, 40 harmonics of a three-harmonic k) against the SDOF model's Dormand–Prince steady
+/// state (relative tolerance 1e-10): mesh forces agree to 1e-7 of the mean force (the
+/// integrator's tolerance, accumulated over the transient, and the balance's truncation, below
+/// 1e-10 for this smooth k, are the limits).
+TEST(TrainReduction, SinglePairTorsionalIsTheSdofGearPairModel) {
+  GearTrainSpec spec;
+  spec.dofs = TrainDofs::kTorsional;
+  spec.shafts = {{"pinion_shaft", 0.0, 2e-3, {}, {}, {}, 7850.0},
+                 {"gear_shaft", 0.0, 9e-3, {}, {}, {}, 7850.0}};
+  spec.gears = {{"pinion", "pinion_shaft", testing::spurGear(25, 3e-3, 20.0, 0.02), false, false},
+                {"gear", "gear_shaft", testing::spurGear(53, 3e-3, 20.0, 0.02), false, false}};
+  const auto k = smoothStiffness(3e8, 20.0);
+  TrainMeshSpec mesh{"pair", "pinion", "gear", 0.0, std::nullopt, k, {}, 0.06, std::nullopt};
+  mesh.transmission_error.addFourier({4e-6, 1.5e-6}, {0.2, -0.4});
+  spec.meshes = {mesh};
+  const double speed = 2100.0 * std::numbers::pi / 30.0, torque = 80.0;
+  spec.operating = {"pinion_shaft", speed, torque, "gear_shaft"};
+  const GearTrainModel train(spec);
+  const TrainMesh& m = train.meshes()[0];
+
+  GearPairModelSpec sdof;
+  sdof.mass = equivalentMass(2e-3, m.base_radius_a, 9e-3, m.base_radius_b);
+  EXPECT_NEAR(sdof.mass, m.equivalent_mass, 1e-12 * sdof.mass);
+  sdof.damping = m.damping;
+  sdof.mean_force = torque / m.base_radius_a;
+  sdof.stiffness = k;
+  sdof.mesh_frequency = m.frequency_ratio * speed;
+  sdof.transmission_error = m.transmission_error;
+  const GearPairModel pair(sdof);
+  TimeResponseOptions options;
+  options.method = TimeIntegrator::kDormandPrince;
+  options.relative_tolerance = 1e-10;
+  options.steady_tolerance = 1e-9;
+  const TimeResponse reference = solveTimeResponse(pair, options);
+  ASSERT_TRUE(reference.converged()) << reference.message;
+
+  TrainSteadyOptions steady;
+  steady.mesh_harmonics = 40;
+  const TrainSteadyState s = solveTrainSteadyState(train, speed, steady);
+  Eigen::VectorXd t(static_cast<Eigen::Index>(reference.t.size()));
+  for (std::size_t i = 0; i < reference.t.size(); ++i) t(i) = reference.t[i];
+  const Eigen::MatrixXd q = s.displacement(t);
+  double worst = 0.0;
+  for (Eigen::Index i = 0; i < t.size(); ++i) {
+    double x = 0.0;
+    for (std::size_t d = 0; d < m.dofs.size(); ++d) x += m.gradient[d] * q(i, m.dofs[d]);
+    const double phi = m.phaseAt(t(i), speed);
+    const double f_train = k->stiffness(phi) * (x - m.transmission_error.value(phi));
+    const double f_sdof = k->stiffness(phi) * (reference.x[i] - m.transmission_error.value(phi));
+    worst = std::max(worst, std::abs(f_train - f_sdof));
+  }
+  EXPECT_LT(worst, 1e-7 * sdof.mean_force);
+  ::testing::Test::RecordProperty("relative_difference", std::to_string(worst / sdof.mean_force));
 }
 
 }  // namespace

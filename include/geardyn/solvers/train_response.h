@@ -12,7 +12,8 @@
 /// the mesh frequencies, from the tooth counts); with q(t) = Σ_{|h|≤H} X_h e^{i h ω₀ t},
 ///
 ///   [K + Ω²K_Ω + i h ω₀ (C + ΩG₁) − h²ω₀² M] X_h + Σ_m v_m v_mᵀ Σ_j k̂_{m,j} X_{h−j}
-///       = F₀ δ_h0 + Σ_m v_m (k e)^_{m,h},
+///       = F₀ δ_h0 + Σ_m v_m [(k e)^_{m,h} + i h ω₀ c_m ê_{m,h}],
+/// (the mesh dashpot acts on the rate of the tooth deformation, (δ − e)˙, as in the SDOF model),
 ///
 /// where k̂_{m,j} = c_l e^{i 2π l φ_m0} for j = l P_m (c_l the Fourier coefficients of k_m over
 /// one mesh period, exact for piecewise models), truncated at |l| <= L mesh harmonics and
@@ -109,7 +110,7 @@ class TrainSteadySolver {
   TrainBaseFrequency base_;
   int harmonics_ = 0;
   // [mesh][L + l]: Fourier coefficient l of k_m and of k_m e_m, with the mesh phase applied.
-  std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_;
+  std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
 };
 
 /// One speed: TrainSteadySolver(model, options).solve(input_speed).

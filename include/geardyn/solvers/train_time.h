@@ -3,7 +3,9 @@
 /// Newmark time integration of a gear train at constant input speed with the time-varying
 /// stiffness of every mesh:
 ///
-///   M q̈ + (C + Ω G₁) q̇ + (K + Ω² K_Ω + Σ_m k_m(φ_m(t)) v_m v_mᵀ) q = F₀ + Σ_m k_m e_m v_m.
+///   M q̈ + (C + Ω G₁) q̇ + (K + Ω² K_Ω + Σ_m k_m(φ_m(t)) v_m v_mᵀ) q
+///       = F₀ + Σ_m (k_m e_m + c_m ė_m) v_m
+/// (the mesh dashpot acts on the rate of the tooth deformation (δ − e)˙, as in the SDOF model).
 ///
 /// Cost: the effective matrix A = K̄ + a₀ M + a₁ (C + Ω G₁) (K̄ with the mean meshes) is
 /// factorised once; the r meshes vary it by V D(t) Vᵀ with D = diag(k_m(t) − k̄_m), which the
@@ -55,7 +57,7 @@ class TrainNewmarkStepper {
   double meshForce(int mesh) const;
 
  private:
-  void meshState(double t);  // fills dk_ (k − k̄) and ke_ (k e) of every mesh at t
+  void meshState(double t);  // fills dk_ (k − k̄) and ke_ (k e + c ė) of every mesh at t
 
   const GearTrainModel& model_;
   double speed_, dt_, beta_, gamma_, a0_, a1_, a2_, a3_, a4_, a5_, t_ = 0.0;
