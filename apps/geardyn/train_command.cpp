@@ -290,12 +290,7 @@ int runTime(const GearTrainModel& model, const io::Config& analysis, io::ResultW
     for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) row.push_back(r.mesh_force(k, m));
     if (compare) {
       for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-        const TrainMesh& mesh = model.meshes()[m];
-        const double phi = mesh.phaseAt(r.t(k), speed);
-        double d = 0.0;
-        for (std::size_t i = 0; i < mesh.dofs.size(); ++i)
-          d += mesh.gradient[i] * q(k, mesh.dofs[i]);
-        const double f = mesh.stiffness->stiffness(phi) * (d - mesh.transmission_error.value(phi));
+        const double f = model.meshes()[m].force(r.t(k), speed, q.row(k).transpose());
         worst[m] = std::max(worst[m], std::abs(f - r.mesh_force(k, static_cast<Eigen::Index>(m))));
         row.push_back(f);
       }

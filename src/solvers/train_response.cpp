@@ -41,12 +41,6 @@ Eigen::VectorXd deformation(const TrainElement& e, const Eigen::VectorXd& q) {
   return e.jacobian * local;
 }
 
-double meshDeflection(const TrainMesh& m, const Eigen::VectorXd& q) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < m.dofs.size(); ++i) d += m.gradient[i] * q(m.dofs[i]);
-  return d;
-}
-
 /// Mass-normalised rigid-body modes of (K, M): eigenvalues below 1e-10 of the largest.
 Eigen::MatrixXd rigidModes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (K + K.transpose()),
@@ -89,8 +83,7 @@ TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_spe
   }
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
     const TrainMesh& mesh = model.meshes()[m];
-    r.mesh_force.push_back(mesh.mean_stiffness *
-                           (meshDeflection(mesh, r.displacement) - mean_error[m]));
+    r.mesh_force.push_back(mesh.mean_stiffness * (mesh.deflection(r.displacement) - mean_error[m]));
   }
   for (const TrainElement& e : model.elements()) {
     r.element_force.push_back((e.local_stiffness * deformation(e, r.displacement)).norm());
@@ -334,10 +327,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const TrainMesh& mesh = meshes[m];
     for (int k = 0; k < samples; ++k) {
-      const double phi = mesh.phaseAt(s.t(k), input_speed);
-      s.mesh_force(k, m) =
-          mesh.stiffness->stiffness(phi) *
-          (meshDeflection(mesh, q.row(k).transpose()) - mesh.transmission_error.value(phi));
+      s.mesh_force(k, m) = mesh.force(s.t(k), input_speed, q.row(k).transpose());
     }
     const Eigen::VectorXd f = s.mesh_force.col(m);
     s.mesh_force_mean.push_back(f.mean());

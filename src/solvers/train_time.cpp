@@ -117,9 +117,7 @@ void TrainNewmarkStepper::step() {
 }
 
 double TrainNewmarkStepper::meshForce(int mesh) const {
-  const TrainMesh& m = model_.meshes()[mesh];
-  const double phi = m.phaseAt(t_, speed_);
-  return m.stiffness->stiffness(phi) * (V_.col(mesh).dot(q_) - m.transmission_error.value(phi));
+  return model_.meshes()[mesh].force(t_, speed_, q_);
 }
 
 TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,

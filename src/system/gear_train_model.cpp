@@ -83,6 +83,18 @@ double TrainMesh::phaseAt(double t, double input_speed) const {
   return frequency_ratio * std::abs(input_speed) * t + phase;
 }
 
+double TrainMesh::deflection(const Eigen::Ref<const Eigen::VectorXd>& q) const {
+  double d = 0.0;
+  for (std::size_t i = 0; i < dofs.size(); ++i) d += gradient[i] * q(dofs[i]);
+  return d;
+}
+
+double TrainMesh::force(double t, double input_speed,
+                        const Eigen::Ref<const Eigen::VectorXd>& q) const {
+  const double phi = phaseAt(t, input_speed);
+  return stiffness->stiffness(phi) * (deflection(q) - transmission_error.value(phi));
+}
+
 GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {
   buildBodies();
   buildMeshes();

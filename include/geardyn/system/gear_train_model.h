@@ -72,6 +72,10 @@ struct TrainMesh {
   double phase = 0.0;  ///< φ_m0 [mesh periods]
   /// Mesh phase at time t for the input speed Ω [rad/s].
   double phaseAt(double t, double input_speed) const;
+  /// The mesh deflection vᵀq [m] of a state q (all the model's DOFs).
+  double deflection(const Eigen::Ref<const Eigen::VectorXd>& q) const;
+  /// The elastic mesh force k(φ) (vᵀq − e(φ)) at time t [N].
+  double force(double t, double input_speed, const Eigen::Ref<const Eigen::VectorXd>& q) const;
 };
 
 /// A stiffness/damping element for reports (strain energy per component): its DOFs and its
