@@ -23,7 +23,9 @@ namespace geardyn {
 
 /// Degrees of freedom of every body: its rotation only, or its rotation and the translation
 /// of its centre in the transverse plane (the classic lumped gear model, Lin & Parker 1999).
-enum class TrainDofs { kTorsional, kPlanar };
+/// kFull: six per node (axial, two lateral translations, torsion and two tilts), needed for
+/// flexible (FE) shafts, helical axial forces and gyroscopic coupling.
+enum class TrainDofs { kTorsional, kPlanar, kFull };
 
 /// A rigid body turning about an axis parallel to x: a shaft with what is mounted on it, a
 /// carrier, a ring held by the housing. Mass and inertia are its own; the bodies of its gears
@@ -36,6 +38,28 @@ struct TrainShaftSpec {
   /// diameters [m] (one value or one per section), density [kg/m³].
   std::vector<double> section_lengths, outer_diameters, inner_diameters;
   double density = 7850.0;
+  /// Flexible shaft: the sections become two-node Timoshenko beam elements (6 DOFs per node,
+  /// requires TrainDofs::kFull); false: one rigid body.
+  bool flexible = false;
+  double youngs_modulus = 2.1e11;  ///< [Pa] (flexible shafts)
+  double poisson_ratio = 0.3;      ///< [-] (flexible shafts; G = E / (2 (1 + ν)))
+  /// Longest beam element [m]: sections longer than this are split evenly (flexible shafts;
+  /// absent: one element per section, plus nodes at every gear, bearing and disk position).
+  std::optional<double> max_element_length;
+  /// Global x of the shaft's first section start [m] (positions along the shaft are measured
+  /// from here).
+  double axial_offset = 0.0;
+};
+
+/// A rigid disk (an inertia: flywheel, rotor of a motor, brake disk) on a shaft at an axial
+/// position.
+struct TrainDiskSpec {
+  std::string name;
+  std::string shaft;
+  double position = 0.0;           ///< along the shaft from its first section start [m]
+  double mass = 0.0;               ///< [kg]
+  double polar_inertia = 0.0;      ///< about the shaft axis [kg m²]
+  double diametral_inertia = 0.0;  ///< about a transverse axis [kg m²]
 };
 
 /// A gear on a shaft. `internal` makes it a ring gear (internal teeth, e.g. a planetary ring).
@@ -46,6 +70,9 @@ struct TrainGearSpec {
   bool internal = false;
   /// Add the gear body's mass and polar inertia (from its geometry) to the shaft.
   bool body = true;
+  /// Axial position of the gear's mid-face along its shaft, from the shaft's first section
+  /// start [m] (used by flexible shafts and full DOFs).
+  double position = 0.0;
 };
 
 /// A mesh between two gears on two shafts with fixed axes (a parallel-axis stage, an idler).
@@ -76,6 +103,11 @@ struct TrainBearingSpec {
   double kyy = 0, kzz = 0, kyz = 0, kzy = 0;
   double cyy = 0, czz = 0, cyz = 0, czy = 0;
   double k_torsion = 0, c_torsion = 0;
+  /// Axial stiffness/damping [N/m, N s/m] and tilt stiffness/damping about the two transverse
+  /// axes [N m/rad, N m s/rad] (full DOFs only).
+  double k_axial = 0, c_axial = 0, k_tilt = 0, c_tilt = 0;
+  /// Axial position along `shaft` and along `other_shaft` from their first section starts [m].
+  double position = 0.0, other_position = 0.0;
 };
 
 /// A coupling between two coaxial shafts (motor to input, output to load): torsional and
@@ -129,6 +161,7 @@ struct GearTrainSpec {
   std::vector<TrainMeshSpec> meshes;
   std::vector<TrainBearingSpec> bearings;
   std::vector<TrainCouplingSpec> couplings;
+  std::vector<TrainDiskSpec> disks;
   std::vector<PlanetaryStageSpec> stages;
   OperatingPoint operating;
   double mass_proportional_damping = 0.0;       ///< α [1/s]
