@@ -99,9 +99,9 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const io::Config& confi
 }  // namespace
 
 const std::vector<std::string>& gearboxSectionNames() {
-  static const std::vector<std::string> names = {"gearbox",   "shafts",          "gears",
-                                                 "meshes",    "bearings",        "couplings",
-                                                 "planetary", "operating_point", "mesh_stiffness"};
+  static const std::vector<std::string> names = {
+      "gearbox",   "shafts", "gears",     "meshes",          "bearings",
+      "couplings", "disks",  "planetary", "operating_point", "mesh_stiffness"};
   return names;
 }
 
@@ -109,9 +109,11 @@ void addGearboxSections(io::ConfigSchema& schema) {
   schema.section("gearbox", "The gearbox as a whole.");
   schema.string("gearbox.name").defaultValue("").doc("free text");
   schema.string("gearbox.dofs")
-      .choices({"torsional", "planar"})
+      .choices({"torsional", "planar", "full"})
       .defaultValue("planar")
-      .doc("DOFs of every body: rotation only, or rotation and the translation of its centre");
+      .doc(
+          "DOFs of every body: rotation only; rotation and the translation of its centre; or "
+          "all six per node (axial, tilts; required by flexible shafts)");
   schema.real("gearbox.mass_proportional_damping")
       .unit("1/s")
       .min(0.0)
@@ -146,6 +148,29 @@ void addGearboxSections(io::ConfigSchema& schema) {
       .defaultValue(Json::array())
       .doc("bores: one per section, one for all, or none (solid)");
   schema.real("shafts.*.density").unit("kg/m^3").positive().defaultValue(7850.0).doc("ρ");
+  schema.boolean("shafts.*.flexible")
+      .defaultValue(false)
+      .doc("Timoshenko beam elements over the sections (dofs = \"full\"); false: rigid body");
+  schema.real("shafts.*.youngs_modulus")
+      .unit("Pa")
+      .positive()
+      .defaultValue(2.1e11)
+      .doc("E of a flexible shaft");
+  schema.real("shafts.*.poisson_ratio")
+      .unit("-")
+      .min(0.0)
+      .max(0.5)
+      .defaultValue(0.3)
+      .doc("ν of a flexible shaft (G = E / 2(1 + ν))");
+  schema.real("shafts.*.max_element_length")
+      .unit("m")
+      .positive()
+      .optional()
+      .doc("longest beam element (default: one per section, split at every gear, bearing, disk)");
+  schema.real("shafts.*.axial_offset")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("global x of the first section's start; positions on the shaft count from it");
 
   schema.collection("gears", "Gears on shafts.");
   io::addGearSection(schema, "gears.*", "gear (internal = true makes it a ring gear)", true);
@@ -154,6 +179,10 @@ void addGearboxSections(io::ConfigSchema& schema) {
   schema.boolean("gears.*.body")
       .defaultValue(true)
       .doc("add the gear body's mass and inertia to its shaft (external gears)");
+  schema.real("gears.*.position")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("mid-face position along the shaft from its first section's start");
 
   schema.collection("meshes",
                     "Meshes between two gears on fixed axes (planetary meshes come "
@@ -193,11 +222,40 @@ void addGearboxSections(io::ConfigSchema& schema) {
            {"cyz", "N s/m", "cross damping"},
            {"czy", "N s/m", "cross damping"},
            {"k_torsion", "N m/rad", "torsional stiffness (to the housing: the shaft is held)"},
-           {"c_torsion", "N m s/rad", "torsional damping"}}) {
+           {"c_torsion", "N m s/rad", "torsional damping"},
+           {"k_axial", "N/m", "axial stiffness (dofs = \"full\")"},
+           {"c_axial", "N s/m", "axial damping"},
+           {"k_tilt", "N m/rad", "tilt stiffness about each transverse axis (dofs = \"full\")"},
+           {"c_tilt", "N m s/rad", "tilt damping"}}) {
     auto k = schema.real(std::string("bearings.*.") + key).unit(unit).defaultValue(0.0).doc(doc);
     if (std::string(key).size() == 3 && key[1] == key[2]) k.min(0.0);
     if (std::string(key).rfind("k_", 0) == 0 || std::string(key).rfind("c_", 0) == 0) k.min(0.0);
   }
+
+  schema.real("bearings.*.position")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("position along `shaft` from its first section's start");
+  schema.real("bearings.*.other_position")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("position along `other_shaft`");
+
+  schema.collection("disks", "Rigid disks (inertias) on shafts: flywheels, motor rotors.");
+  schema.section("disks.*", "One disk.");
+  schema.string("disks.*.shaft").required().doc("the shaft it sits on");
+  schema.real("disks.*.position").unit("m").defaultValue(0.0).doc("position along the shaft");
+  schema.real("disks.*.mass").unit("kg").min(0.0).defaultValue(0.0).doc("mass");
+  schema.real("disks.*.polar_inertia")
+      .unit("kg m^2")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("about the shaft axis");
+  schema.real("disks.*.diametral_inertia")
+      .unit("kg m^2")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("about a transverse axis");
 
   schema.collection("couplings", "Couplings between two coaxial shafts (one speed).");
   schema.section("couplings.*", "One coupling.");
@@ -312,15 +370,26 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
   spec.stiffness_proportional_damping = config.real("gearbox.stiffness_proportional_damping");
   for (const std::string& name : config.names("shafts")) {
     const std::string p = "shafts." + name + ".";
-    spec.shafts.push_back({name, config.real(p + "mass"), config.real(p + "polar_inertia"),
-                           config.realList(p + "section_lengths"),
-                           config.realList(p + "outer_diameters"),
-                           config.realList(p + "inner_diameters"), config.real(p + "density")});
+    TrainShaftSpec s;
+    s.name = name;
+    s.mass = config.real(p + "mass");
+    s.polar_inertia = config.real(p + "polar_inertia");
+    s.section_lengths = config.realList(p + "section_lengths");
+    s.outer_diameters = config.realList(p + "outer_diameters");
+    s.inner_diameters = config.realList(p + "inner_diameters");
+    s.density = config.real(p + "density");
+    s.flexible = config.boolean(p + "flexible");
+    s.youngs_modulus = config.real(p + "youngs_modulus");
+    s.poisson_ratio = config.real(p + "poisson_ratio");
+    s.max_element_length = config.optionalReal(p + "max_element_length");
+    s.axial_offset = config.real(p + "axial_offset");
+    spec.shafts.push_back(std::move(s));
   }
   for (const std::string& name : config.names("gears")) {
     const std::string p = "gears." + name;
     spec.gears.push_back({name, config.string(p + ".shaft"), io::gearSpecFromConfig(config, p),
-                          config.boolean(p + ".internal"), config.boolean(p + ".body")});
+                          config.boolean(p + ".internal"), config.boolean(p + ".body"),
+                          config.real(p + ".position")});
   }
   auto gear_named = [&](const std::string& gear, const std::string& key) -> const TrainGearSpec& {
     for (const auto& g : spec.gears) {
@@ -375,7 +444,17 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     b.cyy = config.real(p + "cyy"), b.czz = config.real(p + "czz");
     b.cyz = config.real(p + "cyz"), b.czy = config.real(p + "czy");
     b.k_torsion = config.real(p + "k_torsion"), b.c_torsion = config.real(p + "c_torsion");
+    b.k_axial = config.real(p + "k_axial"), b.c_axial = config.real(p + "c_axial");
+    b.k_tilt = config.real(p + "k_tilt"), b.c_tilt = config.real(p + "c_tilt");
+    b.position = config.real(p + "position");
+    b.other_position = config.real(p + "other_position");
     spec.bearings.push_back(b);
+  }
+  for (const std::string& name : config.names("disks")) {
+    const std::string p = "disks." + name + ".";
+    spec.disks.push_back({name, config.string(p + "shaft"), config.real(p + "position"),
+                          config.real(p + "mass"), config.real(p + "polar_inertia"),
+                          config.real(p + "diametral_inertia")});
   }
   for (const std::string& name : config.names("couplings")) {
     const std::string p = "couplings." + name + ".";

@@ -56,13 +56,22 @@ void addSections(const TrainShaftSpec& shaft, double& mass, double& inertia) {
 }  // namespace
 
 std::string toString(TrainDofs dofs) {
-  return dofs == TrainDofs::kPlanar ? "planar" : "torsional";
+  switch (dofs) {
+    case TrainDofs::kTorsional:
+      return "torsional";
+    case TrainDofs::kPlanar:
+      return "planar";
+    case TrainDofs::kFull:
+      return "full";
+  }
+  return "?";
 }
 
 TrainDofs parseTrainDofs(const std::string& text, const std::string& key) {
   if (text == "planar") return TrainDofs::kPlanar;
   if (text == "torsional") return TrainDofs::kTorsional;
-  throw InputError(key, "\"" + text + "\"", "\"torsional\" or \"planar\"");
+  if (text == "full") return TrainDofs::kFull;
+  throw InputError(key, "\"" + text + "\"", "\"torsional\", \"planar\" or \"full\"");
 }
 
 std::string toString(TrainMeshKind kind) {
@@ -96,6 +105,11 @@ double TrainMesh::force(double t, double input_speed,
 }
 
 GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {
+  if (spec_.dofs == TrainDofs::kFull) {
+    throw InputError("gearbox.dofs", "\"full\"",
+                     "\"torsional\" or \"planar\" in this build (six DOFs per node and "
+                     "flexible shafts are being assembled)");
+  }
   buildBodies();
   buildMeshes();
   buildElements();
@@ -141,11 +155,17 @@ void GearTrainModel::buildBodies() {
   for (const auto& b : spec_.bearings) unique(b.name, "bearings." + b.name);
   for (const auto& c : spec_.couplings) unique(c.name, "couplings." + c.name);
   for (const auto& st : spec_.stages) unique(st.name, "planetary." + st.name);
+  for (const auto& d : spec_.disks) unique(d.name, "disks." + d.name);
 
   for (const auto& shaft : spec_.shafts) {
     TrainBody body;
     body.name = shaft.name;
     const std::string key = "shafts." + shaft.name;
+    if (shaft.flexible && spec_.dofs != TrainDofs::kFull) {
+      throw InputError(key + ".flexible", "true",
+                       "false with dofs = \"" + toString(spec_.dofs) +
+                           "\" (a flexible shaft needs gearbox.dofs = \"full\")");
+    }
     requireNonNegative(shaft.mass, key + ".mass", "kg");
     requireNonNegative(shaft.polar_inertia, key + ".polar_inertia", "kg m^2");
     body.mass = shaft.mass;
@@ -162,6 +182,15 @@ void GearTrainModel::buildBodies() {
       bodies_[b].mass += mass.mass;
       bodies_[b].polar_inertia += mass.polar_inertia;
     }
+  }
+  for (const auto& disk : spec_.disks) {
+    const std::string key = "disks." + disk.name;
+    const int b = detail::shaftBodyOf(*this, spec_, disk.shaft, key + ".shaft");
+    requireNonNegative(disk.mass, key + ".mass", "kg");
+    requireNonNegative(disk.polar_inertia, key + ".polar_inertia", "kg m^2");
+    requireNonNegative(disk.diametral_inertia, key + ".diametral_inertia", "kg m^2");
+    bodies_[b].mass += disk.mass;
+    bodies_[b].polar_inertia += disk.polar_inertia;
   }
   // Planets: one body each, in the stage's carrier frame.
   for (std::size_t s = 0; s < spec_.stages.size(); ++s) {
