@@ -114,6 +114,11 @@ void addGearboxSections(io::ConfigSchema& schema) {
       .doc(
           "DOFs of every body: rotation only; rotation and the translation of its centre; or "
           "all six per node (axial, tilts; required by flexible shafts)");
+  schema.real("gearbox.gravity")
+      .unit("m/s^2")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("gravity along −z on every mass (planar and full DOFs; e.g. 9.81)");
   schema.real("gearbox.mass_proportional_damping")
       .unit("1/s")
       .min(0.0)
@@ -135,6 +140,11 @@ void addGearboxSections(io::ConfigSchema& schema) {
       .min(0.0)
       .defaultValue(0.0)
       .doc("own polar moment of inertia");
+  schema.real("shafts.*.diametral_inertia")
+      .unit("kg m^2")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("own inertia about a transverse axis through its mass centre (dofs = \"full\")");
   schema.realList("shafts.*.section_lengths")
       .unit("m")
       .defaultValue(Json::array())
@@ -203,6 +213,11 @@ void addGearboxSections(io::ConfigSchema& schema) {
       .optional()
       .doc("mesh phase at t = 0 in mesh periods (default 0)");
   addMeshModelKeys(schema, "meshes.*.", "this mesh");
+  schema.real("meshes.*.damping")
+      .unit("N s/m")
+      .min(0.0)
+      .optional()
+      .doc("mesh dashpot along the line of action (replaces damping_ratio)");
 
   schema.collection("bearings",
                     "Linear bearings from a shaft to the housing or to another "
@@ -347,6 +362,14 @@ void addGearboxSections(io::ConfigSchema& schema) {
   schema.string("operating_point.output")
       .required()
       .doc("the shaft that takes the balancing load (lossless train)");
+  schema.real("operating_point.input_position")
+      .unit("m")
+      .optional()
+      .doc("where the input torque acts along a flexible input shaft (default: its start)");
+  schema.real("operating_point.output_position")
+      .unit("m")
+      .optional()
+      .doc("where the load torque acts along a flexible output shaft (default: its end)");
 
   schema.section("mesh_stiffness", "Options of the mesh-stiffness models, shared by the meshes.");
   io::addMeshStiffnessModelSections(schema);
@@ -367,6 +390,7 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
   spec.name = config.string("gearbox.name");
   spec.dofs = parseTrainDofs(config.string("gearbox.dofs"), "gearbox.dofs");
   spec.mass_proportional_damping = config.real("gearbox.mass_proportional_damping");
+  spec.gravity = config.real("gearbox.gravity");
   spec.stiffness_proportional_damping = config.real("gearbox.stiffness_proportional_damping");
   for (const std::string& name : config.names("shafts")) {
     const std::string p = "shafts." + name + ".";
@@ -374,6 +398,7 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     s.name = name;
     s.mass = config.real(p + "mass");
     s.polar_inertia = config.real(p + "polar_inertia");
+    s.diametral_inertia = config.real(p + "diametral_inertia");
     s.section_lengths = config.realList(p + "section_lengths");
     s.outer_diameters = config.realList(p + "outer_diameters");
     s.inner_diameters = config.realList(p + "inner_diameters");
@@ -411,6 +436,7 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     m.centre_distance = config.optionalReal(p + "centre_distance");
     if (config.has(p + "phase")) m.phase = config.real(p + "phase");
     m.damping_ratio = config.real(p + "damping_ratio");
+    m.damping = config.optionalReal(p + "damping");
     m.transmission_error = teFromConfig(config, p);
     const TrainGearSpec& a = gear_named(m.gear_a, p + "gears");
     const TrainGearSpec& b = gear_named(m.gear_b, p + "gears");
@@ -511,6 +537,8 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
   spec.operating.output_shaft = config.string("operating_point.output");
   spec.operating.input_speed = config.real("operating_point.speed_rpm") * kRpm;
   spec.operating.input_torque = config.real("operating_point.torque");
+  spec.operating.input_position = config.optionalReal("operating_point.input_position");
+  spec.operating.output_position = config.optionalReal("operating_point.output_position");
   return spec;
 }
 

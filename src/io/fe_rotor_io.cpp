@@ -398,8 +398,12 @@ FeRotorBuild feRotorSpecFromConfig(const Config& config, const std::string& stif
   g.line_of_action_angle = config.has("mesh.line_of_action_angle_deg")
                                ? config.real("mesh.line_of_action_angle_deg") * kDeg
                                : pair.operatingPressureAngle();
-  // The pinion's helix sign is the hand: β_b > 0 for a right-hand pinion.
-  g.base_helix_angle = std::copysign(pair.baseHelixAngle(), pair.spec().pinion.helix_angle);
+  // The hand sets the axial component of the normal: the contact line of a right-hand flank
+  // runs along the base helix cos β_b x̂ + sin β_b t (t the pinion's sense of rotation, the
+  // direction the line of action takes here), so the normal is cos β_b t − sin β_b x̂: β_b < 0
+  // for a right-hand pinion (a right-hand driver turning about +x pushes the gear towards −x;
+  // docs/theory/gear_trains.md). Before 2026-11 this sign was the opposite.
+  g.base_helix_angle = -std::copysign(pair.baseHelixAngle(), pair.spec().pinion.helix_angle);
   g.pinion_base_radius = pair.pinion().base_radius;
   g.gear_base_radius = pair.gear().base_radius;
   g.line_of_action_length = pair.lineOfActionLength();

@@ -23,17 +23,18 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// central members without translating them, translational modes without rotating them,
 /// planet modes not at all).
 void describe(const GearTrainModel& model, TrainMode& mode) {
+  // Kinetic energy per DOF, Re(x̄_i (M x)_i) (M is not diagonal with beam elements); a body's
+  // rotation is its θ_x, everything else (translations, tilts) counts as translation.
+  const Eigen::VectorXcd Mx = model.mass().cast<std::complex<double>>() * mode.shape;
+  const Eigen::VectorXd kinetic = (mode.shape.conjugate().array() * Mx.array()).real();
   const int per = model.dofsPerBody();
-  const Eigen::VectorXd md = model.mass().diagonal();
   const auto& bodies = model.bodies();
   std::vector<double> rot(bodies.size(), 0.0), trans(bodies.size(), 0.0);
   double total = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const int r = model.rotationDof(static_cast<int>(b));
-    rot[b] = md(r) * std::norm(mode.shape(r));
-    if (per == 3) {
-      const int y = bodies[b].first_dof;
-      trans[b] = md(y) * std::norm(mode.shape(y)) + md(y + 1) * std::norm(mode.shape(y + 1));
+    for (int d = bodies[b].first_dof; d < bodies[b].first_dof + per; ++d) {
+      (d == r ? rot[b] : trans[b]) += kinetic(d);
     }
     total += rot[b] + trans[b];
   }

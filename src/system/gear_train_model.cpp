@@ -24,35 +24,6 @@ void requireNonNegative(double value, const std::string& key, const std::string&
   }
 }
 
-/// Mass and polar inertia of solid-of-revolution sections.
-void addSections(const TrainShaftSpec& shaft, double& mass, double& inertia) {
-  const std::string key = "shafts." + shaft.name;
-  const std::size_t n = shaft.section_lengths.size();
-  auto item = [&](const std::vector<double>& values, std::size_t i, const char* name) {
-    if (values.empty()) return 0.0;
-    if (values.size() == 1) return values[0];
-    if (values.size() != n) {
-      throw InputError(key + "." + name, fmt::format("{} values", values.size()),
-                       fmt::format("one value or one per section ({})", n));
-    }
-    return values[i];
-  };
-  for (std::size_t i = 0; i < n; ++i) {
-    const double length = shaft.section_lengths[i];
-    const double ro = 0.5 * item(shaft.outer_diameters, i, "outer_diameters");
-    const double ri = 0.5 * item(shaft.inner_diameters, i, "inner_diameters");
-    if (!(length > 0.0) || !(ro > 0.0) || !(ri >= 0.0 && ri < ro)) {
-      throw InputError(key + ".section_lengths",
-                       fmt::format("section {}: length {:g} m, diameters {:g}/{:g} m", i, length,
-                                   2 * ro, 2 * ri),
-                       "lengths > 0 and 0 <= inner < outer diameter");
-    }
-    const double m = shaft.density * std::numbers::pi * (ro * ro - ri * ri) * length;
-    mass += m;
-    inertia += 0.5 * m * (ro * ro + ri * ri);
-  }
-}
-
 }  // namespace
 
 std::string toString(TrainDofs dofs) {
@@ -105,10 +76,11 @@ double TrainMesh::force(double t, double input_speed,
 }
 
 GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {
-  if (spec_.dofs == TrainDofs::kFull) {
-    throw InputError("gearbox.dofs", "\"full\"",
-                     "\"torsional\" or \"planar\" in this build (six DOFs per node and "
-                     "flexible shafts are being assembled)");
+  if (spec_.dofs == TrainDofs::kFull && !spec_.stages.empty()) {
+    throw InputError("planetary." + spec_.stages[0].name, "",
+                     "gearbox.dofs = \"torsional\" or \"planar\": planetary stages are "
+                     "formulated in the transverse plane (Lin & Parker 1999); six DOFs per body "
+                     "are for parallel-axis trains");
   }
   buildBodies();
   buildMeshes();
@@ -117,6 +89,9 @@ GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {
 }
 
 int GearTrainModel::bodyIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < spec_.shafts.size(); ++i) {
+    if (spec_.shafts[i].name == name) return shaft_body_[i];
+  }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (bodies_[i].name == name) return static_cast<int>(i);
   }
@@ -124,18 +99,18 @@ int GearTrainModel::bodyIndex(const std::string& name) const {
 }
 
 int GearTrainModel::rotationDof(int body) const {
-  return bodies_[body].first_dof + (spec_.dofs == TrainDofs::kPlanar ? 2 : 0);
+  return bodies_[body].first_dof + (spec_.dofs == TrainDofs::kTorsional ? 0 : 2);
 }
 
 int GearTrainModel::translationDof(int body) const {
-  return spec_.dofs == TrainDofs::kPlanar ? bodies_[body].first_dof : -1;
+  return spec_.dofs == TrainDofs::kTorsional ? -1 : bodies_[body].first_dof;
 }
 
 std::string GearTrainModel::dofName(int i) const {
   const int per = dofsPerBody();
   const int body = i / per;
-  static constexpr const char* kNames[3] = {"y", "z", "theta"};
-  return bodies_[body].name + "." + (per == 3 ? kNames[i % 3] : "theta");
+  static constexpr const char* kNames[6] = {"y", "z", "theta", "x", "theta_y", "theta_z"};
+  return bodies_[body].name + "." + (per == 1 ? "theta" : kNames[i % per]);
 }
 
 void GearTrainModel::buildBodies() {
@@ -157,40 +132,78 @@ void GearTrainModel::buildBodies() {
   for (const auto& st : spec_.stages) unique(st.name, "planetary." + st.name);
   for (const auto& d : spec_.disks) unique(d.name, "disks." + d.name);
 
-  for (const auto& shaft : spec_.shafts) {
-    TrainBody body;
-    body.name = shaft.name;
+  const bool full = spec_.dofs == TrainDofs::kFull;
+  shaft_nodes_.assign(spec_.shafts.size(), {});
+  std::vector<detail::MassSum> rigid(spec_.shafts.size());
+  for (std::size_t s = 0; s < spec_.shafts.size(); ++s) {
+    const TrainShaftSpec& shaft = spec_.shafts[s];
     const std::string key = "shafts." + shaft.name;
-    if (shaft.flexible && spec_.dofs != TrainDofs::kFull) {
+    if (shaft.flexible && !full) {
       throw InputError(key + ".flexible", "true",
                        "false with dofs = \"" + toString(spec_.dofs) +
                            "\" (a flexible shaft needs gearbox.dofs = \"full\")");
     }
     requireNonNegative(shaft.mass, key + ".mass", "kg");
     requireNonNegative(shaft.polar_inertia, key + ".polar_inertia", "kg m^2");
-    body.mass = shaft.mass;
-    body.polar_inertia = shaft.polar_inertia;
-    addSections(shaft, body.mass, body.polar_inertia);
+    requireNonNegative(shaft.diametral_inertia, key + ".diametral_inertia", "kg m^2");
+    if (!std::isfinite(shaft.axial_offset)) {
+      throw InputError(key + ".axial_offset", fmt::format("{:g} m", shaft.axial_offset),
+                       "a finite position");
+    }
+    if (shaft.flexible) {
+      buildShaftNodes(static_cast<int>(s));
+      shaft_body_.push_back(shaft_nodes_[s].front());
+      continue;
+    }
+    TrainBody body;
+    body.name = shaft.name;
+    body.shaft = static_cast<int>(s);
+    detail::addSectionMasses(detail::shaftSections(shaft), rigid[s]);
     shaft_body_.push_back(static_cast<int>(bodies_.size()));
+    shaft_nodes_[s] = {static_cast<int>(bodies_.size())};
     bodies_.push_back(body);
   }
+  // A mass mounted at `position` on shaft s: on the node there (flexible) or into the rigid
+  // body's sums.
+  auto mount = [&](int s, double position, const std::string& key, double mass, double polar,
+                   double diametral) {
+    const int b = bodyAt(s, position, key + ".position");
+    if (spec_.shafts[s].flexible) {
+      bodies_[b].mass += mass;
+      bodies_[b].polar_inertia += polar;
+      bodies_[b].diametral_inertia += diametral;
+    } else {
+      rigid[s].add(mass, polar, diametral, position);
+    }
+  };
   for (const auto& gear : spec_.gears) {
-    const int b = detail::shaftBodyOf(*this, spec_, gear.shaft, "gears." + gear.name + ".shaft");
-    gear.gear.validate("gears." + gear.name);
+    const std::string key = "gears." + gear.name;
+    const int s = detail::shaftIndexOf(spec_, gear.shaft, key + ".shaft");
+    bodyAt(s, gear.position, key + ".position");
+    gear.gear.validate(key);
     if (gear.body && !gear.internal) {
-      const GearBodyMass mass = gearBodyMass(gear.gear);
-      bodies_[b].mass += mass.mass;
-      bodies_[b].polar_inertia += mass.polar_inertia;
+      const GearBodyMass m = gearBodyMass(gear.gear);
+      mount(s, gear.position, key, m.mass, m.polar_inertia, m.diametral_inertia);
     }
   }
   for (const auto& disk : spec_.disks) {
     const std::string key = "disks." + disk.name;
-    const int b = detail::shaftBodyOf(*this, spec_, disk.shaft, key + ".shaft");
+    const int s = detail::shaftIndexOf(spec_, disk.shaft, key + ".shaft");
     requireNonNegative(disk.mass, key + ".mass", "kg");
     requireNonNegative(disk.polar_inertia, key + ".polar_inertia", "kg m^2");
     requireNonNegative(disk.diametral_inertia, key + ".diametral_inertia", "kg m^2");
-    bodies_[b].mass += disk.mass;
-    bodies_[b].polar_inertia += disk.polar_inertia;
+    mount(s, disk.position, key, disk.mass, disk.polar_inertia, disk.diametral_inertia);
+  }
+  // A rigid shaft's reference point is its mass centre (its own mass and inertias are about
+  // it); its parts' diametral inertias move there by the parallel-axis theorem.
+  for (std::size_t s = 0; s < spec_.shafts.size(); ++s) {
+    const TrainShaftSpec& shaft = spec_.shafts[s];
+    if (shaft.flexible) continue;
+    TrainBody& body = bodies_[shaft_body_[s]];
+    body.mass = shaft.mass + rigid[s].mass;
+    body.polar_inertia = shaft.polar_inertia + rigid[s].polar_inertia;
+    body.diametral_inertia = shaft.diametral_inertia + rigid[s].diametralAboutCentre();
+    body.axial = shaft.axial_offset + rigid[s].centre();
   }
   // Planets: one body each, in the stage's carrier frame.
   for (std::size_t s = 0; s < spec_.stages.size(); ++s) {
@@ -217,6 +230,8 @@ void GearTrainModel::buildBodies() {
   const int per = dofsPerBody();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     bodies_[b].first_dof = static_cast<int>(b) * per;
+    const int shaft = bodies_[b].shaft;
+    if (shaft >= 0 && spec_.shafts[shaft].flexible) continue;  // the beams carry mass
     if (!(bodies_[b].polar_inertia > 0.0)) {
       throw InputError(bodies_[b].kind == TrainBodyKind::kPlanet
                            ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_inertia"
@@ -224,11 +239,16 @@ void GearTrainModel::buildBodies() {
                        "0 kg m^2",
                        "a body needs a polar inertia > 0 (its own, its sections' or its gears')");
     }
-    if (spec_.dofs == TrainDofs::kPlanar && !(bodies_[b].mass > 0.0)) {
+    if (spec_.dofs != TrainDofs::kTorsional && !(bodies_[b].mass > 0.0)) {
       throw InputError(bodies_[b].kind == TrainBodyKind::kPlanet
                            ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_mass"
                            : "shafts." + bodies_[b].name + ".mass",
-                       "0 kg", "planar DOFs need a mass > 0 on every body");
+                       "0 kg", "planar and full DOFs need a mass > 0 on every body");
+    }
+    if (spec_.dofs == TrainDofs::kFull && !(bodies_[b].diametral_inertia > 0.0)) {
+      throw InputError("shafts." + bodies_[b].name + ".diametral_inertia", "0 kg m^2",
+                       "full DOFs need a diametral inertia > 0 on every rigid shaft (its own, "
+                       "its sections', gears' or disks')");
     }
   }
   dof_count_ = static_cast<int>(bodies_.size()) * per;
@@ -236,6 +256,9 @@ void GearTrainModel::buildBodies() {
 
 void GearTrainModel::buildElements() {
   const bool planar = spec_.dofs == TrainDofs::kPlanar;
+  const bool full = spec_.dofs == TrainDofs::kFull;
+  const bool lateral = planar || full;
+  addBeamElements();
   auto add = [&](std::string name, std::string kind, const std::vector<PointJacobian>& parts,
                  const Eigen::Matrix2d& k2, const Eigen::Matrix2d& c2) {
     // Relative displacement d = Σ J_i q: K = Jᵀ k J over the union of the DOFs.
@@ -261,11 +284,16 @@ void GearTrainModel::buildElements() {
 
   for (const auto& b : spec_.bearings) {
     const std::string key = "bearings." + b.name;
-    const int body = detail::shaftBodyOf(*this, spec_, b.shaft, key + ".shaft");
-    const int other = b.other_shaft.empty()
-                          ? -1
-                          : detail::shaftBodyOf(*this, spec_, b.other_shaft, key + ".other_shaft");
-    if (other == body) {
+    const int shaft = detail::shaftIndexOf(spec_, b.shaft, key + ".shaft");
+    const int body = bodyAt(shaft, b.position, key + ".position");
+    const int other_shaft = b.other_shaft.empty()
+                                ? -1
+                                : detail::shaftIndexOf(spec_, b.other_shaft, key + ".other_shaft");
+    const int other =
+        other_shaft < 0 ? -1 : bodyAt(other_shaft, b.other_position, key + ".other_position");
+    const double dx = axialOffsetOf(body, shaft, b.position);
+    const double other_dx = other < 0 ? 0.0 : axialOffsetOf(other, other_shaft, b.other_position);
+    if (other_shaft == shaft) {
       throw InputError(key + ".other_shaft", "\"" + b.other_shaft + "\"",
                        "another shaft than `shaft` (or empty for the housing)");
     }
@@ -274,8 +302,18 @@ void GearTrainModel::buildElements() {
                         {b.cyy, "cyy"},
                         {b.czz, "czz"},
                         {b.k_torsion, "k_torsion"},
-                        {b.c_torsion, "c_torsion"}}) {
+                        {b.c_torsion, "c_torsion"},
+                        {b.k_axial, "k_axial"},
+                        {b.c_axial, "c_axial"},
+                        {b.k_tilt, "k_tilt"},
+                        {b.c_tilt, "c_tilt"}}) {
       requireNonNegative(v, key + "." + n, n[0] == 'k' ? "N/m" : "N s/m");
+    }
+    if (!full && (b.k_axial > 0 || b.c_axial > 0 || b.k_tilt > 0 || b.c_tilt > 0)) {
+      throw InputError(key + (b.k_axial > 0 || b.c_axial > 0 ? ".k_axial" : ".k_tilt"),
+                       fmt::format("{:g}", b.k_axial > 0 ? b.k_axial : b.k_tilt),
+                       "0 with dofs = \"" + toString(spec_.dofs) +
+                           "\": axial and tilt terms need gearbox.dofs = \"full\"");
     }
     const bool isotropic =
         b.kyy == b.kzz && b.kyz == 0 && b.kzy == 0 && b.cyy == b.czz && b.cyz == 0 && b.czy == 0;
@@ -288,16 +326,31 @@ void GearTrainModel::buildElements() {
                                    "carrier_frame_terms = false for the fixed-frame model)",
                                    b.kyy));
     }
-    if (planar && (b.kyy > 0 || b.kzz > 0 || b.cyy > 0 || b.czz > 0 || b.kyz != 0 || b.kzy != 0)) {
+    if (lateral && (b.kyy > 0 || b.kzz > 0 || b.cyy > 0 || b.czz > 0 || b.kyz != 0 || b.kzy != 0)) {
       Eigen::Matrix2d k, c;
       k << b.kyy, b.kyz, b.kzy, b.kzz;
       c << b.cyy, b.cyz, b.czy, b.czz;
-      std::vector<PointJacobian> parts{detail::translationJacobian(*this, body, 1.0)};
+      std::vector<PointJacobian> parts{detail::translationJacobian(*this, body, 1.0, dx)};
       if (other >= 0) {
         detail::requireSameFrame(*this, body, other, key);
-        parts.push_back(detail::translationJacobian(*this, other, -1.0));
+        parts.push_back(detail::translationJacobian(*this, other, -1.0, other_dx));
       }
       add(b.name, "bearing", parts, k, c);
+    }
+    // Axial spring on the axis, tilt springs about y and z (full DOFs).
+    auto relative = [&](int offset) {
+      std::vector<int> dofs{bodies_[body].first_dof + offset};
+      if (other >= 0) dofs.push_back(bodies_[other].first_dof + offset);
+      return dofs;
+    };
+    const std::vector<double> signs =
+        other >= 0 ? std::vector<double>{1.0, -1.0} : std::vector<double>{1.0};
+    if (full && (b.k_axial > 0 || b.c_axial > 0)) {
+      add_torsion(b.name + ".axial", "bearing", relative(3), signs, b.k_axial, b.c_axial);
+    }
+    if (full && (b.k_tilt > 0 || b.c_tilt > 0)) {
+      add_torsion(b.name + ".tilt_y", "bearing", relative(4), signs, b.k_tilt, b.c_tilt);
+      add_torsion(b.name + ".tilt_z", "bearing", relative(5), signs, b.k_tilt, b.c_tilt);
     }
     if (b.k_torsion > 0 || b.c_torsion > 0) {
       std::vector<int> dofs{rotationDof(body)};
@@ -309,9 +362,10 @@ void GearTrainModel::buildElements() {
   }
   for (const auto& c : spec_.couplings) {
     const std::string key = "couplings." + c.name;
-    const int a = detail::shaftBodyOf(*this, spec_, c.shaft_a, key + ".shafts");
-    const int b = detail::shaftBodyOf(*this, spec_, c.shaft_b, key + ".shafts");
-    if (a == b) throw InputError(key + ".shafts", "\"" + c.shaft_a + "\"", "two different shafts");
+    if (c.shaft_a == c.shaft_b) {
+      throw InputError(key + ".shafts", "\"" + c.shaft_a + "\"", "two different shafts");
+    }
+    const auto [a, b] = detail::couplingBodies(*this, c);
     requireNonNegative(c.c_torsion, key + ".c_torsion", "N m s/rad");
     requireNonNegative(c.k_lateral, key + ".k_lateral", "N/m");
     requireNonNegative(c.c_lateral, key + ".c_lateral", "N s/m");
@@ -321,7 +375,7 @@ void GearTrainModel::buildElements() {
     }
     add_torsion(c.name, "coupling", {rotationDof(a), rotationDof(b)}, {1.0, -1.0}, c.k_torsion,
                 c.c_torsion);
-    if (planar && (c.k_lateral > 0 || c.c_lateral > 0)) {
+    if (lateral && (c.k_lateral > 0 || c.c_lateral > 0)) {
       detail::requireSameFrame(*this, a, b, key);
       add(c.name + ".lateral", "coupling",
           {detail::translationJacobian(*this, a, 1.0), detail::translationJacobian(*this, b, -1.0)},
@@ -363,12 +417,22 @@ void GearTrainModel::assemble() {
   M_ = Eigen::MatrixXd::Zero(n, n);
   K_ = M_, C_ = M_, G_ = M_, Komega_ = M_, Kmesh_ = M_;
   F0_ = Eigen::VectorXd::Zero(n);
+  const bool full = spec_.dofs == TrainDofs::kFull;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const TrainBody& body = bodies_[b];
     M_(rotationDof(b), rotationDof(b)) = body.polar_inertia;
-    if (!planar) continue;
+    if (!planar && !full) continue;
     const int y = body.first_dof;
     M_(y, y) = M_(y + 1, y + 1) = body.mass;
+    if (full) {
+      // Axial mass, diametral inertia and the disk's gyroscopic moments: with the spin ω = r Ω
+      // about +x, I_d θ̈_y + ω I_p θ̇_z = M_y and I_d θ̈_z − ω I_p θ̇_y = M_z (the spin axis
+      // x̂ + θ × x̂ = (1, θ_z, −θ_y) carries the angular momentum I_p ω).
+      M_(y + 3, y + 3) = body.mass;
+      M_(y + 4, y + 4) = M_(y + 5, y + 5) = body.diametral_inertia;
+      G_(y + 4, y + 5) += body.speed_ratio * body.polar_inertia;
+      G_(y + 5, y + 4) -= body.speed_ratio * body.polar_inertia;
+    }
     if (rotatingFrame(static_cast<int>(b)) >= 0) {
       // Carrier frame turning at Ω_c = r_c Ω: m(ü + 2Ω_c J u̇ − Ω_c² u), J = [[0, −1], [1, 0]]
       // (Lin & Parker 1999 eq. 1; Ω_c about +x, (y, z) the carrier's axes).
@@ -379,6 +443,7 @@ void GearTrainModel::assemble() {
       Komega_(y + 1, y + 1) -= body.mass * rc * rc;
     }
   }
+  assembleBeams();
   Eigen::MatrixXd K_structure = Eigen::MatrixXd::Zero(n, n);
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     const auto& dofs = elements_[e].dofs;
@@ -397,6 +462,23 @@ void GearTrainModel::assemble() {
   }
   C_ += spec_.mass_proportional_damping * M_ + spec_.stiffness_proportional_damping * (K_ + Kmesh_);
   detail::applyOperatingLoads(*this, spec_, F0_, output_torque_);
+  if (spec_.gravity != 0.0) {
+    if (!std::isfinite(spec_.gravity) || spec_.dofs == TrainDofs::kTorsional) {
+      throw InputError("gearbox.gravity", fmt::format("{:g} m/s^2", spec_.gravity),
+                       "a finite value with planar or full DOFs (0 with torsional DOFs)");
+    }
+    // F = −g M e_z: the weight of every lumped and distributed mass along −z.
+    Eigen::VectorXd ez = Eigen::VectorXd::Zero(n);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      if (rotatingFrame(static_cast<int>(b)) >= 0) {
+        throw InputError("gearbox.gravity", fmt::format("{:g} m/s^2", spec_.gravity),
+                         "0 with a planetary stage formulated in its rotating carrier frame "
+                         "(gravity would turn in it); set carrier_frame_terms = false");
+      }
+      ez(bodies_[b].first_dof + 1) = 1.0;
+    }
+    F0_ -= spec_.gravity * (M_ * ez);
+  }
 }
 
 int GearTrainModel::rotatingFrame(int body) const {

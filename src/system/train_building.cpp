@@ -35,6 +35,42 @@ int shaftBodyOf(const GearTrainModel& model, const GearTrainSpec& spec, const st
   unknownName(name, key, known, "shafts");
 }
 
+int shaftIndexOf(const GearTrainSpec& spec, const std::string& name, const std::string& key) {
+  std::vector<std::string> known;
+  for (std::size_t i = 0; i < spec.shafts.size(); ++i) {
+    if (spec.shafts[i].name == name) return static_cast<int>(i);
+    known.push_back(spec.shafts[i].name);
+  }
+  unknownName(name, key, known, "shafts");
+}
+
+int bodyAtOf(const GearTrainModel& model, const std::string& name, const std::string& shaft_key,
+             double position, const std::string& position_key) {
+  return model.bodyAt(shaftIndexOf(model.spec(), name, shaft_key), position, position_key);
+}
+
+std::pair<int, int> couplingBodies(const GearTrainModel& model, const TrainCouplingSpec& c) {
+  const std::string key = "couplings." + c.name + ".shafts";
+  const int a = shaftIndexOf(model.spec(), c.shaft_a, key);
+  const int b = shaftIndexOf(model.spec(), c.shaft_b, key);
+  return {model.shaftNodes(a).back(), model.shaftNodes(b).front()};
+}
+
+int inputBody(const GearTrainModel& model) {
+  const OperatingPoint& op = model.spec().operating;
+  const int s = shaftIndexOf(model.spec(), op.input_shaft, "operating_point.input");
+  return op.input_position ? model.bodyAt(s, *op.input_position, "operating_point.input_position")
+                           : model.shaftNodes(s).front();
+}
+
+int outputBody(const GearTrainModel& model) {
+  const OperatingPoint& op = model.spec().operating;
+  const int s = shaftIndexOf(model.spec(), op.output_shaft, "operating_point.output");
+  return op.output_position
+             ? model.bodyAt(s, *op.output_position, "operating_point.output_position")
+             : model.shaftNodes(s).back();
+}
+
 int gearIndexOf(const GearTrainSpec& spec, const std::string& name, const std::string& key) {
   std::vector<std::string> known;
   for (std::size_t i = 0; i < spec.gears.size(); ++i) {
@@ -53,12 +89,17 @@ double carrierSpeedRatio(const GearTrainModel& model, const GearTrainSpec&, int 
   return model.bodies()[carrierBody(model, stage)].speed_ratio;
 }
 
-PointJacobian translationJacobian(const GearTrainModel& model, int body, double sign) {
+PointJacobian translationJacobian(const GearTrainModel& model, int body, double sign, double dx) {
   PointJacobian p;
   const TrainBody& b = model.bodies()[body];
   if (model.spec().dofs == TrainDofs::kPlanar) {
     p.dofs = {b.first_dof, b.first_dof + 1};
     p.J = sign * Eigen::Matrix2d::Identity();
+  } else if (model.spec().dofs == TrainDofs::kFull) {
+    // u + θ × (dx, 0, 0): u_y + θ_z dx, u_z − θ_y dx.
+    p.dofs = {b.first_dof, b.first_dof + 1, b.first_dof + 4, b.first_dof + 5};
+    p.J.resize(2, 4);
+    p.J << sign, 0, 0, sign * dx, 0, sign, -sign * dx, 0;
   } else if (b.kind == TrainBodyKind::kPlanet) {
     const int carrier = carrierBody(model, b.stage);
     const Eigen::Vector2d r = b.centre - model.bodies()[carrier].centre;
@@ -72,8 +113,8 @@ PointJacobian translationJacobian(const GearTrainModel& model, int body, double 
 }
 
 PointJacobian pointJacobian(const GearTrainModel& model, int body, const Eigen::Vector2d& point,
-                            double sign) {
-  PointJacobian p = translationJacobian(model, body, sign);
+                            double sign, double dx) {
+  PointJacobian p = translationJacobian(model, body, sign, dx);
   const Eigen::Vector2d r = point - model.bodies()[body].centre;
   p.dofs.push_back(model.rotationDof(body));
   p.J.conservativeResize(2, p.J.cols() + 1);
@@ -119,8 +160,8 @@ void requireSameFrame(const GearTrainModel& model, int a, int b, const std::stri
 void applyOperatingLoads(const GearTrainModel& model, const GearTrainSpec& spec,
                          Eigen::VectorXd& F0, double& output_torque) {
   const OperatingPoint& op = spec.operating;
-  const int in = shaftBodyOf(model, spec, op.input_shaft, "operating_point.input");
-  const int out = shaftBodyOf(model, spec, op.output_shaft, "operating_point.output");
+  const int in = inputBody(model);
+  const int out = outputBody(model);
   if (in == out) {
     throw InputError("operating_point.output", "\"" + op.output_shaft + "\"",
                      "another shaft than the input");

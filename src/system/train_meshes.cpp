@@ -79,8 +79,8 @@ void GearTrainModel::buildMeshes() {
   const bool planar = spec_.dofs == TrainDofs::kPlanar;
   std::vector<SpeedConstraint> constraints;
   auto body_of_gear = [&](int g) {
-    return detail::shaftBodyOf(*this, spec_, spec_.gears[g].shaft,
-                               "gears." + spec_.gears[g].name + ".shaft");
+    return detail::bodyAtOf(*this, spec_.gears[g].shaft, "gears." + spec_.gears[g].name + ".shaft",
+                            spec_.gears[g].position, "gears." + spec_.gears[g].name + ".position");
   };
 
   // --- fixed-axis meshes: geometry and kinematic constraints ---------------------------------
@@ -98,7 +98,7 @@ void GearTrainModel::buildMeshes() {
     const int ga = detail::gearIndexOf(spec_, m.gear_a, key + ".gears");
     const int gb = detail::gearIndexOf(spec_, m.gear_b, key + ".gears");
     const int ba = body_of_gear(ga), bb = body_of_gear(gb);
-    if (ba == bb) {
+    if (spec_.gears[ga].shaft == spec_.gears[gb].shaft) {
       throw InputError(key + ".gears", fmt::format("[\"{}\", \"{}\"]", m.gear_a, m.gear_b),
                        fmt::format("gears on two different shafts: both sit on shaft \"{}\"",
                                    spec_.gears[ga].shaft));
@@ -208,31 +208,36 @@ void GearTrainModel::buildMeshes() {
   }
 
   // --- kinematics -----------------------------------------------------------------------------
+  // The nodes of a flexible shaft turn together and share its axis.
+  for (std::size_t s = 0; s < spec_.shafts.size(); ++s) {
+    const auto& chain = shaft_nodes_[s];
+    for (std::size_t k = 1; k < chain.size(); ++k) {
+      constraints.push_back(
+          {{chain[k - 1], chain[k]}, {1.0, -1.0}, "shafts." + spec_.shafts[s].name});
+    }
+  }
   for (const auto& c : spec_.couplings) {
-    const std::string key = "couplings." + c.name;
-    constraints.push_back({{detail::shaftBodyOf(*this, spec_, c.shaft_a, key + ".shafts"),
-                            detail::shaftBodyOf(*this, spec_, c.shaft_b, key + ".shafts")},
-                           {1.0, -1.0},
-                           key});
+    const auto [a, b] = detail::couplingBodies(*this, c);
+    constraints.push_back({{a, b}, {1.0, -1.0}, "couplings." + c.name});
   }
   for (const auto& b : spec_.bearings) {
     if (!(b.k_torsion > 0.0)) continue;
     const std::string key = "bearings." + b.name;
-    const int body = detail::shaftBodyOf(*this, spec_, b.shaft, key + ".shaft");
+    const int body =
+        detail::bodyAtOf(*this, b.shaft, key + ".shaft", b.position, key + ".position");
     if (b.other_shaft.empty()) {
-      bodies_[body].grounded_torsion = true;
+      for (int node : shaft_nodes_[bodies_[body].shaft]) bodies_[node].grounded_torsion = true;
       constraints.push_back({{body}, {1.0}, key});
     } else {
-      constraints.push_back(
-          {{body, detail::shaftBodyOf(*this, spec_, b.other_shaft, key + ".other_shaft")},
-           {1.0, -1.0},
-           key});
+      constraints.push_back({{body, detail::bodyAtOf(*this, b.other_shaft, key + ".other_shaft",
+                                                     b.other_position, key + ".other_position")},
+                             {1.0, -1.0},
+                             key});
     }
   }
   std::vector<std::string> names;
   for (const auto& b : bodies_) names.push_back(b.name);
-  const int input =
-      detail::shaftBodyOf(*this, spec_, spec_.operating.input_shaft, "operating_point.input");
+  const int input = detail::inputBody(*this);
   kinematics_ = solveKinematics(names, constraints, input, "operating_point.input");
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     bodies_[b].speed_ratio = kinematics_.speed_ratio[b];
@@ -254,7 +259,8 @@ void GearTrainModel::buildMeshes() {
   }
   for (const auto& c : constraints) {
     if (c.bodies.size() == 2 && c.coefficients[0] == -c.coefficients[1] &&
-        (c.source.rfind("couplings.", 0) == 0 || c.source.rfind("bearings.", 0) == 0)) {
+        (c.source.rfind("couplings.", 0) == 0 || c.source.rfind("bearings.", 0) == 0 ||
+         c.source.rfind("shafts.", 0) == 0)) {
       links.push_back({c.bodies[0], c.bodies[1], Eigen::Vector2d::Zero(), c.source});
     }
   }
@@ -344,6 +350,14 @@ void GearTrainModel::buildMeshes() {
                   ms.stiffness, ms.transmission_error, ms.damping_ratio, "meshes." + ms.name);
     m.frequency_ratio = m.teeth_a * std::abs(bodies_[p.ba].speed_ratio) / kTwoPi;
     m.phase = ms.phase.value_or(0.0);
+    m.gear_a = p.ga, m.gear_b = p.gb;
+    if (ms.damping) {
+      if (!(*ms.damping >= 0.0) || !std::isfinite(*ms.damping)) {
+        throw InputError("meshes." + ms.name + ".damping", fmt::format("{:g} N s/m", *ms.damping),
+                         "a dashpot >= 0");
+      }
+      m.damping = *ms.damping;
+    }
     meshes_.push_back(std::move(m));
   }
   for (std::size_t s = 0; s < stages.size(); ++s) {
@@ -408,24 +422,31 @@ void GearTrainModel::buildMeshes() {
     const Eigen::VectorXd g = torsional_gradient(m);
     Kt += m.mean_stiffness * g * g.transpose();
   }
+  auto spring = [&](int a, int b, double k) {
+    Kt(a, a) += k, Kt(b, b) += k, Kt(a, b) -= k, Kt(b, a) -= k;
+  };
   for (const auto& c : spec_.couplings) {
-    const int a = detail::shaftBodyOf(*this, spec_, c.shaft_a, "couplings"),
-              b = detail::shaftBodyOf(*this, spec_, c.shaft_b, "couplings");
-    Kt(a, a) += c.k_torsion, Kt(b, b) += c.k_torsion, Kt(a, b) -= c.k_torsion,
-        Kt(b, a) -= c.k_torsion;
+    const auto [a, b] = detail::couplingBodies(*this, c);
+    spring(a, b, c.k_torsion);
+  }
+  for (const auto& beam : beams_) {
+    spring(beam.body_a, beam.body_b,
+           beam.segment.shear_modulus * beam.segment.polarMomentOfArea() / beam.segment.length);
   }
   for (const auto& bearing : spec_.bearings) {
     if (!(bearing.k_torsion > 0.0)) continue;
-    const int a = detail::shaftBodyOf(*this, spec_, bearing.shaft, "bearings");
-    Kt(a, a) += bearing.k_torsion;
-    if (!bearing.other_shaft.empty()) {
-      const int b = detail::shaftBodyOf(*this, spec_, bearing.other_shaft, "bearings");
-      Kt(b, b) += bearing.k_torsion, Kt(a, b) -= bearing.k_torsion, Kt(b, a) -= bearing.k_torsion;
+    const int a = detail::bodyAtOf(*this, bearing.shaft, "bearings", bearing.position, "bearings");
+    if (bearing.other_shaft.empty()) {
+      Kt(a, a) += bearing.k_torsion;
+    } else {
+      spring(a,
+             detail::bodyAtOf(*this, bearing.other_shaft, "bearings", bearing.other_position,
+                              "bearings"),
+             bearing.k_torsion);
     }
   }
   Eigen::VectorXd Ft = Eigen::VectorXd::Zero(nb);
-  const int out =
-      detail::shaftBodyOf(*this, spec_, spec_.operating.output_shaft, "operating_point.output");
+  const int out = detail::outputBody(*this);
   Ft(input) += spec_.operating.input_torque;
   if (std::abs(bodies_[out].speed_ratio) > 1e-12) {
     Ft(out) -= spec_.operating.input_torque / bodies_[out].speed_ratio;
@@ -452,12 +473,17 @@ void GearTrainModel::buildMeshes() {
     }
     // Gradient over the model's DOFs.
     std::vector<int> dofs;
-    Eigen::MatrixXd J;
-    detail::stackJacobians({detail::pointJacobian(*this, m.body_a, m.pitch_point, 1.0),
-                            detail::pointJacobian(*this, m.body_b, m.pitch_point, -1.0)},
-                           dofs, J);
-    detail::requireSameFrame(*this, m.body_a, m.body_b, m.name);
-    const Eigen::VectorXd v = std::cos(m.base_helix_angle) * (J.transpose() * m.normal);
+    Eigen::VectorXd v;
+    if (spec_.dofs == TrainDofs::kFull) {
+      fullMeshGradient(m, dofs, v);
+    } else {
+      Eigen::MatrixXd J;
+      detail::stackJacobians({detail::pointJacobian(*this, m.body_a, m.pitch_point, 1.0),
+                              detail::pointJacobian(*this, m.body_b, m.pitch_point, -1.0)},
+                             dofs, J);
+      detail::requireSameFrame(*this, m.body_a, m.body_b, m.name);
+      v = std::cos(m.base_helix_angle) * (J.transpose() * m.normal);
+    }
     m.dofs = dofs;
     m.gradient.assign(v.data(), v.data() + v.size());
     // Equivalent mass of the two rotations along the line of action, for the damping ratio.
@@ -465,12 +491,87 @@ void GearTrainModel::buildMeshes() {
     for (std::size_t k = 0; k < dofs.size(); ++k) {
       for (std::size_t b = 0; b < bodies_.size(); ++b) {
         if (rotationDof(static_cast<int>(b)) == dofs[k]) {
-          compliance += v(k) * v(k) / bodies_[b].polar_inertia;
+          compliance += v(k) * v(k) / rotatingInertia(static_cast<int>(b));
         }
       }
     }
     m.equivalent_mass = compliance > 0.0 ? 1.0 / compliance : 0.0;
-    m.damping = 2.0 * m.damping_ratio * std::sqrt(m.mean_stiffness * m.equivalent_mass);
+    const bool given = m.gear_a >= 0 && spec_.meshes[i].damping.has_value();
+    if (given) {
+      m.damping_ratio = m.equivalent_mass > 0.0
+                            ? m.damping / (2.0 * std::sqrt(m.mean_stiffness * m.equivalent_mass))
+                            : 0.0;
+    } else {
+      m.damping = 2.0 * m.damping_ratio * std::sqrt(m.mean_stiffness * m.equivalent_mass);
+    }
+  }
+}
+
+double GearTrainModel::rotatingInertia(int body) const {
+  // A node of a flexible shaft: its lumped inertia and half of its beams'.
+  double inertia = bodies_[body].polar_inertia;
+  for (const BeamElement& beam : beams_) {
+    if (beam.body_a == body || beam.body_b == body) {
+      inertia +=
+          0.5 * beam.segment.density * beam.segment.polarMomentOfArea() * beam.segment.length;
+    }
+  }
+  return inertia;
+}
+
+/// The 3-D mesh deflection gradient (full DOFs). The contact normal of involute helicoids lies
+/// in the plane of action and is perpendicular to the contact line, which runs along the base
+/// helix: for the flank of an external gear g with hand h_g (+1 right) whose transverse normal
+/// n_t turns g in the sense σ_g = sgn[((c − c_g) × n_t)·x̂], the contact line is
+/// cos β_b x̂ + σ_g h_g sin β_b n_t and the normal n = cos β_b n_t − σ_g h_g sin β_b x̂
+/// (docs/theory/gear_trains.md; a right-hand driver turning about +x pushes the driven gear
+/// towards −x, Shigley's hand rule). Then δ = n·(u_a + θ_a × r_a) − n·(u_b + θ_b × r_b), r the
+/// vectors from the bodies' reference points to the contact point c (axially between the two
+/// gears' mid-faces), so v = [n, r_a × n] over (u_a, θ_a) and −[n, r_b × n] over (u_b, θ_b).
+void GearTrainModel::fullMeshGradient(const TrainMesh& m, std::vector<int>& dofs,
+                                      Eigen::VectorXd& v) const {
+  const TrainGearSpec& A = spec_.gears[m.gear_a];
+  const TrainGearSpec& B = spec_.gears[m.gear_b];
+  const auto global_x = [&](const TrainGearSpec& g) {
+    return spec_.shafts[detail::shaftIndexOf(spec_, g.shaft, "gears." + g.name + ".shaft")]
+               .axial_offset +
+           g.position;
+  };
+  const double xa = global_x(A), xb = global_x(B);
+  if (std::abs(xa - xb) >= 0.5 * (A.gear.face_width + B.gear.face_width)) {
+    throw InputError("gears." + B.name + ".position", fmt::format("{:g} m", B.position),
+                     fmt::format("a position where its face overlaps gear \"{}\" of {} (their "
+                                 "mid-faces are {:g} mm apart along x)",
+                                 A.name, m.name, 1e3 * std::abs(xa - xb)));
+  }
+  const double cb = std::cos(m.base_helix_angle), sb = std::sin(std::abs(m.base_helix_angle));
+  const auto cross_x = [](const Eigen::Vector2d& r, const Eigen::Vector2d& n) {
+    return r.x() * n.y() - r.y() * n.x();
+  };
+  double nx;
+  if (!A.internal) {
+    const double sigma = cross_x(m.pitch_point - bodies_[m.body_a].centre, m.normal) >= 0 ? 1 : -1;
+    const double hand = A.gear.helix_angle > 0 ? 1.0 : A.gear.helix_angle < 0 ? -1.0 : 0.0;
+    nx = -sigma * hand * sb;
+  } else {  // b is the external member; its flank normal is −n
+    const double sigma = cross_x(m.pitch_point - bodies_[m.body_b].centre, -m.normal) >= 0 ? 1 : -1;
+    const double hand = B.gear.helix_angle > 0 ? 1.0 : B.gear.helix_angle < 0 ? -1.0 : 0.0;
+    nx = sigma * hand * sb;
+  }
+  const Eigen::Vector3d n(nx, cb * m.normal.x(), cb * m.normal.y());  // (x, y, z)
+  const Eigen::Vector3d c(0.5 * (xa + xb), m.pitch_point.x(), m.pitch_point.y());
+  dofs.clear();
+  v.resize(12);
+  int k = 0;
+  for (auto [body, sign] : {std::pair{m.body_a, 1.0}, std::pair{m.body_b, -1.0}}) {
+    const TrainBody& b = bodies_[body];
+    const Eigen::Vector3d r = c - Eigen::Vector3d(b.axial, b.centre.x(), b.centre.y());
+    const Eigen::Vector3d rn = r.cross(n);
+    const double entries[6] = {n.y(), n.z(), rn.x(), n.x(), rn.y(), rn.z()};
+    for (int d = 0; d < 6; ++d) {
+      dofs.push_back(b.first_dof + d);
+      v(k++) = sign * entries[d];
+    }
   }
 }
 

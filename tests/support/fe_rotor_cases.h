@@ -44,7 +44,8 @@ inline FeGearedRotorSpec visnadiFeRotorSpec(std::shared_ptr<const MeshStiffness>
         {shaft.gear_node, gears[s]->mass, gears[s]->polar_inertia, gears[s]->diametral_inertia});
   }
   spec.mesh.line_of_action_angle = pair.operatingPressureAngle();  // horizontal centre line
-  spec.mesh.base_helix_angle = pair.baseHelixAngle();
+  // Right-hand pinion (helix_deg > 0): β_b < 0, as in fe_rotor_io.cpp.
+  spec.mesh.base_helix_angle = -std::copysign(pair.baseHelixAngle(), helix_deg);
   spec.mesh.pinion_base_radius = pair.pinion().base_radius;
   spec.mesh.gear_base_radius = pair.gear().base_radius;
   spec.mesh.line_of_action_length = pair.lineOfActionLength();

@@ -49,6 +49,8 @@ struct TrainShaftSpec {
   /// Global x of the shaft's first section start [m] (positions along the shaft are measured
   /// from here).
   double axial_offset = 0.0;
+  /// About a transverse axis through its mass centre [kg m²] (full DOFs, rigid shafts).
+  double diametral_inertia = 0.0;
 };
 
 /// A rigid disk (an inertia: flywheel, rotor of a motor, brake disk) on a shaft at an axial
@@ -90,6 +92,8 @@ struct TrainMeshSpec {
   double damping_ratio = 0.0;            ///< of the mesh's equivalent oscillator [-]
   /// Mesh phase at t = 0 [mesh periods]; absent: derived by mesh phasing (or 0).
   std::optional<double> phase;
+  /// Mesh dashpot along the line of action [N s/m]; absent: from damping_ratio.
+  std::optional<double> damping;
 };
 
 /// A linear bearing from a shaft to the housing or to another shaft (e.g. a planet on its pin
@@ -151,6 +155,9 @@ struct OperatingPoint {
   double input_speed = 0.0;   ///< [rad/s], signed about +x
   double input_torque = 0.0;  ///< applied to the input shaft [N m], signed about +x
   std::string output_shaft;   ///< takes the balancing load torque (lossless train)
+  /// Where the torques act along flexible shafts [m from the shaft's first section start];
+  /// absent: the input at the shaft's start, the output at its end.
+  std::optional<double> input_position, output_position;
 };
 
 struct GearTrainSpec {
@@ -168,6 +175,9 @@ struct GearTrainSpec {
   double stiffness_proportional_damping = 0.0;  ///< β [s]
   /// Where the first shaft's centre lies [m] (y, z); the others follow from the meshes.
   double origin_y = 0.0, origin_z = 0.0;
+  /// Gravity along −z [m/s²] (planar and full DOFs; members in a rotating carrier frame
+  /// cannot take it).
+  double gravity = 0.0;
 };
 
 std::string toString(TrainDofs dofs);

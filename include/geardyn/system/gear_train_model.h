@@ -13,14 +13,18 @@
 /// construction (InputError naming the component and key); solvers keep their own workspace.
 ///
 /// Degrees of freedom of a body: its rotation θ [rad] (TrainDofs::kTorsional), or the
-/// translation (y, z) of its centre [m] and θ (kPlanar). Planets and the members of a planetary
-/// stage with carrier-frame terms have their translations in the carrier frame.
+/// translation (y, z) of its centre [m] and θ (kPlanar), or (y, z, θ, x, θ_y, θ_z) (kFull: the
+/// axial translation and the tilts about y and z follow, so the first three keep their
+/// meaning). Planets and the members of a planetary stage with carrier-frame terms have their
+/// translations in the carrier frame. A flexible shaft is a chain of bodies, one per FE node
+/// ("input.n0", "input.n1", …), joined by Timoshenko beam elements.
 
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "geardyn/models/timoshenko_shaft_element.h"
 #include "geardyn/system/gear_train.h"
 #include "geardyn/system/train_kinematics.h"
 
@@ -38,7 +42,10 @@ struct TrainBody {
   int stage = -1;     ///< planetary stage whose carrier frame it uses; −1: fixed frame
   int planet = -1;    ///< planet index within its stage, −1 otherwise
   int first_dof = 0;  ///< index of its first DOF (y, or θ when torsional)
-  bool grounded_torsion = false;  ///< held against rotation by the housing (speed 0)
+  bool grounded_torsion = false;   ///< held against rotation by the housing (speed 0)
+  int shaft = -1;                  ///< the spec's shaft it belongs to (−1: a planet)
+  double axial = 0.0;              ///< global x of its reference point (node, mass centre) [m]
+  double diametral_inertia = 0.0;  ///< about a transverse axis (full DOFs) [kg m²]
 };
 
 /// What kind of mesh: a fixed-axis external or internal pair, or a planetary mesh.
@@ -51,11 +58,12 @@ struct TrainMesh {
   int body_a = 0, body_b = 0;  ///< a drives the mesh's phase; for planetary meshes b = planet
   int teeth_a = 0, teeth_b = 0;
   int stage = -1, planet = -1;
-  double centre_distance = 0.0;                           ///< a_w [m]
-  double pressure_angle = 0.0;                            ///< operating α_wt [rad]
-  double base_helix_angle = 0.0;                          ///< β_b [rad]
-  double base_radius_a = 0.0, base_radius_b = 0.0;        ///< [m]
-  double contact_ratio = 0.0;                             ///< ε_γ [-]
+  int gear_a = -1, gear_b = -1;                     ///< indices in spec().gears (−1: a planet)
+  double centre_distance = 0.0;                     ///< a_w [m]
+  double pressure_angle = 0.0;                      ///< operating α_wt [rad]
+  double base_helix_angle = 0.0;                    ///< β_b [rad]
+  double base_radius_a = 0.0, base_radius_b = 0.0;  ///< [m]
+  double contact_ratio = 0.0;                       ///< ε_γ [-]
   Eigen::Vector2d pitch_point = Eigen::Vector2d::Zero();  ///< contact point c (y, z) [m]
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();       ///< transverse line of action n_t (unit)
   /// ∂δ/∂q: the nonzero entries of v_m (DOF indices and coefficients; 2 or 6 entries).
@@ -98,7 +106,9 @@ class GearTrainModel {
   const GearTrainSpec& spec() const noexcept { return spec_; }
   const TrainKinematics& kinematics() const noexcept { return kinematics_; }
   int dofCount() const noexcept { return dof_count_; }
-  int dofsPerBody() const noexcept { return spec_.dofs == TrainDofs::kPlanar ? 3 : 1; }
+  int dofsPerBody() const noexcept {
+    return spec_.dofs == TrainDofs::kFull ? 6 : spec_.dofs == TrainDofs::kPlanar ? 3 : 1;
+  }
   const std::vector<TrainBody>& bodies() const noexcept { return bodies_; }
   const std::vector<TrainMesh>& meshes() const noexcept { return meshes_; }
   const std::vector<TrainElement>& elements() const noexcept { return elements_; }
@@ -108,6 +118,25 @@ class GearTrainModel {
   /// The θ DOF of body b; its y DOF (−1 when torsional).
   int rotationDof(int body) const;
   int translationDof(int body) const;
+  /// The body of shaft i at `position` along it [m from its first section start]: the rigid
+  /// shaft's one body, or the flexible shaft's node there (nodes are placed at every gear,
+  /// bearing, disk and torque position). InputError naming `key` when outside the shaft.
+  int bodyAt(int shaft, double position, const std::string& key) const;
+  /// The bodies (nodes) of shaft i in axial order.
+  const std::vector<int>& shaftNodes(int shaft) const { return shaft_nodes_[shaft]; }
+  /// Beam elements of the flexible shafts (for reports and the strain energy).
+  struct BeamElement {
+    int shaft = 0;
+    int index = 0;  ///< along its shaft
+    int body_a = 0, body_b = 0;
+    ShaftSegment segment;
+  };
+  const std::vector<BeamElement>& beams() const noexcept { return beams_; }
+  /// Axial distance [m] from body b's reference point to `position` along shaft i (0 for the
+  /// nodes of flexible shafts; the offset from the mass centre for rigid shafts).
+  double axialOffsetOf(int body, int shaft, double position) const;
+  /// The train's DOF indices of a beam element in FE order [u_x, u_y, u_z, θ_x, θ_y, θ_z] × 2.
+  std::vector<int> beamDofs(const BeamElement& beam) const;
 
   const Eigen::MatrixXd& mass() const noexcept { return M_; }
   const Eigen::MatrixXd& stiffness() const noexcept { return K_; }   ///< without the meshes
@@ -138,6 +167,12 @@ class GearTrainModel {
 
  private:
   void buildBodies();
+  void buildShaftNodes(int shaft);
+  void assembleBeams();
+  void addBeamElements();
+  void fullMeshGradient(const TrainMesh& m, std::vector<int>& dofs, Eigen::VectorXd& v) const;
+  /// Polar inertia of a body for the mesh's equivalent mass (nodes: with half their beams').
+  double rotatingInertia(int body) const;
   void buildMeshes();
   void buildElements();
   void assemble();
@@ -149,6 +184,8 @@ class GearTrainModel {
   std::vector<TrainElement> elements_;
   std::vector<Eigen::MatrixXd> element_damping_;  // over each element's DOFs
   std::vector<int> shaft_body_;                   // spec shaft index → body index
+  std::vector<std::vector<int>> shaft_nodes_;     // spec shaft index → its bodies by x
+  std::vector<BeamElement> beams_;
   int dof_count_ = 0;
   double output_torque_ = 0.0;
   Eigen::MatrixXd M_, K_, C_, G_, Komega_, Kmesh_;
