@@ -3,6 +3,7 @@
 /// Reference gear trains built in code (Pinocchio's sample-models pattern): the Lin & Parker
 /// (1999) planetary example and a two-stage parallel reducer.
 
+#include <map>
 #include <numbers>
 #include <string>
 
@@ -104,6 +105,45 @@ inline GearTrainSpec twoStageReducer(std::shared_ptr<const MeshStiffness> k1 = n
   }
   spec.couplings = {{"motor_coupling", "motor", "input", 2.5e4, 5.0, 1e7, 100.0}};
   spec.operating = {"motor", 1500.0 * std::numbers::pi / 30.0, 200.0, "output"};
+  return spec;
+}
+
+/// The two-stage reducer with full DOFs: flexible shafts (elements no longer than
+/// `max_element` [m]), gears and bearings placed along them, helical gears of `helix_deg`
+/// (z1, z3 right hand for > 0), axial and tilt support on every shaft, a rigid motor on its own
+/// bearings. E scales the shafts' Young's modulus (a large E approaches rigid shafts).
+inline GearTrainSpec flexibleReducer(double helix_deg = 0.0, double max_element = 0.03,
+                                     double youngs_modulus = 2.1e11, bool flexible = true) {
+  GearTrainSpec spec = twoStageReducer(nullptr, nullptr, TrainDofs::kFull);
+  spec.name = "flexible two-stage reducer";
+  for (auto& s : spec.shafts) {
+    if (s.name == "motor") {
+      s.diametral_inertia = 0.05;
+      continue;
+    }
+    s.flexible = flexible;
+    s.youngs_modulus = youngs_modulus;
+    s.max_element_length = max_element;
+  }
+  const double beta = helix_deg * kDeg;
+  spec.gears[0].position = 0.08, spec.gears[0].gear.helix_angle = beta;
+  spec.gears[1].position = 0.08, spec.gears[1].gear.helix_angle = -beta;
+  spec.gears[2].position = 0.20, spec.gears[2].gear.helix_angle = beta;
+  spec.gears[3].position = 0.20, spec.gears[3].gear.helix_angle = -beta;
+  const std::map<std::string, double> length = {
+      {"input", 0.25}, {"intermediate", 0.3}, {"output", 0.35}};
+  for (auto& b : spec.bearings) {
+    const bool a = b.name.back() == 'a';
+    b.position = a ? 0.02 : length.at(b.shaft) - 0.02;
+    if (a) b.k_axial = 2e8, b.c_axial = 1e3;
+    b.k_tilt = 1e4;
+  }
+  for (const char* end : {"a", "b"}) {
+    TrainBearingSpec b{std::string("motor_") + end, "motor", "", 2e8, 2e8};
+    b.k_axial = 1e8;
+    b.k_tilt = 2e5;
+    spec.bearings.push_back(b);
+  }
   return spec;
 }
 
