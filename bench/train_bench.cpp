@@ -45,6 +45,25 @@ void BM_TrainNewmarkStep(benchmark::State& state) {
 }
 BENCHMARK(BM_TrainNewmarkStep);
 
+// A 500-DOF FE gearbox (4 helical stages on 5 flexible shafts, six DOFs per node) with every
+// mesh's stiffness varying: target ≤ 50 µs per step (issue #16).
+void BM_FlexibleTrainNewmarkStep(benchmark::State& state) {
+  const GearTrainModel model(
+      testing::flexibleChain(static_cast<int>(state.range(0)), 0.018, smooth(4e8)));
+  TrainNewmarkStepper stepper(model, model.inputSpeed(), 1e-5,
+                              NewmarkParameters::averageAcceleration(), state.range(1) != 0);
+  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                Eigen::VectorXd::Zero(model.dofCount()));
+  for (auto _ : state) {
+    stepper.step();
+    benchmark::DoNotOptimize(stepper.displacement().data());
+  }
+  state.counters["dofs"] = model.dofCount();
+  state.counters["meshes"] = static_cast<double>(model.meshes().size());
+}
+// Second argument: 1 sparse (the default at this size), 0 dense (for the ratio).
+BENCHMARK(BM_FlexibleTrainNewmarkStep)->Args({4, 1})->Args({4, 0})->Unit(benchmark::kMicrosecond);
+
 void BM_TrainSteadyStatePerSpeed(benchmark::State& state) {
   const GearTrainModel model(testing::twoStageReducer(smooth(4e8), smooth(6e8)));
   TrainSteadyOptions options;

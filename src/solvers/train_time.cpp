@@ -36,7 +36,8 @@ void TrainTimeOptions::validate() const {
 }
 
 TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double input_speed,
-                                         double time_step, NewmarkParameters newmark)
+                                         double time_step, NewmarkParameters newmark,
+                                         std::optional<bool> sparse)
     : model_(model),
       speed_(input_speed),
       dt_(time_step),
@@ -55,8 +56,25 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
   K0_ = model.meanStiffnessAt(speed_);
   V_.resize(n, r);
   for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
-  lu_.compute(K0_ + a0_ * model.mass() + a1_ * Cg_);
-  Z_ = lu_.solve(V_);
+  const Eigen::MatrixXd A = K0_ + a0_ * model.mass() + a1_ * Cg_;
+  sparse_ = sparse.value_or(n >= kSparseTrainDofs);
+  if (sparse_) {
+    // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
+    Msp_ = model.mass().sparseView(1.0, 1e-14 * model.mass().cwiseAbs().maxCoeff());
+    Cgsp_ = Cg_.sparseView(1.0, 1e-14 * std::max(Cg_.cwiseAbs().maxCoeff(), 1e-300));
+    const Eigen::SparseMatrix<double> Asp = A.sparseView(1.0, 1e-14 * A.cwiseAbs().maxCoeff());
+    slu_.analyzePattern(Asp);
+    slu_.factorize(Asp);
+    if (slu_.info() != Eigen::Success) {
+      throw InputError(
+          "gearbox", "",
+          "a train whose Newmark matrix can be factorised: " + slu_.lastErrorMessage());
+    }
+    Z_ = slu_.solve(V_);
+  } else {
+    lu_.compute(A);
+    Z_ = lu_.solve(V_);
+  }
   S_ = V_.transpose() * Z_;  // W = Vᵀ A⁻¹ V; the step's matrix is I + D W
   small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
   small_matrix_ = Eigen::MatrixXd::Zero(r, r);
@@ -94,10 +112,19 @@ void TrainNewmarkStepper::step() {
   rhs_.noalias() = model_.staticLoad();
   rhs_.noalias() += V_ * ke_;
   y_ = a0_ * q_ + a2_ * v_ + a3_ * a_;
-  rhs_.noalias() += model_.mass() * y_;
+  if (sparse_) {
+    rhs_.noalias() += Msp_ * y_;
+  } else {
+    rhs_.noalias() += model_.mass() * y_;
+  }
   y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
-  rhs_.noalias() += Cg_ * y_;
-  y_ = lu_.solve(rhs_);
+  if (sparse_) {
+    rhs_.noalias() += Cgsp_ * y_;
+    y_ = slu_.solve(rhs_);
+  } else {
+    rhs_.noalias() += Cg_ * y_;
+    y_ = lu_.solve(rhs_);
+  }
   if (dk_.size() > 0) {
     // Woodbury: (A + V D Vᵀ)⁻¹ b = y − Z (I + D W)⁻¹ D Vᵀ y.
     w_.noalias() = V_.transpose() * y_;

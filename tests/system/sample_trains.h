@@ -147,4 +147,58 @@ inline GearTrainSpec flexibleReducer(double helix_deg = 0.0, double max_element 
   return spec;
 }
 
+/// A chain of `stages` helical parallel-axis stages on stages + 1 flexible shafts of 0.3 m
+/// (50 mm, elements of at most `max_element` [m]): 25/38 teeth, 3 mm, 10 deg, stage k at
+/// x = 0.2 m (odd k) or 0.08 m, two bearings per shaft (axial at one). With 4 stages and
+/// 20 mm elements about 500 DOFs: the benchmark of a large FE gearbox.
+inline GearTrainSpec flexibleChain(int stages, double max_element,
+                                   std::shared_ptr<const MeshStiffness> k = nullptr) {
+  GearTrainSpec spec;
+  spec.name = "flexible chain";
+  spec.dofs = TrainDofs::kFull;
+  spec.stiffness_proportional_damping = 2e-6;
+  if (!k) k = std::make_shared<ConstantMeshStiffness>("constant", 4e8, 1.6);
+  for (int s = 0; s <= stages; ++s) {
+    TrainShaftSpec shaft;
+    shaft.name = "s" + std::to_string(s);
+    shaft.section_lengths = {0.3};
+    shaft.outer_diameters = {0.05};
+    shaft.flexible = true;
+    shaft.max_element_length = max_element;
+    spec.shafts.push_back(shaft);
+    for (const char* end : {"a", "b"}) {
+      TrainBearingSpec b{shaft.name + "_" + end, shaft.name, "", 4e8, 5e8};
+      b.cyy = b.czz = 2e3;
+      b.position = end[0] == 'a' ? 0.02 : 0.28;
+      b.k_tilt = 1e4;
+      if (end[0] == 'a') b.k_axial = 3e8;
+      spec.bearings.push_back(b);
+    }
+  }
+  for (int st = 1; st <= stages; ++st) {
+    const double x = st % 2 ? 0.2 : 0.08;
+    TrainGearSpec pinion{"p" + std::to_string(st), "s" + std::to_string(st - 1),
+                         spurGear(25, 3e-3, 20.0, 0.03)};
+    TrainGearSpec gear{"g" + std::to_string(st), "s" + std::to_string(st),
+                       spurGear(38, 3e-3, 20.0, 0.03)};
+    pinion.gear.helix_angle = (st % 2 ? 10.0 : -10.0) * kDeg;
+    gear.gear.helix_angle = -pinion.gear.helix_angle;
+    pinion.gear.bore_diameter = gear.gear.bore_diameter = 0.05;
+    pinion.position = gear.position = x;
+    spec.gears.push_back(pinion);
+    spec.gears.push_back(gear);
+    spec.meshes.push_back({"stage" + std::to_string(st),
+                           pinion.name,
+                           gear.name,
+                           (st % 2 ? 0.0 : 60.0) * kDeg,
+                           std::nullopt,
+                           k,
+                           {},
+                           0.05,
+                           std::nullopt});
+  }
+  spec.operating = {"s0", 1500.0 * std::numbers::pi / 30.0, 100.0, "s" + std::to_string(stages)};
+  return spec;
+}
+
 }  // namespace geardyn::testing

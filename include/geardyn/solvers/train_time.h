@@ -11,10 +11,14 @@
 /// factorised once; the r meshes vary it by V D(t) Vᵀ with D = diag(k_m(t) − k̄_m), which the
 /// Woodbury identity solves with the precomputed Z = A⁻¹ V and one r × r system per step:
 ///   x = y − Z (I + D Vᵀ Z)⁻¹ D Vᵀ y,   y = A⁻¹ b.
-/// A step is one back-substitution, a few matrix–vector products and an r × r LU, with no
-/// allocation.
+/// A step is one back-substitution, a few matrix–vector products and an r × r LU. Small
+/// trains use dense matrices and allocate nothing per step; from kSparseTrainDofs DOFs on
+/// (flexible shafts) M, C + ΩG₁ and A are sparse and A is factorised by Eigen's SparseLU,
+/// whose back-substitution allocates its n-vector workspace once per step.
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,10 +49,15 @@ struct TrainTimeResponse {
 };
 
 /// One Newmark step at a time (for benchmarks, and the building block of the solver).
+/// DOF count from which the Newmark stepper works with sparse matrices.
+inline constexpr int kSparseTrainDofs = 64;
+
 class TrainNewmarkStepper {
  public:
+  /// `sparse`: force the sparse (true) or dense (false) path; absent: sparse from
+  /// kSparseTrainDofs DOFs on.
   TrainNewmarkStepper(const GearTrainModel& model, double input_speed, double time_step,
-                      NewmarkParameters newmark);
+                      NewmarkParameters newmark, std::optional<bool> sparse = std::nullopt);
   void reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot);
   void step();  ///< allocation-free
   double time() const noexcept { return t_; }
@@ -61,8 +70,11 @@ class TrainNewmarkStepper {
 
   const GearTrainModel& model_;
   double speed_, dt_, beta_, gamma_, a0_, a1_, a2_, a3_, a4_, a5_, t_ = 0.0;
+  bool sparse_ = false;
   Eigen::MatrixXd Cg_, K0_, V_, Z_, S_, small_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
+  Eigen::SparseMatrix<double> Msp_, Cgsp_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> slu_;
   Eigen::VectorXd q_, v_, a_, f_, rhs_, y_, w_, dk_, ke_, k_;
 };
 
