@@ -64,6 +64,23 @@ void BM_FlexibleTrainNewmarkStep(benchmark::State& state) {
 // Second argument: 1 sparse (the default at this size), 0 dense (for the ratio).
 BENCHMARK(BM_FlexibleTrainNewmarkStep)->Args({4, 1})->Args({4, 0})->Unit(benchmark::kMicrosecond);
 
+// Campbell diagram of the 500-DOF FE gearbox over 200 speeds, 12 tracked modes: target < 2 s
+// (shift-invert Arnoldi on sparse matrices, Spectra).
+void BM_FlexibleTrainCampbell(benchmark::State& state) {
+  const GearTrainModel model(testing::flexibleChain(4, 0.018));
+  TrainModalOptions options;
+  options.modes = 12;
+  std::vector<double> speeds;
+  for (int i = 0; i < state.range(0); ++i) speeds.push_back(10.0 + 2.0 * i);
+  const auto lines = trainOrderLines(model, 2);
+  for (auto _ : state) {
+    auto campbell = trainCampbell(model, speeds, options, lines);
+    benchmark::DoNotOptimize(campbell.modes.data());
+  }
+  state.counters["dofs"] = model.dofCount();
+}
+BENCHMARK(BM_FlexibleTrainCampbell)->Arg(2)->Arg(200)->Unit(benchmark::kMillisecond);
+
 void BM_TrainSteadyStatePerSpeed(benchmark::State& state) {
   const GearTrainModel model(testing::twoStageReducer(smooth(4e8), smooth(6e8)));
   TrainSteadyOptions options;

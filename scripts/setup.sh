@@ -14,7 +14,7 @@ cd "$here"
 # One list, so that the README, CI and developers agree on what geardyn needs.
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev libfftw3-dev libboost-dev
+  libeigen3-dev libspectra-dev libfftw3-dev libboost-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev libhdf5-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py

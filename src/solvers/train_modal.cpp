@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/damped_modes.h"
 #include "geardyn/solvers/detail/mode_tracking.h"
+#include "geardyn/solvers/detail/shift_invert_modes.h"
 #include "geardyn/system/detail/train_building.h"
 
 namespace geardyn {
@@ -22,10 +24,13 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// Energy fractions and the planetary mode type (Lin & Parker 1999: rotational modes move the
 /// central members without translating them, translational modes without rotating them,
 /// planet modes not at all).
-void describe(const GearTrainModel& model, TrainMode& mode) {
+void describe(const GearTrainModel& model, TrainMode& mode,
+              const Eigen::SparseMatrix<double>* sparse_mass) {
   // Kinetic energy per DOF, Re(x̄_i (M x)_i) (M is not diagonal with beam elements); a body's
   // rotation is its θ_x, everything else (translations, tilts) counts as translation.
-  const Eigen::VectorXcd Mx = model.mass().cast<std::complex<double>>() * mode.shape;
+  const Eigen::VectorXcd Mx =
+      sparse_mass ? Eigen::VectorXcd(sparse_mass->cast<std::complex<double>>() * mode.shape)
+                  : Eigen::VectorXcd(model.mass().cast<std::complex<double>>() * mode.shape);
   const Eigen::VectorXd kinetic = (mode.shape.conjugate().array() * Mx.array()).real();
   const int per = model.dofsPerBody();
   const auto& bodies = model.bodies();
@@ -104,10 +109,73 @@ void describe(const GearTrainModel& model, TrainMode& mode) {
   }
 }
 
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+SparseMatrix sparseOf(const Eigen::MatrixXd& A) {
+  // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
+  return A.sparseView(1.0, 1e-14 * std::max(A.cwiseAbs().maxCoeff(), 1e-300));
+}
+
+/// The model's matrices as sparse ones, built once per analysis of a large train.
+struct SparseTrain {
+  SparseMatrix M, K, Komega, C, G;
+  explicit SparseTrain(const GearTrainModel& model)
+      : M(sparseOf(model.mass())),
+        K(sparseOf(model.stiffness() + model.meanMeshStiffness())),
+        Komega(sparseOf(model.centripetal())),
+        C(sparseOf(model.damping())),
+        G(sparseOf(model.gyroscopic())) {}
+};
+
+bool fewOfMany(const GearTrainModel& model, const TrainModalOptions& options) {
+  const int n = model.dofCount();
+  return n >= kSparseModalDofs && options.modes > 0 && 4 * options.modes < n;
+}
+
+/// A few modes of a large (FE) train: shift-invert Arnoldi nearest σ < 0, just below the
+/// rigid-body modes at 0: 1e-3 of the softest uncoupled DOF's sqrt(K_ii / M_ii), a Rayleigh
+/// quotient, hence at or above the lowest elastic modes' scale. `highest` gets the stiffest
+/// uncoupled DOF's frequency [Hz] (the scale of the rigid-body threshold).
+std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed, int count,
+                                double& highest) {
+  const SparseMatrix K = sparse.K + (speed * speed) * sparse.Komega;
+  const SparseMatrix D = sparse.C + speed * sparse.G;
+  const Eigen::VectorXd m = sparse.M.diagonal(), k = K.diagonal();
+  double softest = HUGE_VAL, stiffest = 0.0;
+  for (Eigen::Index i = 0; i < m.size(); ++i) {
+    if (m(i) > 0.0 && k(i) > 0.0) {
+      softest = std::min(softest, k(i) / m(i));
+      stiffest = std::max(stiffest, k(i) / m(i));
+    }
+  }
+  if (!std::isfinite(softest)) softest = 1.0;
+  highest = std::sqrt(stiffest) / kTwoPi;
+  // Each elastic mode is a conjugate pair; rigid-body and overdamped eigenvalues near σ come
+  // first: a margin of 12.
+  std::vector<TrainMode> modes;
+  for (detail::DampedMode& found :
+       detail::shiftInvertModes(sparse.M, D, K, 2 * count + 12, -1e-3 * std::sqrt(softest))) {
+    TrainMode mode;
+    mode.eigenvalue = found.eigenvalue;
+    mode.frequency = found.eigenvalue.imag() / kTwoPi;
+    mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
+    mode.shape = std::move(found.shape);
+    modes.push_back(std::move(mode));
+  }
+  return modes;
+}
+
+std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
+                               const TrainModalOptions& options, const SparseTrain* sparse);
+
 }  // namespace
 
 void TrainModalOptions::validate() const {
   if (modes < 0) throw InputError("modal.modes", std::to_string(modes), "an integer >= 0");
+  if (!(max_damping_ratio > 0.0 && max_damping_ratio <= 1.0)) {
+    throw InputError("modal.max_damping_ratio", fmt::format("{:g}", max_damping_ratio),
+                     "a ratio in (0, 1]");
+  }
   if (!std::isfinite(rigid_frequency)) {
     throw InputError("modal.rigid_frequency", fmt::format("{:g} Hz", rigid_frequency),
                      "a finite frequency (< 0: derived)");
@@ -116,48 +184,67 @@ void TrainModalOptions::validate() const {
 
 std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_speed,
                                   const TrainModalOptions& options) {
+  return modesAt(model, input_speed, options, nullptr);
+}
+
+namespace {
+
+std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
+                               const TrainModalOptions& options, const SparseTrain* sparse) {
   options.validate();
-  const Eigen::MatrixXd K = model.meanStiffnessAt(input_speed);
-  const Eigen::MatrixXd D = model.dampingAt(input_speed);
-  const Eigen::MatrixXd& M = model.mass();
   std::vector<TrainMode> modes;
-  const bool undamped = D.cwiseAbs().maxCoeff() == 0.0;
-  if (undamped) {
-    // Undamped, no Coriolis: the symmetric problem gives exact real modes (multiplicities to
-    // round-off) and keeps the rigid-body modes.
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-        0.5 * (K + K.transpose()), M);
-    if (solver.info() != Eigen::Success) {
-      throw std::runtime_error("modal analysis: the eigenvalue solver did not converge");
-    }
-    for (Eigen::Index j = 0; j < K.rows(); ++j) {
-      TrainMode mode;
-      const double w2 = solver.eigenvalues()(j);
-      const double w = std::sqrt(std::max(w2, 0.0));
-      mode.eigenvalue = {0.0, w};
-      mode.frequency = w / kTwoPi;
-      mode.shape = solver.eigenvectors().col(j).cast<std::complex<double>>();
-      Eigen::Index largest = 0;
-      mode.shape.cwiseAbs().maxCoeff(&largest);
-      mode.shape /= mode.shape(largest);
-      modes.push_back(std::move(mode));
-    }
+  const bool few = fewOfMany(model, options);
+  std::optional<SparseTrain> own;
+  if (few && !sparse) sparse = &own.emplace(model);
+  double sparse_highest = 0.0;
+  bool undamped = false;
+  if (few) {
+    modes = fewModes(*sparse, input_speed, options.modes, sparse_highest);
   } else {
-    for (detail::DampedMode& found : detail::dampedModes(M, D, K)) {
-      TrainMode mode;
-      mode.eigenvalue = found.eigenvalue;
-      mode.frequency = found.eigenvalue.imag() / kTwoPi;
-      mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
-      mode.shape = std::move(found.shape);
-      modes.push_back(std::move(mode));
+    const Eigen::MatrixXd K = model.meanStiffnessAt(input_speed);
+    const Eigen::MatrixXd D = model.dampingAt(input_speed);
+    const Eigen::MatrixXd& M = model.mass();
+    undamped = D.cwiseAbs().maxCoeff() == 0.0;
+    if (undamped) {
+      // Undamped, no Coriolis: the symmetric problem gives exact real modes (multiplicities to
+      // round-off) and keeps the rigid-body modes.
+      const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
+          0.5 * (K + K.transpose()), M);
+      if (solver.info() != Eigen::Success) {
+        throw std::runtime_error("modal analysis: the eigenvalue solver did not converge");
+      }
+      for (Eigen::Index j = 0; j < K.rows(); ++j) {
+        TrainMode mode;
+        const double w2 = solver.eigenvalues()(j);
+        const double w = std::sqrt(std::max(w2, 0.0));
+        mode.eigenvalue = {0.0, w};
+        mode.frequency = w / kTwoPi;
+        mode.shape = solver.eigenvectors().col(j).cast<std::complex<double>>();
+        Eigen::Index largest = 0;
+        mode.shape.cwiseAbs().maxCoeff(&largest);
+        mode.shape /= mode.shape(largest);
+        modes.push_back(std::move(mode));
+      }
+    } else {
+      for (detail::DampedMode& found : detail::dampedModes(M, D, K)) {
+        TrainMode mode;
+        mode.eigenvalue = found.eigenvalue;
+        mode.frequency = found.eigenvalue.imag() / kTwoPi;
+        mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
+        mode.shape = std::move(found.shape);
+        modes.push_back(std::move(mode));
+      }
     }
   }
   std::sort(modes.begin(), modes.end(),
             [](const TrainMode& a, const TrainMode& b) { return a.frequency < b.frequency; });
-  const double highest = modes.empty() ? 0.0 : modes.back().frequency;
+  // The rigid-body threshold: 1e-6 of the highest frequency found (the sparse path finds only
+  // the low ones: 1e-6 of the stiffest uncoupled DOF's frequency instead).
+  const double highest = std::max(sparse_highest, modes.empty() ? 0.0 : modes.back().frequency);
   const double rigid = options.rigid_frequency >= 0 ? options.rigid_frequency : 1e-6 * highest;
   std::vector<TrainMode> kept;
   for (TrainMode& mode : modes) {
+    if (mode.damping_ratio > options.max_damping_ratio) continue;
     const bool is_rigid = std::abs(mode.eigenvalue) / kTwoPi < rigid;
     if (is_rigid) {
       // The damped eigensolver returns a rigid-body pair at λ ≈ 0 with either sign of Im λ:
@@ -180,9 +267,11 @@ std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_spee
   if (options.modes > 0 && static_cast<int>(kept.size()) > options.modes) {
     kept.resize(options.modes);
   }
-  for (TrainMode& mode : kept) describe(model, mode);
+  for (TrainMode& mode : kept) describe(model, mode, sparse ? &sparse->M : nullptr);
   return kept;
 }
+
+}  // namespace
 
 std::vector<TrainOrderLine> trainOrderLines(const GearTrainModel& model, int mesh_harmonics) {
   std::vector<TrainOrderLine> lines;
@@ -225,8 +314,11 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
   candidates.keep_rigid = false;
   const int wanted = options.modes > 0 ? options.modes : model.dofCount();
   candidates.modes = std::min(2 * wanted, model.dofCount());
+  candidates.validate();
+  std::optional<SparseTrain> sparse;
+  const SparseTrain* sparse_train = fewOfMany(model, candidates) ? &sparse.emplace(model) : nullptr;
   for (std::size_t i = 0; i < speeds.size(); ++i) {
-    std::vector<TrainMode> found = trainModes(model, speeds[i], candidates);
+    std::vector<TrainMode> found = modesAt(model, speeds[i], candidates, sparse_train);
     if (i == 0) {
       if (static_cast<int>(found.size()) > wanted) found.resize(wanted);
       d.modes.push_back(std::move(found));

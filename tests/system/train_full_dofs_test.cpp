@@ -121,6 +121,24 @@ TEST(TrainFullDofs, ModesOfAFlexibleTrainAtSpeedAreFiniteAndSplitByGyroscopics) 
             1e-12 * model.gyroscopic().norm());
 }
 
+TEST(TrainFullDofs, ShiftInvertModesAreTheDenseSolversLowestModes) {
+  const GearTrainModel model(flexibleReducer(12.0, 0.04));
+  ASSERT_GE(model.dofCount(), kSparseModalDofs);
+  for (double speed : {0.0, 3.0 * model.inputSpeed()}) {
+    TrainModalOptions few;
+    few.modes = 12;
+    const auto sparse = trainModes(model, speed, few);
+    const auto dense = trainModes(model, speed);  // all modes: the dense solver
+    ASSERT_EQ(sparse.size(), 12u);
+    // Both converge to round-off of the eigenproblem (Arnoldi tolerance 1e-12): 1e-8.
+    for (std::size_t j = 0; j < sparse.size(); ++j) {
+      EXPECT_NEAR(sparse[j].frequency, dense[j].frequency, 1e-8 * dense[j].frequency)
+          << "mode " << j << " at " << speed << " rad/s";
+      EXPECT_NEAR(sparse[j].damping_ratio, dense[j].damping_ratio, 1e-8) << "mode " << j;
+    }
+  }
+}
+
 TEST(TrainFullDofs, SparseAndDenseNewmarkStepsAgree) {
   const GearTrainModel model(testing::flexibleReducer(12.0, 0.05));
   ASSERT_GE(model.dofCount(), kSparseTrainDofs);

@@ -41,8 +41,16 @@ struct TrainModalOptions {
   /// Return rigid-body modes (0 Hz) too; only undamped models at rest (symmetric eigenproblem)
   /// have them in their list, damped ones report elastic modes only.
   bool keep_rigid = true;
+  /// Modes more damped than this are skipped: overdamped high modes (stiffness-proportional
+  /// damping) that round-off turns into "modes" of a fraction of a hertz with ζ ≈ 1.
+  double max_damping_ratio = 0.99;
   void validate() const;
 };
+
+/// DOF count from which a request for a few modes (options.modes > 0, fewer than a quarter of
+/// the DOFs) is answered by shift-invert Arnoldi on sparse matrices (Spectra) instead of the
+/// dense eigensolver; rigid-body modes are then not reported.
+inline constexpr int kSparseModalDofs = 150;
 
 /// Modes at input speed Ω [rad/s], ascending in frequency.
 std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_speed,
