@@ -33,9 +33,7 @@ std::vector<DampedMode> dampedModes(const Eigen::MatrixXd& M, const Eigen::Matri
     const std::complex<double> lambda = solver.eigenvalues()(j);
     if (lambda.imag() <= 0.0) continue;
     DampedMode mode{lambda, back * (solver.eigenvectors().col(j).tail(n) / lambda)};  // z = ż/λ
-    Eigen::Index largest = 0;
-    mode.shape.cwiseAbs().maxCoeff(&largest);
-    mode.shape /= mode.shape(largest);
+    normalizeToLargest(mode.shape);
     modes.push_back(std::move(mode));
   }
   return modes;

@@ -82,9 +82,7 @@ std::vector<DampedMode> shiftInvertModes(const SparseMatrix& M, const SparseMatr
     DampedMode mode;
     mode.eigenvalue = values(j);
     mode.shape = vectors.col(j).head(M.rows());
-    Eigen::Index largest = 0;
-    mode.shape.cwiseAbs().maxCoeff(&largest);
-    mode.shape /= mode.shape(largest);
+    normalizeToLargest(mode.shape);
     modes.push_back(std::move(mode));
   }
   return modes;

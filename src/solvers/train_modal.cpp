@@ -111,6 +111,15 @@ void describe(const GearTrainModel& model, TrainMode& mode,
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
+TrainMode fromDamped(detail::DampedMode&& found) {
+  TrainMode mode;
+  mode.eigenvalue = found.eigenvalue;
+  mode.frequency = found.eigenvalue.imag() / kTwoPi;
+  mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
+  mode.shape = std::move(found.shape);
+  return mode;
+}
+
 SparseMatrix sparseOf(const Eigen::MatrixXd& A) {
   // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
   return A.sparseView(1.0, 1e-14 * std::max(A.cwiseAbs().maxCoeff(), 1e-300));
@@ -155,12 +164,7 @@ std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed, int cou
   std::vector<TrainMode> modes;
   for (detail::DampedMode& found :
        detail::shiftInvertModes(sparse.M, D, K, 2 * count + 12, -1e-3 * std::sqrt(softest))) {
-    TrainMode mode;
-    mode.eigenvalue = found.eigenvalue;
-    mode.frequency = found.eigenvalue.imag() / kTwoPi;
-    mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
-    mode.shape = std::move(found.shape);
-    modes.push_back(std::move(mode));
+    modes.push_back(fromDamped(std::move(found)));
   }
   return modes;
 }

@@ -19,6 +19,13 @@ struct DampedMode {
   Eigen::VectorXcd shape;           ///< displacement part, largest entry 1
 };
 
+/// Scales a shape so that its largest entry is 1.
+inline void normalizeToLargest(Eigen::VectorXcd& shape) {
+  Eigen::Index largest = 0;
+  shape.cwiseAbs().maxCoeff(&largest);
+  shape /= shape(largest);
+}
+
 /// Every eigenvalue with Im λ > 0 (overdamped real pairs are dropped), in solver order.
 /// Throws std::runtime_error when the eigenvalue solver fails.
 std::vector<DampedMode> dampedModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
