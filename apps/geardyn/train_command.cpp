@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
 #include "geardyn/io/fe_rotor_io.h"
@@ -344,6 +345,7 @@ struct LoadedTrain {
   io::Config analysis;
   io::Config gearbox;
   std::string gearbox_source;
+  std::vector<std::string> warnings;  ///< of a REXS import
 };
 
 LoadedTrain loadTrain(const CommandOptions& options) {
@@ -351,7 +353,10 @@ LoadedTrain loadTrain(const CommandOptions& options) {
   if (ref.empty()) {
     io::Config both =
         io::loadConfigFile(options.config_file, config::trainSchema(true), options.overrides);
-    return {both, both, options.config_file.string()};
+    if (both.has("gearbox.load_case"))
+      throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
+                       "only with a REXS gearbox file named by gearbox.file");
+    return {both, both, options.config_file.string(), {}};
   }
   std::vector<std::string> analysis_overrides, gearbox_overrides;
   const auto& sections = config::gearboxSectionNames();
@@ -364,8 +369,13 @@ LoadedTrain loadTrain(const CommandOptions& options) {
   const std::filesystem::path path = options.config_file.parent_path() / ref;
   io::Config analysis =
       io::loadConfigFile(options.config_file, config::trainSchema(false), analysis_overrides);
-  io::Config gearbox = io::loadConfigFile(path, config::gearboxSchema(), gearbox_overrides);
-  return {analysis, gearbox, path.string()};
+  std::optional<int> load_case;
+  if (analysis.has("gearbox.load_case"))
+    load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
+  std::vector<std::string> warnings;
+  // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
+  io::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  return {analysis, gearbox, path.string(), warnings};
 }
 
 }  // namespace
@@ -380,7 +390,7 @@ int runTrain(const CommandOptions& options) {
   if (loaded.gearbox_source != options.config_file.string()) {
     summary.config["gearbox_description"] = loaded.gearbox.resolved();
   }
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = loaded.warnings;
   const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings));
   warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
   summary.warnings = warnings;

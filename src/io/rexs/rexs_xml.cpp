@@ -1,0 +1,127 @@
+/// REXS XML (.rexs) with pugixml (rexs_reader.h).
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <pugixml.hpp>
+
+#include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_reader.h"
+#include "rexs_coded_array.h"
+
+namespace geardyn::io::rexs {
+namespace {
+
+int idOf(const pugi::xml_node& node, const char* attribute, const std::string& source) {
+  const std::string text = node.attribute(attribute).value();
+  int id = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) {
+    throw InputError(fmt::format("{}: <{}> at offset {} attribute {}", source, node.name(),
+                                 node.offset_debug(), attribute),
+                     "\"" + text + "\"", "an integer id");
+  }
+  return id;
+}
+
+double numberOf(const pugi::xml_node& c, const Component& owner, const std::string& attribute) {
+  const std::string text = c.text().get();
+  if (text == "true" || text == "false") return text == "true" ? 1.0 : 0.0;  // boolean arrays
+  double v = 0.0;
+  const char* first = text.data();
+  while (*first == ' ') ++first;
+  const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), v);
+  if (ec != std::errc() || !std::isfinite(v)) {
+    throw InputError("REXS " + owner.label() + " attribute " + attribute, "\"" + text + "\"",
+                     "a number in each <c> of an array or matrix");
+  }
+  return v;
+}
+
+Component componentOf(const pugi::xml_node& node, const std::string& source) {
+  Component c;
+  c.id = idOf(node, "id", source);
+  c.type = node.attribute("type").value();
+  c.name = node.attribute("name").value();
+  for (const auto& a : node.children("attribute")) {
+    Attribute at;
+    at.id = a.attribute("id").value();
+    at.unit = a.attribute("unit").value();
+    if (const auto array = a.child("array")) {
+      at.kind = ValueKind::kArray;
+      if (const auto code = array.attribute("code")) {
+        const auto values = detail::decodeCodedArray(code.value(), array.text().get());
+        if (!values)
+          throw InputError("REXS " + c.label() + " attribute " + at.id,
+                           std::string("code \"") + code.value() + "\"",
+                           "a coded array: int32, float32 or float64, base64");
+        at.array = *values;
+      } else {
+        for (const auto& v : array.children("c")) at.array.push_back(numberOf(v, c, at.id));
+      }
+    } else if (const auto matrix = a.child("matrix")) {
+      at.kind = ValueKind::kMatrix;
+      for (const auto& r : matrix.children("r")) {
+        at.matrix.emplace_back();
+        for (const auto& v : r.children("c")) at.matrix.back().push_back(numberOf(v, c, at.id));
+      }
+    } else if (const auto arrays = a.child("array_of_arrays")) {
+      at.kind = ValueKind::kMatrix;
+      for (const auto& r : arrays.children("array")) {
+        at.matrix.emplace_back();
+        for (const auto& v : r.children("c")) at.matrix.back().push_back(numberOf(v, c, at.id));
+      }
+    } else {
+      at.kind = ValueKind::kText;
+      at.text = a.text().get();
+    }
+    c.attributes.push_back(std::move(at));
+  }
+  return c;
+}
+
+}  // namespace
+
+Document parseRexsXml(std::string_view text, const std::string& source) {
+  pugi::xml_document xml;
+  const pugi::xml_parse_result parsed = xml.load_buffer(text.data(), text.size());
+  if (!parsed) {
+    throw InputError(fmt::format("{}: XML at offset {}", source, parsed.offset),
+                     parsed.description(), "a well-formed REXS XML file (truncated or not XML?)");
+  }
+  const pugi::xml_node model = xml.child("model");
+  if (!model)
+    throw InputError(source, "no <model> element", "a REXS XML file has <model version=\"…\">");
+  Document d;
+  d.source = source;
+  d.version = model.attribute("version").value();
+  d.application = fmt::format("{} {}", model.attribute("applicationId").value(),
+                              model.attribute("applicationVersion").value());
+  if (d.version.empty())
+    throw InputError(source + ": <model> attribute version", "", "the REXS version, e.g. 1.6");
+  for (const auto& r : model.child("relations").children("relation")) {
+    Relation rel;
+    rel.id = idOf(r, "id", source);
+    rel.type = r.attribute("type").value();
+    if (r.attribute("order")) rel.order = idOf(r, "order", source);
+    for (const auto& ref : r.children("ref"))
+      rel.refs.push_back(
+          {idOf(ref, "id", source), ref.attribute("role").value(), ref.attribute("hint").value()});
+    d.relations.push_back(std::move(rel));
+  }
+  for (const auto& c : model.child("components").children("component"))
+    d.components.push_back(componentOf(c, source));
+  for (const auto& spectrum : model.children("load_spectrum")) {
+    for (const auto& lc : spectrum.children("load_case")) {
+      LoadCase load_case;
+      load_case.id = idOf(lc, "id", source);
+      for (const auto& c : lc.children("component"))
+        load_case.components.push_back(componentOf(c, source));
+      d.load_cases.push_back(std::move(load_case));
+    }
+  }
+  return d;
+}
+
+}  // namespace geardyn::io::rexs
