@@ -118,11 +118,13 @@ TEST(RexsImport, FvaTwoStageGeometryAndLoadCases) {
   EXPECT_NEAR(intermediate.centre[0] - input.centre[0], 0.0, 1e-12);
   EXPECT_NEAR(intermediate.centre[1] - input.centre[1], -0.190, 1e-12);
   EXPECT_NEAR((output.centre - input.centre).norm(), 0.0, 1e-8);
-  // ε_γ = ε_α + ε_β: stage 1 1.4705 + 1.2675, stage 2 1.5376 + 0.6293 (ISO 21771 with
+  // ε_γ = ε_α + ε_β: stage 1 1.47047 + 1.26747, stage 2 1.53764 + 0.62927 (ISO 21771 with
   // d_a = d + 2 m_n (1 + x), a_w = 190 mm; evaluated separately in Python for this test).
-  for (const auto& [index, eps] : std::map<int, double>{{0, 2.7379}, {1, 2.1669}}) {
+  for (const auto& [index, eps] : std::map<int, double>{{0, 2.7379345}, {1, 2.1669173}}) {
     EXPECT_NEAR(model.meshes()[index].centre_distance, 0.190, 1e-8);
-    EXPECT_NEAR(model.meshes()[index].contact_ratio, eps, 2e-3) << "mesh " << index;
+    // 1e-5: stage 2 runs at its zero-backlash distance, 5.5 nm above the 190 mm of the hand
+    // evaluation (ε changes by 8e-7).
+    EXPECT_NEAR(model.meshes()[index].contact_ratio, eps, 1e-5) << "mesh " << index;
   }
   const std::vector<double> speeds = {543, 3456, 1234, 789}, torques = {567, 345, 456, 789};
   ASSERT_EQ(im.rexs.load_cases.size(), speeds.size());
