@@ -363,7 +363,7 @@ LoadedTrain loadTrain(const CommandOptions& options) {
   for (const auto& o : options.overrides) {
     const std::string first = o.substr(0, o.find_first_of(".="));
     const bool to_gearbox = std::find(sections.begin(), sections.end(), first) != sections.end() &&
-                            o.rfind("gearbox.file", 0) != 0;
+                            o.rfind("gearbox.file", 0) != 0 && o.rfind("gearbox.load_case", 0) != 0;
     (to_gearbox ? gearbox_overrides : analysis_overrides).push_back(o);
   }
   const std::filesystem::path path = options.config_file.parent_path() / ref;

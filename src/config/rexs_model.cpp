@@ -76,7 +76,8 @@ std::string keyOf(const std::string& name) {
 
 }  // namespace
 
-Model::Model(const Document& d, std::vector<std::string>& w) : doc(d), read(w), warnings(w) {
+Model::Model(const Document& d, std::vector<std::string>& w)
+    : doc(d), read(w, d.versionNumber()), warnings(w) {
   std::map<std::string, int> used;
   for (const auto& c : doc.components) by_id_[c.id] = &c;
   for (const auto& c : doc.components) {
@@ -284,10 +285,14 @@ GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& s) {
 }
 
 void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& s) {
-  if (shaft_diameter <= 0) return;
   // Root diameter of the standard rack (h_f* = 1.25): d_f = m_n z / cos β − 2 m_n (1.25 − x).
   const double root = gear.normal_module * gear.teeth / std::cos(gear.helix_angle) -
                       2 * gear.normal_module * (1.25 - gear.profile_shift);
+  if (shaft_diameter <= 0) {
+    s.add("bore_diameter", tomlReal(0.5 * root),
+          "no shaft section under the gear: half the root diameter");
+    return;
+  }
   if (shaft_diameter < root) {
     s.add("bore_diameter", tomlReal(shaft_diameter),
           "the shaft section's outer diameter under the gear");

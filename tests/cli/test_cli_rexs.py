@@ -61,6 +61,12 @@ def test_analysis_reads_rexs_directly_and_picks_the_load_case(tmp_path):
     assert a == b  # the same gearTrainFromConfig path: identical
     summary = json.loads((tmp_path / "a" / "summary.json").read_text())
     assert summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"] == 1234.0
+    # --set reaches the load case (it belongs to the analysis file, not the gearbox).
+    other = run("train", analysis(tmp_path, "box.rexs"), "--out", tmp_path / "d",
+                "--set", "gearbox.load_case=2")
+    assert other.returncode == 0, other.stderr
+    summary = json.loads((tmp_path / "d" / "summary.json").read_text())
+    assert summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"] == 3456.0
     bad = run("train", analysis(tmp_path, "box.rexs", "load_case = 9"), "--out", tmp_path / "c")
     assert bad.returncode == 2
     assert "load_case = 9" in bad.stderr and "1, 2, 3, 4" in bad.stderr

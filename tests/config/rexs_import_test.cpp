@@ -221,6 +221,15 @@ TEST(RexsImport, FvaPlanetaryStage) {
     EXPECT_GT(types["rotational"], 0);
     EXPECT_GT(types["translational"], 0);
     EXPECT_EQ(types["translational"] % 2, 0);  // in pairs (Lin & Parker 1999, N = 3)
+    EXPECT_EQ(types["planet"], 0);             // planet modes need N >= 4
+    // Assemblability is the model's check: 4 equally spaced planets do not fit
+    // ((17 + 61) / 4 is not an integer).
+    const std::string stage = "planetary." + st.name;
+    const io::Config four =
+        io::parseConfig(im.rexs.toml, file, config::gearboxSchema(),
+                        {stage + ".planets=4", stage + ".planet_angles_deg=[]"});
+    std::vector<std::string> warnings;
+    EXPECT_THROW(GearTrainModel(config::gearTrainFromConfig(four, warnings)), InputError);
   }
 }
 
@@ -432,6 +441,60 @@ TEST(RexsImport, SmallGearboxMeshCharacteristicAdditionalMassAndRoundTrip) {
   EXPECT_EQ(a["disks"].dump(), b["disks"].dump());
   EXPECT_EQ(a["bearings"].dump(), b["bearings"].dump());
   EXPECT_EQ(a["operating_point"].dump(), b["operating_point"].dump());
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The version-aware tables: an attribute newer than the file, and old names in a new file,
+/// are read with one warning each.
+TEST(RexsImport, VersionAwareAttributesAndAliases) {
+  std::vector<std::string> warnings;
+  auto doc = io::rexs::parseRexsJson(replaced(kSmallJson, "\"1.6\"", "\"1.4\""), "old.rexsj");
+  io::rexs::normalize(doc, warnings);
+  auto im = config::importRexsGearbox(doc);
+  EXPECT_TRUE(anyWarningContains(
+      im.warnings,
+      "meshing_stiffness_characteristic is part of REXS from 1.5 on, the file is "
+      "REXS 1.4"));
+  // 1.6 file with the 1.3 unit "°" and a 2.0.0 file with the 1.x unit "N / mm^2".
+  doc = io::rexs::parseRexsJson(replaced(kSmallJson, "\"deg\"", "\"°\""), "deg.rexsj");
+  warnings.clear();
+  io::rexs::normalize(doc, warnings);
+  EXPECT_TRUE(anyWarningContains(warnings,
+                                 "unit \"°\" (first at component 3) is the name before "
+                                 "REXS 1.4; read as \"deg\""));
+  EXPECT_EQ(warnings.size(), 1u);  // one warning for both gears
+  im = config::importRexsGearbox(doc);
+  EXPECT_EQ(im.toml,
+            config::importRexsGearbox(io::rexs::parseRexsJson(kSmallJson, "deg.rexsj")).toml);
+  const std::string modulus =
+      R"({"id": 12, "type": "material", "name": "Steel", "attributes": [
+       {"id": "elastic_modulus", "unit": "N / mm^2", "floating_point": 210000.0}]},
+  {"id": 1, "type": "shaft",)";
+  doc = io::rexs::parseRexsJson(replaced(replaced(kSmallJson, "\"1.6\"", "\"2.0.0\""),
+                                         R"({"id": 1, "type": "shaft",)", modulus),
+                                "new.rexsj");
+  warnings.clear();
+  io::rexs::normalize(doc, warnings);
+  EXPECT_TRUE(anyWarningContains(warnings,
+                                 "unit \"N / mm^2\" (first at component 12) is the "
+                                 "name before REXS 2.0; read as \"MPa\""));
+}
+
+/// Attributes geardyn does not read may hold anything (string arrays in XML): no error.
+TEST(RexsImport, UnreadAttributesOfAnyKindAreAccepted) {
+  const std::string xml = R"(<model version="1.6"><relations/><components>
+    <component id="1" name="s" type="shaft">
+      <attribute id="some_enum_array" unit="none"><array><c>left</c><c>right</c></array></attribute>
+      <attribute id="some_matrix" unit="none"><matrix><r><c>a</c></r></matrix></attribute>
+    </component></components></model>)";
+  const auto doc = io::rexs::parseRexsXml(xml, "any.rexs");
+  EXPECT_EQ(doc.components[0].attributes[0].kind, io::rexs::ValueKind::kTextArray);
+  EXPECT_EQ(doc.components[0].attributes[1].kind, io::rexs::ValueKind::kTextArray);
 }
 
 TEST(RexsImport, UnitsAndCodedArrays) {

@@ -212,8 +212,7 @@ void normalize(Document& document, std::vector<std::string>& warnings) {
       for (const auto& r : kAttributes)
         if (a.id == r.old_name) note(r, "attribute", c.id), a.id = r.new_name;
       for (const auto& r : kUnits)
-        if (compact(a.unit) == compact(r.old_name) && r.renamed_in == 104)
-          note(r, "unit", c.id), a.unit = r.new_name;
+        if (compact(a.unit) == compact(r.old_name)) note(r, "unit", c.id), a.unit = r.new_name;
     }
   };
   for (auto& c : document.components) fixComponent(c);
@@ -237,6 +236,12 @@ void AttributeReader::warn(const std::string& text, const std::string& key) {
 double AttributeReader::convert(const Component& c, const Attribute& a, double value) {
   const AttributeSpec* spec = attributeSpec(a.id);
   const Dimension dim = spec ? spec->dimension : D::kNone;
+  if (spec && version_ > 0 && version_ < spec->since)
+    warn(fmt::format("attribute {} is part of REXS from {}.{} on, the file is REXS {}.{} (first at "
+                     "{}): read anyway",
+                     a.id, spec->since / 100, spec->since % 100, version_ / 100, version_ % 100,
+                     c.label()),
+         "newer attribute " + a.id);
   const auto v = toFileUnit(value, a.unit, dim);
   if (!v) {
     throwAttributeError(c, a.id, fmt::format("{:g} \"{}\"", value, a.unit),

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <pugixml.hpp>
 
 #include "geardyn/error.h"
@@ -25,18 +26,38 @@ int idOf(const pugi::xml_node& node, const char* attribute, const std::string& s
   return id;
 }
 
-double numberOf(const pugi::xml_node& c, const Component& owner, const std::string& attribute) {
-  const std::string text = c.text().get();
-  if (text == "true" || text == "false") return text == "true" ? 1.0 : 0.0;  // boolean arrays
-  double v = 0.0;
-  const char* first = text.data();
-  while (*first == ' ') ++first;
-  const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), v);
-  if (ec != std::errc() || !std::isfinite(v)) {
-    throw InputError("REXS " + owner.label() + " attribute " + attribute, "\"" + text + "\"",
-                     "a number in each <c> of an array or matrix");
+/// The numbers of an array's <c> elements ("true"/"false" as 1/0), or nullopt when one is not
+/// a number (a string or enum array: kept as text, an error only if geardyn reads it).
+std::optional<std::vector<double>> numbersOf(const pugi::xml_node& parent, const char* element) {
+  std::vector<double> out;
+  for (const auto& c : parent.children(element)) {
+    const std::string text = c.text().get();
+    if (text == "true" || text == "false") {
+      out.push_back(text == "true" ? 1.0 : 0.0);
+      continue;
+    }
+    double v = 0.0;
+    const char* first = text.data();
+    while (*first == ' ') ++first;
+    const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), v);
+    if (ec != std::errc() || !std::isfinite(v)) return std::nullopt;
+    out.push_back(v);
   }
-  return v;
+  return out;
+}
+
+/// Rows of a <matrix> (<r> of <c>) or <array_of_arrays> (<array> of <c>).
+void readRows(const pugi::xml_node& node, const char* row, Attribute& at) {
+  at.kind = ValueKind::kMatrix;
+  for (const auto& r : node.children(row)) {
+    auto values = numbersOf(r, "c");
+    if (!values) {
+      at.kind = ValueKind::kTextArray;
+      at.matrix.clear();
+      return;
+    }
+    at.matrix.push_back(std::move(*values));
+  }
 }
 
 Component componentOf(const pugi::xml_node& node, const std::string& source) {
@@ -57,21 +78,15 @@ Component componentOf(const pugi::xml_node& node, const std::string& source) {
                            std::string("code \"") + code.value() + "\"",
                            "a coded array: int32, float32 or float64, base64");
         at.array = *values;
+      } else if (auto values = numbersOf(array, "c")) {
+        at.array = std::move(*values);
       } else {
-        for (const auto& v : array.children("c")) at.array.push_back(numberOf(v, c, at.id));
+        at.kind = ValueKind::kTextArray;
       }
     } else if (const auto matrix = a.child("matrix")) {
-      at.kind = ValueKind::kMatrix;
-      for (const auto& r : matrix.children("r")) {
-        at.matrix.emplace_back();
-        for (const auto& v : r.children("c")) at.matrix.back().push_back(numberOf(v, c, at.id));
-      }
+      readRows(matrix, "r", at);
     } else if (const auto arrays = a.child("array_of_arrays")) {
-      at.kind = ValueKind::kMatrix;
-      for (const auto& r : arrays.children("array")) {
-        at.matrix.emplace_back();
-        for (const auto& v : r.children("c")) at.matrix.back().push_back(numberOf(v, c, at.id));
-      }
+      readRows(arrays, "array", at);
     } else {
       at.kind = ValueKind::kText;
       at.text = a.text().get();

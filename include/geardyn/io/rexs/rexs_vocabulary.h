@@ -60,7 +60,10 @@ void normalize(Document& document, std::vector<std::string>& warnings);
 /// what cannot be understood is an InputError naming the component id, type and attribute.
 class AttributeReader {
  public:
-  explicit AttributeReader(std::vector<std::string>& warnings) : warnings_(warnings) {}
+  /// `version`: the file's REXS version (Document::versionNumber); an attribute read from a
+  /// file older than the version that introduced it gets a warning (read anyway).
+  explicit AttributeReader(std::vector<std::string>& warnings, int version = 0)
+      : warnings_(warnings), version_(version) {}
 
   bool has(const Component& c, const std::string& id) const { return c.find(id) != nullptr; }
   /// Real value in the gearbox file's unit of the attribute's dimension (attributeSpec).
@@ -80,6 +83,7 @@ class AttributeReader {
  private:
   double convert(const Component& c, const Attribute& a, double value);
   std::vector<std::string>& warnings_;
+  int version_ = 0;
   std::set<std::string> warned_;
 };
 
