@@ -67,6 +67,16 @@ def test_analysis_reads_rexs_directly_and_picks_the_load_case(tmp_path):
     assert other.returncode == 0, other.stderr
     summary = json.loads((tmp_path / "d" / "summary.json").read_text())
     assert summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"] == 3456.0
+    # Every load case, each into its own folder, at its own speed.
+    every = run("train", analysis(tmp_path, "box.rexs", "all_load_cases = true"), "--out",
+                tmp_path / "all")
+    assert every.returncode == 0, every.stderr
+    for case, rpm in [(1, 543.0), (2, 3456.0), (3, 1234.0), (4, 789.0)]:
+        summary = json.loads((tmp_path / "all" / f"load_case_{case}" / "summary.json").read_text())
+        assert summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"] == rpm
+        assert summary["config"]["gearbox"]["load_case"] == case
+    bad = run("train", analysis(tmp_path, "box.toml", "all_load_cases = true"), "--out", tmp_path / "e")
+    assert bad.returncode == 2 and "gearbox.all_load_cases" in bad.stderr
     bad = run("train", analysis(tmp_path, "box.rexs", "load_case = 9"), "--out", tmp_path / "c")
     assert bad.returncode == 2
     assert "load_case = 9" in bad.stderr and "1, 2, 3, 4" in bad.stderr
