@@ -88,6 +88,8 @@ Operating operatingPoints(Model& model, const std::set<int>& shafts, const Plane
     if (read.boolean(*l, "defines_torque").value_or(false) && !torque_load)
       torque_load = l->id, torque_shaft = bodyOf(*shaft);
   }
+  const int speed_shaft = op.input;  // the component whose attributes give the speed
+  if (op.input) op.input = bodyOf(op.input);
   if (!op.input) op.input = torque_shaft;
   if (!op.input && !shafts.empty()) op.input = *shafts.begin();
   for (const auto& [load, shaft] : loads) {
@@ -113,8 +115,8 @@ Operating operatingPoints(Model& model, const std::set<int>& shafts, const Plane
   for (const auto* lc : cases) {
     RexsLoadCaseSummary s;
     s.id = lc ? lc->id : 0;
-    const Component& in = model.component(op.input);
-    const Component* in_lc = inLoadCase(lc, op.input);
+    const Component& in = model.component(speed_shaft ? speed_shaft : op.input);
+    const Component* in_lc = inLoadCase(lc, in.id);
     s.speed_rpm = (in_lc ? read.real(*in_lc, "rotational_speed") : std::nullopt)
                       .value_or(read.real(in, "rotational_speed", 0.0));
     if (torque_load && torque_shaft == op.input) {
@@ -168,7 +170,7 @@ RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& optio
     result.warnings.push_back(doc.source +
                               ": components geardyn does not model, left out: " + skipped);
   for (const auto& c : doc.components) {
-    if (c.type.rfind("worm_", 0) == 0 && c.type == "worm_stage")
+    if (c.type == "worm_stage")
       result.warnings.push_back(fmt::format(
           "{}: worm stages are not modelled ({}); its shafts, bearings and loads are kept",
           doc.source, c.label()));
