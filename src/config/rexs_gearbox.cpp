@@ -12,6 +12,7 @@
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/io/rexs/rexs_reader.h"
+#include "geardyn/system/gear_train_model.h"
 #include "rexs_mapping.h"
 
 namespace geardyn::config {
@@ -68,6 +69,9 @@ const Component* inLoadCase(const io::rexs::LoadCase* lc, int id) {
 
 struct Operating {
   int input = 0, output = 0;
+  /// The shaft whose external load defines the torque (0: none); cases[].torque is that load's
+  /// torque until it is carried over to the input (torqueOnInput).
+  int torque_shaft = 0;
   std::vector<RexsLoadCaseSummary> cases;
 };
 
@@ -104,11 +108,7 @@ Operating operatingPoints(Model& model, const std::set<int>& shafts, const Plane
                           op.output ? model.name(op.output) : "the input"));
   }
   if (!op.output) op.output = op.input;
-  if (torque_shaft && torque_shaft != op.input)
-    read.warn(
-        fmt::format("the torque is defined on shaft {} but the speed on {}: the "
-                    "operating torque is written as 0 (set operating_point.torque)",
-                    model.name(torque_shaft), model.name(op.input)));
+  op.torque_shaft = torque_shaft;
   std::vector<const io::rexs::LoadCase*> cases;
   for (const auto& lc : model.doc.load_cases) cases.push_back(&lc);
   if (cases.empty()) cases.push_back(nullptr);
@@ -119,7 +119,7 @@ Operating operatingPoints(Model& model, const std::set<int>& shafts, const Plane
     const Component* in_lc = inLoadCase(lc, in.id);
     s.speed_rpm = (in_lc ? read.real(*in_lc, "rotational_speed") : std::nullopt)
                       .value_or(read.real(in, "rotational_speed", 0.0));
-    if (torque_load && torque_shaft == op.input) {
+    if (torque_load) {
       const Component* l_lc = inLoadCase(lc, torque_load);
       s.torque =
           (l_lc ? read.real(*l_lc, "torque_around_u_axis") : std::nullopt)
@@ -422,7 +422,37 @@ RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& optio
   }
 
   // Operating point from the chosen load case.
-  const Operating op = operatingPoints(model, shafts, pm);
+  Operating op = operatingPoints(model, shafts, pm);
+  std::string torque_note = "external_load torque_around_u_axis";
+  if (op.torque_shaft && op.torque_shaft != op.input) {
+    // The torque is given on another shaft (e.g. the output): carried over to the input by the
+    // power balance of the lossless train, T_in = −T_B ω_B / ω_in, with ω_B / ω_in from the
+    // kinematics of the description being written.
+    std::optional<double> ratio;
+    try {
+      TomlSection probe{"operating_point", "", {}};
+      probe.add("input", tomlString(model.name(op.input)));
+      probe.add("output", tomlString(model.name(op.output)));
+      std::vector<TomlSection> all = sections;
+      all.push_back(probe);
+      const io::Config c = io::parseConfig(renderToml(all, ""), doc.source, gearboxSchema());
+      std::vector<std::string> ignored;
+      const GearTrainModel m(gearTrainFromConfig(c, ignored));
+      ratio = m.bodies()[m.bodyIndex(model.name(op.torque_shaft))].speed_ratio;
+    } catch (const InputError& e) {
+      read.warn(
+          fmt::format("the torque is defined on shaft {} but the speed on {}, and the "
+                      "speed ratio between them is not known ({}): the operating torque "
+                      "is written as 0 (set operating_point.torque)",
+                      model.name(op.torque_shaft), model.name(op.input), e.what()));
+    }
+    for (auto& c : op.cases) c.torque = ratio ? -c.torque * *ratio : 0.0;
+    torque_note = ratio ? fmt::format(
+                              "-T x {:.6g}: the torque on {} carried to the input "
+                              "(lossless power balance)",
+                              *ratio, model.name(op.torque_shaft))
+                        : "not known (see the warnings)";
+  }
   for (const auto& c : op.cases)
     if (c.id != 0 || !doc.load_cases.empty()) result.load_cases.push_back(c);
   std::size_t chosen = 0;
@@ -447,7 +477,7 @@ RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& optio
   opt.add("input", tomlString(model.name(op.input)),
           fmt::format("shaft component {} (defines_speed)", op.input));
   opt.add("speed_rpm", tomlReal(lc.speed_rpm), "rotational_speed");
-  opt.add("torque", tomlReal(lc.torque), "external_load torque_around_u_axis");
+  opt.add("torque", tomlReal(lc.torque), torque_note);
   opt.add("output", tomlString(model.name(op.output)),
           fmt::format("shaft component {}", op.output));
   sections.push_back(std::move(opt));

@@ -449,6 +449,22 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
+/// A torque defined on the output is carried to the input by the power balance: with the
+/// output at −20/40 of the input speed, 200 N m on the output is 100 N m on the input.
+TEST(RexsImport, TorqueOnTheOutputIsCarriedToTheInput) {
+  std::string json = replaced(kSmallJson, R"({"id": "defines_torque", "boolean": true}, )", "");
+  json = replaced(json, R"("name": "Load", "attributes": [)",
+                  R"("name": "Load", "attributes": [{"id": "defines_torque", "boolean": true},
+                     {"id": "torque_around_u_axis", "unit": "N m", "floating_point": 200.0},)");
+  const auto im = config::importRexsGearbox(io::rexs::parseRexsJson(json, "out.rexsj"));
+  const io::Config config = io::parseConfig(im.toml, "out", config::gearboxSchema());
+  std::vector<std::string> warnings;
+  const GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
+  EXPECT_EQ(spec.operating.input_shaft, "input");
+  EXPECT_NEAR(spec.operating.input_torque, 100.0, 1e-9);
+  EXPECT_NE(im.toml.find("the torque on output carried to the input"), std::string::npos);
+}
+
 /// The version-aware tables: an attribute newer than the file, and old names in a new file,
 /// are read with one warning each.
 TEST(RexsImport, VersionAwareAttributesAndAliases) {
