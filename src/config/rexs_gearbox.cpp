@@ -163,6 +163,7 @@ std::string renderToml(const std::vector<TomlSection>& sections, const std::stri
 }  // namespace
 
 RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& options) {
+  io::rexs::checkReferences(doc);  // documents built in code have not been through the reader
   RexsImport result;
   Model model(doc, result.warnings);
   auto& read = model.read;

@@ -103,7 +103,11 @@ Model::Model(const Document& d, std::vector<std::string>& w)
 }
 
 const Component& Model::component(int id) const {
-  return *by_id_.at(id);
+  const auto it = by_id_.find(id);
+  if (it == by_id_.end())
+    throw InputError(doc.source + ": REXS component id", std::to_string(id),
+                     "refers to a component that is not in the model");
+  return *it->second;
 }
 
 std::vector<const Component*> Model::ofType(const std::set<std::string>& types) const {

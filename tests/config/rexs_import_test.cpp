@@ -343,6 +343,10 @@ TEST(RexsImport, BadInputNamesTheComponent) {
   const std::string missing = errorOf("missing.rexs", smallModel("99", teeth, "mm"));
   EXPECT_NE(missing.find("relation 1"), std::string::npos) << missing;
   EXPECT_NE(missing.find("component 99"), std::string::npos) << missing;
+  // A document built in code (not through the file reader) is checked by the mapping too.
+  EXPECT_THROW(
+      config::importRexsGearbox(io::rexs::parseRexsXml(smallModel("99", teeth, "mm"), "m")),
+      InputError);
   const std::string no_teeth = errorOf("noteeth.rexs", smallModel("4", "", "mm"));
   EXPECT_NE(no_teeth.find("component 4 (cylindrical_gear \"Pinion\") attribute number_of_teeth"),
             std::string::npos)
