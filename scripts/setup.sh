@@ -16,6 +16,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libspectra-dev libfftw3-dev libboost-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev libhdf5-dev
+  libpugixml-dev libminizip-dev zlib1g-dev  # REXS import: XML, zipped .rexsz
   libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py
   python3-scipy  # bench/rotor_scipy_compare.py only

@@ -12,6 +12,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/did_you_mean.h"
 #include "geardyn/version.h"
+#include "rexs_command.h"
 
 namespace {
 
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
              "\nConfiguration reference of a command: geardyn schema COMMAND");
 
   const auto commands = geardyn::cli::allCommands();
-  std::vector<std::string> command_names{"schema"};
+  std::vector<std::string> command_names{"schema", "import", "export"};
   for (const auto& command : commands) command_names.push_back(command.name);
   if (const int code = rejectUnknownCommand(argc, argv, command_names); code != 0) return code;
   std::map<std::string, CommandOptions> options;
@@ -135,6 +136,7 @@ int main(int argc, char** argv) {
     }
   }
 
+  const geardyn::cli::RexsCommands rexs_commands(app);
   std::string schema_command;
   CLI::App* schema_sub =
       app.add_subcommand("schema", "print the configuration reference of a command (Markdown)");
@@ -151,6 +153,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : geardyn::cli::kExitBadInput;
   }
 
+  if (const auto code = rexs_commands.runIfParsed()) return *code;
   if (schema_sub->parsed()) {
     for (const auto& command : commands) {
       if (command.name != schema_command) continue;

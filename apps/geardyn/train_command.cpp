@@ -12,11 +12,13 @@
 
 #include "command.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
 #include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
+#include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 #include "plotting.h"
 
@@ -344,6 +346,7 @@ struct LoadedTrain {
   io::Config analysis;
   io::Config gearbox;
   std::string gearbox_source;
+  std::vector<std::string> warnings;  ///< of a REXS import
 };
 
 LoadedTrain loadTrain(const CommandOptions& options) {
@@ -351,28 +354,39 @@ LoadedTrain loadTrain(const CommandOptions& options) {
   if (ref.empty()) {
     io::Config both =
         io::loadConfigFile(options.config_file, config::trainSchema(true), options.overrides);
-    return {both, both, options.config_file.string()};
+    if (both.has("gearbox.load_case"))
+      throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
+                       "only with a REXS gearbox file named by gearbox.file");
+    return {both, both, options.config_file.string(), {}};
   }
   std::vector<std::string> analysis_overrides, gearbox_overrides;
   const auto& sections = config::gearboxSectionNames();
   for (const auto& o : options.overrides) {
     const std::string first = o.substr(0, o.find_first_of(".="));
-    const bool to_gearbox = std::find(sections.begin(), sections.end(), first) != sections.end() &&
-                            o.rfind("gearbox.file", 0) != 0;
+    // [gearbox] file, load_case and all_load_cases belong to the analysis file.
+    std::string key = o.substr(0, o.find('='));
+    key.erase(key.find_last_not_of(" \t") + 1);
+    const bool analysis_key =
+        key == "gearbox.file" || key == "gearbox.load_case" || key == "gearbox.all_load_cases";
+    const bool to_gearbox =
+        std::find(sections.begin(), sections.end(), first) != sections.end() && !analysis_key;
     (to_gearbox ? gearbox_overrides : analysis_overrides).push_back(o);
   }
   const std::filesystem::path path = options.config_file.parent_path() / ref;
   io::Config analysis =
       io::loadConfigFile(options.config_file, config::trainSchema(false), analysis_overrides);
-  io::Config gearbox = io::loadConfigFile(path, config::gearboxSchema(), gearbox_overrides);
-  return {analysis, gearbox, path.string()};
+  std::optional<int> load_case;
+  if (analysis.has("gearbox.load_case"))
+    load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
+  std::vector<std::string> warnings;
+  // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
+  io::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  return {analysis, gearbox, path.string(), warnings};
 }
 
-}  // namespace
-
-int runTrain(const CommandOptions& options) {
+/// One run of the analyses on one gearbox (one load case).
+int runTrainOnce(const CommandOptions& options, const LoadedTrain& loaded) {
   const auto start = Clock::now();
-  const LoadedTrain loaded = loadTrain(options);
   io::RunSummary summary;
   summary.command = "train";
   summary.config_source = options.config_file.string();
@@ -380,7 +394,7 @@ int runTrain(const CommandOptions& options) {
   if (loaded.gearbox_source != options.config_file.string()) {
     summary.config["gearbox_description"] = loaded.gearbox.resolved();
   }
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = loaded.warnings;
   const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings));
   warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
   summary.warnings = warnings;
@@ -411,6 +425,30 @@ int runTrain(const CommandOptions& options) {
   }
   text += fmt::format("results: {}\n", path.string());
   report(options, text);
+  return code;
+}
+
+}  // namespace
+
+int runTrain(const CommandOptions& options) {
+  const LoadedTrain loaded = loadTrain(options);
+  if (!loaded.analysis.boolean("gearbox.all_load_cases")) return runTrainOnce(options, loaded);
+  // Every load case of a REXS gearbox: one run each, into its own folder.
+  if (!io::rexs::isRexsPath(loaded.gearbox_source) || loaded.analysis.has("gearbox.load_case"))
+    throw InputError("gearbox.all_load_cases", "true",
+                     "only with a REXS gearbox file and without gearbox.load_case");
+  const auto cases = config::importRexsFile(loaded.gearbox_source).load_cases;
+  if (cases.empty())
+    throw InputError("gearbox.all_load_cases", "true",
+                     loaded.gearbox_source + " has no load spectrum");
+  int code = kExitOk;
+  for (const auto& c : cases) {
+    CommandOptions one = options;
+    one.out_dir = options.resultFolder() / fmt::format("load_case_{}", c.id);
+    one.overrides.push_back("gearbox.all_load_cases=false");
+    one.overrides.push_back(fmt::format("gearbox.load_case={}", c.id));
+    code = std::max(code, runTrainOnce(one, loadTrain(one)));
+  }
   return code;
 }
 

@@ -49,6 +49,17 @@ io::ConfigSchema trainSchema(bool inline_gearbox) {
       .doc(
           "the gearbox description file, relative to this file (absent: the gearbox sections are "
           "in this file)");
+  schema.integer("gearbox.load_case")
+      .min(0)
+      .optional()
+      .doc(
+          "with a REXS gearbox file (.rexs, .rexsj, .rexsz): the REXS id of the load case that "
+          "becomes the operating point (default: the first)");
+  schema.boolean("gearbox.all_load_cases")
+      .defaultValue(false)
+      .doc(
+          "with a REXS gearbox file: run the analyses at every load case of its spectrum, each "
+          "into <out>/load_case_<id>/");
   schema.section("analysis", "What to run.");
   schema.stringList("analysis.run")
       .choices({"static", "modal", "campbell", "forced", "time"})

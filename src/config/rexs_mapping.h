@@ -1,0 +1,113 @@
+#pragma once
+/// What the REXS → gearbox mapping's parts share (rexs_gearbox.cpp, rexs_planetary.cpp): the
+/// index of the model, the TOML sections being written and the caps for "rigid" values.
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "geardyn/geometry/gear.h"
+#include "geardyn/io/rexs/rexs_document.h"
+#include "geardyn/io/rexs/rexs_vocabulary.h"
+
+namespace geardyn::config::rexs_detail {
+
+using io::rexs::Component;
+using io::rexs::Document;
+using io::rexs::Relation;
+
+struct TomlLine {
+  std::string key, value, comment;
+};
+
+/// One [section] of the gearbox file, with its comment (the REXS component it comes from).
+struct TomlSection {
+  std::string header, comment;
+  std::vector<TomlLine> lines;
+  void add(const std::string& key, const std::string& value, const std::string& comment = "") {
+    lines.push_back({key, value, comment});
+  }
+};
+
+std::string tomlReal(double v);
+std::string tomlString(const std::string& s);
+std::string tomlReals(const std::vector<double>& v);
+std::string tomlStrings(const std::vector<std::string>& v);
+
+/// Mass [kg] and polar inertia [kg m²] of a body about its own axis.
+struct MassProperties {
+  double mass = 0.0, inertia = 0.0;
+};
+
+/// The sections of a shaft in the gearbox file's form.
+struct ShaftSections {
+  std::vector<double> lengths, outer, inner;  ///< [m]
+  std::vector<double> starts;                 ///< u of each section's start [m]
+  std::vector<int> ids;                       ///< REXS component ids
+  MassProperties massProperties(double density) const;
+  /// Outer diameter of the section at u (0 when u is outside every section).
+  double outerDiameterAt(double u) const;
+};
+
+/// The model with look-ups by relation, the names given to components, and the warnings.
+class Model {
+ public:
+  Model(const Document& doc, std::vector<std::string>& warnings);
+
+  const Document& doc;
+  io::rexs::AttributeReader read;
+  std::vector<std::string>& warnings;
+
+  const Component& component(int id) const;
+  std::vector<const Component*> ofType(const std::set<std::string>& types) const;
+  std::vector<const Relation*> relations(const std::string& type) const;
+  /// Parts of an assembly relation whose assembly is `id` (in relation order).
+  std::vector<int> parts(int id) const;
+  /// The assembly (e.g. the shaft) that holds part `id`, among components of `types`.
+  std::optional<int> assemblyOf(int id, const std::set<std::string>& types) const;
+  /// The material a component refers to (reference relation), or null.
+  const Component* material(int id) const;
+  /// The gearbox-file name of a component: its REXS name made a TOML key, unique.
+  const std::string& name(int id) const { return names_.at(id); }
+  bool isShaft(int id) const { return component(id).type == "shaft"; }
+  bool isCasing(int id) const { return component(id).type == "gear_casing"; }
+
+  ShaftSections sections(int shaft_id);
+  /// Density [kg/m³] (and E [Pa], ν) of a component's material; steel when none.
+  double density(int id);
+
+  /// Stiffness caps (kRexsRigidToMeshRatio × the stiffest mesh, and that × the largest gear
+  /// radius squared for rotational stiffness).
+  double translational_cap = 1e11, rotational_cap = 1e9;
+  /// A stiffness value [N/m or N m/rad] capped at the rigid value, with a warning.
+  double capped(double value, bool rotational, const Component& c, const std::string& what);
+
+ private:
+  std::map<int, std::string> names_;
+  std::map<int, const Component*> by_id_;
+};
+
+/// What the planetary stages take over from the general mapping.
+struct PlanetaryMapping {
+  std::set<int> absorbed;               ///< shafts, gears, stages, bearings, couplings, plates
+  std::map<int, int> body_of;           ///< carrier member → the carrier shaft that stands for it
+  std::map<int, MassProperties> extra;  ///< carrier shaft → merged members' mass and inertia
+  std::map<int, std::string> extra_comment;
+  std::vector<TomlSection> sections;
+  int stages = 0;
+};
+
+PlanetaryMapping mapPlanetaryStages(Model& model);
+
+/// Writes the gear keys (teeth, module, angles, face width, shift, material) of a REXS gear and
+/// returns them as a GearSpec.
+GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& section);
+
+/// Writes bore_diameter (the shaft section's outer diameter under the gear) or, when that
+/// section reaches the gear's root circle (a pinion cut into its shaft), body = false: the
+/// section already carries the gear's mass.
+void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& section);
+
+}  // namespace geardyn::config::rexs_detail

@@ -1,0 +1,54 @@
+/// Zipped REXS (.rexsz) with Debian's minizip (rexs_reader.h). minizip rather than libzip: it
+/// needs only zlib (libzip pulls in libssl and libbz2 that the command line would map at every
+/// start, issue 22), and a .rexsz is a plain zip archive with one model entry.
+
+#include <fmt/format.h>
+#include <minizip/unzip.h>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+#include <string>
+
+#include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_reader.h"
+
+namespace geardyn::io::rexs {
+
+Document readRexsZip(const std::filesystem::path& file) {
+  const std::string source = file.filename().string();
+  std::unique_ptr<void, int (*)(unzFile)> zip(unzOpen64(file.string().c_str()), unzClose);
+  if (!zip) throw InputError("REXS file", file.string(), "a readable zip archive (.rexsz)");
+  for (int status = unzGoToFirstFile(zip.get()); status == UNZ_OK;
+       status = unzGoToNextFile(zip.get())) {
+    unz_file_info64 info;
+    char name[1024];
+    if (unzGetCurrentFileInfo64(zip.get(), &info, name, sizeof name, nullptr, 0, nullptr, 0) !=
+        UNZ_OK)
+      break;
+    std::string entry = name;
+    std::string lower = entry;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    const bool xml = lower.size() > 5 && lower.ends_with(".rexs");
+    const bool json = lower.ends_with(".rexsj");
+    if (!xml && !json) continue;
+    if (info.uncompressed_size > (std::uint64_t{1} << 31))
+      throw InputError(source + ": entry " + entry, fmt::format("{} bytes", info.uncompressed_size),
+                       "a REXS model under 2 GB");
+    std::string text(info.uncompressed_size, '\0');
+    if (unzOpenCurrentFile(zip.get()) != UNZ_OK)
+      throw InputError(source + ": entry " + entry, "", "an entry that can be decompressed");
+    const int read = unzReadCurrentFile(zip.get(), text.data(), static_cast<unsigned>(text.size()));
+    const int closed = unzCloseCurrentFile(zip.get());
+    if (read < 0 || static_cast<std::size_t>(read) != text.size() || closed != UNZ_OK)
+      throw InputError(source + ": entry " + entry, fmt::format("zip status {}", read),
+                       "an intact zip entry (CRC or size mismatch: truncated archive?)");
+    const std::string where = source + "/" + entry;
+    return xml ? parseRexsXml(text, where) : parseRexsJson(text, where);
+  }
+  throw InputError("REXS file", file.string(),
+                   "a zip archive that holds a .rexs or .rexsj model entry");
+}
+
+}  // namespace geardyn::io::rexs
