@@ -42,13 +42,14 @@ std::string stageTypes(const TrainMode& mode) {
 void writeKinematics(const GearTrainModel& model, io::ResultWriter& writer, io::RunSummary& summary,
                      std::string& text) {
   const double speed = model.inputSpeed();
-  io::CsvTable bodies({"body", "kind", "speed_ratio", "speed_rpm", "centre_y_m", "centre_z_m",
-                       "mass_kg", "polar_inertia_kg_m2"});
+  io::CsvTable bodies({"body", "kind", "shaft", "speed_ratio", "speed_rpm", "centre_y_m",
+                       "centre_z_m", "axial_x_m", "mass_kg", "polar_inertia_kg_m2"});
   Json json = Json::array();
   for (const TrainBody& b : model.bodies()) {
-    bodies.addRow({b.name, b.kind == TrainBodyKind::kPlanet ? "planet" : "shaft", b.speed_ratio,
-                   b.speed_ratio * speed / kRpm, b.centre.x(), b.centre.y(), b.mass,
-                   b.polar_inertia});
+    bodies.addRow({b.name, b.kind == TrainBodyKind::kPlanet ? "planet" : "shaft",
+                   b.shaft >= 0 ? model.spec().shafts[b.shaft].name : std::string(),
+                   b.speed_ratio, b.speed_ratio * speed / kRpm, b.centre.x(), b.centre.y(),
+                   b.axial, b.mass, b.polar_inertia});
     json.push_back({{"body", b.name},
                     {"speed_ratio", b.speed_ratio},
                     {"speed_rpm", b.speed_ratio * speed / kRpm},

@@ -31,11 +31,57 @@ def _draw_layout(ax, bodies, meshes, scale_mm):
     return where
 
 
+def _mode_shapes_along_shafts(folder, summary, title, modes, shapes, count):
+    """Six DOFs per node: each shaft's lateral displacement u_y (solid) and u_z (dashed) along
+    x, one band per shaft, normalised per mode by its largest translation."""
+    table = _read_columns(folder / "bodies.csv")
+    shafts = {}
+    for name, shaft, x in zip(table["body"], table["shaft"], table["axial_x_m"]):
+        if isinstance(shaft, str) and shaft:
+            shafts.setdefault(shaft, []).append((1e3 * x, name))
+    order = list(shafts)
+    columns = 4 if count > 4 else count
+    rows = math.ceil(count / columns)
+    figure, axes = plt.subplots(rows, columns, figsize=(3.6 * columns, 3.2 * rows + 0.6),
+                                squeeze=False)
+    for j in range(rows * columns):
+        ax = axes[j // columns][j % columns]
+        if j >= count:
+            ax.axis("off")
+            continue
+        shape = shapes[(str(int(modes["mode"][j])),)]
+        values = dict(zip(shape["dof"], shape["real"]))
+        translations = [abs(v) for d, v in values.items() if d.endswith((".y", ".z", ".x"))]
+        largest = max(translations + [1e-300])
+        for k, shaft in enumerate(order):
+            nodes = sorted(shafts[shaft])
+            xs = [x for x, _ in nodes]
+            base = -k
+            ax.plot(xs, [base] * len(xs), color="0.8", lw=0.8)
+            uy = [base + 0.4 * values.get(n + ".y", 0.0) / largest for _, n in nodes]
+            uz = [base + 0.4 * values.get(n + ".z", 0.0) / largest for _, n in nodes]
+            ax.plot(xs, uy, color=f"C{k}", lw=1.4, marker="o" if len(xs) == 1 else None, ms=3)
+            ax.plot(xs, uz, color=f"C{k}", lw=1.1, ls="--", marker="s" if len(xs) == 1 else None,
+                    ms=3)
+        ax.set_yticks([-k for k in range(len(order))], order, fontsize=6)
+        ax.set_title(f"mode {j + 1}: {modes['frequency_Hz'][j]:.1f} Hz", fontsize=8)
+        ax.tick_params(labelsize=6)
+        ax.set_xlabel("x along the shafts [mm]", fontsize=7)
+    speed = summary["results"]["modal"]["speed_rpm"]
+    figure.suptitle(f"{title}: mode shapes at {speed:g} rpm (lateral displacement along each "
+                    "shaft, normalised: u_y solid, u_z dashed)", fontsize=9)
+    figure.tight_layout()
+    return _save_atomically(figure, folder / "modes.png")
+
+
 def _mode_shapes(folder, summary, title):
-    bodies = _bodies(folder)
-    meshes = _read_columns(folder / "meshes.csv")
     modes = _read_columns(folder / "modes.csv")
     shapes = _long_table(folder / "mode_shapes.csv", ["mode"])
+    if any(str(d).endswith(".theta_y") for d in next(iter(shapes.values()))["dof"]):
+        return _mode_shapes_along_shafts(folder, summary, title, modes, shapes,
+                                         min(8, len(modes["mode"])))
+    bodies = _bodies(folder)
+    meshes = _read_columns(folder / "meshes.csv")
     count = min(8, len(modes["mode"]))
     ys = [1e3 * b["y"] for b in bodies]
     zs = [1e3 * b["z"] for b in bodies]
