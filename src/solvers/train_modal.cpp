@@ -5,10 +5,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <thread>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/damped_modes.h"
@@ -318,11 +322,37 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
   candidates.keep_rigid = false;
   const int wanted = options.modes > 0 ? options.modes : model.dofCount();
   candidates.modes = std::min(2 * wanted, model.dofCount());
+  // Large trains (shift-invert Arnoldi, whose cost grows with the square of the modes asked
+  // for): 1.5× the tracked modes as candidates.
+  if (fewOfMany(model, candidates)) candidates.modes = wanted + std::max(4, wanted / 2);
   candidates.validate();
   std::optional<SparseTrain> sparse;
   const SparseTrain* sparse_train = fewOfMany(model, candidates) ? &sparse.emplace(model) : nullptr;
+  // The speeds are independent eigenproblems: solved on every core (the model and its sparse
+  // matrices are read-only), then tracked in order. An exception in a worker is rethrown here.
+  std::vector<std::vector<TrainMode>> solved(speeds.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto work = [&] {
+    for (std::size_t i = next++; i < speeds.size(); i = next++) {
+      try {
+        solved[i] = modesAt(model, speeds[i], candidates, sparse_train);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  const std::size_t threads =
+      std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), speeds.size());
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
-    std::vector<TrainMode> found = modesAt(model, speeds[i], candidates, sparse_train);
+    std::vector<TrainMode> found = std::move(solved[i]);
     if (i == 0) {
       if (static_cast<int>(found.size()) > wanted) found.resize(wanted);
       d.modes.push_back(std::move(found));
