@@ -187,18 +187,17 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
   // AFT: coefficients → samples (inverse real FFT), force in the time domain, back.
   inverseToBuffer(q);
   for (int i = 0; i < samples_; ++i) f_[i] = sampleForce(i, real_buffer_[i] - error_[i], &df_[i]);
-  Eigen::VectorXd fnl, fext, dfext;
-  forward(f_.data(), fnl, n_);
-  externalForce(omega, fext, dr_domega ? &dfext : nullptr);
+  forward(f_.data(), fnl_, n_);
+  externalForce(omega, fext_, dr_domega ? &dfext_ : nullptr);
 
-  r = fnl - fext;
+  r = fnl_ - fext_;
   for (int h = 1; h <= h_; ++h) {
     const double a = q[cosIndex(h)], b = q[sinIndex(h)], w = h * omega;
     r[cosIndex(h)] += -w * w * m * a + c * w * b;
     r[sinIndex(h)] += -w * w * m * b - c * w * a;
   }
   if (dr_domega) {
-    *dr_domega = -dfext;
+    *dr_domega = -dfext_;
     for (int h = 1; h <= h_; ++h) {
       const double a = q[cosIndex(h)], b = q[sinIndex(h)];
       (*dr_domega)[cosIndex(h)] += -2.0 * h * h * omega * m * a + c * h * b;
@@ -211,38 +210,37 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
     // structure of the Jacobian of the sampled force coefficients.
     std::copy(df_.begin(), df_.end(), real_buffer_);
     fftw_execute(forward_plan_);
-    const auto DE = [&](int mm, double& d, double& e) {
+    // D_m, E_m for m = −2H..2H once (index m + 2H): every Jacobian entry is a sum of two.
+    const int span = 2 * h_;
+    de_d_.resize(2 * span + 1);
+    de_e_.resize(2 * span + 1);
+    for (int mm = -span; mm <= span; ++mm) {
       int k = ((mm % samples_) + samples_) % samples_;
       double sign = 1.0;
       if (k > samples_ / 2) {  // X_{N−k} = conj(X_k)
         k = samples_ - k;
         sign = -1.0;
       }
-      d = complex_buffer_[k][0] / samples_;
-      e = -sign * complex_buffer_[k][1] / samples_;
-    };
+      de_d_[mm + span] = complex_buffer_[k][0] / samples_;
+      de_e_[mm + span] = -sign * complex_buffer_[k][1] / samples_;
+    }
+    const double* D = de_d_.data() + span;
+    const double* E = de_e_.data() + span;
     Eigen::MatrixXd& J = *dr_dq;
-    J.setZero(n_, n_);
-    double d, e, d2, e2;
-    DE(0, d, e);
-    J(0, 0) = d;
+    J.resize(n_, n_);
+    J(0, 0) = D[0];
     for (int l = 1; l <= h_; ++l) {
-      DE(l, d, e);
-      J(0, cosIndex(l)) = d;
-      J(0, sinIndex(l)) = e;
-      J(cosIndex(l), 0) = 2.0 * d;
-      J(sinIndex(l), 0) = 2.0 * e;
+      J(0, cosIndex(l)) = D[l];
+      J(0, sinIndex(l)) = E[l];
+      J(cosIndex(l), 0) = 2.0 * D[l];
+      J(sinIndex(l), 0) = 2.0 * E[l];
     }
     for (int h = 1; h <= h_; ++h) {
       for (int l = 1; l <= h_; ++l) {
-        DE(h - l, d, e);
-        DE(h + l, d2, e2);
-        double e_lh = 0.0, dummy = 0.0;
-        DE(l - h, dummy, e_lh);
-        J(cosIndex(h), cosIndex(l)) = d + d2;
-        J(cosIndex(h), sinIndex(l)) = e2 + e_lh;
-        J(sinIndex(h), cosIndex(l)) = e2 + e;
-        J(sinIndex(h), sinIndex(l)) = d - d2;
+        J(cosIndex(h), cosIndex(l)) = D[h - l] + D[h + l];
+        J(cosIndex(h), sinIndex(l)) = E[h + l] + E[l - h];
+        J(sinIndex(h), cosIndex(l)) = E[h + l] + E[h - l];
+        J(sinIndex(h), sinIndex(l)) = D[h - l] - D[h + l];
       }
       const double w = h * omega;
       J(cosIndex(h), cosIndex(h)) += -w * w * m;

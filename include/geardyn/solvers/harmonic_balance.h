@@ -103,7 +103,9 @@ class HarmonicBalance final : public ContinuationProblem {
   fftw_plan forward_plan_, inverse_plan_;
   std::vector<double> f_, df_;
   Eigen::VectorXd error_coefficients_, error_rate_coefficients_;  // of e(φ) and de/dφ
-  bool linearized_ = false;  // linearGuess: g(y) = y − linear_shift_
+  Eigen::VectorXd fnl_, fext_, dfext_;                            // residual workspace
+  std::vector<double> de_d_, de_e_;  // FFT of df/dy at −2H..2H (the Jacobian's entries)
+  bool linearized_ = false;          // linearGuess: g(y) = y − linear_shift_
   double linear_shift_ = 0.0;
 };
 
