@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -46,9 +47,14 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
   const double scale = build.nondimensional ? 1.0 : 2.0 * std::numbers::pi;  // ω = scale · f
 
   ContinuationOptions sweep;
-  sweep.initial_step = config.real("sweep.initial_step") * scale;
-  sweep.min_step = config.real("sweep.min_step") * scale;
-  sweep.max_step = config.real("sweep.max_step") * scale;
+  // Steps the user gave (in the unit of the keys); the others are derived from the problem.
+  const auto given = [&](const char* key) {
+    return config.has(key) ? config.real(key) * scale : 0.0;
+  };
+  sweep.initial_step = given("sweep.initial_step");
+  sweep.min_step = given("sweep.min_step");
+  sweep.max_step = given("sweep.max_step");
+  sweep.fold_tolerance = given("sweep.fold_tolerance");
   sweep.display_scale = scale;
   sweep.display_unit = build.nondimensional ? "(nondimensional)" : "Hz";
   sweep.stability = config.boolean("sweep.stability");
@@ -61,8 +67,19 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
     throw InputError("sweep.stop", fmt::format("{:g}{}", stop, unit),
                      fmt::format("must exceed sweep.start = {:g}{}", start, unit));
   }
+  sweep.start = start * scale;
+  sweep.stop = stop * scale;
+  deriveContinuationSteps(sweep, build.natural_frequency, build.damping_ratio,
+                          hbm_options.harmonics);
+  if (sweep.fold_tolerance == 0.0) sweep.fold_tolerance = 1e-3 * (stop - start) * scale;
+  const nlohmann::ordered_json steps = {{"initial_step", sweep.initial_step / scale},
+                                        {"min_step", sweep.min_step / scale},
+                                        {"max_step", sweep.max_step / scale},
+                                        {"fold_tolerance", sweep.fold_tolerance / scale},
+                                        {"derived", !config.has("sweep.max_step")}};
   const std::string direction = config.string("sweep.direction");
   std::vector<std::pair<std::string, ContinuationResult>> runs;
+  const auto clock_start = std::chrono::steady_clock::now();
   for (const std::string which : {"up", "down"}) {
     if (direction != "both" && direction != which) continue;
     sweep.start = (which == "up" ? start : stop) * scale;
@@ -72,8 +89,11 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
     runs.emplace_back(which, continueInFrequency(hbm, sweep));
   }
 
+  const double sweep_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   std::vector<io::SweepRow> rows;
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
+  nlohmann::ordered_json bifurcations = nlohmann::ordered_json::array();
   int failures = 0, points = 0;
   bool completed = true;
   nlohmann::ordered_json sweeps = nlohmann::ordered_json::object();
@@ -84,6 +104,12 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
       folds.push_back({{"sweep", which},
                        {"frequency", rows[first + index].frequency},
                        {"p2p", rows[first + index].p2p}});
+    }
+    for (const Bifurcation& b : run.bifurcations) {
+      bifurcations.push_back({{"sweep", which},
+                              {"type", toString(b.type)},
+                              {"frequency", rows[first + b.index].frequency},
+                              {"p2p", rows[first + b.index].p2p}});
     }
     failures += run.failures;
     points += static_cast<int>(run.points.size());
@@ -107,9 +133,13 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
       peak = {{"frequency", r.frequency}, {"p2p", r.p2p}, {"stable", r.stable}};
   }
   summary.results = {{"points", points},
+                     {"wall_time_s", sweep_seconds},
+                     {"time_per_point_s", points > 0 ? sweep_seconds / points : 0.0},
                      {"folds", folds},
                      {"peak", peak},
                      {"failures", failures},
+                     {"bifurcations", bifurcations},
+                     {"continuation_steps", steps},
                      {"sweeps", sweeps},
                      {"harmonics", hbm_options.harmonics},
                      {"samples_per_period", hbm_options.samples_per_period},
@@ -171,10 +201,7 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
       point.q = a.q + w * (b.q - a.q);
       hbm.solve(point);
       if (!point.converged) continue;
-      if (config.boolean("sweep.stability")) {
-        sweep.stability_method == StabilityMethod::kHill ? hbm.stability(point)
-                                                         : hbm.stabilityMonodromy(point);
-      }
+      if (config.boolean("sweep.stability")) hbm.classify(point, sweep.stability_method, false);
       const auto x = hbm.timeSignal(point.q);
       const double p2p =
           *std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end());
@@ -214,10 +241,10 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
     text += fmt::format("  peak p2p {:.6g}{} at {:.6g}{}\n", peak["p2p"].get<double>(), length_unit,
                         peak["frequency"].get<double>(), frequency_unit);
   }
-  for (const auto& fold : folds) {
-    text += fmt::format("  fold ({} sweep) at {:.6g}{}, p2p {:.6g}{}\n",
-                        fold["sweep"].get<std::string>(), fold["frequency"].get<double>(),
-                        frequency_unit, fold["p2p"].get<double>(), length_unit);
+  for (const auto& b : bifurcations) {
+    text += fmt::format("  {} ({} sweep) at {:.6g}{}, p2p {:.6g}{}\n", b["type"].get<std::string>(),
+                        b["sweep"].get<std::string>(), b["frequency"].get<double>(), frequency_unit,
+                        b["p2p"].get<double>(), length_unit);
   }
   text += fmt::format("results: {}\n", path.string());
   report(options, text);

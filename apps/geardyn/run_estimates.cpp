@@ -95,7 +95,10 @@ RunEstimate estimateHarmonicBalance(const io::Config& config) {
   const double sweeps = config.string("sweep.direction") == "both" ? 2.0 : 1.0;
   // The step adapts between min_step and max_step; near resonances it stays small: the initial
   // step is the typical one (the Saletti example: 426 points over 400 Hz with steps of 5 Hz).
-  const double step = std::min(config.real("sweep.initial_step"), config.real("sweep.max_step"));
+  // Derived steps (no keys): at most range / 50, about 150 points a sweep on the examples.
+  double step = range / 150.0;
+  if (config.has("sweep.initial_step")) step = config.real("sweep.initial_step");
+  if (config.has("sweep.max_step")) step = std::min(step, config.real("sweep.max_step"));
   const double points = sweeps * std::max(1.0, range / step);
   RunEstimate e;
   e.key = "hbm.harmonics";
@@ -107,11 +110,13 @@ RunEstimate estimateHarmonicBalance(const io::Config& config) {
   // point Hill's eigenproblem (~10 (2n)³ flops) when stability is asked for.
   const double iteration = kHbmFftSecondsPerSample * samples * std::log2(std::max(2.0, samples)) +
                            kHbmFlopSeconds * n * n * n / 3.0;
-  const double stability =
-      config.boolean("sweep.stability") ? kHbmFlopSeconds * 10.0 * 8.0 * n * n * n : 0.0;
+  const bool hill = config.string("sweep.stability_method") == "hill";
+  const double stability = !config.boolean("sweep.stability") ? 0.0
+                           : hill ? kHbmFlopSeconds * 10.0 * 8.0 * n * n * n
+                                  : kHbmFlopSeconds * 100.0 * samples;
   e.seconds = points * (kHbmIterationsPerPoint * iteration + stability);
   e.basis = fmt::format(
-      "about {:g} points (range / sweep.initial_step) of {:g} Newton iterations with 2H+1 = {:g} "
+      "about {:g} points (range / step) of {:g} Newton iterations with 2H+1 = {:g} "
       "unknowns and N = {:g} samples",
       points, kHbmIterationsPerPoint, n, samples);
   return e;

@@ -187,18 +187,17 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
   // AFT: coefficients → samples (inverse real FFT), force in the time domain, back.
   inverseToBuffer(q);
   for (int i = 0; i < samples_; ++i) f_[i] = sampleForce(i, real_buffer_[i] - error_[i], &df_[i]);
-  Eigen::VectorXd fnl, fext, dfext;
-  forward(f_.data(), fnl, n_);
-  externalForce(omega, fext, dr_domega ? &dfext : nullptr);
+  forward(f_.data(), fnl_, n_);
+  externalForce(omega, fext_, dr_domega ? &dfext_ : nullptr);
 
-  r = fnl - fext;
+  r = fnl_ - fext_;
   for (int h = 1; h <= h_; ++h) {
     const double a = q[cosIndex(h)], b = q[sinIndex(h)], w = h * omega;
     r[cosIndex(h)] += -w * w * m * a + c * w * b;
     r[sinIndex(h)] += -w * w * m * b - c * w * a;
   }
   if (dr_domega) {
-    *dr_domega = -dfext;
+    *dr_domega = -dfext_;
     for (int h = 1; h <= h_; ++h) {
       const double a = q[cosIndex(h)], b = q[sinIndex(h)];
       (*dr_domega)[cosIndex(h)] += -2.0 * h * h * omega * m * a + c * h * b;
@@ -211,38 +210,37 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
     // structure of the Jacobian of the sampled force coefficients.
     std::copy(df_.begin(), df_.end(), real_buffer_);
     fftw_execute(forward_plan_);
-    const auto DE = [&](int mm, double& d, double& e) {
+    // D_m, E_m for m = −2H..2H once (index m + 2H): every Jacobian entry is a sum of two.
+    const int span = 2 * h_;
+    de_d_.resize(2 * span + 1);
+    de_e_.resize(2 * span + 1);
+    for (int mm = -span; mm <= span; ++mm) {
       int k = ((mm % samples_) + samples_) % samples_;
       double sign = 1.0;
       if (k > samples_ / 2) {  // X_{N−k} = conj(X_k)
         k = samples_ - k;
         sign = -1.0;
       }
-      d = complex_buffer_[k][0] / samples_;
-      e = -sign * complex_buffer_[k][1] / samples_;
-    };
+      de_d_[mm + span] = complex_buffer_[k][0] / samples_;
+      de_e_[mm + span] = -sign * complex_buffer_[k][1] / samples_;
+    }
+    const double* D = de_d_.data() + span;
+    const double* E = de_e_.data() + span;
     Eigen::MatrixXd& J = *dr_dq;
-    J.setZero(n_, n_);
-    double d, e, d2, e2;
-    DE(0, d, e);
-    J(0, 0) = d;
+    J.resize(n_, n_);
+    J(0, 0) = D[0];
     for (int l = 1; l <= h_; ++l) {
-      DE(l, d, e);
-      J(0, cosIndex(l)) = d;
-      J(0, sinIndex(l)) = e;
-      J(cosIndex(l), 0) = 2.0 * d;
-      J(sinIndex(l), 0) = 2.0 * e;
+      J(0, cosIndex(l)) = D[l];
+      J(0, sinIndex(l)) = E[l];
+      J(cosIndex(l), 0) = 2.0 * D[l];
+      J(sinIndex(l), 0) = 2.0 * E[l];
     }
     for (int h = 1; h <= h_; ++h) {
       for (int l = 1; l <= h_; ++l) {
-        DE(h - l, d, e);
-        DE(h + l, d2, e2);
-        double e_lh = 0.0, dummy = 0.0;
-        DE(l - h, dummy, e_lh);
-        J(cosIndex(h), cosIndex(l)) = d + d2;
-        J(cosIndex(h), sinIndex(l)) = e2 + e_lh;
-        J(sinIndex(h), cosIndex(l)) = e2 + e;
-        J(sinIndex(h), sinIndex(l)) = d - d2;
+        J(cosIndex(h), cosIndex(l)) = D[h - l] + D[h + l];
+        J(cosIndex(h), sinIndex(l)) = E[h + l] + E[l - h];
+        J(sinIndex(h), cosIndex(l)) = E[h + l] + E[h - l];
+        J(sinIndex(h), sinIndex(l)) = D[h - l] - D[h + l];
       }
       const double w = h * omega;
       J(cosIndex(h), cosIndex(h)) += -w * w * m;
@@ -313,8 +311,19 @@ void HarmonicBalance::stability(HarmonicBalancePoint& point) {
   std::sort(values.begin(), values.end(),
             [](const auto& a, const auto& b) { return std::abs(a.imag()) < std::abs(b.imag()); });
   // One DOF: the two exponents closest to the real axis are the Floquet exponents.
-  point.max_floquet_real = std::max(values[0].real(), values[1].real());
+  const std::complex<double> critical = values[0].real() > values[1].real() ? values[0] : values[1];
+  point.max_floquet_real = critical.real();
+  point.critical_multiplier = std::exp(critical * (kTwoPi / point.omega));
   point.stable = point.max_floquet_real < 1e-9 * point.omega;
+}
+
+void HarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod method,
+                               bool samples_current) {
+  if (method == StabilityMethod::kHill) {
+    stability(point);
+  } else {
+    stabilityMonodromy(point, samples_current);
+  }
 }
 
 void HarmonicBalance::stabilityMonodromy(HarmonicBalancePoint& point, bool samples_current) {
@@ -351,168 +360,14 @@ void HarmonicBalance::stabilityMonodromy(HarmonicBalancePoint& point, bool sampl
   }
   const Eigen::EigenSolver<Eigen::Matrix2d> eig(phi, false);
   double largest = 0.0;
-  for (int j = 0; j < 2; ++j) largest = std::max(largest, std::abs(eig.eigenvalues()[j]));
+  for (int j = 0; j < 2; ++j) {
+    if (std::abs(eig.eigenvalues()[j]) >= largest) {
+      largest = std::abs(eig.eigenvalues()[j]);
+      point.critical_multiplier = eig.eigenvalues()[j];
+    }
+  }
   point.max_floquet_real = std::log(largest) / T;
   point.stable = largest < 1.0 + 1e-9;
-}
-
-void ContinuationOptions::validate() const {
-  // Values are echoed in the unit of the user's keys (display_unit).
-  const auto shown = [&](double omega) {
-    return fmt::format("{:g} {}", omega / display_scale, display_unit);
-  };
-  if (!(start > 0.0) || !std::isfinite(start))
-    throw InputError("sweep.start", shown(start), "must be finite and > 0");
-  if (!(stop > 0.0) || !std::isfinite(stop))
-    throw InputError("sweep.stop", shown(stop), "must be finite and > 0");
-  if (start == stop) throw InputError("sweep.stop", shown(stop), "must differ from sweep.start");
-  if (!(min_step > 0.0)) throw InputError("sweep.min_step", shown(min_step), "must be > 0");
-  if (!(max_step >= min_step))
-    throw InputError("sweep.max_step", shown(max_step),
-                     "must be >= sweep.min_step = " + shown(min_step));
-  if (!(initial_step >= min_step && initial_step <= max_step)) {
-    throw InputError("sweep.initial_step", shown(initial_step),
-                     fmt::format("must lie in [sweep.min_step, sweep.max_step] = [{}, {}]",
-                                 shown(min_step), shown(max_step)));
-  }
-}
-
-ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationOptions& options) {
-  options.validate();
-  ContinuationResult out;
-  const int n = hbm.size();
-  const double direction = options.stop > options.start ? 1.0 : -1.0;
-  const double omega_ref = std::max(options.start, options.stop);
-
-  HarmonicBalancePoint first;
-  first.omega = options.start;
-  first.q = hbm.linearGuess(first.omega);
-  hbm.solve(first);
-  if (!first.converged) {
-    out.message =
-        fmt::format("no solution at the start frequency (residual {:.2g})", first.residual);
-    return out;
-  }
-  // Scaling: q by its size at the start, ω by the larger end of the range.
-  const double q_scale = std::max(first.q.norm(), 1e-300);
-  const auto augmented_jacobian = [&](const Eigen::VectorXd& q, double omega, Eigen::MatrixXd& Jq,
-                                      Eigen::VectorXd& Jw,
-                                      Eigen::VectorXd& r) { hbm.residual(q, omega, r, &Jq, &Jw); };
-  // The tangent from the Jacobians at (q, ω) (already evaluated there by the caller).
-  const auto tangentFrom = [&](const Eigen::MatrixXd& Jq, const Eigen::VectorXd& Jw,
-                               const Eigen::VectorXd& previous) {
-    Eigen::MatrixXd A(n + 1, n + 1);
-    A.topLeftCorner(n, n) = Jq * q_scale;
-    A.topRightCorner(n, 1) = Jw * omega_ref;
-    A.bottomRows(1) = previous.transpose();
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
-    rhs[n] = 1.0;
-    Eigen::VectorXd t = A.partialPivLu().solve(rhs);
-    return Eigen::VectorXd(t / t.norm());
-  };
-  const auto tangent = [&](const Eigen::VectorXd& q, double omega,
-                           const Eigen::VectorXd& previous) {
-    Eigen::MatrixXd Jq;
-    Eigen::VectorXd Jw, r;
-    augmented_jacobian(q, omega, Jq, Jw, r);
-    return tangentFrom(Jq, Jw, previous);
-  };
-
-  const auto classify = [&](HarmonicBalancePoint& p, bool samples_current) {
-    if (!options.stability) return;
-    if (options.stability_method == StabilityMethod::kHill) {
-      hbm.stability(p);
-    } else {
-      hbm.stabilityMonodromy(p, samples_current);
-    }
-  };
-  classify(first, false);
-  out.points.push_back({first, 0, 0.0});
-  Eigen::VectorXd seed = Eigen::VectorXd::Zero(n + 1);
-  seed[n] = direction;
-  Eigen::VectorXd t = tangent(first.q, first.omega, seed);
-  if (t[n] * direction < 0) t = -t;
-
-  double step = options.initial_step / omega_ref;
-  const double min_step = options.min_step / omega_ref, max_step = options.max_step / omega_ref;
-  Eigen::VectorXd z(n + 1);
-  z << first.q / q_scale, first.omega / omega_ref;
-  int branch = 0;
-  double arclength = 0.0;
-  Eigen::VectorXd r, Jw;
-  Eigen::MatrixXd Jq, A(n + 1, n + 1);
-
-  while (static_cast<int>(out.points.size()) < options.max_points) {
-    const Eigen::VectorXd predicted = z + step * t;
-    Eigen::VectorXd y = predicted;
-    bool converged = false;
-    int iterations = 0;
-    double norm = 0.0;
-    for (; iterations < 25; ++iterations) {
-      const Eigen::VectorXd q = y.head(n) * q_scale;
-      const double omega = y[n] * omega_ref;
-      if (!(omega > 0.0)) break;
-      augmented_jacobian(q, omega, Jq, Jw, r);
-      norm = hbm.residualNorm(q, r, omega);
-      const double constraint = t.dot(y - predicted);
-      if (norm <= 1e-10 && std::abs(constraint) <= 1e-12) {
-        converged = true;
-        break;
-      }
-      A.topLeftCorner(n, n) = Jq * q_scale;
-      A.topRightCorner(n, 1) = Jw * omega_ref;
-      A.bottomRows(1) = t.transpose();
-      Eigen::VectorXd rhs(n + 1);
-      rhs << -r, -constraint;
-      const Eigen::VectorXd dy = A.partialPivLu().solve(rhs);
-      if (!dy.allFinite()) break;
-      y += dy;
-    }
-    if (!converged) {
-      ++out.failures;
-      step *= 0.5;
-      if (step < min_step) {
-        out.message = fmt::format(
-            "continuation stopped at {:.6g} {}: the corrector failed with the "
-            "minimum step (residual {:.2g})",
-            z[n] * omega_ref / options.display_scale, options.display_unit, norm);
-        return out;
-      }
-      continue;
-    }
-    HarmonicBalancePoint point;
-    point.q = y.head(n) * q_scale;
-    point.omega = y[n] * omega_ref;
-    point.converged = true;
-    point.iterations = iterations;
-    point.residual = norm;
-    // Jq, Jw were evaluated at the converged point by the corrector's last iteration (and the
-    // AFT samples, df, belong to it too: the sampled-monodromy stability reuses them).
-    const Eigen::VectorXd t_new = tangentFrom(Jq, Jw, t);
-    if (t_new[n] * t[n] < 0.0) {  // ω turned back: a fold between the last two points
-      ++branch;
-      out.folds.push_back(out.points.size() - 1);
-    }
-    arclength += step;
-    classify(point, true);
-    out.points.push_back({point, branch, arclength});
-    if (options.progress) {
-      const double range = std::abs(options.stop - options.start);
-      options.progress(std::clamp(std::abs(point.omega - options.start), 0.0, range), range);
-    }
-    t = t_new;
-    z = y;
-    if (iterations <= 4) step = std::min(step * 1.5, max_step);
-    if (iterations >= 10) step = std::max(step * 0.5, min_step);
-    if ((point.omega - options.stop) * direction >= 0.0) {
-      out.completed = true;
-      out.message = fmt::format("{} points, {} folds, {} step cuts", out.points.size(),
-                                out.folds.size(), out.failures);
-      return out;
-    }
-  }
-  out.message = fmt::format("stopped after the maximum of {} points", options.max_points);
-  return out;
 }
 
 }  // namespace geardyn

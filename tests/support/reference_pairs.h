@@ -76,6 +76,24 @@ inline GearPairModelSpec mathieuModelSpec() {
   return spec;
 }
 
+/// The Kahraman & Singh (1990)-type backlash pair of issue 17, nondimensional (Gelman's units:
+/// m = 1, k̄ = 1, ω_n = 1): half backlash b = 1, ζ = 0.05, mean force 0.1,
+/// k = 1 − 0.2 cos Ωt − 0.1 cos 2Ωt − 0.05 cos 3Ωt, e = 0.01 cos Ωt + 0.004 cos 2Ωt
+/// + 0.002 cos 3Ωt.
+inline GearPairModelSpec kahramanSinghIssue17Spec() {
+  GearPairModelSpec spec;
+  spec.mass = 1.0;
+  spec.damping = 0.1;
+  spec.mean_force = 0.1;
+  spec.contact = ContactLaw::kBacklash;
+  spec.backlash = 1.0;
+  const double pi = std::numbers::pi;
+  spec.stiffness = std::make_shared<FourierMeshStiffness>(1.0, std::vector<double>{0.2, 0.1, 0.05},
+                                                          std::vector<double>{pi, pi, pi}, 1.6);
+  spec.transmission_error.addFourier({0.01, 0.004, 0.002}, {0.0, 0.0, 0.0});
+  return spec;
+}
+
 /// Peak to peak of a signal.
 inline double peakToPeak(const std::vector<double>& x) {
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());

@@ -10,8 +10,9 @@
 /// k(φ) g(y − e(φ)) computed by AFT (inverse real FFT to N samples, the force in the time
 /// domain, forward real FFT; FFTW plans made once). The Jacobian of the scalar nonlinearity is
 /// assembled from the FFT of df/dy at the samples (its Toeplitz + Hankel structure), never by
-/// finite differences. Newton–Raphson, pseudo-arclength continuation in ω through folds, and
-/// stability by Hill's method (sorted Floquet exponents).
+/// finite differences. Newton–Raphson, pseudo-arclength continuation in ω through folds
+/// (continuation.h), and stability by the sampled monodromy matrix (the default, O(N)) or
+/// Hill's method (sorted Floquet exponents, the cross-check).
 
 #include <fftw3.h>
 
@@ -20,7 +21,7 @@
 #include <vector>
 
 #include "geardyn/models/gear_pair_model.h"
-#include "geardyn/progress.h"
+#include "geardyn/solvers/continuation.h"
 
 namespace geardyn {
 
@@ -32,36 +33,29 @@ struct HarmonicBalanceOptions {
   void validate() const;
 };
 
-/// One periodic solution.
-struct HarmonicBalancePoint {
-  double omega = 0.0;  ///< mesh angular frequency ω [rad/s]
-  Eigen::VectorXd q;   ///< Fourier coefficients of x
-  bool converged = false;
-  int iterations = 0;
-  double residual = 0.0;  ///< relative residual at the end
-  bool stable = true;
-  double max_floquet_real = 0.0;  ///< largest real part of the selected Floquet exponents [1/s]
-};
-
-class HarmonicBalance {
+class HarmonicBalance final : public ContinuationProblem {
  public:
   HarmonicBalance(const GearPairModel& model, const HarmonicBalanceOptions& options);
   ~HarmonicBalance();
   HarmonicBalance(const HarmonicBalance&) = delete;
   HarmonicBalance& operator=(const HarmonicBalance&) = delete;
 
-  int size() const noexcept { return n_; }
+  int size() const noexcept override { return n_; }
   int harmonics() const noexcept { return h_; }
   int samples() const noexcept { return samples_; }
 
   /// R(q, ω) and, if wanted, ∂R/∂q and ∂R/∂ω (analytic through the AFT).
   void residual(const Eigen::VectorXd& q, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* dr_dq,
-                Eigen::VectorXd* dr_domega);
+                Eigen::VectorXd* dr_domega) override;
   /// The relative residual norm used for convergence: ‖R‖ / scale, scale = |F| + k̄ ‖q‖ + ‖F_ext‖.
-  double residualNorm(const Eigen::VectorXd& q, const Eigen::VectorXd& r, double omega) const;
+  double residualNorm(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                      double omega) const override;
 
   /// Newton at fixed ω from the guess in point.q.
-  void solve(HarmonicBalancePoint& point);
+  void solve(HarmonicBalancePoint& point) override;
+  Eigen::VectorXd startingGuess(double omega) override { return linearGuess(omega); }
+  /// Stability by `method` (stability() or stabilityMonodromy()).
+  void classify(HarmonicBalancePoint& point, StabilityMethod method, bool samples_current) override;
 
   /// Stability by Hill's method: the quadratic eigenproblem (λ² m + λ (c + 2m D) + J) p = 0 in the
   /// Fourier basis; the two exponents with the smallest |Im λ| are the Floquet exponents.
@@ -109,42 +103,10 @@ class HarmonicBalance {
   fftw_plan forward_plan_, inverse_plan_;
   std::vector<double> f_, df_;
   Eigen::VectorXd error_coefficients_, error_rate_coefficients_;  // of e(φ) and de/dφ
-  bool linearized_ = false;  // linearGuess: g(y) = y − linear_shift_
+  Eigen::VectorXd fnl_, fext_, dfext_;                            // residual workspace
+  std::vector<double> de_d_, de_e_;  // FFT of df/dy at −2H..2H (the Jacobian's entries)
+  bool linearized_ = false;          // linearGuess: g(y) = y − linear_shift_
   double linear_shift_ = 0.0;
 };
-
-/// A continuation point with what the sweep reports.
-struct SweepPoint {
-  HarmonicBalancePoint solution;
-  int branch = 0;  ///< increases at every fold
-  double arclength = 0.0;
-};
-
-enum class StabilityMethod { kHill, kMonodromy };
-
-struct ContinuationOptions {
-  double start = 0.0, stop = 0.0;                             ///< ω range [rad/s]
-  double initial_step = 0.0, min_step = 0.0, max_step = 0.0;  ///< in ω units along the arc
-  int max_points = 20000;
-  bool stability = true;
-  StabilityMethod stability_method = StabilityMethod::kHill;
-  ProgressCallback progress;  ///< (|ω − start|, |stop − start|) after every point [rad/s]
-  /// Messages show frequencies as ω / display_scale in display_unit (the unit of the user's
-  /// keys: 2π and "Hz" for a dimensional model).
-  double display_scale = 1.0;
-  std::string display_unit = "rad/s";
-  void validate() const;
-};
-
-struct ContinuationResult {
-  std::vector<SweepPoint> points;
-  std::vector<std::size_t> folds;  ///< indices of points next to a turning point in ω
-  int failures = 0;                ///< corrector failures (step cut back)
-  bool completed = false;          ///< reached `stop`
-  std::string message;
-};
-
-/// Pseudo-arclength continuation from `start` to `stop` (either direction).
-ContinuationResult continueInFrequency(HarmonicBalance& hbm, const ContinuationOptions& options);
 
 }  // namespace geardyn
