@@ -48,6 +48,33 @@ void ContinuationOptions::validate() const {
     throw InputError("sweep.fold_tolerance", shown(fold_tolerance), "must be finite and >= 0");
 }
 
+void solveAtFixedFrequency(ContinuationProblem& problem, HarmonicBalancePoint& point,
+                           double tolerance, int max_iterations) {
+  Eigen::VectorXd r, trial = point.q;
+  Eigen::MatrixXd J;
+  problem.residual(point.q, point.omega, r, &J, nullptr);
+  double norm = problem.residualNorm(point.q, r, point.omega);
+  for (point.iterations = 0; point.iterations < max_iterations; ++point.iterations) {
+    if (norm <= tolerance) break;
+    const Eigen::VectorXd step = J.partialPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    double alpha = 1.0;
+    for (int back = 0; back < 6; ++back) {
+      trial = point.q + alpha * step;
+      problem.residual(trial, point.omega, r, &J, nullptr);
+      const double trial_norm = problem.residualNorm(trial, r, point.omega);
+      if (trial_norm < norm || back == 5) {
+        norm = trial_norm;
+        break;
+      }
+      alpha *= 0.5;
+    }
+    point.q = trial;
+  }
+  point.residual = norm;
+  point.converged = norm <= tolerance;
+}
+
 void deriveContinuationSteps(ContinuationOptions& o, double natural_frequency, double damping_ratio,
                              int harmonics) {
   const double range = std::abs(o.stop - o.start);
