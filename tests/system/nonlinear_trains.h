@@ -71,6 +71,17 @@ inline GearTrainSpec planetary(double j) {
   return spec;
 }
 
+/// The two-stage reducer (planar, 4 shafts, 6 bearings, a coupling) with smooth k, transmission
+/// errors at both meshes and backlash j at both; the mesh frequencies are 3:1 (common period:
+/// three stage-1 mesh periods).
+inline GearTrainSpec twoStage(double j) {
+  GearTrainSpec spec = twoStageReducer(smooth(4e8, 0.0), smooth(6e8, 40.0));
+  spec.meshes[0].transmission_error.addFourier({8e-6, 2e-6}, {0.0, 0.5});
+  spec.meshes[1].transmission_error.addFourier({6e-6}, {0.3});
+  spec.meshes[0].contact = spec.meshes[1].contact = backlash(j);
+  return spec;
+}
+
 /// The state (q, q̇) at t = 0 of a periodic solution from its recovered coefficients.
 inline std::pair<Eigen::VectorXd, Eigen::VectorXd> initialState(TrainHarmonicBalance& hbm,
                                                                 const HarmonicBalancePoint& p) {

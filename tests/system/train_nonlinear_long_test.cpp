@@ -47,5 +47,33 @@ TEST(TrainNonlinearLong, PlanetaryStageAgreesWithNewmark) {
   report("planetary", check);
 }
 
+/// Base frequencies (a third of the stage-1 mesh frequency) 100–3000 Hz: stage 1 loses contact
+/// around 1.4–2.0 kHz, stage 2 around 2.38–2.8 kHz (H = 30: 10 harmonics of the stage-1 mesh,
+/// 30 of stage 2).
+TEST(TrainNonlinearLong, TwoStageReducerAgreesWithNewmark) {
+  const GearTrainModel model(twoStage(2e-5));
+  TrainHarmonicBalanceOptions options;
+  options.harmonics = 30;
+  options.samples = 512;
+  TrainHarmonicBalance hbm(model, options);
+  ContinuationOptions c;
+  c.start = 2 * std::numbers::pi * 100;
+  c.stop = 2 * std::numbers::pi * 3000;
+  c.stability = false;
+  c.max_step = (c.stop - c.start) / 100;
+  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
+  const ContinuationResult sweep = continueInFrequency(hbm, c);
+  ASSERT_TRUE(sweep.completed) << sweep.message;
+  std::vector<double> omegas;
+  for (double f :
+       {400., 750., 1200., 1420., 1500., 1700., 1900., 2200., 2400., 2500., 2700., 2900.}) {
+    omegas.push_back(2 * std::numbers::pi * f);
+  }
+  const NewmarkCheck check = checkAgainstNewmark(model, hbm, sweep, omegas);
+  EXPECT_GE(check.stable, 12);
+  EXPECT_GE(check.contact_loss, 6);
+  report("two-stage", check);
+}
+
 }  // namespace
 }  // namespace geardyn
