@@ -52,6 +52,41 @@ void addMeshModelKeys(io::ConfigSchema& schema, const std::string& prefix,
       .unit("deg")
       .defaultValue(Json::array())
       .doc("phases φ_r of the TE orders (one per amplitude; empty: 0)");
+  schema.string(prefix + "contact")
+      .choices({"linear", "one_sided", "backlash"})
+      .optional()
+      .doc("tooth contact of " + what +
+           ": linear (never separates), one_sided (contact loss) or backlash (free play, then "
+           "the back flank); absent: backlash when the backlash key is given, else linear. "
+           "The nonlinear analysis uses it; the linear ones keep the teeth in contact");
+  schema.real(prefix + "backlash")
+      .unit("m")
+      .positive()
+      .optional()
+      .doc("normal backlash j along the line of action (contact = \"backlash\")");
+}
+
+/// The tooth contact of a mesh from its keys (see addMeshModelKeys).
+TrainMeshContact contactFromConfig(const io::Config& config, const std::string& prefix) {
+  TrainMeshContact c;
+  const bool has_backlash = config.has(prefix + "backlash");
+  const std::string law = config.has(prefix + "contact") ? config.string(prefix + "contact")
+                          : has_backlash                 ? "backlash"
+                                                         : "linear";
+  if (law == "backlash" && !has_backlash) {
+    throw InputError(prefix + "backlash", "(absent)",
+                     "the normal backlash along the line of action [m] when contact = "
+                     "\"backlash\"");
+  }
+  if (law != "backlash" && has_backlash) {
+    throw InputError(prefix + "backlash", fmt::format("{:g} m", config.real(prefix + "backlash")),
+                     fmt::format("only with contact = \"backlash\" (contact = \"{}\")", law));
+  }
+  c.law = law == "backlash"    ? ContactLaw::kBacklash
+          : law == "one_sided" ? ContactLaw::kOneSided
+                               : ContactLaw::kLinear;
+  if (has_backlash) c.backlash = config.real(prefix + "backlash");
+  return c;
 }
 
 TransmissionError teFromConfig(const io::Config& config, const std::string& prefix) {
@@ -438,6 +473,7 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     m.damping_ratio = config.real(p + "damping_ratio");
     m.damping = config.optionalReal(p + "damping");
     m.transmission_error = teFromConfig(config, p);
+    m.contact = contactFromConfig(config, p);
     const TrainGearSpec& a = gear_named(m.gear_a, p + "gears");
     const TrainGearSpec& b = gear_named(m.gear_b, p + "gears");
     const double width = std::min(a.gear.face_width, b.gear.face_width);
@@ -531,6 +567,8 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     st.ring_planet_damping_ratio = config.real(p + "ring_planet.damping_ratio");
     st.sun_planet_error = teFromConfig(config, p + "sun_planet.");
     st.ring_planet_error = teFromConfig(config, p + "ring_planet.");
+    st.sun_planet_contact = contactFromConfig(config, p + "sun_planet.");
+    st.ring_planet_contact = contactFromConfig(config, p + "ring_planet.");
     spec.stages.push_back(std::move(st));
   }
   spec.operating.input_shaft = config.string("operating_point.input");

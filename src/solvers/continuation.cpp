@@ -48,6 +48,33 @@ void ContinuationOptions::validate() const {
     throw InputError("sweep.fold_tolerance", shown(fold_tolerance), "must be finite and >= 0");
 }
 
+void solveAtFixedFrequency(ContinuationProblem& problem, HarmonicBalancePoint& point,
+                           double tolerance, int max_iterations) {
+  Eigen::VectorXd r, trial = point.q;
+  Eigen::MatrixXd J;
+  problem.residual(point.q, point.omega, r, &J, nullptr);
+  double norm = problem.residualNorm(point.q, r, point.omega);
+  for (point.iterations = 0; point.iterations < max_iterations; ++point.iterations) {
+    if (norm <= tolerance) break;
+    const Eigen::VectorXd step = J.partialPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    double alpha = 1.0;
+    for (int back = 0; back < 6; ++back) {
+      trial = point.q + alpha * step;
+      problem.residual(trial, point.omega, r, &J, nullptr);
+      const double trial_norm = problem.residualNorm(trial, r, point.omega);
+      if (trial_norm < norm || back == 5) {
+        norm = trial_norm;
+        break;
+      }
+      alpha *= 0.5;
+    }
+    point.q = trial;
+  }
+  point.residual = norm;
+  point.converged = norm <= tolerance;
+}
+
 void deriveContinuationSteps(ContinuationOptions& o, double natural_frequency, double damping_ratio,
                              int harmonics) {
   const double range = std::abs(o.stop - o.start);
@@ -113,7 +140,9 @@ class FoldTracker {
 };
 
 /// Stability changes that are not folds, typed by the critical multiplier of the unstable side.
-void classifyStabilityChanges(ContinuationResult& out) {
+/// A change within a few points or 2 `tolerance` of ω of a fold is the fold's (the sampled
+/// contact makes the exponent cross zero a little off the turning point).
+void classifyStabilityChanges(ContinuationResult& out, double tolerance) {
   std::vector<Bifurcation> all;
   for (std::size_t f : out.folds) {
     all.push_back({BifurcationType::kFold, f, out.points[f].solution.omega});
@@ -122,8 +151,10 @@ void classifyStabilityChanges(ContinuationResult& out) {
     const auto& a = out.points[i - 1].solution;
     const auto& b = out.points[i].solution;
     if (a.stable == b.stable) continue;
-    const bool near_fold = std::any_of(out.folds.begin(), out.folds.end(),
-                                       [&](std::size_t f) { return f + 3 >= i && f <= i + 2; });
+    const bool near_fold = std::any_of(out.folds.begin(), out.folds.end(), [&](std::size_t f) {
+      return (f + 3 >= i && f <= i + 2) ||
+             std::abs(out.points[f].solution.omega - b.omega) <= 2.0 * tolerance;
+    });
     if (near_fold) continue;
     const std::complex<double> mu = a.stable ? b.critical_multiplier : a.critical_multiplier;
     BifurcationType type = BifurcationType::kNeimarkSacker;
@@ -199,8 +230,9 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
   z << first.q / q_scale, first.omega / omega_ref;
   int branch = 0;
   double arclength = 0.0;
-  FoldTracker folds(direction,
-                    options.fold_tolerance > 0.0 ? options.fold_tolerance : 1e-3 * range);
+  const double fold_tolerance =
+      options.fold_tolerance > 0.0 ? options.fold_tolerance : 1e-3 * range;
+  FoldTracker folds(direction, fold_tolerance);
   folds.start(first.omega);
 
   Eigen::VectorXd q(n), rhs(n + 1), dy(n + 1), predicted(n + 1), y(n + 1);
@@ -235,7 +267,7 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
             "continuation stopped at {:.6g} {}: the corrector failed with the "
             "minimum step (residual {:.2g})",
             z[n] * omega_ref / options.display_scale, options.display_unit, norm);
-        classifyStabilityChanges(out);
+        classifyStabilityChanges(out, fold_tolerance);
         return out;
       }
       continue;
@@ -271,12 +303,12 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
       out.completed = true;
       out.message = fmt::format("{} points, {} folds, {} step cuts", out.points.size(),
                                 out.folds.size(), out.failures);
-      classifyStabilityChanges(out);
+      classifyStabilityChanges(out, fold_tolerance);
       return out;
     }
   }
   out.message = fmt::format("stopped after the maximum of {} points", options.max_points);
-  classifyStabilityChanges(out);
+  classifyStabilityChanges(out, fold_tolerance);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/solvers/detail/aft_jacobian.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {
@@ -210,38 +211,12 @@ void HarmonicBalance::residual(const Eigen::VectorXd& q, double omega, Eigen::Ve
     // structure of the Jacobian of the sampled force coefficients.
     std::copy(df_.begin(), df_.end(), real_buffer_);
     fftw_execute(forward_plan_);
-    // D_m, E_m for m = −2H..2H once (index m + 2H): every Jacobian entry is a sum of two.
-    const int span = 2 * h_;
-    de_d_.resize(2 * span + 1);
-    de_e_.resize(2 * span + 1);
-    for (int mm = -span; mm <= span; ++mm) {
-      int k = ((mm % samples_) + samples_) % samples_;
-      double sign = 1.0;
-      if (k > samples_ / 2) {  // X_{N−k} = conj(X_k)
-        k = samples_ - k;
-        sign = -1.0;
-      }
-      de_d_[mm + span] = complex_buffer_[k][0] / samples_;
-      de_e_[mm + span] = -sign * complex_buffer_[k][1] / samples_;
-    }
-    const double* D = de_d_.data() + span;
-    const double* E = de_e_.data() + span;
+    // D_m, E_m for m = −2H..2H once: every Jacobian entry is a sum of two.
+    detail::aftSlopeTables(complex_buffer_, samples_, h_, de_d_, de_e_);
     Eigen::MatrixXd& J = *dr_dq;
     J.resize(n_, n_);
-    J(0, 0) = D[0];
-    for (int l = 1; l <= h_; ++l) {
-      J(0, cosIndex(l)) = D[l];
-      J(0, sinIndex(l)) = E[l];
-      J(cosIndex(l), 0) = 2.0 * D[l];
-      J(sinIndex(l), 0) = 2.0 * E[l];
-    }
+    detail::aftJacobian(de_d_, de_e_, h_, J);
     for (int h = 1; h <= h_; ++h) {
-      for (int l = 1; l <= h_; ++l) {
-        J(cosIndex(h), cosIndex(l)) = D[h - l] + D[h + l];
-        J(cosIndex(h), sinIndex(l)) = E[h + l] + E[l - h];
-        J(sinIndex(h), cosIndex(l)) = E[h + l] + E[h - l];
-        J(sinIndex(h), sinIndex(l)) = D[h - l] - D[h + l];
-      }
       const double w = h * omega;
       J(cosIndex(h), cosIndex(h)) += -w * w * m;
       J(cosIndex(h), sinIndex(h)) += c * w;
@@ -260,35 +235,7 @@ double HarmonicBalance::residualNorm(const Eigen::VectorXd& q, const Eigen::Vect
 }
 
 void HarmonicBalance::solve(HarmonicBalancePoint& point) {
-  Eigen::VectorXd r, step;
-  Eigen::MatrixXd J;
-  point.converged = false;
-  residual(point.q, point.omega, r, &J, nullptr);
-  double norm = residualNorm(point.q, r, point.omega);
-  for (point.iterations = 0; point.iterations < options_.max_iterations; ++point.iterations) {
-    if (norm <= options_.tolerance) {
-      point.converged = true;
-      break;
-    }
-    step = J.partialPivLu().solve(-r);
-    if (!step.allFinite()) break;
-    // Backtracking: accept the full step unless it increases the residual.
-    double alpha = 1.0;
-    Eigen::VectorXd trial;
-    for (int back = 0; back < 6; ++back) {
-      trial = point.q + alpha * step;
-      residual(trial, point.omega, r, &J, nullptr);
-      const double trial_norm = residualNorm(trial, r, point.omega);
-      if (trial_norm < norm || back == 5) {
-        norm = trial_norm;
-        break;
-      }
-      alpha *= 0.5;
-    }
-    point.q = trial;
-  }
-  point.residual = norm;
-  if (norm <= options_.tolerance) point.converged = true;
+  solveAtFixedFrequency(*this, point, options_.tolerance, options_.max_iterations);
 }
 
 void HarmonicBalance::stability(HarmonicBalancePoint& point) {

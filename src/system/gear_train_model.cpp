@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -72,7 +73,30 @@ double TrainMesh::deflection(const Eigen::Ref<const Eigen::VectorXd>& q) const {
 double TrainMesh::force(double t, double input_speed,
                         const Eigen::Ref<const Eigen::VectorXd>& q) const {
   const double phi = phaseAt(t, input_speed);
-  return stiffness->stiffness(phi) * (deflection(q) - transmission_error.value(phi));
+  return stiffness->stiffness(phi) *
+         contactDeflection(deflection(q) - transmission_error.value(phi));
+}
+
+double TrainMesh::contactDeflection(double y, double* slope) const {
+  double s = 1.0, g = y;
+  if (contact.law == ContactLaw::kOneSided || contact.law == ContactLaw::kBacklash) {
+    // Loaded flank for y > 0; free play down to −j; the back flank below (backlash only).
+    const double back = contact.law == ContactLaw::kBacklash ? -contact.backlash : -HUGE_VAL;
+    if (y > 0.0) {
+      g = y;
+    } else if (y < back) {
+      g = y - back;
+    } else {
+      g = 0.0, s = 0.0;
+    }
+  }
+  if (slope) *slope = s;
+  return g;
+}
+
+bool GearTrainModel::hasNonlinearMeshes() const {
+  return std::any_of(meshes_.begin(), meshes_.end(),
+                     [](const TrainMesh& m) { return m.nonlinear(); });
 }
 
 GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {

@@ -309,7 +309,8 @@ void GearTrainModel::buildMeshes() {
   auto make_mesh = [&](std::string name, TrainMeshKind kind, int a, int b, int za, int zb,
                        const PairGeometry& g, bool ring_is_a,
                        const std::shared_ptr<const MeshStiffness>& stiffness,
-                       const TransmissionError& error, double zeta, const std::string& key) {
+                       const TransmissionError& error, double zeta, const TrainMeshContact& contact,
+                       const std::string& key) {
     TrainMesh m;
     m.name = std::move(name);
     m.kind = kind;
@@ -339,15 +340,23 @@ void GearTrainModel::buildMeshes() {
     }
     m.transmission_error = error;
     m.damping_ratio = zeta;
+    if (!(contact.backlash >= 0.0) || !std::isfinite(contact.backlash) ||
+        (contact.law == ContactLaw::kBacklash && !(contact.backlash > 0.0))) {
+      throw InputError(key + ".backlash", fmt::format("{:g} m", contact.backlash),
+                       contact.law == ContactLaw::kBacklash
+                           ? "a backlash > 0 m (contact = \"backlash\")"
+                           : "a backlash >= 0 m");
+    }
+    m.contact = contact;
     return m;
   };
   for (std::size_t i = 0; i < fixed.size(); ++i) {
     const TrainMeshSpec& ms = spec_.meshes[i];
     const Pending& p = fixed[i];
-    TrainMesh m =
-        make_mesh(ms.name, p.kind, p.ba, p.bb, spec_.gears[p.ga].gear.teeth,
-                  spec_.gears[p.gb].gear.teeth, p.geometry, spec_.gears[p.ga].internal,
-                  ms.stiffness, ms.transmission_error, ms.damping_ratio, "meshes." + ms.name);
+    TrainMesh m = make_mesh(ms.name, p.kind, p.ba, p.bb, spec_.gears[p.ga].gear.teeth,
+                            spec_.gears[p.gb].gear.teeth, p.geometry, spec_.gears[p.ga].internal,
+                            ms.stiffness, ms.transmission_error, ms.damping_ratio, ms.contact,
+                            "meshes." + ms.name);
     m.frequency_ratio = m.teeth_a * std::abs(bodies_[p.ba].speed_ratio) / kTwoPi;
     m.phase = ms.phase.value_or(0.0);
     m.gear_a = p.ga, m.gear_b = p.gb;
@@ -374,14 +383,16 @@ void GearTrainModel::buildMeshes() {
         continue;
       const int n = bodies_[b].planet;
       const double psi = g.angles[n] - g.angles[0];
-      TrainMesh sun = make_mesh(
-          fmt::format("{}.sun_planet{}", st.name, n + 1), TrainMeshKind::kSunPlanet, g.sun,
-          static_cast<int>(b), zs, st.planet.teeth, g.sun_planet, false, st.sun_planet_stiffness,
-          st.sun_planet_error, st.sun_planet_damping_ratio, key + ".sun_planet");
-      TrainMesh ring = make_mesh(
-          fmt::format("{}.ring_planet{}", st.name, n + 1), TrainMeshKind::kRingPlanet, g.ring,
-          static_cast<int>(b), zr, st.planet.teeth, g.ring_planet, true, st.ring_planet_stiffness,
-          st.ring_planet_error, st.ring_planet_damping_ratio, key + ".ring_planet");
+      TrainMesh sun =
+          make_mesh(fmt::format("{}.sun_planet{}", st.name, n + 1), TrainMeshKind::kSunPlanet,
+                    g.sun, static_cast<int>(b), zs, st.planet.teeth, g.sun_planet, false,
+                    st.sun_planet_stiffness, st.sun_planet_error, st.sun_planet_damping_ratio,
+                    st.sun_planet_contact, key + ".sun_planet");
+      TrainMesh ring =
+          make_mesh(fmt::format("{}.ring_planet{}", st.name, n + 1), TrainMeshKind::kRingPlanet,
+                    g.ring, static_cast<int>(b), zr, st.planet.teeth, g.ring_planet, true,
+                    st.ring_planet_stiffness, st.ring_planet_error, st.ring_planet_damping_ratio,
+                    st.ring_planet_contact, key + ".ring_planet");
       sun.stage = ring.stage = static_cast<int>(s);
       sun.planet = ring.planet = n;
       sun.frequency_ratio = ring.frequency_ratio = zs * std::abs(relative) / kTwoPi;

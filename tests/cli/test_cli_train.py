@@ -87,6 +87,12 @@ def test_inline_and_file_descriptions_give_the_same_results(tmp_path):
     (("teeth = 51\nmodule = 3e-3", "teeth = 51\nmodule = 3.5e-3"), "gears.z2", "module"),
     (('input = "motor"', 'input = "motr"'), "operating_point.input", "did you mean \"motor\""),
     (("k_torsion = 2.5e4", "k_torsion = -2.5e4"), "couplings.motor_coupling.k_torsion", "> 0"),
+    # Nonlinear meshes (issue 17): a backlash law needs its backlash, and only it takes one.
+    (("[meshes.stage1]\n", "[meshes.stage1]\ncontact = \"backlash\"\n"), "meshes.stage1.backlash",
+     "contact = \"backlash\""),
+    (("[meshes.stage1]\n", "[meshes.stage1]\ncontact = \"linear\"\nbacklash = 2e-5\n"),
+     "meshes.stage1.backlash", "only with contact"),
+    (("[meshes.stage1]\n", "[meshes.stage1]\nbacklash = -2e-5\n"), "meshes.stage1.backlash", "> 0"),
 ])
 def test_bad_gearbox_input_exits_2_naming_the_key(tmp_path, edit, key, words):
     folder = tmp_path / "case"

@@ -58,6 +58,12 @@ class ContinuationProblem {
                         bool samples_current) = 0;
 };
 
+/// Newton–Raphson at the fixed ω of `point` from the guess in point.q, with backtracking (the
+/// full step unless it raises the residual norm); converged when problem.residualNorm <=
+/// tolerance.
+void solveAtFixedFrequency(ContinuationProblem& problem, HarmonicBalancePoint& point,
+                           double tolerance, int max_iterations);
+
 /// A continuation point with what the sweep reports.
 struct SweepPoint {
   HarmonicBalancePoint solution;

@@ -77,12 +77,17 @@ struct TrainMesh {
   double equivalent_mass = 0.0;  ///< m_e = 1 / Σ v_θ² / I over the two rotations [kg]
   /// Mesh frequency per unit input speed: f_m = frequency_ratio |Ω| [Hz per rad/s].
   double frequency_ratio = 0.0;
-  double phase = 0.0;  ///< φ_m0 [mesh periods]
+  double phase = 0.0;        ///< φ_m0 [mesh periods]
+  TrainMeshContact contact;  ///< the tooth contact law and backlash
+  /// g(y): the contact law applied to the tooth deformation y = δ − e [m], with dg/dy in *slope
+  /// (gear_train.h, TrainMeshContact; 1 and y for a linear mesh).
+  double contactDeflection(double y, double* slope = nullptr) const;
+  bool nonlinear() const noexcept { return contact.law != ContactLaw::kLinear; }
   /// Mesh phase at time t for the input speed Ω [rad/s].
   double phaseAt(double t, double input_speed) const;
   /// The mesh deflection vᵀq [m] of a state q (all the model's DOFs).
   double deflection(const Eigen::Ref<const Eigen::VectorXd>& q) const;
-  /// The elastic mesh force k(φ) (vᵀq − e(φ)) at time t [N].
+  /// The elastic mesh force k(φ) g(vᵀq − e(φ)) at time t [N] (g: the contact law).
   double force(double t, double input_speed, const Eigen::Ref<const Eigen::VectorXd>& q) const;
 };
 
@@ -111,6 +116,8 @@ class GearTrainModel {
   }
   const std::vector<TrainBody>& bodies() const noexcept { return bodies_; }
   const std::vector<TrainMesh>& meshes() const noexcept { return meshes_; }
+  /// Some mesh has contact loss or backlash (TrainMeshContact).
+  bool hasNonlinearMeshes() const;
   const std::vector<TrainElement>& elements() const noexcept { return elements_; }
   int bodyIndex(const std::string& name) const;  ///< −1 when absent
   /// "input.y", "stage1.planet2.theta", … for DOF i.

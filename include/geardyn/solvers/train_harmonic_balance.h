@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// Harmonic balance of a gear train with nonlinear meshes (contact loss, backlash), condensed
+/// exactly onto the mesh deflections (docs/theory/nonlinear_gear_trains.md).
+///
+/// With the mean meshes in K̄ = K + Ω²K_Ω + Σ k̄ v vᵀ, the train reads
+///   M q̈ + (C + ΩG₁) q̇ + K̄ q + V f̃(t, Vᵀq) = F₀ + V c ė,  f̃_m = k_m g_m(δ_m − e_m) − k̄_m δ_m,
+/// periodic over the common period of the meshes (ω₀ = 2π f₀, f₀ the base frequency of
+/// trainBaseFrequency; mesh m repeats P_m times a period). Per harmonic h of ω₀ the linear part
+/// is D(h) = K̄ − (hω₀)² M + i hω₀ (C + ΩG₁); eliminating q (X_h = D(h)⁻¹ (F_h − V F̃_h)) leaves
+///   R_h(δ) = δ_h − B(h) d_h − b₀ δ_h0 + B(h) F̃_h(δ) = 0,   B(h) = Vᵀ D(h)⁻¹ V (r × r),
+/// on the r (2H + 1) real Fourier coefficients of the mesh deflections δ = Vᵀq only (d_h: the
+/// dashpot forcing c ė, b₀ = Vᵀ D(0)⁻¹ F₀). F̃ comes from AFT per mesh (inverse real FFT to N
+/// samples of the base period, the force at the samples, forward FFT); the Jacobian
+/// I + B ∂F̃/∂δ is analytic (∂F̃_m/∂δ_m from the FFT of df̃/dδ at the samples, Toeplitz + Hankel),
+/// and ∂R/∂ω₀ too (through dD/dω₀, including the speed dependence of K_Ω and G₁). Every DOF is
+/// recovered after convergence. Stability: the monodromy matrix of the variational equation
+/// along the solution, by Newmark (average acceleration) with the condensed mesh slopes held over
+/// each of the N sample intervals (Woodbury on the r meshes).
+
+#include <fftw3.h>
+
+#include <Eigen/Dense>
+#include <complex>
+#include <vector>
+
+#include "geardyn/solvers/continuation.h"
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+
+struct TrainHarmonicBalanceOptions {
+  int harmonics = 15;        ///< H: harmonics of the base (common) frequency
+  int samples = 256;         ///< N: AFT samples per base period (> 2H, no aliasing)
+  double tolerance = 1e-10;  ///< ‖R‖ / (‖δ‖ + ‖b‖)
+  int max_iterations = 40;
+  void validate() const;
+};
+
+class TrainHarmonicBalance final : public ContinuationProblem {
+ public:
+  /// InputError when the mesh frequencies have no common period within H harmonics (key
+  /// "nonlinear.harmonics": every mesh needs at least one harmonic of its own frequency).
+  TrainHarmonicBalance(const GearTrainModel& model, const TrainHarmonicBalanceOptions& options);
+  ~TrainHarmonicBalance() override;
+  TrainHarmonicBalance(const TrainHarmonicBalance&) = delete;
+  TrainHarmonicBalance& operator=(const TrainHarmonicBalance&) = delete;
+
+  int size() const override { return r_ * n_; }
+  int meshCount() const noexcept { return r_; }
+  int harmonics() const noexcept { return h_; }
+  int samples() const noexcept { return samples_; }
+  /// ω₀ [rad/s] at input speed Ω [rad/s], and back (Ω takes the model's sign).
+  double baseFrequency(double input_speed) const;
+  double inputSpeed(double omega) const;
+  const std::vector<int>& meshMultiples() const noexcept { return multiple_; }
+
+  void residual(const Eigen::VectorXd& u, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* dr_du,
+                Eigen::VectorXd* dr_domega) override;
+  double residualNorm(const Eigen::VectorXd& u, const Eigen::VectorXd& r,
+                      double omega) const override;
+  /// The response with every mesh held in contact (g(y) = y): the linear time-varying solution.
+  Eigen::VectorXd startingGuess(double omega) override;
+  void solve(HarmonicBalancePoint& point) override;
+  /// Stability from the monodromy matrix (both methods: Hill's full-DOF eigenproblem would be
+  /// 2n (2H + 1) wide).
+  void classify(HarmonicBalancePoint& point, StabilityMethod method, bool samples_current) override;
+
+  /// Every DOF: real Fourier coefficients over the base period, column 0 the mean, 2h − 1 and 2h
+  /// the cosine and sine of harmonic h (rows: DOFs), q(τ) = Σ columns · (1, cos hτ, sin hτ).
+  Eigen::MatrixXd displacementCoefficients(const HarmonicBalancePoint& point);
+  /// δ_m at the N samples of one base period (rows: samples, cols: meshes) [m].
+  Eigen::MatrixXd meshDeflections(const Eigen::VectorXd& u);
+
+ private:
+  void prepare(double omega);  // the per-harmonic condensation at ω₀ (cached)
+  void forward(const double* samples, double* coefficients);
+  void inverse(const double* coefficients, double* samples);
+  void meshForceSamples(const Eigen::VectorXd& u);  // f̃ and df̃/dδ at the samples
+
+  const GearTrainModel& model_;
+  TrainHarmonicBalanceOptions options_;
+  int h_, n_, samples_, r_, dofs_;
+  double base_ratio_, speed_sign_;
+  std::vector<int> multiple_;
+  Eigen::MatrixXd V_, rigid_, elastic_;            // rigid_: M × rigid-body modes
+  Eigen::MatrixXd k_, e_, slope_, force_, delta_;  // [sample, mesh]
+  Eigen::MatrixXd rate_coefficients_;              // de/dφ per mesh, real layout [coef, mesh]
+  bool linearized_ = false;
+  // Condensation at the cached ω₀: B(h), dB/dω₀, D(h) factors, b₀ and its derivative.
+  double cached_omega_ = -1.0;
+  std::vector<Eigen::MatrixXcd> B_, dB_;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu0_;
+  Eigen::VectorXd b0_, db0_;
+  double* real_buffer_;
+  fftw_complex* complex_buffer_;
+  fftw_plan forward_plan_, inverse_plan_;
+};
+
+}  // namespace geardyn

@@ -1,0 +1,195 @@
+/// Newmark with Newton on the mesh deflections for gear trains with contact loss and backlash
+/// (train_nonlinear_time.h).
+
+#include "geardyn/solvers/train_nonlinear_time.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "geardyn/error.h"
+#include "geardyn/solvers/train_response.h"
+
+namespace geardyn {
+
+void TrainNonlinearTimeOptions::validate() const {
+  newmark.validate();
+  if (steps_per_mesh_period < 8) {
+    throw InputError("nonlinear.steps_per_mesh_period", std::to_string(steps_per_mesh_period),
+                     "an integer >= 8");
+  }
+  if (min_periods < 1 || max_periods < min_periods) {
+    throw InputError("nonlinear.max_periods", std::to_string(max_periods),
+                     fmt::format("an integer >= min_periods = {} >= 1", min_periods));
+  }
+  if (!(steady_tolerance > 0.0) || !(newton_tolerance > 0.0) || max_newton_iterations < 1) {
+    throw InputError("nonlinear.steady_tolerance", fmt::format("{:g}", steady_tolerance),
+                     "tolerances > 0 and max_newton_iterations >= 1");
+  }
+}
+
+double TrainNonlinearTimeResponse::meshPeakToPeak(int mesh) const {
+  return mesh_deflection.col(mesh).maxCoeff() - mesh_deflection.col(mesh).minCoeff();
+}
+
+TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double input_speed,
+                                             double time_step, NewmarkParameters newmark)
+    : model_(model), speed_(input_speed), dt_(time_step), gamma_(newmark.gamma) {
+  newmark.validate();
+  const double beta = newmark.beta;
+  a0_ = 1.0 / (beta * dt_ * dt_);
+  a1_ = gamma_ / (beta * dt_);
+  a2_ = 1.0 / (beta * dt_);
+  a3_ = 0.5 / beta - 1.0;
+  a4_ = gamma_ / beta - 1.0;
+  a5_ = dt_ * (0.5 * gamma_ / beta - 1.0);
+  const int n = model.dofCount();
+  const int r = static_cast<int>(model.meshes().size());
+  Cg_ = model.dampingAt(speed_);
+  K0_ = model.meanStiffnessAt(speed_);
+  V_.resize(n, r);
+  for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
+  lu_.compute(K0_ + a0_ * model.mass() + a1_ * Cg_);
+  Z_ = lu_.solve(V_);
+  W_ = V_.transpose() * Z_;
+  small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
+  J_.resize(r, r);
+  q_ = v_ = a_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
+  delta_ = f_ = slope_ = res_ = dashpot_ = k_ = e_ = free_ = step_ = Eigen::VectorXd::Zero(r);
+}
+
+void TrainNonlinearNewmark::meshState(double t) {
+  const auto& meshes = model_.meshes();
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const TrainMesh& mesh = meshes[m];
+    const double phi = mesh.phaseAt(t, speed_);
+    k_(m) = mesh.stiffness->stiffness(phi);
+    e_(m) = mesh.transmission_error.value(phi);
+    // c ė, ė = de/dφ f_m.
+    dashpot_(m) = mesh.damping * mesh.transmission_error.derivative(phi) * mesh.frequency_ratio *
+                  std::abs(speed_);
+  }
+}
+
+void TrainNonlinearNewmark::meshForces(const Eigen::VectorXd& delta, Eigen::VectorXd& f,
+                                       Eigen::VectorXd* slope) const {
+  const auto& meshes = model_.meshes();
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    double s = 1.0;
+    const double g = meshes[m].contactDeflection(delta(m) - e_(m), &s);
+    f(m) = k_(m) * g - meshes[m].mean_stiffness * delta(m);
+    if (slope) (*slope)(m) = k_(m) * s - meshes[m].mean_stiffness;
+  }
+}
+
+void TrainNonlinearNewmark::reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+  t_ = t;
+  q_ = q;
+  v_ = qdot;
+  delta_ = V_.transpose() * q_;
+  meshState(t);
+  meshForces(delta_, f_, nullptr);
+  a_ = model_.mass().llt().solve(model_.staticLoad() + V_ * (dashpot_ - f_) - Cg_ * v_ - K0_ * q_);
+}
+
+bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
+  const double t1 = t_ + dt_;
+  meshState(t1);
+  rhs_.noalias() = model_.staticLoad();
+  rhs_.noalias() += V_ * dashpot_;
+  y_ = a0_ * q_ + a2_ * v_ + a3_ * a_;
+  rhs_.noalias() += model_.mass() * y_;
+  y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
+  rhs_.noalias() += Cg_ * y_;
+  y_ = lu_.solve(rhs_);
+  // Newton on δ − Vᵀy + W f̃(t1, δ) = 0 from the last step's deflections.
+  free_.noalias() = V_.transpose() * y_;
+  bool converged = false;
+  for (int it = 0; it < max_iterations && !converged; ++it) {
+    meshForces(delta_, f_, &slope_);
+    res_ = delta_ - free_;
+    res_.noalias() += W_ * f_;
+    J_.noalias() = W_ * slope_.asDiagonal();
+    J_.diagonal().array() += 1.0;
+    small_.compute(J_);
+    step_ = small_.solve(res_);
+    // A piecewise-linear law can make full steps cycle between contact states: damp late ones.
+    delta_ -= (it < 20 ? 1.0 : 0.5) * step_;
+    const double scale = std::max(delta_.cwiseAbs().maxCoeff(), 1e-300);
+    converged = step_.cwiseAbs().maxCoeff() <= newton_tolerance * scale;
+  }
+  meshForces(delta_, f_, nullptr);
+  y_.noalias() -= Z_ * f_;                       // q_{n+1}
+  rhs_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * a_;  // a_{n+1}
+  v_ += dt_ * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
+  a_ = rhs_;
+  q_.swap(y_);
+  t_ = t1;
+  return converged;
+}
+
+TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, double input_speed,
+                                                   const TrainNonlinearTimeOptions& options,
+                                                   const Eigen::VectorXd& q0,
+                                                   const Eigen::VectorXd& v0) {
+  options.validate();
+  if (model.meshes().empty()) throw InputError("meshes", "", "a train with at least one mesh");
+  if (!(std::abs(input_speed) > 0.0)) {
+    throw InputError("operating_point.speed_rpm", "0", "a speed != 0 for a time response");
+  }
+  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1000000000);
+  int largest = 1;
+  for (int p : base.mesh_multiple) largest = std::max(largest, p);
+  const long long per_period = static_cast<long long>(largest) * options.steps_per_mesh_period;
+  TrainNonlinearTimeResponse r;
+  r.period = 1.0 / (base.ratio * std::abs(input_speed));
+  const double dt = r.period / static_cast<double>(per_period);
+  TrainNonlinearNewmark stepper(model, input_speed, dt, options.newmark);
+  const int n = model.dofCount();
+  const int meshes = static_cast<int>(model.meshes().size());
+  const Eigen::VectorXd q = q0.size() == n ? q0 : solveTrainStatic(model, input_speed).displacement;
+  stepper.reset(0.0, q, v0.size() == n ? v0 : Eigen::VectorXd::Zero(n));
+  Eigen::MatrixXd previous(per_period, meshes), current(per_period, meshes);
+  r.t.resize(per_period);
+  r.displacement.resize(per_period, n);
+  for (int period = 1; period <= options.max_periods; ++period) {
+    for (long long k = 0; k < per_period; ++k) {
+      if (!stepper.step(options.newton_tolerance, options.max_newton_iterations)) {
+        r.status = "newton_failure";
+        r.message =
+            fmt::format("Newton on the mesh deflections failed at t = {:.6g} s", stepper.time());
+      }
+      current.row(k) = stepper.meshDeflections().transpose();
+      r.t(k) = stepper.time();
+      r.displacement.row(k) = stepper.displacement().transpose();
+    }
+    r.periods = period;
+    r.steps += per_period;
+    if (!current.allFinite()) {
+      r.status = "diverged";
+      r.message = fmt::format("diverged at t = {:.6g} s", stepper.time());
+      return r;
+    }
+    if (r.status == "newton_failure") return r;
+    const double scale = std::max(current.cwiseAbs().maxCoeff(), 1e-300);
+    r.last_change = period > 1 ? (current - previous).cwiseAbs().maxCoeff() / scale : HUGE_VAL;
+    std::swap(previous, current);
+    if (period >= options.min_periods && r.last_change <= options.steady_tolerance) break;
+  }
+  r.mesh_deflection = previous;  // the last period (swapped)
+  r.mesh_force.resize(per_period, meshes);
+  for (long long k = 0; k < per_period; ++k) {
+    for (int m = 0; m < meshes; ++m) {
+      r.mesh_force(k, m) =
+          model.meshes()[m].force(r.t(k), input_speed, r.displacement.row(k).transpose());
+    }
+  }
+  if (r.last_change > options.steady_tolerance) {
+    r.status = "max_periods";
+    r.message = fmt::format("not periodic after {} common periods (last change {:.2g})", r.periods,
+                            r.last_change);
+  }
+  return r;
+}
+
+}  // namespace geardyn
