@@ -52,31 +52,6 @@ GearPairModel::GearPairModel(GearPairModelSpec spec) : spec_(std::move(spec)) {
   }
 }
 
-double GearPairModel::contactLaw(double y, double* slope) const noexcept {
-  switch (spec_.contact) {
-    case ContactLaw::kLinear:
-      if (slope) *slope = 1.0;
-      return y;
-    case ContactLaw::kOneSided:
-      if (slope) *slope = y > 0.0 ? 1.0 : 0.0;
-      return y > 0.0 ? y : 0.0;
-    case ContactLaw::kBacklash: {
-      const double b = spec_.backlash;
-      if (y > b) {
-        if (slope) *slope = 1.0;
-        return y - b;
-      }
-      if (y < -b) {
-        if (slope) *slope = 1.0;
-        return y + b;
-      }
-      if (slope) *slope = 0.0;
-      return 0.0;
-    }
-  }
-  return y;
-}
-
 double GearPairModel::meshForce(double t, double x, double* dforce_dx) const {
   if (spec_.contact_elements) {
     const double y = x - error(t), phase = meshPhase(t);

@@ -104,4 +104,30 @@ class GearPairModel {
   GearPairModelSpec spec_;
 };
 
+// Inline: it is the inner loop of the AFT (harmonic_balance.cpp) and of the integrators.
+inline double GearPairModel::contactLaw(double y, double* slope) const noexcept {
+  switch (spec_.contact) {
+    case ContactLaw::kLinear:
+      if (slope) *slope = 1.0;
+      return y;
+    case ContactLaw::kOneSided:
+      if (slope) *slope = y > 0.0 ? 1.0 : 0.0;
+      return y > 0.0 ? y : 0.0;
+    case ContactLaw::kBacklash: {
+      const double b = spec_.backlash;
+      if (y > b) {
+        if (slope) *slope = 1.0;
+        return y - b;
+      }
+      if (y < -b) {
+        if (slope) *slope = 1.0;
+        return y + b;
+      }
+      if (slope) *slope = 0.0;
+      return 0.0;
+    }
+  }
+  return y;
+}
+
 }  // namespace geardyn
