@@ -47,9 +47,9 @@ void writeKinematics(const GearTrainModel& model, io::ResultWriter& writer, io::
   Json json = Json::array();
   for (const TrainBody& b : model.bodies()) {
     bodies.addRow({b.name, b.kind == TrainBodyKind::kPlanet ? "planet" : "shaft",
-                   b.shaft >= 0 ? model.spec().shafts[b.shaft].name : std::string(),
-                   b.speed_ratio, b.speed_ratio * speed / kRpm, b.centre.x(), b.centre.y(),
-                   b.axial, b.mass, b.polar_inertia});
+                   b.shaft >= 0 ? model.spec().shafts[b.shaft].name : std::string(), b.speed_ratio,
+                   b.speed_ratio * speed / kRpm, b.centre.x(), b.centre.y(), b.axial, b.mass,
+                   b.polar_inertia});
     json.push_back({{"body", b.name},
                     {"speed_ratio", b.speed_ratio},
                     {"speed_rpm", b.speed_ratio * speed / kRpm},

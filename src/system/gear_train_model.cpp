@@ -335,9 +335,10 @@ void GearTrainModel::buildElements() {
     }
     if (!full && (b.k_axial > 0 || b.c_axial > 0 || b.k_tilt > 0 || b.c_tilt > 0)) {
       // One gearbox file, many analyses: a lumped model simply has no axial or tilt DOFs.
-      warnings_.push_back(fmt::format("{}: the axial and tilt terms act only with gearbox.dofs = "
-                                      "\"full\"; ignored with \"{}\"",
-                                      key, toString(spec_.dofs)));
+      warnings_.push_back(
+          fmt::format("{}: the axial and tilt terms act only with gearbox.dofs = "
+                      "\"full\"; ignored with \"{}\"",
+                      key, toString(spec_.dofs)));
     }
     const bool isotropic =
         b.kyy == b.kzz && b.kyz == 0 && b.kzy == 0 && b.cyy == b.czz && b.cyz == 0 && b.czy == 0;
