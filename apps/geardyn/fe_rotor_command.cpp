@@ -13,9 +13,9 @@
 #include <thread>
 
 #include "command.h"
+#include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
-#include "geardyn/io/fe_rotor_io.h"
-#include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
@@ -39,7 +39,7 @@ struct SteadyAnalysis {
   double last_change = 0.0;  // max |q(t) − q(t − T_m)| / max |q| over the last mesh period
 };
 
-SteadyAnalysis analyseSteady(const io::Config& config, const FeGearedRotor& model,
+SteadyAnalysis analyseSteady(const config::Config& config, const FeGearedRotor& model,
                              const FeTimeResponse& r) {
   SteadyAnalysis a;
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
@@ -78,7 +78,7 @@ SteadyAnalysis analyseSteady(const io::Config& config, const FeGearedRotor& mode
   return a;
 }
 
-double spectrumLimit(const io::Config& config, const SteadyAnalysis& a) {
+double spectrumLimit(const config::Config& config, const SteadyAnalysis& a) {
   return config.has("time.spectrum_max_frequency") ? config.real("time.spectrum_max_frequency")
          : a.frequencies.empty()                   ? 1e3
                                                    : 1.25 * a.frequencies.back();
@@ -178,7 +178,7 @@ void reportDivergence(const FeTimeResponse& r, std::vector<std::string>& warning
 /// The run-up: order tracking of the mesh order and 1× in windows, a waterfall of the first
 /// channel's acceleration, the speed of the largest mesh-order response per channel, and the
 /// Campbell crossings of the mesh line within the speed range.
-void runUpOutputs(const io::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
+void runUpOutputs(const config::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
                   io::ResultWriter& writer, nlohmann::ordered_json& results, std::string& text) {
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
   const int window = static_cast<int>(std::llround(config.real("time.runup_window") / dt));
@@ -253,13 +253,13 @@ std::string dampingRatioText(double zeta) {
   return std::abs(zeta) < 5e-5 ? fmt::format("{:.1e}", zeta) : fmt::format("{:.4f}", zeta);
 }
 
-int runTime(const io::Config& config, const CommandOptions& options, io::RunSummary& summary,
+int runTime(const config::Config& config, const CommandOptions& options, io::RunSummary& summary,
             io::ResultWriter& writer, std::string& text) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
   checkRunEstimate(estimateFeRotorTime(config, model.dofCount()), options, "rotor");
-  FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   ProgressReporter progress("rotor: Newmark", "steps", ProgressReporter::enabledFor(options));
   o.progress = progress.callback();
   const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
@@ -317,15 +317,15 @@ nlohmann::ordered_json modeJson(const RotorMode& m) {
           {"axial_fraction", m.axial_fraction}};
 }
 
-int runModal(const io::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+int runModal(const config::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
              std::string& text) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
   const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
                                                       : config.real("speed.speed_rpm")) *
                        kRpm;
-  const auto modes = modalAnalysis(model, speed, io::modalOptionsFromConfig(config, "modal"));
+  const auto modes = modalAnalysis(model, speed, config::modalOptionsFromConfig(config, "modal"));
   io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
                       "lateral_fraction", "torsional_fraction", "axial_fraction"});
   io::CsvTable shapes({"mode", "dof", "re", "im", "amplitude"});
@@ -349,14 +349,14 @@ int runModal(const io::Config& config, io::RunSummary& summary, io::ResultWriter
   return kExitOk;
 }
 
-int runCampbell(const io::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+int runCampbell(const config::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
                 std::string& text) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
-  const auto speeds = io::campbellSpeedsFromConfig(config);
+  const auto speeds = config::campbellSpeedsFromConfig(config);
   const CampbellDiagram d = campbellDiagram(
-      model, speeds, io::modalOptionsFromConfig(config, "campbell"), standardOrderLines(model));
+      model, speeds, config::modalOptionsFromConfig(config, "campbell"), standardOrderLines(model));
   io::CsvTable table(
       {"speed_rpm", "mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction"});
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -396,7 +396,7 @@ int runCampbell(const io::Config& config, io::RunSummary& summary, io::ResultWri
 }
 
 /// Visnadi §4: the same rotor with each mesh-stiffness model; amplitudes at the mesh orders.
-int runCompare(const io::Config& config, const CommandOptions& options, io::RunSummary& summary,
+int runCompare(const config::Config& config, const CommandOptions& options, io::RunSummary& summary,
                io::ResultWriter& writer, std::string& text) {
   const auto models = config.stringList("compare.models");
   if (models.empty()) throw InputError("compare.models", "[]", "at least one model");
@@ -409,7 +409,7 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
   };
   std::vector<Case> cases;
   for (const auto& name : models) {
-    io::FeRotorBuild build = io::feRotorSpecFromConfig(config, name);
+    config::FeRotorBuild build = config::feRotorSpecFromConfig(config, name);
     Case c{name, std::make_unique<FeGearedRotor>(build.spec), {}, 0.0, build.warnings};
     c.mean = c.model->meanMeshStiffness();
     cases.push_back(std::move(c));
@@ -425,7 +425,8 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
   // The cases are independent: run them on the worker threads (options are read first, so that
   // configuration errors surface here, on the main thread).
   std::vector<FeTimeOptions> time_options;
-  for (const Case& c : cases) time_options.push_back(io::feTimeOptionsFromConfig(config, *c.model));
+  for (const Case& c : cases)
+    time_options.push_back(config::feTimeOptionsFromConfig(config, *c.model));
   const unsigned threads =
       options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
@@ -524,7 +525,7 @@ int runCompare(const io::Config& config, const CommandOptions& options, io::RunS
 
 }  // namespace
 
-int runFeRotor(const io::Config& config, const CommandOptions& options) {
+int runFeRotor(const config::Config& config, const CommandOptions& options) {
   io::RunSummary summary;
   summary.command = "rotor";
   summary.config_source = options.config_file.string();
@@ -541,7 +542,7 @@ int runFeRotor(const io::Config& config, const CommandOptions& options) {
   for (const auto& w : summary.warnings)
     if (w.rfind("Newmark", 0) != 0) warn(w);
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("rotor_fe", writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(summary);
   }

@@ -5,16 +5,17 @@
 #include <iostream>
 
 #include "command.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/io/geometry_results.h"
 #include "geardyn/io/result_writer.h"
 #include "plotting.h"
 
 namespace geardyn::cli {
 
-int runGeometry(const io::Config& config, const CommandOptions& options) {
-  const GearPair pair(io::gearPairSpecFromConfig(config));
+int runGeometry(const config::Config& config, const CommandOptions& options) {
+  const GearPair pair(config::gearPairSpecFromConfig(config));
   for (const auto& warning : pair.warnings()) warn(warning);
 
   io::RunSummary summary;
@@ -28,7 +29,7 @@ int runGeometry(const io::Config& config, const CommandOptions& options) {
   writer.writeCsv("gears.csv", io::memberTable(pair));
   writer.writeCsv("tooth_profiles.csv", io::toothProfileTable(pair));
   auto summary_path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     // The plotter reads summary.json; the summary is written again to list the plots.
     for (const auto& file : drawPlots("geometry", writer.folder())) writer.recordFile(file);
     summary_path = writer.writeSummary(summary);

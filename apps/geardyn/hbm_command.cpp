@@ -8,11 +8,13 @@
 #include <numbers>
 
 #include "command.h"
+#include "geardyn/config/hbm_config.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/hbm_io.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/io/hbm_results.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/simulate_io.h"
+#include "geardyn/io/simulate_results.h"
 #include "plotting.h"
 #include "progress.h"
 #include "run_estimates.h"
@@ -37,12 +39,12 @@ std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f)
 
 }  // namespace
 
-int runHbm(const io::Config& config, const CommandOptions& options) {
+int runHbm(const config::Config& config, const CommandOptions& options) {
   checkRunEstimate(estimateHarmonicBalance(config), options, "hbm");
-  const io::GearPairModelBuild build = io::buildGearPairModel(config, false);
+  const config::GearPairModelBuild build = config::buildGearPairModel(config, false);
   std::vector<std::string> warnings = build.warnings;
   const GearPairModel model(build.spec);
-  const HarmonicBalanceOptions hbm_options = io::harmonicBalanceOptionsFromConfig(config);
+  const HarmonicBalanceOptions hbm_options = config::harmonicBalanceOptionsFromConfig(config);
   HarmonicBalance hbm(model, hbm_options);
   const double scale = build.nondimensional ? 1.0 : 2.0 * std::numbers::pi;  // ω = scale · f
 
@@ -157,7 +159,7 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
       GearPairModelSpec spec = model.spec();
       spec.mesh_frequency = f * scale / (2.0 * std::numbers::pi);
       const GearPairModel at(spec);
-      const TimeResponse r = solveTimeResponse(at, io::timeResponseOptionsFromConfig(config));
+      const TimeResponse r = solveTimeResponse(at, config::timeResponseOptionsFromConfig(config));
       const io::TimeResponseChannels c = io::channelsOf(at, r);
       const double p2p =
           *std::max_element(c.y.begin(), c.y.end()) - *std::min_element(c.y.begin(), c.y.end());
@@ -227,7 +229,7 @@ int runHbm(const io::Config& config, const CommandOptions& options) {
   summary.warnings = warnings;
   for (const auto& warning : warnings) warn(warning);
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("hbm", writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(summary);
   }

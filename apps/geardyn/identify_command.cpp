@@ -9,18 +9,20 @@
 #include <numbers>
 
 #include "command.h"
+#include "geardyn/config/identify_config.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/identify_io.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/io/identify_results.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/rotor_results.h"
 #include "plotting.h"
 
 namespace geardyn::cli {
 
-int runIdentify(const io::Config& config, const CommandOptions& options) {
+int runIdentify(const config::Config& config, const CommandOptions& options) {
   const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
-  const LateralRotorSpec known = io::knownRotorFromConfig(config);
+  const LateralRotorSpec known = config::knownRotorFromConfig(config);
   std::vector<io::WhirlSpectrumInput> inputs;
   std::vector<MeasuredWhirlPeaks> data;
   for (const auto& entry : config.stringList("input.spectra")) {
@@ -34,7 +36,7 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
   if (config.has("truth.rotor_config")) {
     std::filesystem::path file = config.string("truth.rotor_config");
     if (file.is_relative()) file = base / file;
-    truth = io::lateralRotorSpecFromConfig(io::loadConfigFile(file, io::rotorSchema()));
+    truth = config::lateralRotorSpecFromConfig(config::loadConfigFile(file, config::rotorSchema()));
   } else {
     for (const auto& in : inputs)
       if (in.truth && !truth) truth = in.truth;
@@ -46,7 +48,7 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
         fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth, truth->gear_teeth));
   }
 
-  const IdentificationOptions id_options = io::identificationOptionsFromConfig(config);
+  const IdentificationOptions id_options = config::identificationOptionsFromConfig(config);
   const auto start = std::chrono::steady_clock::now();
   const DteIdentification r = identifyDte(known, data, id_options);
   const double seconds =
@@ -174,7 +176,7 @@ int runIdentify(const io::Config& config, const CommandOptions& options) {
   if (!r.converged) std::cerr << "geardyn identify: " << r.message << "\n";
   for (const auto& w : summary.warnings) warn(w);
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& f : drawPlots("identify", writer.folder())) writer.recordFile(f);
     path = writer.writeSummary(summary);
   }

@@ -8,22 +8,23 @@
 #include <iostream>
 
 #include "command.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/ltca_config.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/ltca_io.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/io/ltca_results.h"
 #include "geardyn/io/result_writer.h"
 #include "plotting.h"
 
 namespace geardyn::cli {
 
-int runLtca(const io::Config& config, const CommandOptions& options) {
-  const GearPair pair(io::gearPairSpecFromConfig(config));
+int runLtca(const config::Config& config, const CommandOptions& options) {
+  const GearPair pair(config::gearPairSpecFromConfig(config));
   const int slices = static_cast<int>(config.integer("ltca.slices"));
   PotentialEnergyOptions pe;
   if (pair.baseHelixAngle() > 0.0) pe.slices = slices;  // the same slices as the contact
   auto stiffness = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
-  const PairModifications modifications = io::pairModificationsFromConfig(config, *stiffness);
+  const PairModifications modifications = config::pairModificationsFromConfig(config, *stiffness);
   const LoadedToothContact contact(stiffness, modifications, slices);
   const double force = config.real("ltca.force");
   const int positions = static_cast<int>(config.integer("ltca.positions"));
@@ -132,7 +133,7 @@ int runLtca(const io::Config& config, const CommandOptions& options) {
                                      {"loads", rows}};
   }
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& f : drawPlots("ltca", writer.folder())) writer.recordFile(f);
     path = writer.writeSummary(summary);
   }

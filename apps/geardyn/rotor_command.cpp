@@ -10,11 +10,12 @@
 #include <random>
 
 #include "command.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/output_section.h"
 #include "geardyn/io/probe_record.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/rotor_results.h"
 #include "plotting.h"
 #include "progress.h"
 #include "run_estimates.h"
@@ -72,7 +73,7 @@ struct StudyCase {
   LateralRotorSpec spec;
 };
 
-std::vector<StudyCase> studyCases(const io::Config& config, const LateralRotorSpec& base) {
+std::vector<StudyCase> studyCases(const config::Config& config, const LateralRotorSpec& base) {
   const double zeta_m_known = base.mesh_damping / std::sqrt(base.mesh_stiffness);
   std::vector<StudyCase> cases{{"baseline", "baseline", 1.0, base}};
   for (double f : config.realList("study.speed_factors")) {
@@ -121,9 +122,10 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
 
 }  // namespace
 
-int runRotor(const io::Config& config, const CommandOptions& options) {
-  const LateralRotorModel model(io::lateralRotorSpecFromConfig(config));
-  const GearPairSpectrumOptions spectrum_options = io::gearPairSpectrumOptionsFromConfig(config);
+int runRotor(const config::Config& config, const CommandOptions& options) {
+  const LateralRotorModel model(config::lateralRotorSpecFromConfig(config));
+  const GearPairSpectrumOptions spectrum_options =
+      config::gearPairSpectrumOptionsFromConfig(config);
   const GearWhirlSetup setup = setupOf(model);
   const double max_frequency =
       config.optionalReal("spectrum.max_frequency")
@@ -174,7 +176,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
   RotorTimeResponse time;
   if (config.boolean("time.enabled")) {
     checkRunEstimate(estimateRotorTime(config), options, "rotor");
-    RotorTimeOptions time_options = io::rotorTimeOptionsFromConfig(config);
+    RotorTimeOptions time_options = config::rotorTimeOptionsFromConfig(config);
     ProgressReporter progress("rotor: time response", "s simulated",
                               ProgressReporter::enabledFor(options));
     time_options.progress = progress.callback();
@@ -344,7 +346,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
       const LateralRotorModel m(c.spec);
       std::array<std::vector<WhirlComponent>, 2> peaks;
       if (in_time) {
-        RotorTimeOptions o = io::rotorTimeOptionsFromConfig(config);
+        RotorTimeOptions o = config::rotorTimeOptionsFromConfig(config);
         o.samples =
             static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
         const RotorTimeResponse r = solveRotorTimeResponse(m, o);
@@ -420,7 +422,7 @@ int runRotor(const io::Config& config, const CommandOptions& options) {
   summary.warnings = warnings;
   for (const auto& w : warnings) warn(w);
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("rotor", writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(summary);
   }

@@ -5,23 +5,23 @@
 /// measured on the reference machine (Release build; see docs/cli.md, "Resource limits") and
 /// rounded up: an estimate errs on the large side.
 
-#include "geardyn/io/config.h"
+#include "geardyn/config/config.h"
 #include "run_budget.h"
 
 namespace geardyn::cli {
 
 /// simulate (and stats with stats.simulate): solver.steps_per_period × solver.max_periods
 /// steps; output_points_per_period × output_periods samples kept.
-RunEstimate estimateTimeResponse(const io::Config& config);
+RunEstimate estimateTimeResponse(const config::Config& config);
 /// stats: monte_carlo.samples samples, each over monte_carlo.teeth mesh periods.
-RunEstimate estimateMonteCarlo(const io::Config& config, int threads);
+RunEstimate estimateMonteCarlo(const config::Config& config, int threads);
 /// hbm: (2H+1) unknowns, samples_per_period AFT samples, the frequency range over max_step.
-RunEstimate estimateHarmonicBalance(const io::Config& config);
+RunEstimate estimateHarmonicBalance(const config::Config& config);
 /// rotor (Rao): time.samples samples (time and frequency domain, spectra, tables).
-RunEstimate estimateRotorTime(const io::Config& config);
+RunEstimate estimateRotorTime(const config::Config& config);
 /// rotor (finite element, analysis "time"): duration / time_step Newmark steps.
-RunEstimate estimateFeRotorTime(const io::Config& config, int dofs);
+RunEstimate estimateFeRotorTime(const config::Config& config, int dofs);
 /// The estimate of one run of `command` with this configuration ({} when it is small).
-RunEstimate estimateCommand(const std::string& command, const io::Config& config);
+RunEstimate estimateCommand(const std::string& command, const config::Config& config);
 
 }  // namespace geardyn::cli

@@ -5,20 +5,21 @@
 #include <iostream>
 
 #include "command.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/simulate_config.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/simulate_io.h"
+#include "geardyn/io/simulate_results.h"
 #include "plotting.h"
 #include "progress.h"
 #include "run_estimates.h"
 
 namespace geardyn::cli {
 
-int runSimulate(const io::Config& config, const CommandOptions& options) {
-  const io::GearPairModelBuild build = io::buildGearPairModel(config);
+int runSimulate(const config::Config& config, const CommandOptions& options) {
+  const config::GearPairModelBuild build = config::buildGearPairModel(config);
   for (const auto& warning : build.warnings) warn(warning);
   const GearPairModel model(build.spec);
-  TimeResponseOptions solver = io::timeResponseOptionsFromConfig(config);
+  TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
   checkRunEstimate(estimateTimeResponse(config), options, "simulate");  // before it allocates
   ProgressReporter progress("simulate", "periods of max_periods",
                             ProgressReporter::enabledFor(options));
@@ -38,7 +39,7 @@ int runSimulate(const io::Config& config, const CommandOptions& options) {
   io::ResultWriter writer(options.resultFolder());
   writer.writeCsv("time_response.csv", io::timeResponseTable(channels));
   auto summary_path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("simulate", writer.folder())) writer.recordFile(file);
     summary_path = writer.writeSummary(summary);
   }

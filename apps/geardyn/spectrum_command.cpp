@@ -9,16 +9,17 @@
 #include <random>
 
 #include "command.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/output_section.h"
 #include "geardyn/io/probe_record.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/rotor_results.h"
 #include "plotting.h"
 
 namespace geardyn::cli {
 
-int runSpectrum(const io::Config& config, const CommandOptions& options) {
+int runSpectrum(const config::Config& config, const CommandOptions& options) {
   std::filesystem::path file = config.string("input.file");
   if (file.is_relative()) file = std::filesystem::path(config.source()).parent_path() / file;
   io::RecordReadOptions read;
@@ -98,7 +99,8 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
     std::mt19937_64 rng(seed);
     for (auto& channel : channels) addRelativeNoise(channel, noise, rng);
   }
-  const GearPairSpectrumOptions spectrum_options = io::gearPairSpectrumOptionsFromConfig(config);
+  const GearPairSpectrumOptions spectrum_options =
+      config::gearPairSpectrumOptionsFromConfig(config);
   const double first_time = record.start_time + static_cast<double>(begin) / fs;
   const GearPairSpectrum spectrum =
       analyseGearPairRecord(channels, fs, first_time, reference, setup, spectrum_options);
@@ -147,7 +149,7 @@ int runSpectrum(const io::Config& config, const CommandOptions& options) {
       {"peaks", io::whirlPeaksJson(spectrum.peaks)}};
   if (!keyphasor_json.is_null()) summary.results["keyphasor"] = keyphasor_json;
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& f : drawPlots("spectrum", writer.folder())) writer.recordFile(f);
     path = writer.writeSummary(summary);
   }

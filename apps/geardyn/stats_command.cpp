@@ -6,17 +6,18 @@
 #include <thread>
 
 #include "command.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/config/stats_config.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/simulate_io.h"
-#include "geardyn/io/stats_io.h"
+#include "geardyn/io/stats_results.h"
 #include "plotting.h"
 #include "progress.h"
 #include "run_estimates.h"
 
 namespace geardyn::cli {
 
-int runStats(const io::Config& config, const CommandOptions& options) {
+int runStats(const config::Config& config, const CommandOptions& options) {
   io::RunSummary summary;
   summary.command = "stats";
   summary.config_source = options.config_file.string();
@@ -26,9 +27,9 @@ int runStats(const io::Config& config, const CommandOptions& options) {
 
   MeanExcitation stats;
   if (config.string("stats.source") == "moments") {
-    stats = io::meanExcitationFromConfigMoments(config);
+    stats = config::meanExcitationFromConfigMoments(config);
   } else if (config.string("stats.source") == "csv") {
-    stats = io::meanExcitationFromConfigCsv(config);
+    stats = config::meanExcitationFromConfigCsv(config);
   } else {
     const int threads =
         options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -36,7 +37,7 @@ int runStats(const io::Config& config, const CommandOptions& options) {
       checkRunEstimate(estimateMonteCarlo(config, threads), options, "stats");
     if (config.boolean("stats.simulate"))
       checkRunEstimate(estimateTimeResponse(config), options, "stats");
-    const io::GearPairModelBuild build = io::buildGearPairModel(config);
+    const config::GearPairModelBuild build = config::buildGearPairModel(config);
     summary.warnings = build.warnings;
     const GearPairModel model(build.spec);
     const double baseload = build.nondimensional           ? 1.0
@@ -44,7 +45,7 @@ int runStats(const io::Config& config, const CommandOptions& options) {
                                                            : model.meanForce();
     stats = meanExcitationFromModel(model, baseload);
     if (config.integer("monte_carlo.samples") > 0) {
-      MonteCarloOptions mc = io::monteCarloOptionsFromConfig(config, baseload, threads);
+      MonteCarloOptions mc = config::monteCarloOptionsFromConfig(config, baseload, threads);
       ProgressReporter progress("stats: Monte Carlo", "samples",
                                 ProgressReporter::enabledFor(options));
       mc.progress = progress.callback();
@@ -63,7 +64,7 @@ int runStats(const io::Config& config, const CommandOptions& options) {
             "the mean excitation statistics assume a linear contact (Gelman eq. 1); "
             "with contact loss the simulated mean of k·y differs from L_d");
       }
-      TimeResponseOptions solver = io::timeResponseOptionsFromConfig(config);
+      TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
       ProgressReporter progress("stats: simulation", "periods of max_periods",
                                 ProgressReporter::enabledFor(options));
       solver.progress = progress.callback();
@@ -91,7 +92,7 @@ int runStats(const io::Config& config, const CommandOptions& options) {
   io::ResultWriter writer(options.resultFolder());
   for (const auto& [name, table] : monte_carlo_tables) writer.writeCsv(name, table);
   auto path = writer.writeSummary(summary);
-  if (!monte_carlo_tables.empty() && io::outputOptionsFromConfig(config).plots) {
+  if (!monte_carlo_tables.empty() && config::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("stats", writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(summary);
   }

@@ -5,18 +5,19 @@
 #include <iostream>
 
 #include "command.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/stiffness_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/stiffness_io.h"
+#include "geardyn/io/stiffness_results.h"
 #include "plotting.h"
 
 namespace geardyn::cli {
 
-int runStiffness(const io::Config& config, const CommandOptions& options) {
-  const GearPair pair(io::gearPairSpecFromConfig(config));
-  const io::MeshStiffnessModels models = io::buildMeshStiffnessModels(config, pair);
+int runStiffness(const config::Config& config, const CommandOptions& options) {
+  const GearPair pair(config::gearPairSpecFromConfig(config));
+  const config::MeshStiffnessModels models = config::buildMeshStiffnessModels(config, pair);
 
   io::RunSummary summary;
   summary.command = "stiffness";
@@ -37,7 +38,7 @@ int runStiffness(const io::Config& config, const CommandOptions& options) {
   writer.writeCsv("mesh_stiffness.csv", io::stiffnessCurveTable(config, pair, models));
   writer.writeCsv("fourier.csv", io::fourierTable(summary.results["models"]));
   auto summary_path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(config).plots) {
+  if (config::outputOptionsFromConfig(config).plots) {
     for (const auto& file : drawPlots("stiffness", writer.folder())) writer.recordFile(file);
     summary_path = writer.writeSummary(summary);
   }

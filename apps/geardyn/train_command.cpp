@@ -11,12 +11,12 @@
 #include <numbers>
 
 #include "command.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
-#include "geardyn/io/fe_rotor_io.h"
-#include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
@@ -121,7 +121,7 @@ void runStatic(const GearTrainModel& model, io::ResultWriter& writer, io::RunSum
   text += fmt::format("static: {} ({} rigid-body modes)\n", r.status, r.rigid_modes);
 }
 
-void runModal(const GearTrainModel& model, const io::Config& analysis, io::ResultWriter& writer,
+void runModal(const GearTrainModel& model, const config::Config& analysis, io::ResultWriter& writer,
               io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "modal", model.inputSpeed());
@@ -162,8 +162,8 @@ void runModal(const GearTrainModel& model, const io::Config& analysis, io::Resul
   text += modes.size() > 8 ? ", …\n" : "\n";
 }
 
-void runCampbell(const GearTrainModel& model, const io::Config& analysis, io::ResultWriter& writer,
-                 io::RunSummary& summary, std::string& text) {
+void runCampbell(const GearTrainModel& model, const config::Config& analysis,
+                 io::ResultWriter& writer, io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const auto speeds = config::speedRangeFromConfig(analysis, "campbell", model.inputSpeed(), 0.0);
   TrainModalOptions options;
@@ -201,8 +201,9 @@ void runCampbell(const GearTrainModel& model, const io::Config& analysis, io::Re
                       d.critical_speeds.size());
 }
 
-void runForced(const GearTrainModel& model, const io::Config& analysis, io::ResultWriter& writer,
-               io::RunSummary& summary, std::string& text, const CommandOptions& options) {
+void runForced(const GearTrainModel& model, const config::Config& analysis,
+               io::ResultWriter& writer, io::RunSummary& summary, std::string& text,
+               const CommandOptions& options) {
   const auto start = Clock::now();
   const auto speeds = config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1);
   const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
@@ -253,7 +254,7 @@ void runForced(const GearTrainModel& model, const io::Config& analysis, io::Resu
       fmt::format("forced response: {} speeds in {:.2f} s\n", speeds.size(), secondsSince(start));
 }
 
-int runTime(const GearTrainModel& model, const io::Config& analysis, io::ResultWriter& writer,
+int runTime(const GearTrainModel& model, const config::Config& analysis, io::ResultWriter& writer,
             io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
@@ -344,17 +345,17 @@ int runTime(const GearTrainModel& model, const io::Config& analysis, io::ResultW
 
 /// The gearbox configuration: the analysis file itself (inline) or the file it names.
 struct LoadedTrain {
-  io::Config analysis;
-  io::Config gearbox;
+  config::Config analysis;
+  config::Config gearbox;
   std::string gearbox_source;
   std::vector<std::string> warnings;  ///< of a REXS import
 };
 
 LoadedTrain loadTrain(const CommandOptions& options) {
-  const std::string ref = io::peekConfigString(options.config_file, "gearbox.file");
+  const std::string ref = config::peekConfigString(options.config_file, "gearbox.file");
   if (ref.empty()) {
-    io::Config both =
-        io::loadConfigFile(options.config_file, config::trainSchema(true), options.overrides);
+    config::Config both =
+        config::loadConfigFile(options.config_file, config::trainSchema(true), options.overrides);
     if (both.has("gearbox.load_case"))
       throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
                        "only with a REXS gearbox file named by gearbox.file");
@@ -374,14 +375,14 @@ LoadedTrain loadTrain(const CommandOptions& options) {
     (to_gearbox ? gearbox_overrides : analysis_overrides).push_back(o);
   }
   const std::filesystem::path path = options.config_file.parent_path() / ref;
-  io::Config analysis =
-      io::loadConfigFile(options.config_file, config::trainSchema(false), analysis_overrides);
+  config::Config analysis =
+      config::loadConfigFile(options.config_file, config::trainSchema(false), analysis_overrides);
   std::optional<int> load_case;
   if (analysis.has("gearbox.load_case"))
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
   std::vector<std::string> warnings;
   // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
-  io::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  config::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
   return {analysis, gearbox, path.string(), warnings};
 }
 
@@ -420,7 +421,7 @@ int runTrainOnce(const CommandOptions& options, const LoadedTrain& loaded) {
     if (!options.quiet) std::cerr << "warning: " << w << "\n";
   }
   auto path = writer.writeSummary(summary);
-  if (io::outputOptionsFromConfig(loaded.analysis).plots) {
+  if (config::outputOptionsFromConfig(loaded.analysis).plots) {
     for (const auto& file : drawPlots("train", writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(summary);
   }
