@@ -6,9 +6,9 @@
 
 #include "command.h"
 #include "geardyn/config/gearbox_config.h"
-#include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 
 namespace geardyn::cli {
 
@@ -57,10 +57,10 @@ int RexsCommands::runImport() const {
     std::cerr << "geardyn import: I/O error: cannot read " << import_file_ << ": no such file\n";
     return kExitIoFailure;
   }
-  config::RexsImportOptions options;
+  io::rexs::RexsImportOptions options;
   options.load_case = load_case_;
   options.bearing_stiffness = bearing_stiffness_;
-  const config::RexsImport imported = config::importRexsFile(import_file_, options);
+  const io::rexs::RexsImport imported = io::rexs::importRexsFile(import_file_, options);
   // The text must read back as a gearbox file (it is what analyses will read).
   std::vector<std::string> model_warnings;
   const config::Config config =
@@ -90,11 +90,12 @@ int RexsCommands::runExport() const {
   std::vector<std::string> warnings;
   config::gearTrainFromConfig(config, warnings);  // refuse what would not build
   warnings.clear();
-  const std::string json = config::exportRexsJson(config, warnings);
+  const std::string json = io::rexs::exportRexsJson(config, warnings);
   io::writeFileAtomic(export_out_, json);
   for (const auto& w : warnings) warn(w);
   if (!quiet_)
-    std::cout << "REXS " << config::kRexsExportVersion << " JSON: " << export_out_.string() << "\n";
+    std::cout << "REXS " << io::rexs::kRexsExportVersion << " JSON: " << export_out_.string()
+              << "\n";
   return kExitOk;
 }
 

@@ -14,10 +14,10 @@
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/output_section.h"
-#include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
 #include "geardyn/io/result_writer.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 #include "plotting.h"
@@ -382,7 +382,8 @@ LoadedTrain loadTrain(const CommandOptions& options) {
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
   std::vector<std::string> warnings;
   // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
-  config::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  config::Config gearbox =
+      io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
   return {analysis, gearbox, path.string(), warnings};
 }
 
@@ -439,7 +440,7 @@ int runTrain(const CommandOptions& options) {
   if (!io::rexs::isRexsPath(loaded.gearbox_source) || loaded.analysis.has("gearbox.load_case"))
     throw InputError("gearbox.all_load_cases", "true",
                      "only with a REXS gearbox file and without gearbox.load_case");
-  const auto cases = config::importRexsFile(loaded.gearbox_source).load_cases;
+  const auto cases = io::rexs::importRexsFile(loaded.gearbox_source).load_cases;
   if (cases.empty())
     throw InputError("gearbox.all_load_cases", "true",
                      loaded.gearbox_source + " has no load spectrum");

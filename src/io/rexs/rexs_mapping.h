@@ -12,7 +12,7 @@
 #include "geardyn/io/rexs/rexs_document.h"
 #include "geardyn/io/rexs/rexs_vocabulary.h"
 
-namespace geardyn::config::rexs_detail {
+namespace geardyn::io::rexs::detail {
 
 using io::rexs::Component;
 using io::rexs::Document;
@@ -110,4 +110,4 @@ GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& section);
 /// section already carries the gear's mass.
 void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& section);
 
-}  // namespace geardyn::config::rexs_detail
+}  // namespace geardyn::io::rexs::detail

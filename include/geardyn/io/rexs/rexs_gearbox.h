@@ -14,7 +14,7 @@
 #include "geardyn/config/config.h"
 #include "geardyn/io/rexs/rexs_document.h"
 
-namespace geardyn::config {
+namespace geardyn::io::rexs {
 
 struct RexsImportOptions {
   /// Load case (REXS id) that becomes the operating point; absent: the first of the spectrum.
@@ -80,4 +80,4 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
 /// units as in its schema: MPa, kg / dm^3, N mm / rad, deg).
 inline constexpr const char* kRexsExportVersion = "2.0.0";
 
-}  // namespace geardyn::config
+}  // namespace geardyn::io::rexs

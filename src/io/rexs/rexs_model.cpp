@@ -7,12 +7,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/stiffness/api_stiffness.h"
 #include "rexs_mapping.h"
 
-namespace geardyn::config::rexs_detail {
+namespace geardyn::io::rexs::detail {
 
 std::string tomlReal(double v) {
   std::string s = fmt::format("{}", v);
@@ -309,4 +309,4 @@ void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& s) {
   }
 }
 
-}  // namespace geardyn::config::rexs_detail
+}  // namespace geardyn::io::rexs::detail

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "rexs_mapping.h"
 
-namespace geardyn::config::rexs_detail {
+namespace geardyn::io::rexs::detail {
 namespace {
 
 std::vector<int> stageMembers(const Model& model, int stage, const std::string& relation) {
@@ -213,4 +213,4 @@ PlanetaryMapping mapPlanetaryStages(Model& model) {
   return pm;
 }
 
-}  // namespace geardyn::config::rexs_detail
+}  // namespace geardyn::io::rexs::detail

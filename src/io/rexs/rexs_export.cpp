@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "geardyn/config/rexs_gearbox.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/version.h"
 
-namespace geardyn::config {
+namespace geardyn::io::rexs {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -275,4 +275,4 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
   return Json{{"model", model}}.dump(2) + "\n";
 }
 
-}  // namespace geardyn::config
+}  // namespace geardyn::io::rexs

@@ -1,7 +1,7 @@
 /// REXS → gearbox description (rexs_gearbox.h): shafts, gears, parallel stages, bearings,
 /// couplings and the operating point; planetary stages in rexs_planetary.cpp.
 
-#include "geardyn/config/rexs_gearbox.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 
 #include <fmt/format.h>
 
@@ -15,10 +15,10 @@
 #include "geardyn/system/gear_train_model.h"
 #include "rexs_mapping.h"
 
-namespace geardyn::config {
+namespace geardyn::io::rexs {
 namespace {
 
-using namespace rexs_detail;
+using namespace detail;
 
 const std::set<std::string> kShaftTypes = {"shaft"};
 const std::set<std::string> kGearTypes = {"cylindrical_gear", "ring_gear"};
@@ -437,7 +437,7 @@ RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& optio
       std::vector<TomlSection> all = sections;
       all.push_back(probe);
       const config::Config c =
-          config::parseConfig(renderToml(all, ""), doc.source, gearboxSchema());
+          config::parseConfig(renderToml(all, ""), doc.source, config::gearboxSchema());
       std::vector<std::string> ignored;
       const GearTrainModel m(gearTrainFromConfig(c, ignored));
       ratio = m.bodies()[m.bodyIndex(model.name(op.torque_shaft))].speed_ratio;
@@ -532,13 +532,13 @@ config::Config loadGearboxConfig(const std::filesystem::path& file,
       throw InputError("gearbox.load_case", std::to_string(*load_case),
                        "only with a REXS gearbox file (.rexs, .rexsj, .rexsz); " + file.string() +
                            " is a gearbox TOML file");
-    return config::loadConfigFile(file, gearboxSchema(), overrides);
+    return config::loadConfigFile(file, config::gearboxSchema(), overrides);
   }
   RexsImportOptions options;
   options.load_case = load_case;
   RexsImport imported = importRexsFile(file, options);
   warnings.insert(warnings.end(), imported.warnings.begin(), imported.warnings.end());
-  return config::parseConfig(imported.toml, file.string(), gearboxSchema(), overrides);
+  return config::parseConfig(imported.toml, file.string(), config::gearboxSchema(), overrides);
 }
 
-}  // namespace geardyn::config
+}  // namespace geardyn::io::rexs
