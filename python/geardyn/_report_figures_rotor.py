@@ -6,7 +6,7 @@ import csv
 
 from ._report_figures import (UM, _COLOURS, axes_layout, figure, line, log_range, markers,
                               rows_layout)
-from ._tables import _long_table, _read_columns
+from ._tables import _long_table, _read_columns, keyphasor_points
 
 _WHIRL_COLOURS = {"forward": "#d62728", "backward": "#1f77b4", "mixed": "#9467bd",
                   "torsional": "#2ca02c", "axial": "#8c564b"}
@@ -24,15 +24,25 @@ def _orbits(folder, summary, only_steady):
     layout = {"title": {"text": f"{_title(summary, 'orbits')}: orbits", "font": {"size": 14}},
               "hovermode": "closest", "margin": {"t": 60, "r": 20}}
     data = []
-    for k, (shaft, xs, ys) in enumerate((("pinion shaft", "x1", "y1"), ("gear shaft", "x2", "y2"))):
+    frequencies = summary["results"].get("frequencies", {})
+    t0 = summary["results"].get("keyphasor", {}).get("first_pulse_s", 0.0)
+    for k, (shaft, xs, ys, f_name) in enumerate((("pinion shaft", "x1", "y1", "pinion_hz"),
+                                                 ("gear shaft", "x2", "y2", "gear_hz"))):
         suffix = "" if k == 0 else "2"
         layout["xaxis" + suffix] = {"title": {"text": f"{shaft}: x [{UM}]"}, "domain": [0.55 * k, 0.55 * k + 0.45],
                                     "anchor": "y" + suffix}
         layout["yaxis" + suffix] = {"title": {"text": f"y [{UM}]"}, "anchor": "x" + suffix,
                                     "scaleanchor": "x" + suffix}
-        data.append(line([1e6 * table[xs][i] for i in keep], [1e6 * table[ys][i] for i in keep], shaft,
-                         xaxis="x" + suffix, yaxis="y" + suffix, line={"width": 1}))
-    return figure("Orbits", "Whirl orbits of the two shafts (steady window).", data, layout, 500)
+        orbit_x, orbit_y = [1e6 * table[xs][i] for i in keep], [1e6 * table[ys][i] for i in keep]
+        data.append(line(orbit_x, orbit_y, shaft, xaxis="x" + suffix, yaxis="y" + suffix, line={"width": 1}))
+        if frequencies.get(f_name):
+            marks = keyphasor_points([table["t"][i] for i in keep], orbit_x, orbit_y, frequencies[f_name], t0)
+            if marks:
+                data.append(markers([m[0] for m in marks], [m[1] for m in marks], "keyphasor (once per rev)",
+                                    xaxis="x" + suffix, yaxis="y" + suffix, legendgroup="kp", showlegend=k == 0,
+                                    marker={"color": "black", "size": 6}))
+    return figure("Orbits", "Whirl orbits of the two shafts (steady window); black dots: keyphasor, once "
+                  "per revolution of that shaft.", data, layout, 500)
 
 
 def _full_spectrum(folder, summary):
@@ -231,6 +241,29 @@ def sweep(folder, summary):
                    data, layout, 260 * len(outputs) + 100)]
 
 
+def _train_mode_shapes(folder, name, modes, count=16):
+    """The mode shapes as a map: one column per mode, one row per degree of freedom, colour the
+    real part normalised by the mode's largest entry (hover gives the value)."""
+    shapes = _long_table(folder / "mode_shapes.csv", ["mode"])
+    numbers = [int(m) for m in modes["mode"]][:count]
+    dofs = list(shapes[(str(numbers[0]),)]["dof"])
+    columns = []
+    for m in numbers:
+        values = dict(zip(shapes[(str(m),)]["dof"], shapes[(str(m),)]["real"]))
+        largest = max(abs(v) for v in values.values()) or 1.0
+        columns.append([values.get(d, 0.0) / largest for d in dofs])
+    z = [[columns[j][i] for j in range(len(numbers))] for i in range(len(dofs))]
+    labels = [f"{m}: {f:.0f} Hz" for m, f in zip(numbers, modes["frequency_Hz"])]
+    data = [{"type": "heatmap", "z": z, "x": labels, "y": dofs, "zmin": -1, "zmax": 1, "colorscale": "RdBu",
+             "reversescale": True, "colorbar": {"title": {"text": "shape / largest [-]"}},
+             "hovertemplate": "mode %{x}<br>%{y}: %{z:.3f}<extra></extra>"}]
+    layout = axes_layout(f"{name}: mode shapes", "mode", "degree of freedom")
+    layout["yaxis"]["autorange"] = "reversed"
+    layout["margin"]["l"] = 160
+    return figure("Mode shapes", "Every degree of freedom (rows) in each mode (columns): real part of the shape "
+                  "normalised by its largest entry.", data, layout, min(1400, 140 + 14 * len(dofs)))
+
+
 def train(folder, summary):
     results, out = summary["results"], []
     name = summary["config"].get("gearbox", {}).get("name") or "gear train"
@@ -240,6 +273,8 @@ def train(folder, summary):
                  "text": modes.get("stage_type"), "name": "natural frequency"}]
         out.append(figure("Modes", "Natural frequencies (hover: the kind of mode).", data,
                           axes_layout(f"{name}: modes", "mode", "natural frequency [Hz]")))
+        if (folder / "mode_shapes.csv").exists():
+            out.append(_train_mode_shapes(folder, name, modes))
     if "campbell" in results:
         table = _read_columns(folder / "campbell.csv")
         lines = _read_columns(folder / "order_lines.csv")

@@ -79,3 +79,15 @@ def mesh_frequency_per_rpm(summary):
         if isinstance(node, (int, float)) and node > 0:
             return node / 60.0
     return None
+
+
+def keyphasor_points(t, xs, ys, frequency, t0):
+    """(x, y) where the shaft angle (t - t0) * frequency passes a whole revolution, linearly
+    interpolated between samples."""
+    points = []
+    for i in range(1, len(t)):
+        a, b = (t[i - 1] - t0) * frequency, (t[i] - t0) * frequency
+        if math.floor(b) > math.floor(a) and b > 0:
+            s = (math.floor(b) - a) / (b - a)
+            points.append((xs[i - 1] + s * (xs[i] - xs[i - 1]), ys[i - 1] + s * (ys[i] - ys[i - 1])))
+    return points

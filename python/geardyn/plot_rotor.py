@@ -2,11 +2,10 @@
 records (`geardyn spectrum`): orbits with keyphasor marks and the precession direction, full
 spectra, and the parametric study."""
 
-import math
 import pathlib
 
 from ._plot_common import _axes, _read_columns, _read_summary, finish, plt
-from ._tables import log_floor
+from ._tables import keyphasor_points as _keyphasor_points, log_floor
 
 _SHAFTS = (("pinion", "x1", "y1", "pinion_hz"), ("gear", "x2", "y2", "gear_hz"))
 
@@ -16,18 +15,6 @@ def _rotation_sense(summary, shaft):
     None if the result does not say."""
     text = summary["results"].get("conventions", {}).get("rotation", {}).get(shaft, "")
     return -1 if text.startswith("-z") else (1 if text.startswith("+z") else None)
-
-
-def _keyphasor_points(t, xs, ys, frequency, t0):
-    """(x, y) where the shaft angle (t - t0) * frequency passes a whole revolution, linearly
-    interpolated between samples."""
-    points = []
-    for i in range(1, len(t)):
-        a, b = (t[i - 1] - t0) * frequency, (t[i] - t0) * frequency
-        if math.floor(b) > math.floor(a) and b > 0:
-            s = (math.floor(b) - a) / (b - a)
-            points.append((xs[i - 1] + s * (xs[i] - xs[i - 1]), ys[i - 1] + s * (ys[i] - ys[i - 1])))
-    return points
 
 
 def orbits_figure(result_dir, axes=None, only_steady=True):

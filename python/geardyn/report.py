@@ -95,7 +95,8 @@ def _format_number(value):
 
 def headline_rows(summary, limit=60):
     """(name, value, unit) of the scalar results, two levels deep, in the order written; lists
-    are shown by their length. At most `limit` rows."""
+    are shown by their length, strings over 40 characters (prose) left out. At most `limit`
+    rows."""
     rows = [("command", summary.get("command", "?"), ""), ("status", summary.get("status", "?"), "")]
 
     def walk(prefix, table, depth):
@@ -109,6 +110,8 @@ def headline_rows(summary, limit=60):
                     rows.append((name, ", ".join(_format_number(v) for v in value), _unit_of(key)))
                 else:
                     rows.append((name, f"{len(value)} entries", ""))
+            elif isinstance(value, str) and len(value) > 40:
+                continue  # prose (conventions, messages) is not a headline number
             elif value is not None:
                 rows.append((name, _format_number(value), _unit_of(key)))
 

@@ -33,7 +33,7 @@ CASES = {
     "rotor_visnadi2021_modal": ["Mode shapes"],
     "rotor_visnadi2021_campbell": ["Campbell diagram"],
     "rotor_visnadi2021_time": ["Time history"],
-    "train_lin_parker1999": ["Modes"],
+    "train_lin_parker1999": ["Modes", "Mode shapes"],
 }
 
 
@@ -115,6 +115,10 @@ def test_saletti_forced_response_shows_stable_and_unstable_branches(reports, chr
     assert dashed >= 2, dashed
     shot = chromium.screenshot(OUT / "screenshots" / "saletti_forced_response.png", "gd-figure-0")
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 20_000
+
+
+def test_orbits_in_the_report_carry_keyphasor_marks(reports):
+    assert "keyphasor (once per rev)" in reports["spectrum_rao2023_table41_probes"].read_text()
 
 
 def test_report_is_self_contained(reports):
