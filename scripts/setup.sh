@@ -21,7 +21,11 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py
   python3-scipy  # bench/rotor_scipy_compare.py only
   libopenmpi-dev openmpi-bin  # mpirun -n N geardyn sweep
+  chromium chromium-driver python3-selenium  # the HTML report's test in headless Chromium
 )
+# npm fetches plotly.js for `geardyn report`; Debian's npm only if no npm is on PATH (a NodeSource
+# nodejs brings its own and conflicts with Debian's).
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -39,6 +43,17 @@ if ((${#missing[@]})); then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 else
   echo "setup: all ${#packages[@]} Debian packages present" >&2
+fi
+
+# plotly.js (MIT) for the self-contained HTML report, from npm into a project-local folder that
+# is never committed (.cache/ is ignored); python/geardyn/report.py finds it there.
+plotly_version=4.1.2
+plotly_js=".cache/npm/node_modules/plotly.js-dist-min/plotly.min.js"
+if ! grep -qs "plotly.js v$plotly_version" <(head -c 200 "$plotly_js" 2>/dev/null); then
+  echo "setup: installing plotly.js-dist-min@$plotly_version (npm) into .cache/npm" >&2
+  mkdir -p .cache/npm
+  npm install --prefix .cache/npm --no-save --no-audit --no-fund --no-package-lock --silent \
+    "plotly.js-dist-min@$plotly_version" >/dev/null
 fi
 
 [ "${1:-}" = "--deps" ] && exit 0

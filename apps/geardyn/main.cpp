@@ -12,6 +12,7 @@
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/error.h"
 #include "geardyn/version.h"
+#include "report_command.h"
 #include "rexs_command.h"
 
 namespace {
@@ -95,7 +96,7 @@ int main(int argc, char** argv) {
              "\nConfiguration reference of a command: geardyn schema COMMAND");
 
   const auto commands = geardyn::cli::allCommands();
-  std::vector<std::string> command_names{"schema", "import", "export"};
+  std::vector<std::string> command_names{"schema", "import", "export", "report"};
   for (const auto& command : commands) command_names.push_back(command.name);
   if (const int code = rejectUnknownCommand(argc, argv, command_names); code != 0) return code;
   std::map<std::string, CommandOptions> options;
@@ -137,6 +138,7 @@ int main(int argc, char** argv) {
   }
 
   const geardyn::cli::RexsCommands rexs_commands(app);
+  const geardyn::cli::ReportCommand report_command(app);
   std::string schema_command;
   CLI::App* schema_sub =
       app.add_subcommand("schema", "print the configuration reference of a command (Markdown)");
@@ -154,6 +156,7 @@ int main(int argc, char** argv) {
   }
 
   if (const auto code = rexs_commands.runIfParsed()) return *code;
+  if (const auto code = report_command.runIfParsed()) return *code;
   if (schema_sub->parsed()) {
     for (const auto& command : commands) {
       if (command.name != schema_command) continue;

@@ -15,4 +15,9 @@ namespace geardyn::cli {
 /// CMake pinned; the package is found next to the executable (build/python) or on PYTHONPATH.
 std::vector<std::string> drawPlots(const std::string& command, const std::filesystem::path& folder);
 
+/// Runs `python -m MODULE ARGS...` of the geardyn package (same interpreter and package folder
+/// as drawPlots) with this process's stdin, stdout and stderr; returns its exit code, or -1
+/// (with a message on stderr) if it could not start.
+int runPythonModule(const std::string& module, const std::vector<std::string>& args);
+
 }  // namespace geardyn::cli

@@ -96,3 +96,4 @@ __all__ = [
     "load_config", "mesh_stiffness", "MESH_STIFFNESS_MODELS", "mesh_phase_from_roll_angle",
     "roll_angle_from_mesh_phase",
 ]
+from . import report  # noqa: F401,E402  (geardyn.report.write_report: the HTML report)

@@ -1,18 +1,30 @@
-"""What the plotting modules share: the non-interactive matplotlib backend, atomic PNG writing
-and the readers of result tables."""
+"""What the plotting modules share: the non-interactive matplotlib backend, a figure or the
+caller's axes, atomic PNG writing and the readers of result tables."""
 
-import csv
 import os
 import pathlib
 import tempfile
 
 import matplotlib
 
-matplotlib.use("Agg")  # no display: files only
+if not os.environ.get("MPLBACKEND"):
+    matplotlib.use("Agg")  # no display unless the caller chose a backend (Jupyter does)
 import matplotlib.pyplot as plt  # noqa: E402
 
+from ._tables import _long_table, _read_columns, read_summary as _read_summary  # noqa: E402,F401
 
-def _save_atomically(figure, path):
+
+def _axes(ax, figsize):
+    """The caller's axes and its figure, or a new figure (constrained layout, so that legends
+    placed outside the axes stay inside the image) with one axes."""
+    if ax is not None:
+        return ax.figure, ax
+    figure, ax = plt.subplots(figsize=figsize, layout="constrained")
+    return figure, ax
+
+
+def _save_atomically(figure, path, close=False):
+    """Writes `figure` as PNG to `path` through a temporary file in the same folder."""
     path = pathlib.Path(path)
     handle, temporary = tempfile.mkstemp(prefix="." + path.name + ".tmp-", dir=path.parent)
     os.close(handle)
@@ -25,38 +37,14 @@ def _save_atomically(figure, path):
     finally:
         if os.path.exists(temporary):
             os.unlink(temporary)
-    plt.close(figure)
+    if close:
+        plt.close(figure)
     return path
 
 
-def _read_columns(path):
-    """A CSV table as {column: [floats or strings]}."""
-    with open(path, newline="") as handle:
-        rows = list(csv.DictReader(handle))
-    columns = {}
-    for name in rows[0].keys() if rows else []:
-        values = [row[name] for row in rows]
-        try:
-            columns[name] = [float(v) for v in values]
-        except ValueError:
-            columns[name] = values
-    return columns
-
-
-def _long_table(path, key_columns):
-    """A long CSV table grouped by its key columns: {(k1, ...): {column: [values]}}."""
-    with open(path, newline="") as handle:
-        rows = list(csv.DictReader(handle))
-    groups = {}
-    for row in rows:
-        key = tuple(row[k] for k in key_columns)
-        group = groups.setdefault(key, {})
-        for name, value in row.items():
-            if name in key_columns:
-                continue
-            try:
-                value = float(value)
-            except ValueError:
-                pass
-            group.setdefault(name, []).append(value)
-    return groups
+def finish(figures, folder, save):
+    """{name: Figure} as given; with `save`, each is also written to FOLDER/name."""
+    if save:
+        for name, figure in figures.items():
+            _save_atomically(figure, pathlib.Path(folder) / name)
+    return figures

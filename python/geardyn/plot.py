@@ -1,9 +1,11 @@
-"""Plots of geardyn result folders, written as PNG next to the data they show.
+"""Figures of geardyn result folders (matplotlib).
 
-The command line calls ``python3 -m geardyn.plot COMMAND RESULT_DIR`` after it has written a
-command's CSV tables and prints the names of the files it wrote, one per line. From Python,
-call the ``plot_<command>`` functions directly. Every PNG is written atomically (temporary name
-in the same folder, then rename).
+Every ``plot_<command>(result_dir, save=False)`` returns ``{file name: Figure}``; with
+``save=True`` it also writes each figure as PNG into the folder, atomically (temporary name in
+the same folder, then rename). The ``*_figure(result_dir, ax=None)`` functions draw one figure,
+on the caller's axes when given, and return it. The command line calls
+``python3 -m geardyn.plot COMMAND RESULT_DIR`` after writing a command's CSV tables: the same
+functions with ``save=True``; it prints the names of the files written, one per line.
 """
 
 import csv
@@ -12,10 +14,14 @@ import math
 import pathlib
 import sys
 
-from ._plot_common import _read_columns, _save_atomically, plt
-from .plot_fe_rotor import plot_campbell, plot_rotor_fe  # noqa: F401  (re-exported)
+from ._plot_common import _read_columns, finish, plt
+from .plot_fe_rotor import (campbell_figure, fe_modes_figure, plot_campbell, plot_rotor_fe,  # noqa: F401
+                            runup_figure)
+from .plot_hbm import details_figure, forced_response_figure, plot_hbm  # noqa: F401  (re-exported)
+from .plot_rotor import (full_spectrum_figure, orbits_figure, plot_rotor, plot_spectrum,  # noqa: F401
+                         study_figure)
 from .plot_sweep import plot_histograms, plot_sweep  # noqa: F401  (re-exported)
-from .plot_train import plot_train  # noqa: F401  (re-exported)
+from .plot_train import plot_train, train_campbell_figure, train_forced_response_figure  # noqa: F401
 
 
 def _read_profiles(path):
@@ -49,10 +55,10 @@ def _gear_outline(xs, ys, teeth, centre, rotation):
     return out_x + out_x[:1], out_y + out_y[:1]
 
 
-def plot_geometry(result_dir):
+def plot_geometry(result_dir, save=False):
     """mesh.png: the pair in mesh (whole gears and a close-up of the contact zone with the line
     of action, path of contact and pitch point). Needs summary.json results and
-    tooth_profiles.csv. Returns the list of files written."""
+    tooth_profiles.csv. Returns {"mesh.png": Figure}."""
     folder = pathlib.Path(result_dir)
     results = json.loads((folder / "summary.json").read_text())["results"]
     profiles = _read_profiles(folder / "tooth_profiles.csv")
@@ -104,10 +110,10 @@ def plot_geometry(result_dir):
                          f"{results['operating_pressure_angle_deg']:.3f} deg")
             ax.legend(loc="upper right", fontsize=7)
     figure.tight_layout()
-    return [_save_atomically(figure, folder / "mesh.png")]
+    return finish({"mesh.png": figure}, folder, save)
 
 
-def plot_stiffness(result_dir):
+def plot_stiffness(result_dir, save=False):
     """mesh_stiffness.png: k over two mesh periods for every model (as Visnadi 2021, Fig. 1),
     with the pairs of the primary model; and the static transmission error when computed."""
     folder = pathlib.Path(result_dir)
@@ -141,16 +147,16 @@ def plot_stiffness(result_dir):
         ax = axes[1][0]
         ax.plot(two, [d * 1e6 for d in twice(table["ste_m"])], color="black", lw=1.2)
         ax.set_xlabel("mesh phase [mesh periods]")
-        ax.set_ylabel("loaded STE [um]")
+        ax.set_ylabel("loaded STE [µm]")
         ax.set_xlim(0, 2)
         ax.grid(alpha=0.3)
         force = results["static_transmission_error"]["force"]
         ax.set_title(f"static transmission error at F = {force:g} N ({primary})", fontsize=9)
     figure.tight_layout()
-    return [_save_atomically(figure, folder / "mesh_stiffness.png")]
+    return finish({"mesh_stiffness.png": figure}, folder, save)
 
 
-def plot_simulate(result_dir):
+def plot_simulate(result_dir, save=False):
     """time_response.png: relative deflection y = x - e and the mesh force over the steady
     periods written out, with the mean force for reference."""
     folder = pathlib.Path(result_dir)
@@ -161,7 +167,7 @@ def plot_simulate(result_dir):
     t = table["t"]
     figure, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
     axes[0].plot(t, [y * (1e6 if si else 1.0) for y in table["y"]], lw=1.0)
-    axes[0].set_ylabel("y = x - e [um]" if si else "y = x - e [-]")
+    axes[0].set_ylabel("y = x - e [µm]" if si else "y = x - e [-]")
     axes[1].plot(t, table["mesh_force"], lw=1.0, color="tab:red", label="mesh force")
     axes[1].axhline(results["model"]["mean_force"], color="0.4", lw=0.8, ls="--", label="mean load F")
     axes[1].set_ylabel("mesh force [N]" if si else "mesh force [-]")
@@ -172,10 +178,10 @@ def plot_simulate(result_dir):
     title = summary.get("config", {}).get("title") or "gear-pair time response"
     axes[0].set_title(f"{title}\n{results['status']}: {results['message']}", fontsize=9)
     figure.tight_layout()
-    return [_save_atomically(figure, folder / "time_response.png")]
+    return finish({"time_response.png": figure}, folder, save)
 
 
-def plot_stats(result_dir):
+def plot_stats(result_dir, save=False):
     """mean_excitation_ratio.png: histogram of the Monte Carlo mean excitation ratio R with its
     5/50/95 % quantiles and the deterministic R."""
     folder = pathlib.Path(result_dir)
@@ -194,167 +200,10 @@ def plot_stats(result_dir):
     ax.legend(fontsize=8)
     ax.set_title(f"Monte Carlo, {results['monte_carlo']['samples']} samples (seed {results['monte_carlo']['seed']})", fontsize=9)
     figure.tight_layout()
-    return [_save_atomically(figure, folder / "mean_excitation_ratio.png")]
+    return finish({"mean_excitation_ratio.png": figure}, folder, save)
 
 
-def plot_hbm(result_dir):
-    """forced_response.png: peak-to-peak relative deflection against the mesh frequency, stable
-    branches solid, unstable dashed, folds marked, Newmark points overlaid; details.png: one
-    period of response, contact force and mesh stiffness F/y at the requested frequencies (as
-    Saletti et al. 2025, Figs. 7-10)."""
-    folder = pathlib.Path(result_dir)
-    summary = json.loads((folder / "summary.json").read_text())
-    results = summary["results"]
-    si = summary["config"]["model"]["units"] == "SI"
-    unit = 1e6 if si else 1.0
-    with open(folder / "sweep.csv", newline="") as handle:
-        rows = list(csv.DictReader(handle))
-    figure, ax = plt.subplots(figsize=(9, 5))
-    colours = {"up": "tab:blue", "down": "tab:orange"}
-    for sweep in ("up", "down"):
-        points = [r for r in rows if r["sweep"] == sweep]
-        segment = []
-        for i, r in enumerate(points):
-            segment.append(r)
-            last = i == len(points) - 1
-            if last or points[i + 1]["stable"] != r["stable"]:
-                if not last:
-                    segment.append(points[i + 1])
-                ax.plot([float(p["frequency"]) for p in segment], [float(p["p2p"]) * unit for p in segment],
-                        color=colours[sweep], lw=1.2, ls="-" if r["stable"] == "1" else "--",
-                        label=f"HBM, sweep {sweep}" if not any(l.get_label() == f"HBM, sweep {sweep}" for l in ax.lines) else None)
-                segment = []
-    for fold in results.get("folds", []):
-        ax.plot(fold["frequency"], fold["p2p"] * unit, "kx", ms=5)
-    checks = results.get("newmark_checks", [])
-    if checks:
-        ax.plot([c["frequency"] for c in checks], [c["p2p_newmark"] * unit for c in checks], "ko", mfc="none",
-                label="Newmark (time integration)")
-    ax.set_xlabel("mesh frequency [Hz]" if si else "Omega = omega_m / omega_n")
-    ax.set_ylabel("peak-to-peak y [um]" if si else "peak-to-peak y [-]")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    title = summary["config"].get("title") or "forced response"
-    ax.set_title(f"{title}\nH = {results['harmonics']}: solid stable, dashed unstable, x folds", fontsize=9)
-    figure.tight_layout()
-    written = [_save_atomically(figure, folder / "forced_response.png")]
-    details = results.get("details", [])
-    if details:
-        figure, axes = plt.subplots(len(details), 3, figsize=(12, 2.2 * len(details)), squeeze=False)
-        for row, detail in zip(axes, details):
-            table = _read_columns(folder / detail["file"])
-            tau = table["tau"]
-            row[0].plot(tau, [v * unit for v in table["y"]])
-            row[1].plot(tau, table["mesh_force"], color="tab:red")
-            row[2].plot(tau, [k / 1e8 for k in table["mesh_stiffness"]], color="tab:green")
-            state = "stable" if detail["stable"] else "unstable"
-            row[0].set_ylabel(f"{detail['frequency']:g} Hz\n{state}", fontsize=8)
-        axes[0][0].set_title("relative deflection y [um]", fontsize=9)
-        axes[0][1].set_title("contact force [N]", fontsize=9)
-        axes[0][2].set_title("mesh stiffness F/y [1e8 N/m]", fontsize=9)
-        for ax in axes[-1]:
-            ax.set_xlabel("tau = omega t [rad]")
-        figure.tight_layout()
-        written.append(_save_atomically(figure, folder / "details.png"))
-    return written
-
-
-def _orbits(folder, table, title, written, only_steady):
-    """orbits.png: y against x of each shaft [um] (as Rao 2023, Fig. 4.1)."""
-    figure, axes = plt.subplots(1, 2, figsize=(10, 4.8))
-    steady = table.get("steady")
-    for ax, (shaft, xs, ys) in zip(axes, (("pinion (input) shaft", "x1", "y1"), ("gear (output) shaft", "x2", "y2"))):
-        keep = range(len(table[xs]))
-        if only_steady and steady is not None:
-            keep = [i for i in keep if steady[i] == 1.0]
-        ax.plot([table[xs][i] * 1e6 for i in keep], [table[ys][i] * 1e6 for i in keep], lw=0.4)
-        ax.set_xlabel("x [um]")
-        ax.set_ylabel("y [um]")
-        ax.set_title(shaft, fontsize=9)
-        ax.set_aspect("equal", adjustable="datalim")
-        ax.grid(alpha=0.3)
-    figure.suptitle(title, fontsize=9)
-    figure.tight_layout()
-    written.append(_save_atomically(figure, folder / "orbits.png"))
-
-
-def _full_spectra(folder, summary, title, written):
-    """full_spectrum.png: amplitude against signed frequency of each shaft, forward right and
-    backward left, with the whirl peaks marked (as Rao 2023, Fig. 4.2)."""
-    spectrum = _read_columns(folder / "full_spectrum.csv")
-    peaks = _read_columns(folder / "spectrum_peaks.csv")
-    frame = summary["config"]["spectrum"]["frame"]
-    figure, axes = plt.subplots(2, 1, figsize=(10, 7))
-    for ax, shaft in zip(axes, ("pinion", "gear")):
-        f = [spectrum["frequency_hz"][i] for i, s in enumerate(spectrum["shaft"]) if s == shaft]
-        a = [spectrum["amplitude"][i] * 1e6 for i, s in enumerate(spectrum["shaft"]) if s == shaft]
-        ax.plot(f, a, lw=0.6, color="0.4", label="FFT (display window)")
-        pf = [peaks["frequency_hz"][i] for i, s in enumerate(peaks["shaft"]) if s == shaft]
-        pa = [peaks["amplitude"][i] * 1e6 for i, s in enumerate(peaks["shaft"]) if s == shaft]
-        top = max(a + pa + [1e-30])
-        ax.plot(pf, pa, "o", color="tab:red", ms=3, mfc="none", label="whirl peaks (exact bins or fit)")
-        ax.set_yscale("log")
-        ax.set_ylim(top * 1e-8, top * 3)
-        ax.set_ylabel("0-peak whirl radius [um]")
-        ax.set_title(f"{shaft} shaft ({frame} frame): forward f > 0, backward f < 0", fontsize=9)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    axes[-1].set_xlabel("frequency [Hz]")
-    figure.suptitle(title, fontsize=9)
-    figure.tight_layout()
-    written.append(_save_atomically(figure, folder / "full_spectrum.png"))
-
-
-def plot_rotor(result_dir):
-    """orbits.png (steady window), full_spectrum.png and, with a study, study.png: the dynamic
-    whirl amplitudes per case and shaft (thesis §4.5)."""
-    folder = pathlib.Path(result_dir)
-    summary = json.loads((folder / "summary.json").read_text())
-    title = summary["config"].get("title") or "lateral geared rotor"
-    written = []
-    if (folder / "time_history.csv").exists():
-        _orbits(folder, _read_columns(folder / "time_history.csv"), title, written, True)
-    if (folder / "full_spectrum.csv").exists():
-        _full_spectra(folder, summary, title, written)
-    if (folder / "study.csv").exists():
-        study = _read_columns(folder / "study.csv")
-        cases = list(dict.fromkeys(study["case"]))
-        components = [c for c in dict.fromkeys(study["component"]) if c != "static"]
-        figure, axes = plt.subplots(2, 1, figsize=(12, 7), sharex=True)
-        width = 0.8 / len(cases)
-        for ax, shaft in zip(axes, ("pinion", "gear")):
-            for k, case in enumerate(cases):
-                values = {study["component"][i]: study["amplitude"][i] * 1e6 for i in range(len(study["case"]))
-                          if study["case"][i] == case and study["shaft"][i] == shaft}
-                ax.bar([j + k * width for j in range(len(components))], [values[c] for c in components],
-                       width=width, label=case)
-            ax.set_ylabel(f"{shaft} shaft [um]")
-            ax.set_yscale("log")
-            ax.grid(alpha=0.3, axis="y")
-        axes[0].legend(fontsize=7, ncol=3)
-        axes[-1].set_xticks([j + 0.4 - width / 2 for j in range(len(components))])
-        axes[-1].set_xticklabels(components, rotation=60, fontsize=7)
-        ranking = ", ".join(f"{r['group']} {100 * r['max_relative_change']:.0f} %"
-                            for r in summary["results"]["study"]["ranking_mesh"])
-        figure.suptitle(f"{title}\nwhirl amplitudes per case; largest change of the mesh-harmonic RMS: {ranking}",
-                        fontsize=9)
-        figure.tight_layout()
-        written.append(_save_atomically(figure, folder / "study.png"))
-    return written
-
-
-def plot_spectrum(result_dir):
-    """orbits.png and full_spectrum.png of an analysed probe record."""
-    folder = pathlib.Path(result_dir)
-    summary = json.loads((folder / "summary.json").read_text())
-    title = summary["config"].get("title") or summary["results"]["record"]["file"]
-    written = []
-    _orbits(folder, _read_columns(folder / "time_history.csv"), title, written, False)
-    _full_spectra(folder, summary, title, written)
-    return written
-
-
-def plot_identify(result_dir):
+def plot_identify(result_dir, save=False):
     """identify.png: measured against re-simulated whirl peaks of each shaft and speed, forward
     right and backward left (as Rao 2023, Figs. 5.12 and 5.14)."""
     folder = pathlib.Path(result_dir)
@@ -371,7 +220,7 @@ def plot_identify(result_dir):
             ax.vlines(f, 0, measured, color="0.6", lw=4, label="measured")
             ax.plot(f, model, "o", color="tab:red", ms=4, mfc="none", label="re-simulated (identified)")
             ax.set_title(f"{shaft} shaft, {speed:g} rpm", fontsize=9)
-            ax.set_ylabel("0-peak whirl radius [um]")
+            ax.set_ylabel("0-peak whirl radius [µm]")
             ax.set_xlabel("frequency [Hz] (probe frame)")
             ax.grid(alpha=0.3)
         row[0].legend(fontsize=8)
@@ -380,10 +229,10 @@ def plot_identify(result_dir):
     figure.suptitle(f"{title}: {fit['method']}, re-simulated within {100 * fit['resimulated_relative_difference']:.2g} % "
                     f"of the largest peak", fontsize=9)
     figure.tight_layout()
-    return [_save_atomically(figure, folder / "identify.png")]
+    return finish({"identify.png": figure}, folder, save)
 
 
-def plot_ltca(result_dir):
+def plot_ltca(result_dir, save=False):
     """ltca.png: loaded STE over the mesh period and the load share of each tooth pair;
     harris.png: peak-to-peak STE against load (a Harris map); statistics.png: Gelman's r_ke and
     R against the normalised load."""
@@ -391,11 +240,11 @@ def plot_ltca(result_dir):
     summary = json.loads((folder / "summary.json").read_text())
     title = summary["config"].get("title") or "loaded tooth contact"
     table = _read_columns(folder / "ltca.csv")
-    written = []
+    figures = {}
     figure, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
     top.plot(table["phase"], [v * 1e6 for v in table["ste_m"]], label="loaded STE")
     top.plot(table["phase"], [v * 1e6 for v in table["no_load_te_m"]], "--", label="no-load TE")
-    top.set_ylabel("along the line of action [um]")
+    top.set_ylabel("along the line of action [µm]")
     top.legend(fontsize=8)
     top.grid(alpha=0.3)
     for name in [c for c in table if c.startswith("share_pair_")]:
@@ -406,7 +255,7 @@ def plot_ltca(result_dir):
     bottom.grid(alpha=0.3)
     figure.suptitle(f"{title}: {summary['results']['ltca']['force']:g} N", fontsize=9)
     figure.tight_layout()
-    written.append(_save_atomically(figure, folder / "ltca.png"))
+    figures["ltca.png"] = figure
     if (folder / "harris.csv").exists():
         harris = _read_columns(folder / "harris.csv")
         figure, ax = plt.subplots(figsize=(7, 4.5))
@@ -423,12 +272,12 @@ def plot_ltca(result_dir):
         if design:
             ax.axvline(design, color="0.5", ls=":", label="design load")
         ax.set_xlabel("transmitted force [N]")
-        ax.set_ylabel("loaded STE [um]")
+        ax.set_ylabel("loaded STE [µm]")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
         ax.set_title(f"{title}: Harris map", fontsize=9)
         figure.tight_layout()
-        written.append(_save_atomically(figure, folder / "harris.png"))
+        figures["harris.png"] = figure
     if (folder / "load_statistics.csv").exists():
         stats = _read_columns(folder / "load_statistics.csv")
         figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
@@ -445,8 +294,8 @@ def plot_ltca(result_dir):
             ax.grid(alpha=0.3)
         figure.suptitle(f"{title}: Gelman statistics against load", fontsize=9)
         figure.tight_layout()
-        written.append(_save_atomically(figure, folder / "statistics.png"))
-    return written
+        figures["statistics.png"] = figure
+    return finish(figures, folder, save)
 
 
 PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": plot_simulate,
@@ -456,12 +305,15 @@ PLOTTERS = {"geometry": plot_geometry, "stiffness": plot_stiffness, "simulate": 
 
 
 def main(argv=None):
+    """The command line's PNGs: draws the command's figures, writes them into the folder and
+    prints their file names, one per line."""
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 2 or argv[0] not in PLOTTERS:
         print(f"usage: python3 -m geardyn.plot {{{','.join(PLOTTERS)}}} RESULT_DIR", file=sys.stderr)
         return 2
-    for path in PLOTTERS[argv[0]](argv[1]):
-        print(pathlib.Path(path).name)
+    for name, figure in PLOTTERS[argv[0]](argv[1], save=True).items():
+        plt.close(figure)
+        print(name)
     return 0
 
 

@@ -2,11 +2,11 @@
 diagram with shaft and mesh orders, the forced response against speed, and the Newmark time
 response over the frequency-domain steady state."""
 
-import json
 import math
 import pathlib
 
-from ._plot_common import _long_table, _read_columns, _save_atomically, plt
+from ._plot_common import _axes, _long_table, _read_columns, _read_summary, finish, plt
+from ._tables import log_floor
 
 _TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
                  "mixed": "tab:purple", "outside": "0.3", "": "0.3"}
@@ -43,7 +43,7 @@ def _mode_shapes_along_shafts(folder, summary, title, modes, shapes, count):
     columns = 4 if count > 4 else count
     rows = math.ceil(count / columns)
     figure, axes = plt.subplots(rows, columns, figsize=(3.6 * columns, 3.2 * rows + 0.6),
-                                squeeze=False)
+                                squeeze=False, layout="constrained")
     for j in range(rows * columns):
         ax = axes[j // columns][j % columns]
         if j >= count:
@@ -70,8 +70,7 @@ def _mode_shapes_along_shafts(folder, summary, title, modes, shapes, count):
     speed = summary["results"]["modal"]["speed_rpm"]
     figure.suptitle(f"{title}: mode shapes at {speed:g} rpm (lateral displacement along each "
                     "shaft, normalised: u_y solid, u_z dashed)", fontsize=9)
-    figure.tight_layout()
-    return _save_atomically(figure, folder / "modes.png")
+    return figure
 
 
 def _mode_shapes(folder, summary, title):
@@ -89,7 +88,7 @@ def _mode_shapes(folder, summary, title):
     columns = 4 if count > 4 else count
     rows = math.ceil(count / columns)
     figure, axes = plt.subplots(rows, columns, figsize=(3.3 * columns, 3.3 * rows + 0.6),
-                                squeeze=False)
+                                squeeze=False, layout="constrained")
     for j in range(rows * columns):
         ax = axes[j // columns][j % columns]
         if j >= count:
@@ -124,16 +123,23 @@ def _mode_shapes(folder, summary, title):
     speed = summary["results"]["modal"]["speed_rpm"]
     figure.suptitle(f"{title}: mode shapes at {speed:g} rpm (blue arrows: translation of the "
                     "body centre; red/orange discs: rotation +/-, area ~ amplitude)", fontsize=9)
-    figure.tight_layout()
-    return _save_atomically(figure, folder / "modes.png")
+    return figure
 
 
-def _campbell(folder, summary, title):
+def train_campbell_figure(result_dir, ax=None):
+    """The train's Campbell diagram: modes against input speed with shaft (dashed) and mesh
+    (dash-dot) order lines, crossings x, the operating speed dotted; on `ax` if given."""
+    folder = pathlib.Path(result_dir)
+    summary = _read_summary(folder)
+    return _campbell(folder, summary, _train_title(summary), ax)
+
+
+def _campbell(folder, summary, title, ax=None):
     table = _read_columns(folder / "campbell.csv")
     lines = _read_columns(folder / "order_lines.csv")
     critical = _read_columns(folder / "critical_speeds.csv") if (folder / "critical_speeds.csv").stat().st_size else {}
     speeds = table["speed_rpm"]
-    figure, ax = plt.subplots(figsize=(9.5, 6))
+    figure, ax = _axes(ax, (10.5, 6))
     top = 0.0
     for name, values in table.items():
         if name.startswith("mode_"):
@@ -160,35 +166,45 @@ def _campbell(folder, summary, title):
     ax.set_ylabel("natural frequency [Hz]")
     ax.set_title(f"{title}: Campbell diagram (dashed: 1× shaft orders, dash-dot: mesh orders)",
                  fontsize=9)
-    ax.legend(fontsize=7, loc="upper left")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     ax.grid(alpha=0.3)
-    figure.tight_layout()
-    return _save_atomically(figure, folder / "campbell.png")
+    return figure
 
 
-def _forced(folder, summary, title):
+def train_forced_response_figure(result_dir, axes=None):
+    """Dynamic factor and mesh force at the mesh frequency of every mesh against input speed,
+    the operating speed dotted; on two `axes` if given."""
+    folder = pathlib.Path(result_dir)
+    summary = _read_summary(folder)
+    return _forced(folder, summary, _train_title(summary), axes)
+
+
+def _forced(folder, summary, title, axes=None):
     table = _read_columns(folder / "forced_response.csv")
     speeds = table["speed_rpm"]
-    figure, (top_ax, bottom_ax) = plt.subplots(2, 1, figsize=(9.5, 7), sharex=True)
+    if axes is None:
+        figure, (top_ax, bottom_ax) = plt.subplots(2, 1, figsize=(10.5, 7), sharex=True, layout="constrained")
+    else:
+        (top_ax, bottom_ax), figure = axes, axes[0].figure
     for name, values in table.items():
         if name.startswith("dynamic_factor_"):
             top_ax.plot(speeds, values, lw=1.1, label=name[len("dynamic_factor_"):])
         if name.startswith("h1_N_"):
-            bottom_ax.semilogy(speeds, [max(v, 1e-12) for v in values], lw=1.1,
+            floor = log_floor([v for n, vs in table.items() if n.startswith("h1_N_") for v in vs]) or 1e-12
+            bottom_ax.semilogy(speeds, [max(v, floor) for v in values], lw=1.1,
                                label=name[len("h1_N_"):])
     operating = abs(summary["results"]["kinematics"]["input_speed_rpm"])
     for ax in (top_ax, bottom_ax):
         if operating:
             ax.axvline(operating, color="tab:red", lw=0.8, ls=":", label="operating speed")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, ncol=3)
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     top_ax.set_ylabel("dynamic factor max F / mean F [-]")
     bottom_ax.set_ylabel("mesh force at the mesh frequency [N]")
     bottom_ax.set_xlabel("input speed [rpm]")
     top_ax.set_title(f"{title}: forced response to transmission error and mesh-stiffness "
                      "variation (frequency domain)", fontsize=9)
-    figure.tight_layout()
-    return _save_atomically(figure, folder / "forced_response.png")
+    return figure
 
 
 def _time(folder, summary, title):
@@ -196,8 +212,8 @@ def _time(folder, summary, title):
     t_ms = [1e3 * (t - table["t_s"][0]) for t in table["t_s"]]
     meshes = [n[len("mesh_force_N_"):] for n in table if n.startswith("mesh_force_N_")]
     shown = meshes[:4]
-    figure, axes = plt.subplots(len(shown), 1, figsize=(9.5, 2.2 * len(shown) + 0.6), sharex=True,
-                                squeeze=False)
+    figure, axes = plt.subplots(len(shown), 1, figsize=(10.5, 2.2 * len(shown) + 0.6), sharex=True,
+                                squeeze=False, layout="constrained")
     for ax, name in zip(axes[:, 0], shown):
         ax.plot(t_ms, [1e-3 * f for f in table["mesh_force_N_" + name]], lw=1.4, label="Newmark")
         steady = table.get("steady_mesh_force_N_" + name)
@@ -206,28 +222,32 @@ def _time(folder, summary, title):
                     label="frequency-domain steady state")
         ax.set_ylabel(f"{name}\nmesh force [kN]", fontsize=8)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, loc="upper right")
+    axes[0, 0].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     axes[-1, 0].set_xlabel("time in the steady-state window [ms]")
     speed = summary["results"]["time"]["speed_rpm"]
     figure.suptitle(f"{title}: dynamic mesh forces at {speed:g} rpm", fontsize=9)
-    figure.tight_layout()
-    return _save_atomically(figure, folder / "time_history.png")
+    return figure
 
 
-def plot_train(result_dir):
-    """modes.png, campbell.png, forced_response.png and time_history.png of the analyses run."""
-    folder = pathlib.Path(result_dir)
-    summary = json.loads((folder / "summary.json").read_text())
-    title = summary["config"].get("gearbox", {}).get("name") or \
+def _train_title(summary):
+    return summary["config"].get("gearbox", {}).get("name") or \
         summary["config"].get("gearbox_description", {}).get("gearbox", {}).get("name") or "gear train"
-    written = []
+
+
+def plot_train(result_dir, save=False):
+    """{file name: Figure}: modes.png, campbell.png, forced_response.png and time_history.png of
+    the analyses run; written into the folder when `save`."""
+    folder = pathlib.Path(result_dir)
+    summary = _read_summary(folder)
+    title = _train_title(summary)
+    figures = {}
     results = summary["results"]
     if "modal" in results and (folder / "mode_shapes.csv").exists():
-        written.append(_mode_shapes(folder, summary, title))
+        figures["modes.png"] = _mode_shapes(folder, summary, title)
     if "campbell" in results:
-        written.append(_campbell(folder, summary, title))
+        figures["campbell.png"] = _campbell(folder, summary, title)
     if "forced" in results:
-        written.append(_forced(folder, summary, title))
+        figures["forced_response.png"] = _forced(folder, summary, title)
     if "time" in results and (folder / "time_history.csv").exists():
-        written.append(_time(folder, summary, title))
-    return written
+        figures["time_history.png"] = _time(folder, summary, title)
+    return finish(figures, folder, save)

@@ -78,8 +78,10 @@ def test_plot_geometry_writes_a_png(tmp_path):
     subprocess.run([cli, "geometry", str(RAO_RIG), "--out", str(tmp_path), "--quiet",
                     "--set", "output.plots=false"], check=True, capture_output=True)
     import geardyn.plot
-    written = geardyn.plot.plot_geometry(tmp_path)
-    assert [p.name for p in written] == ["mesh.png"]
+    assert not list(tmp_path.glob("*.png"))
+    figures = geardyn.plot.plot_geometry(tmp_path)  # Figures only: nothing written
+    assert list(figures) == ["mesh.png"] and not list(tmp_path.glob("*.png"))
+    geardyn.plot.plot_geometry(tmp_path, save=True)
     assert (tmp_path / "mesh.png").read_bytes()[:4] == b"\x89PNG"
     assert not [p for p in tmp_path.iterdir() if ".tmp" in p.name]
 

@@ -1,0 +1,60 @@
+"""The pieces of the figures and the HTML report that are plain functions: stability runs,
+log-axis floors, headline rows, JSON for a <script> element, finding plotly.js."""
+
+import json
+
+import pytest
+
+from geardyn import report
+from geardyn._tables import log_floor, mesh_frequency_per_rpm, stability_runs
+
+
+def test_stability_runs_share_their_boundary_points():
+    runs = stability_runs([0, 1, 2, 3, 4], [10, 11, 12, 13, 14], [False, False, True, True, False])
+    assert runs == [([0, 1, 2], [10, 11, 12], False), ([2, 3, 4], [12, 13, 14], True), ([4], [14], False)]
+    assert stability_runs([0, 1], [5, 6], [True, True]) == [([0, 1], [5, 6], True)]
+    assert stability_runs([], [], []) == []
+
+
+def test_log_floor_is_derived_from_the_data():
+    assert log_floor([1e-20, 1e-3, 2.0]) == pytest.approx(2e-6)  # numerical zeros do not count
+    assert log_floor([0.5, 2.0]) == 0.5  # small dynamic range: the smallest value
+    assert log_floor([0.0, -1.0]) is None
+
+
+def test_mesh_frequency_per_rpm_needs_the_pinion_teeth():
+    assert mesh_frequency_per_rpm({"config": {"pinion": {"teeth": 25}}}) == pytest.approx(25 / 60)
+    assert mesh_frequency_per_rpm({"config": {"model": {"torque": 100.0}}}) is None
+
+
+def test_headline_rows_flatten_results_with_units_from_key_names():
+    summary = {"command": "hbm", "status": "ok",
+               "results": {"wall_time_s": 0.25, "peak": {"frequency_hz": 1632.5, "stable": True},
+                           "folds": [{"f": 1}, {"f": 2}], "harmonics": 14, "skip": None,
+                           "conventions": {"frame": "shaft: each shaft relative to its own rotation (long)"}}}
+    rows = report.headline_rows(summary)
+    assert ("wall_time_s", "0.25", "s") in rows
+    assert ("peak.frequency_hz", "1632.5", "Hz") in rows
+    assert ("peak.stable", "yes", "") in rows
+    assert ("folds", "2 entries", "") in rows
+    assert not [r for r in rows if r[0] in ("skip", "conventions.frame")]  # nothing, prose
+
+
+def test_script_json_cannot_close_the_script_element_and_has_no_nan():
+    text = report._script_json({"a": "</script><b>", "b": float("nan"), "c": [float("inf"), 1.0]})
+    assert "</" not in text
+    assert json.loads(text) == {"a": "</script><b>", "b": None, "c": [None, 1.0]}
+
+
+def test_missing_plotly_js_names_the_fix(tmp_path, monkeypatch):
+    monkeypatch.setenv("GEARDYN_PLOTLY_JS", str(tmp_path / "none.js"))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(report, "_NPM_PATH", tmp_path / "absent" / "plotly.min.js")
+    monkeypatch.setattr(report.pathlib.Path, "is_file", lambda self: False)
+    with pytest.raises(FileNotFoundError, match="scripts/setup.sh --deps"):
+        report.find_plotly_js()
+
+
+def test_write_report_refuses_a_folder_without_summary(tmp_path):
+    with pytest.raises(FileNotFoundError, match="no summary.json"):
+        report.write_report(tmp_path)

@@ -1,0 +1,146 @@
+"""`geardyn report` end to end: result folders of fast seed examples, one HTML report each,
+opened in headless Chromium. A reader must see every figure drawn and the console must stay
+silent; screenshots are kept under the build tree (BUILD/test-results/report/)."""
+
+import os
+import pathlib
+import re
+import subprocess
+import sys
+
+import pytest
+
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+import browser  # noqa: E402
+
+CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
+SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+BUILD = pathlib.Path(os.environ.get("GEARDYN_BUILD_DIR", pathlib.Path(CLI).resolve().parents[1]))
+OUT = BUILD / "test-results" / "report"
+
+# example stem -> the figures its report must draw (by heading), one per command kind the
+# report knows; all run in well under a second each.
+CASES = {
+    "hbm_saletti2025_100Nm": ["Forced response", "Periodic solutions"],
+    "hbm_backlash_kahraman_singh": ["Forced response"],
+    "stiffness_visnadi2021_spur": ["Mesh stiffness"],
+    "simulate_gear_pair_backlash": ["Time history"],
+    "geometry_rao2023_rig": ["Tooth profiles"],
+    "ltca_visnadi2021_long_relief": ["Loaded tooth contact", "Harris map"],
+    "stats_gelman2005_case1_a025": [],
+    "rotor_rao2023_study": ["Study"],
+    "spectrum_rao2023_table41_probes": ["Orbits", "Full spectra"],
+    "rotor_visnadi2021_modal": ["Mode shapes"],
+    "rotor_visnadi2021_campbell": ["Campbell diagram"],
+    "rotor_visnadi2021_time": ["Time history"],
+    "train_lin_parker1999": ["Modes", "Mode shapes"],
+}
+
+
+def _run_example(stem):
+    command = stem.split("_", 1)[0]
+    folder = OUT / "runs" / stem
+    done = subprocess.run([CLI, command, str(SOURCE / "examples" / f"{stem}.toml"), "--out", str(folder),
+                           "--quiet", "--set", "output.plots=false"], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    return folder
+
+
+@pytest.fixture(scope="module")
+def reports():
+    """{stem: report path}, written by the CLI's `geardyn report`."""
+    written = {}
+    for stem in CASES:
+        folder = _run_example(stem)
+        page = OUT / f"{stem}.html"
+        done = subprocess.run([CLI, "report", str(folder), "--out", str(page)], capture_output=True,
+                              text=True, timeout=60)
+        assert done.returncode == 0, done.stderr
+        assert str(page) in done.stdout
+        written[stem] = page
+    return written
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    why = browser.missing()
+    if why and os.environ.get("GEARDYN_SKIP_BROWSER_TESTS") == "1":
+        pytest.skip(why)
+    assert why is None, why + " (or set GEARDYN_SKIP_BROWSER_TESTS=1)"
+    session = browser.Browser()
+    yield session
+    session.close()
+
+
+# Opened in the browser (each page parses 5 MB of plotly.js: 1-3 s on a loaded 2-core machine),
+# one page per kind of figure: line rows (HBM, LTCA), log bars, orbits with equal axes and log
+# spectra, FE mode-shape rows, train bars; the other reports are checked for their headings.
+IN_BROWSER = ["hbm_saletti2025_100Nm", "ltca_visnadi2021_long_relief", "rotor_rao2023_study",
+              "spectrum_rao2023_table41_probes", "rotor_visnadi2021_modal", "train_lin_parker1999"]
+
+
+def _headings(page):
+    return re.findall(r"<h3>([^<]*)</h3><div class=\"gd-figure\"", page.read_text())
+
+
+def test_every_report_has_the_figures_of_its_command(reports):
+    for stem, page in reports.items():
+        assert _headings(page) == CASES[stem], stem
+
+
+def test_pages_render_every_figure_with_a_silent_console(reports, chromium):
+    for stem in IN_BROWSER:
+        page = reports[stem]
+        seen = chromium.open(page)
+        assert seen["containers"] == len(CASES[stem]), (stem, seen)
+        assert seen["rendered"] == seen["containers"], (stem, seen)
+        assert seen["drawn"] == seen["containers"], (stem, seen)
+        assert all(n > 0 for n in seen["traces"]), (stem, seen)
+        assert seen["console"] == [], (stem, seen["console"])
+        chromium.screenshot(OUT / "screenshots" / f"{stem}.png")
+
+
+def test_saletti_forced_response_shows_stable_and_unstable_branches(reports, chromium):
+    chromium.open(reports["hbm_saletti2025_100Nm"])
+    names = chromium.driver.execute_script(
+        "return document.getElementById('gd-figure-0').data.map(t => t.name);")
+    for sweep in ("up", "down"):
+        assert f"sweep {sweep}, stable" in names and f"sweep {sweep}, unstable" in names, names
+    assert "folds" in names and "Newmark (time integration)" in names
+    # Drawn, not only declared: the unstable (dashed) traces have SVG paths with a dash array.
+    dashed = chromium.driver.execute_script(
+        "return Array.from(document.querySelectorAll('#gd-figure-0 .scatterlayer path.js-line'))"
+        ".filter(p => (p.style.strokeDasharray || 'none') !== 'none').length;")
+    assert dashed >= 2, dashed
+    shot = chromium.screenshot(OUT / "screenshots" / "saletti_forced_response.png", "gd-figure-0")
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 20_000
+
+
+def test_orbits_in_the_report_carry_keyphasor_marks(reports):
+    assert "keyphasor (once per rev)" in reports["spectrum_rao2023_table41_probes"].read_text()
+
+
+def test_report_is_self_contained(reports):
+    text = reports["hbm_saletti2025_100Nm"].read_text()
+    assert not re.search(r"<script[^>]+src=", text), "a script is loaded from elsewhere"
+    assert not re.search(r"<link[^>]+href=\"https?:", text)
+    assert "plotly.js v" in text[:20_000]  # the library, inline
+    assert "Resolved configuration" in text and "contact_stiffness" in text
+    assert "Headline numbers" in text and "natural_frequency" in text
+
+
+def test_cli_report_errors(tmp_path):
+    missing = subprocess.run([CLI, "report", str(tmp_path / "nowhere")], capture_output=True, text=True)
+    assert missing.returncode == 3 and "no such folder" in missing.stderr
+    empty = subprocess.run([CLI, "report", str(tmp_path)], capture_output=True, text=True)
+    assert empty.returncode == 2 and "no summary.json" in empty.stderr
+    typo = subprocess.run([CLI, "reprot", str(tmp_path)], capture_output=True, text=True)
+    assert typo.returncode == 2 and "did you mean report" in typo.stderr
+
+
+def test_default_output_is_report_html_in_the_folder(reports):
+    folder = OUT / "runs" / "geometry_rao2023_rig"
+    done = subprocess.run([CLI, "report", str(folder), "--quiet"], capture_output=True, text=True)
+    assert done.returncode == 0 and done.stdout == "", done.stderr
+    assert (folder / "report.html").stat().st_size > 1_000_000
