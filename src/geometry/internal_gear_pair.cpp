@@ -76,8 +76,20 @@ InternalGearPair::InternalGearPair(const GearSpec& pinion, const GearSpec& ring,
                                  "(r_b = {:g} m): an involute internal tooth cannot reach it",
                                  ra_r_, rb_r_));
   }
-  g_alpha_ = std::sqrt(ra_p_ * ra_p_ - rb_p_ * rb_p_) - std::sqrt(ra_r_ * ra_r_ - rb_r_ * rb_r_) +
-             a_w_ * std::sin(alpha_wt_);
+  // Involute interference: the ring's inner tip circle must meet the line of action at or beyond
+  // the pinion's tangent point T₁ (√(r_ar² − r_br²) >= a_w sin α_wt from the ring's tangent
+  // point); closer, the ring's tip would cut into the pinion below its base circle.
+  const double ring_tip_roll = std::sqrt(ra_r_ * ra_r_ - rb_r_ * rb_r_);
+  if (ring_tip_roll < a_w_ * std::sin(alpha_wt_) * (1.0 - 1e-12)) {
+    throw InputError(
+        rkey + ".profile_shift", fmt::format("{:g}", ring.profile_shift),
+        fmt::format("no involute interference: the ring's tip circle (d = {:g} mm) meets the line "
+                    "of action {:g} mm inside the pinion's base-circle tangent point; lower the "
+                    "ring's profile shift or addendum (tip circle d >= {:g} mm)",
+                    2e3 * ra_r_, 1e3 * (a_w_ * std::sin(alpha_wt_) - ring_tip_roll),
+                    2e3 * std::hypot(rb_r_, a_w_ * std::sin(alpha_wt_))));
+  }
+  g_alpha_ = std::sqrt(ra_p_ * ra_p_ - rb_p_ * rb_p_) - ring_tip_roll + a_w_ * std::sin(alpha_wt_);
   eps_alpha_ = g_alpha_ / p_bt_;
   const double b = std::min(pinion.face_width, ring.face_width);
   eps_beta_ = b * std::sin(beta) / (std::numbers::pi * m_n);

@@ -80,6 +80,7 @@ PlanetMeshGeometry planetMeshGeometry(const GearSpec& sun, const GearSpec& plane
   const double rap = ring_pair.pinionTipRadius(), rbr = ring_pair.ringBaseRadius();
   const double rar = ring_pair.ringTipRadius();
   g.ring_path_min = -std::sqrt(rap * rap - rbp * rbp);
+  // (InternalGearPair refuses a ring tip beyond the planet's tangent point: involute interference.)
   g.ring_path_max = std::min(
       (rbr - rbp) * std::tan(g.ring_pressure_angle) - std::sqrt(rar * rar - rbr * rbr), 0.0);
   if (!(g.ring_path_max > g.ring_path_min) || !(g.sun_path_max > g.sun_path_min)) {
