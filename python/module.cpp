@@ -15,18 +15,31 @@ void bindIo(py::module_& m);
 void bindRotor(py::module_& m);
 void bindStiffness(py::module_& m);
 void bindFeRotor(py::module_& m);
+void bindAnalysis(py::module_& m);
 }  // namespace geardyn::python
 
 PYBIND11_MODULE(_geardyn, m) {
   m.doc() = "geardyn: gear-pair and geared-rotor dynamics (compiled core)";
   m.attr("__version__") = geardyn::kVersion;
-  // InputError derives from std::invalid_argument, which pybind11 maps to ValueError.
-  // IoError (a file that cannot be read or written) becomes OSError.
+  // InputError (bad input: a configuration key or an argument) becomes geardyn.ConfigError, a
+  // ValueError carrying .key, .value and .allowed; IoError (a file that cannot be read or
+  // written) becomes OSError.
+  static py::handle config_error =
+      py::exception<geardyn::InputError>(m, "ConfigError", PyExc_ValueError).release();
+  config_error.attr("__doc__") =
+      "Bad input: a configuration key or argument. A ValueError with .key (dotted key or "
+      "argument name), .value (as given) and .allowed (what would be accepted).";
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) std::rethrow_exception(error);
     } catch (const geardyn::IoError& io_error) {
       PyErr_SetString(PyExc_OSError, io_error.what());
+    } catch (const geardyn::InputError& input_error) {
+      py::object instance = config_error(py::str(input_error.what()));
+      instance.attr("key") = py::str(input_error.key());
+      instance.attr("value") = py::str(input_error.value());
+      instance.attr("allowed") = py::str(input_error.allowed());
+      PyErr_SetObject(config_error.ptr(), instance.ptr());
     }
   });
   geardyn::python::bindGeometry(m);
@@ -35,4 +48,5 @@ PYBIND11_MODULE(_geardyn, m) {
   geardyn::python::bindRotor(m);
   geardyn::python::bindStiffness(m);
   geardyn::python::bindFeRotor(m);
+  geardyn::python::bindAnalysis(m);
 }

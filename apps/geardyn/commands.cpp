@@ -16,18 +16,19 @@
 
 namespace geardyn::cli {
 
-int runGeometry(const io::Config& config, const CommandOptions& options);
-int runStiffness(const io::Config& config, const CommandOptions& options);
-int runSimulate(const io::Config& config, const CommandOptions& options);
-int runStats(const io::Config& config, const CommandOptions& options);
-int runHbm(const io::Config& config, const CommandOptions& options);
-int runRotor(const io::Config& config, const CommandOptions& options);
-int runFeRotor(const io::Config& config, const CommandOptions& options);
+int runLibraryAnalysis(const std::string& name, const io::Config& config,
+                       const CommandOptions& options);
 int runSweep(const CommandOptions& options);
-int runSpectrum(const io::Config& config, const CommandOptions& options);
-int runIdentify(const io::Config& config, const CommandOptions& options);
-int runLtca(const io::Config& config, const CommandOptions& options);
 int runTrain(const CommandOptions& options);
+
+namespace {
+/// The command that runs the library analysis `name` (analysis_command.cpp).
+std::function<int(const io::Config&, const CommandOptions&)> analysisRunner(std::string name) {
+  return [name](const io::Config& config, const CommandOptions& options) {
+    return runLibraryAnalysis(name, config, options);
+  };
+}
+}  // namespace
 
 std::vector<Command> allCommands() {
   Command rotor{
@@ -36,10 +37,7 @@ std::vector<Command> allCommands() {
       "frequency domain, full spectra, probe records, study) or, with [model] type = "
       "\"fe_geared_rotor\", the finite-element two-shaft rotor of Visnadi 2021 (Newmark, run-up, "
       "modal, Campbell, mesh-stiffness comparison)",
-      io::rotorSchema, [](const io::Config& config, const CommandOptions& options) {
-        return config.resolved().contains("model") ? runFeRotor(config, options)
-                                                   : runRotor(config, options);
-      }};
+      io::rotorSchema, analysisRunner("rotor")};
   rotor.schema_for_file = [](const std::filesystem::path& file) {
     return io::peekConfigString(file, "model.type") == "fe_geared_rotor" ? io::feRotorSchema()
                                                                          : io::rotorSchema();
@@ -60,37 +58,37 @@ std::vector<Command> allCommands() {
   train.variant_schemas = {config::gearboxSchema};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
-       io::geometrySchema, runGeometry},
+       io::geometrySchema, analysisRunner("geometry")},
       {"stiffness",
        "mesh stiffness over a mesh period: API, step, Fourier, potential energy, ISO 6336; "
        "statistics, Fourier coefficients, loaded transmission error",
-       io::stiffnessSchema, runStiffness},
+       io::stiffnessSchema, analysisRunner("stiffness")},
       {"simulate",
        "time integration of the gear-pair model (Newmark, Dormand-Prince) to its steady state: "
        "transmission error, mesh force, harmonics, contact loss",
-       io::simulateSchema, runSimulate},
+       io::simulateSchema, analysisRunner("simulate")},
       {"stats",
        "statistics of the dynamic mean excitation (Gelman 2005): mean excitation ratio R from "
        "the model or from moments, with a simulated check",
-       io::statsSchema, runStats},
+       io::statsSchema, analysisRunner("stats")},
       {"hbm",
        "harmonic-balance forced response (AFT) continued in frequency through folds, with Hill "
        "stability and Newmark checks",
-       io::hbmSchema, runHbm},
+       io::hbmSchema, analysisRunner("hbm")},
       rotor,
       train,
       {"spectrum",
        "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
        "compensation, forward/backward whirl peaks of a gear pair",
-       io::spectrumSchema, runSpectrum},
+       io::spectrumSchema, analysisRunner("spectrum")},
       {"identify",
        "gear-mesh DTE parameters (k_m, e_m, c_m, TE harmonics, runouts) from full-spectrum whirl "
        "peaks: the thesis's three-step algorithm or a joint estimator with 95 % intervals",
-       io::identifySchema, runIdentify},
+       io::identifySchema, analysisRunner("identify")},
       {"ltca",
        "loaded tooth contact analysis with flank modifications: loaded STE, load sharing, "
        "secant/tangent stiffness, Harris map, Gelman statistics against load",
-       io::ltcaSchema, runLtca},
+       io::ltcaSchema, analysisRunner("ltca")},
       sweep,
   };
 }

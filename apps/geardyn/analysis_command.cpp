@@ -1,0 +1,60 @@
+/// The analysis commands over the library's analyses (geardyn/analysis/analyses.h): run the
+/// analysis with a progress line and the resource check, write its result folder and plots,
+/// print its report.
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "command.h"
+#include "geardyn/analysis/analyses.h"
+#include "geardyn/io/output_section.h"
+#include "geardyn/io/result_writer.h"
+#include "plotting.h"
+#include "progress.h"
+#include "run_estimates.h"
+
+namespace geardyn::cli {
+
+int runLibraryAnalysis(const std::string& name, const io::Config& config,
+                       const CommandOptions& options) {
+  const bool show_progress = ProgressReporter::enabledFor(options);
+  std::unique_ptr<ProgressReporter> stage;  // the stage running now
+  analysis::AnalysisContext context;
+  context.config_source = options.config_file.string();
+  context.threads = options.threads;
+  context.warn = [](const std::string& text) { warn(text); };
+  context.progress = [&](const std::string& label, const std::string& unit) {
+    stage.reset();  // the previous stage has finished
+    stage = std::make_unique<ProgressReporter>(label, unit, show_progress);
+    return stage->callback();
+  };
+  context.check_budget = [&](const std::string& what, long long size) {
+    RunEstimate estimate;
+    if (what == "simulate" || what == "stats_time") estimate = estimateTimeResponse(config);
+    if (what == "hbm") estimate = estimateHarmonicBalance(config);
+    if (what == "rotor_time") estimate = estimateRotorTime(config);
+    if (what == "rotor_fe_time") estimate = estimateFeRotorTime(config, static_cast<int>(size));
+    if (what == "stats_monte_carlo") estimate = estimateMonteCarlo(config, static_cast<int>(size));
+    checkRunEstimate(estimate, options, name);
+  };
+  const analysis::AnalysisResult result = analysis::runAnalysis(name, config, context);
+  stage.reset();
+
+  io::ResultWriter writer(options.resultFolder());
+  analysis::writeAnalysisResult(result, writer);
+  auto path = writer.writeSummary(result.summary);
+  if (!result.tables.empty() && io::outputOptionsFromConfig(config).plots) {
+    // The plotter reads summary.json; the summary is written again to list the plots.
+    const std::string kind =
+        name == "rotor" && config.resolved().contains("model") ? "rotor_fe" : name;
+    for (const auto& file : drawPlots(kind, writer.folder())) writer.recordFile(file);
+    path = writer.writeSummary(result.summary);
+  }
+  for (const auto& error : result.errors) std::cerr << "geardyn " << name << ": " << error << "\n";
+  report(options, result.report + fmt::format("results: {}\n", path.string()));
+  return result.numerical_failure ? kExitNumericalFailure : kExitOk;
+}
+
+}  // namespace geardyn::cli

@@ -1,0 +1,43 @@
+#pragma once
+/// \file
+/// Every analysis of geardyn as a library call: a validated configuration in, an
+/// AnalysisResult out (summary, tables, report, status). The CLI commands (apps/geardyn) and
+/// Python (`geardyn.run`) are thin layers over these functions. Each function throws InputError
+/// for bad input and returns numerical failure as a status (AnalysisResult::numerical_failure).
+
+#include <string>
+#include <vector>
+
+#include "geardyn/analysis/analysis_result.h"
+#include "geardyn/io/config.h"
+#include "geardyn/io/config_schema.h"
+
+namespace geardyn::analysis {
+
+AnalysisResult geometryAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult stiffnessAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult simulateAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult hbmAnalysis(const io::Config& config, const AnalysisContext& context);
+/// `rotor` without [model]: Rao 2023's lateral rotor.
+AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisContext& context);
+/// `rotor` with [model] type = "fe_geared_rotor": Visnadi 2021's finite-element rotor.
+AnalysisResult feRotorAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult ltcaAnalysis(const io::Config& config, const AnalysisContext& context);
+
+/// The analyses runAnalysis knows, in the CLI's order.
+const std::vector<std::string>& analysisNames();
+
+/// The schema `name` validates a configuration with (`model_type` = the file's [model] type,
+/// which selects the finite-element `rotor` schema), knowing the other analyses' schemas so
+/// that their sections in the same file are ignored with a note but still spell-checked.
+/// Throws InputError for an unknown name, with a did-you-mean.
+io::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type = "");
+
+/// Runs analysis `name` on a configuration validated with analysisSchema(name, ...).
+AnalysisResult runAnalysis(const std::string& name, const io::Config& config,
+                           const AnalysisContext& context);
+
+}  // namespace geardyn::analysis
