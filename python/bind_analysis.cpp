@@ -108,6 +108,9 @@ void bindAnalysis(py::module_& m) {
           "report", [](const AnalysisResult& r) { return r.report; },
           "headline lines for a person (what the CLI prints)")
       .def_property_readonly(
+          "warnings", [](const AnalysisResult& r) { return r.summary.warnings; },
+          "design and numerical warnings")
+      .def_property_readonly(
           "errors", [](const AnalysisResult& r) { return r.errors; }, "non-convergence messages")
       .def_property_readonly("numerical_failure",
                              [](const AnalysisResult& r) { return r.numerical_failure; })

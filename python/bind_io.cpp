@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <optional>
+
 #include "geardyn/error.h"
 #include "geardyn/io/config.h"
 #include "geardyn/io/fe_rotor_io.h"
@@ -55,6 +57,18 @@ void bindIo(py::module_& m) {
       py::arg("command"), py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
       "Load and validate a configuration file for a command; returns the fully resolved "
       "configuration (defaults filled in) as a dict. Raises ValueError naming the bad key.");
+  m.def(
+      "config_unit",
+      [](const std::string& command, const std::string& key) -> std::optional<std::string> {
+        for (const auto& schema : {schemaOf(command), schemaOf("rotor_fe")}) {
+          if (const auto* spec = schema.findKey(key)) return spec->unit;
+          if (command != "rotor") break;
+        }
+        return std::nullopt;
+      },
+      py::arg("command"), py::arg("key"),
+      "The unit of configuration key `key` of `command` (\"\" or \"-\" when it has none), or "
+      "None when the command has no such key.");
   m.def(
       "config_reference",
       [](const std::string& command) { return schemaOf(command).referenceMarkdown(); },

@@ -128,13 +128,19 @@ class FolderResult:
         """A table as a DataFrame, ``.attrs["units"]`` as for geardyn.Result."""
         import pandas as pd
 
-        from ._units import unit_of
+        from ._units import sweep_units, unit_of
 
         name = (name or self.tables[0]).removesuffix(".csv")
         columns = self.table(name)
         frame = pd.DataFrame(columns)
-        frame.attrs["units"] = {c: (None if v.dtype.kind in "US" else (unit_of(name, c) or "?"))
-                                for c, v in columns.items()}
+        if self.command == "sweep" and name == "sweep":
+            units = sweep_units(self.summary.get("config"), columns)
+        else:
+            units = {c: (None if v.dtype.kind in "USO" else unit_of(name, c))
+                     for c, v in columns.items()}
+            units = {c: ("?" if u is None and columns[c].dtype.kind not in "USO" else u)
+                     for c, u in units.items()}
+        frame.attrs["units"] = units
         frame.attrs["table"] = name
         return frame
 

@@ -32,6 +32,8 @@ class AnalysisResult:
     def table_names(self) -> list[str]: ...
     @property
     def wall_time_s(self) -> float: ...
+    @property
+    def warnings(self) -> list[str]: ...
 
 class ConfigError:
     """Bad input: a configuration key or argument. A ValueError with .key (dotted key or argument name), .value (as given) and .allowed (what would be accepted)."""
@@ -346,6 +348,10 @@ def api_mesh_stiffness(face_width: float, helix_angle_deg: float = 0.0) -> float
 
 def config_reference(command: str) -> str:
     """The configuration reference of a command, as Markdown."""
+    ...
+
+def config_unit(command: str, key: str) -> Optional[str]:
+    """The unit of configuration key `key` of `command` ("" or "-" when it has none), or None when the command has no such key."""
     ...
 
 def full_spectrum(x: numpy.ndarray, y: numpy.ndarray, sample_rate: float, window: str = 'rectangular') -> tuple:

@@ -8,9 +8,9 @@ has the unit "" and a text column None. A gear-pair model given in nondimensiona
 
 import re
 
-# Name endings and their units, longest first.
+# Name endings and their units, longest first (compared without case: "_Hz", "_N_per_m").
 _SUFFIXES = [
-    ("_n_per_m", "N/m"), ("_n_m", "N m"), ("_rad_s", "rad/s"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"),
+    ("hz_per_rpm", "Hz/rpm"), ("_periods", "periods"), ("_n_per_m", "N/m"), ("_n_m", "N m"), ("_rad_s", "rad/s"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"),
     ("_kg_m2", "kg m^2"), ("_kg", "kg"), ("_mm", "mm"), ("_um", "µm"), ("_hz", "Hz"), ("_Hz", "Hz"),
     ("_rpm", "rpm"), ("_rad", "rad"), ("_deg", "deg"), ("_pa", "Pa"), ("_s", "s"), ("_m", "m"),
     ("_n", "N"), ("_N", "N"),
@@ -21,7 +21,10 @@ _DIMENSIONLESS = re.compile(
     r"^(h\d+|.*ratio.*|.*fraction.*|.*relative.*|.*factor.*|share_pair_\d+|order|mode|index|case|"
     r"count|teeth|undercut|steady|stable|harmonic|line|dof|sweep_point|point|phase_fraction|tau|sample|"
     r"contact_loss|converged|branch|.*_index|.*_count|iterations|whirl_direction|"
-    r"ratio_low|ratio_high|p_value|samples)$")
+    r"ratio_low|ratio_high|p_value|samples|teeth_.|multiplicity|strain_.*|seed|real|imag)$")
+
+# A unit between underscores inside a name: "p2p_N_stage1".
+_INFIX = re.compile(r"_(N|Hz|rpm|m|s|rad|deg)_")
 
 # Columns without a unit in their name: {table: {column: unit}} (tables of any command).
 _TABLES = {
@@ -58,6 +61,7 @@ _TABLES = {
     "resimulated_peaks": {"measured_re": "m", "measured_im": "m", "measured_amplitude": "m",
                           "model_re": "m", "model_im": "m", "model_amplitude": "m",
                           "phase": "rad"},
+    "static_forces": {"force": "N"},
     "ltca": {"force": "N", "secant_stiffness": "N/m", "tangent_stiffness": "N/m", "phase": ""},
 }
 
@@ -76,12 +80,53 @@ def unit_of(table, column):
         return "N/m"
     if column.startswith("load_pair_"):
         return "N"
+    lower = column.lower()
     for suffix, unit in _SUFFIXES:
-        if column.endswith(suffix) and len(column) > len(suffix):
+        if lower.endswith(suffix) and len(column) > len(suffix):
             return unit
     if _DIMENSIONLESS.match(column):
         return ""
+    infix = _INFIX.search(column)
+    if infix:
+        return infix.group(1)
     return None
+
+
+def sweep_units(config, columns):
+    """Units of a sweep table: parameters are configuration keys of the swept command (their
+    schema unit), outputs are named results (by the last part of their JSON pointer)."""
+    from ._geardyn import config_unit
+
+    study = (config or {}).get("study", {})
+    # Results whose numbers below them share a unit (/mesh_force/peak_to_peak is in N).
+    parents = {"mesh_force": "N", "y": "m", "x": "m", "transmission_error": "m"}
+    leaves = {"frequency": "Hz", "p2p": "m", "natural_frequency": "Hz", "points": "",
+              "failures": "", "wall_time_s": "s"}
+    specs = study.get("outputs", {})  # resolved: {name: pointer}; as written: ["name=/ptr"]
+    if isinstance(specs, list):
+        specs = dict(s.partition("=")[::2] if "=" in s else (s, s) for s in specs)
+    outputs = {}
+    for name, pointer in specs.items():
+        parts = pointer.strip("/").split("/")
+        unit = leaves.get(parts[-1], unit_of("sweep_outputs", parts[-1]))
+        if unit is None and len(parts) > 1:
+            unit = parents.get(parts[-2])
+        outputs[name] = unit
+    units = {}
+    for column, values in columns.items():
+        if values.dtype.kind in "USO":
+            units[column] = None
+        elif column in ("case", "seed"):
+            units[column] = ""
+        elif column in outputs:
+            units[column] = "?" if outputs[column] is None else outputs[column]
+        else:
+            try:
+                unit = config_unit(study.get("command", ""), column)
+            except ValueError:
+                unit = None
+            units[column] = "?" if unit is None else ("" if unit == "-" else unit)
+    return units
 
 
 def column_units(result, table, columns):

@@ -69,8 +69,15 @@ class Result:
 
     def __init__(self, native):
         self._native = native
-        self.summary = json.loads(native.summary_json())
+        self._summary = None
         self._units = {}
+
+    @property
+    def summary(self):
+        """The summary.json document (made on first access)."""
+        if self._summary is None:
+            self._summary = json.loads(self._native.summary_json())
+        return self._summary
 
     # --- what the run was -------------------------------------------------------------
     @property
@@ -96,7 +103,7 @@ class Result:
 
     @property
     def warnings(self):
-        return self.summary.get("warnings", [])
+        return list(self._native.warnings)
 
     @property
     def errors(self):

@@ -6,6 +6,13 @@
 
 namespace geardyn::analysis {
 
+AnalysisResult::AnalysisResult(std::string command, const io::Config& config,
+                               const AnalysisContext& context) {
+  summary.command = std::move(command);
+  summary.config_source = context.config_source;
+  summary.config = config.resolved();
+}
+
 void AnalysisResult::addTable(std::string name, const io::CsvTable& table) {
   table_names.push_back(std::move(name));
   tables.emplace_back(table);

@@ -518,11 +518,8 @@ int runCompare(const io::Config& config, const AnalysisContext& context, io::Run
 }  // namespace
 
 AnalysisResult feRotorAnalysis(const io::Config& config, const AnalysisContext& context) {
-  AnalysisResult result;
+  AnalysisResult result("rotor", config, context);
   io::RunSummary& summary = result.summary;
-  summary.command = "rotor";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   const std::string analysis = config.string("analysis.type");
   std::string text = fmt::format("finite-element geared rotor: {} analysis\n", analysis);
   int code = kOk;

@@ -12,11 +12,8 @@ AnalysisResult geometryAnalysis(const io::Config& config, const AnalysisContext&
   const GearPair pair(io::gearPairSpecFromConfig(config));
   for (const auto& warning : pair.warnings()) context.warning(warning);
 
-  AnalysisResult result;
+  AnalysisResult result("geometry", config, context);
   io::RunSummary& summary = result.summary;
-  summary.command = "geometry";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   summary.warnings = pair.warnings();
   summary.results = io::toJson(pair);
   result.addTable("gears.csv", io::memberTable(pair));

@@ -84,7 +84,7 @@ AnalysisResult hbmAnalysis(const io::Config& config, const AnalysisContext& cont
 
   const double sweep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
-  AnalysisResult result;
+  AnalysisResult result("hbm", config, context);
   std::vector<io::SweepRow> rows;
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
   nlohmann::ordered_json bifurcations = nlohmann::ordered_json::array();
@@ -117,9 +117,6 @@ AnalysisResult hbmAnalysis(const io::Config& config, const AnalysisContext& cont
   }
 
   io::RunSummary& summary = result.summary;
-  summary.command = "hbm";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   summary.status = completed ? "ok" : "incomplete_sweep";
   nlohmann::ordered_json peak;
   for (const auto& r : rows) {

@@ -15,7 +15,7 @@
 namespace geardyn::analysis {
 
 AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext& context) {
-  AnalysisResult result;
+  AnalysisResult result("identify", config, context);
   const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
   const LateralRotorSpec known = io::knownRotorFromConfig(config);
   std::vector<io::WhirlSpectrumInput> inputs;
@@ -50,9 +50,6 @@ AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext&
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   io::RunSummary& summary = result.summary;
-  summary.command = "identify";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   summary.status = r.converged ? "ok" : "not_converged";
   result.addTable("identified.csv", io::identifiedTable(r, truth));
 

@@ -116,7 +116,7 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
 }  // namespace
 
 AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisContext& context) {
-  AnalysisResult result;
+  AnalysisResult result("rotor", config, context);
   const LateralRotorModel model(io::lateralRotorSpecFromConfig(config));
   const GearPairSpectrumOptions spectrum_options = io::gearPairSpectrumOptionsFromConfig(config);
   const GearWhirlSetup setup = setupOf(model);
@@ -128,9 +128,6 @@ AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisCont
   std::vector<std::string> warnings;
 
   io::RunSummary& summary = result.summary;
-  summary.command = "rotor";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   if (noise > 0.0) summary.seed = seed;
   const auto& s = model.spec();
   summary.results["frequencies"] = {{"pinion_hz", s.pinion_speed},

@@ -14,7 +14,7 @@
 namespace geardyn::analysis {
 
 AnalysisResult ltcaAnalysis(const io::Config& config, const AnalysisContext& context) {
-  AnalysisResult result;
+  AnalysisResult result("ltca", config, context);
   const GearPair pair(io::gearPairSpecFromConfig(config));
   const int slices = static_cast<int>(config.integer("ltca.slices"));
   PotentialEnergyOptions pe;
@@ -26,9 +26,6 @@ AnalysisResult ltcaAnalysis(const io::Config& config, const AnalysisContext& con
   const int positions = static_cast<int>(config.integer("ltca.positions"));
 
   io::RunSummary& summary = result.summary;
-  summary.command = "ltca";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   summary.warnings = stiffness->warnings();
 
   const auto start = std::chrono::steady_clock::now();

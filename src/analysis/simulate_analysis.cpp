@@ -17,11 +17,8 @@ AnalysisResult simulateAnalysis(const io::Config& config, const AnalysisContext&
   const TimeResponse response = solveTimeResponse(model, solver);
   const io::TimeResponseChannels channels = io::channelsOf(model, response);
 
-  AnalysisResult result;
+  AnalysisResult result("simulate", config, context);
   io::RunSummary& summary = result.summary;
-  summary.command = "simulate";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   summary.warnings = build.warnings;
   summary.status = toString(response.status);
   summary.results = io::timeResponseResultsJson(

@@ -15,7 +15,7 @@
 namespace geardyn::analysis {
 
 AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext& context) {
-  AnalysisResult result;
+  AnalysisResult result("spectrum", config, context);
   std::filesystem::path file = config.string("input.file");
   if (file.is_relative()) file = std::filesystem::path(config.source()).parent_path() / file;
   io::RecordReadOptions read;
@@ -101,9 +101,6 @@ AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext&
       analyseGearPairRecord(channels, fs, first_time, reference, setup, spectrum_options);
 
   io::RunSummary& summary = result.summary;
-  summary.command = "spectrum";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   if (noise > 0.0) summary.seed = seed;
   result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
   result.addTable("full_spectrum.csv",

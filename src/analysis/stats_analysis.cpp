@@ -11,11 +11,8 @@
 namespace geardyn::analysis {
 
 AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& context) {
-  AnalysisResult result;
+  AnalysisResult result("stats", config, context);
   io::RunSummary& summary = result.summary;
-  summary.command = "stats";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   int exit_code = 0;
   std::vector<std::pair<std::string, io::CsvTable>> monte_carlo_tables;
 

@@ -13,11 +13,8 @@ AnalysisResult stiffnessAnalysis(const io::Config& config, const AnalysisContext
   const GearPair pair(io::gearPairSpecFromConfig(config));
   const io::MeshStiffnessModels models = io::buildMeshStiffnessModels(config, pair);
 
-  AnalysisResult result;
+  AnalysisResult result("stiffness", config, context);
   io::RunSummary& summary = result.summary;
-  summary.command = "stiffness";
-  summary.config_source = context.config_source;
-  summary.config = config.resolved();
   summary.warnings = pair.warnings();
   summary.warnings.insert(summary.warnings.end(), models.warnings.begin(), models.warnings.end());
   for (const auto& warning : summary.warnings) context.warning(warning);

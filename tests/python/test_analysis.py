@@ -184,3 +184,21 @@ def test_saved_tables_are_byte_for_byte_the_cli_files(tmp_path):
         for table in result.tables:
             assert (tmp_path / "py" / f"{table}.csv").read_bytes() == \
                 (tmp_path / "cli" / f"{table}.csv").read_bytes(), table
+
+
+def test_train_and_sweep_results_are_dataframes_with_units_too():
+    train = geardyn.run("train", EXAMPLES / "train_two_stage_reducer.toml",
+                        overrides={"analysis.run": ["static", "modal", "campbell", "forced"]})
+    assert train.folder is None  # read into memory, temporary folder removed
+    for table in train.tables:
+        units = train.to_pandas(table).attrs["units"]
+        assert "?" not in units.values(), f"train/{table}: {units}"
+    assert train.to_pandas("meshes").attrs["units"]["mean_stiffness_N_per_m"] == "N/m"
+    sweep = geardyn.sweep({"study": {"command": "simulate",
+                                     "base": str(EXAMPLES / "simulate_gear_pair_backlash.toml"),
+                                     "outputs": ["df=/dynamic_factor",
+                                                 "f=/mesh_force/peak_to_peak"],
+                                     "parameters": {"excitation.mesh_frequency": [900.0, 1000.0]}}})
+    units = sweep.to_pandas("sweep").attrs["units"]
+    assert units == {"case": "", "status": None, "seed": "", "excitation.mesh_frequency": "Hz",
+                     "df": "", "f": "N", "message": None}
