@@ -10,8 +10,10 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/error.h"
 #include "geardyn/io/config.h"
 #include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/result_writer.h"
@@ -50,12 +52,25 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
                                         const std::string& model_type,
                                         const std::vector<std::string>& overrides, int threads,
                                         const py::object& progress, const py::object& warn) {
-  const std::string type = path.empty() ? model_type : io::peekConfigString(path, "model.type");
-  const io::ConfigSchema schema = analysis::analysisSchema(name, type);
-  const io::Config config = path.empty() ? io::parseConfig(text, source, schema, overrides)
-                                         : io::loadConfigFile(path, schema, overrides);
-  if (!warn.is_none()) {
-    for (const auto& note : config.notes()) warn(note);
+  // `train` reads its analysis file and the gearbox file it names; the others one file.
+  std::optional<analysis::TrainInputs> train;
+  std::optional<io::Config> config;
+  if (name == "train") {
+    if (path.empty())
+      throw InputError("train", "(a dict)", "a train analysis file (it names its gearbox file)");
+    train = analysis::loadTrainInputs(path, overrides);
+    if (train->analysis.boolean("gearbox.all_load_cases"))
+      throw InputError("gearbox.all_load_cases", "true",
+                       "one load case per in-process run: set gearbox.load_case, or run "
+                       "`geardyn train` for every load case");
+  } else {
+    const std::string type = path.empty() ? model_type : io::peekConfigString(path, "model.type");
+    const io::ConfigSchema schema = analysis::analysisSchema(name, type);
+    config = path.empty() ? io::parseConfig(text, source, schema, overrides)
+                          : io::loadConfigFile(path, schema, overrides);
+    if (!warn.is_none()) {
+      for (const auto& note : config->notes()) warn(note);
+    }
   }
   analysis::AnalysisContext context;
   context.config_source = path;
@@ -88,7 +103,9 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
   std::shared_ptr<AnalysisResult> result;
   try {
     py::gil_scoped_release release;
-    result = std::make_shared<AnalysisResult>(analysis::runAnalysis(name, config, context));
+    result =
+        std::make_shared<AnalysisResult>(train ? analysis::trainAnalysis(*train, context)
+                                               : analysis::runAnalysis(name, *config, context));
   } catch (const Interrupted&) {
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();

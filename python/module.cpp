@@ -3,6 +3,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cerrno>
+
 #include "geardyn/error.h"
 #include "geardyn/version.h"
 
@@ -35,6 +37,22 @@ PYBIND11_MODULE(_geardyn, m) {
     } catch (const geardyn::IoError& io_error) {
       PyErr_SetString(PyExc_OSError, io_error.what());
     } catch (const geardyn::InputError& input_error) {
+      // A configuration file that cannot be read is an OSError in Python terms (the CLI
+      // counts it as bad input, exit code 2): FileNotFoundError, PermissionError.
+      if (input_error.key() == "config") {
+        const std::string& why = input_error.allowed();
+        const bool missing = why == "no such configuration file";
+        if (missing || why == "cannot be opened for reading" || why == "is not a regular file") {
+          py::object type = py::module_::import("builtins")
+                                .attr(missing         ? "FileNotFoundError"
+                                      : why[0] == 'c' ? "PermissionError"
+                                                      : "IsADirectoryError");
+          py::object instance = type(missing ? ENOENT : (why[0] == 'c' ? EACCES : EISDIR),
+                                     input_error.what(), input_error.value());
+          PyErr_SetObject(type.ptr(), instance.ptr());
+          return;
+        }
+      }
       py::object instance = config_error(py::str(input_error.what()));
       instance.attr("key") = py::str(input_error.key());
       instance.attr("value") = py::str(input_error.value());

@@ -2,12 +2,13 @@
 /// analysis with a progress line and the resource check, write its result folder and plots,
 /// print its report.
 
+#include "analysis_command.h"
+
 #include <fmt/format.h>
 
 #include <iostream>
 #include <memory>
 
-#include "command.h"
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
@@ -17,8 +18,10 @@
 
 namespace geardyn::cli {
 
-int runLibraryAnalysis(const std::string& name, const io::Config& config,
-                       const CommandOptions& options) {
+int runLibraryResult(const std::string& name, const std::string& plot_kind, bool plots,
+                     const CommandOptions& options,
+                     const std::function<analysis::AnalysisResult(analysis::AnalysisContext&)>& run,
+                     const std::function<RunEstimate(const std::string&, long long)>& estimate) {
   const bool show_progress = ProgressReporter::enabledFor(options);
   std::unique_ptr<ProgressReporter> stage;  // the stage running now
   analysis::AnalysisContext context;
@@ -30,31 +33,45 @@ int runLibraryAnalysis(const std::string& name, const io::Config& config,
     stage = std::make_unique<ProgressReporter>(label, unit, show_progress);
     return stage->callback();
   };
-  context.check_budget = [&](const std::string& what, long long size) {
-    RunEstimate estimate;
-    if (what == "simulate" || what == "stats_time") estimate = estimateTimeResponse(config);
-    if (what == "hbm") estimate = estimateHarmonicBalance(config);
-    if (what == "rotor_time") estimate = estimateRotorTime(config);
-    if (what == "rotor_fe_time") estimate = estimateFeRotorTime(config, static_cast<int>(size));
-    if (what == "stats_monte_carlo") estimate = estimateMonteCarlo(config, static_cast<int>(size));
-    checkRunEstimate(estimate, options, name);
-  };
-  const analysis::AnalysisResult result = analysis::runAnalysis(name, config, context);
+  if (estimate) {
+    context.check_budget = [&](const std::string& what, long long size) {
+      checkRunEstimate(estimate(what, size), options, name);
+    };
+  }
+  const analysis::AnalysisResult result = run(context);
   stage.reset();
 
   io::ResultWriter writer(options.resultFolder());
   analysis::writeAnalysisResult(result, writer);
   auto path = writer.writeSummary(result.summary);
-  if (!result.tables.empty() && io::outputOptionsFromConfig(config).plots) {
+  if (!result.tables.empty() && plots) {
     // The plotter reads summary.json; the summary is written again to list the plots.
-    const std::string kind =
-        name == "rotor" && config.resolved().contains("model") ? "rotor_fe" : name;
-    for (const auto& file : drawPlots(kind, writer.folder())) writer.recordFile(file);
+    for (const auto& file : drawPlots(plot_kind, writer.folder())) writer.recordFile(file);
     path = writer.writeSummary(result.summary);
   }
   for (const auto& error : result.errors) std::cerr << "geardyn " << name << ": " << error << "\n";
   report(options, result.report + fmt::format("results: {}\n", path.string()));
   return result.numerical_failure ? kExitNumericalFailure : kExitOk;
+}
+
+int runLibraryAnalysis(const std::string& name, const io::Config& config,
+                       const CommandOptions& options) {
+  const auto estimate = [&config](const std::string& what, long long size) {
+    if (what == "simulate" || what == "stats_time") return estimateTimeResponse(config);
+    if (what == "hbm") return estimateHarmonicBalance(config);
+    if (what == "rotor_time") return estimateRotorTime(config);
+    if (what == "rotor_fe_time") return estimateFeRotorTime(config, static_cast<int>(size));
+    if (what == "stats_monte_carlo") return estimateMonteCarlo(config, static_cast<int>(size));
+    return RunEstimate{};
+  };
+  const std::string plot_kind =
+      name == "rotor" && config.resolved().contains("model") ? "rotor_fe" : name;
+  return runLibraryResult(
+      name, plot_kind, io::outputOptionsFromConfig(config).plots, options,
+      [&](analysis::AnalysisContext& context) {
+        return analysis::runAnalysis(name, config, context);
+      },
+      estimate);
 }
 
 }  // namespace geardyn::cli

@@ -1,5 +1,6 @@
 /// The table of analysis commands. A new command adds one line here and one *_command.cpp.
 
+#include "analysis_command.h"
 #include "command.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/train_analysis.h"
@@ -16,8 +17,6 @@
 
 namespace geardyn::cli {
 
-int runLibraryAnalysis(const std::string& name, const io::Config& config,
-                       const CommandOptions& options);
 int runSweep(const CommandOptions& options);
 int runTrain(const CommandOptions& options);
 

@@ -5,8 +5,8 @@ arguments add sections (a dict, or a geardyn object such as ``geardyn.Gear`` for
 [gear]). The keys are those of the files (``geardyn.config_reference(command)``). The analysis
 runs in this process, in the compiled library, without the GIL, with a progress bar on long
 runs (tqdm when importable, else stderr) and Ctrl-C; nothing is written unless ``out`` is
-given. ``sweep`` and ``train`` go through the ``geardyn`` executable (geardyn._cli), into a
-temporary folder that is removed.
+given. ``sweep`` (and ``train`` on a dict) go through the ``geardyn`` executable
+(geardyn._cli), into a temporary folder that is removed.
 
 Bad input raises geardyn.ConfigError (a ValueError with .key, .value, .allowed); a file that
 cannot be read raises OSError; a numerical failure raises RuntimeError with the result attached
@@ -47,8 +47,6 @@ def _section(name, value):
         return value
     if isinstance(value, _geardyn.Gear):
         return {k: getattr(value, k) for k in _GEAR_KEYS if hasattr(value, k)}
-    if hasattr(value, "to_dict"):
-        return value.to_dict()
     raise TypeError(f"{name}=: a configuration section is a dict (or a geardyn.Gear), "
                     f"not {type(value).__name__}")
 
@@ -117,7 +115,8 @@ def _overrides(overrides):
 
 def run(command, config=None, *, out=None, overrides=None, threads=None, check=True, plots=None,
         progress=True, resume=False, timeout=None, overwrite=False, **sections):
-    """Runs analysis ``command`` and returns a geardyn.Result (sweep, train: FolderResult).
+    """Runs analysis ``command`` and returns a geardyn.Result (sweep, and train on a dict:
+    FolderResult).
 
     - ``config``: a TOML file (str or path), a dict of sections, or None.
     - ``**sections``: sections added to (or merged into) ``config``, e.g.
@@ -128,7 +127,10 @@ def run(command, config=None, *, out=None, overrides=None, threads=None, check=T
     - ``progress``: False for no progress display.
     """
     command = _command(command)
-    if command in ("sweep", "train"):
+    # In-process: every analysis, and `train` on a file; through the executable: `sweep`, and
+    # `train` on a dict (it is written to a temporary file there, removed afterwards).
+    file_train = command == "train" and isinstance(config, (str, os.PathLike)) and not sections
+    if command == "sweep" or (command == "train" and not file_train):
         if sections:
             config = _merge(config or {}, {k: _section(k, v) for k, v in sections.items()})
         return run_cli(command, config, out=out, overrides=overrides, threads=threads,

@@ -178,18 +178,21 @@ class Result:
         return pathlib.Path(folder)
 
     def plot(self, folder):
-        """Writes the result to ``folder`` and draws the CLI's plots there (matplotlib);
-        returns what the plot function returns."""
+        """Writes the result to ``folder`` and draws the CLI's plots there as PNG files
+        (geardyn.plot); returns what the plot function returns."""
+        import inspect
+
         from . import plot as plots
 
         self.save(folder)
-        kind = "rotor_fe" if self.command == "rotor" and "model" in self.summary.get(
-            "config", {}) else self.command
-        if kind == "rotor_fe":
-            from .plot_fe_rotor import plot_rotor_fe
-
-            return plot_rotor_fe(str(folder))
-        return getattr(plots, f"plot_{kind}")(str(folder))
+        fe = self.command == "rotor" and "model" in self.summary.get("config", {})
+        if fe:
+            from .plot_fe_rotor import plot_rotor_fe as function
+        else:
+            function = getattr(plots, f"plot_{self.command}")
+        if "save" in inspect.signature(function).parameters:  # plot functions returning Figures
+            return function(str(folder), save=True)
+        return function(str(folder))
 
     def report(self, out=None, folder=None):
         """The interactive HTML report of this result (geardyn.report.write_report), written

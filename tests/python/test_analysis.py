@@ -4,6 +4,7 @@ terms, no temporary folders, progress, GIL release and Ctrl-C."""
 
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -95,6 +96,11 @@ def test_errors_in_python_terms(tmp_path):
                                  "gear": PAIR["gear"]})
     with pytest.raises(FileNotFoundError):
         geardyn.run("geometry", tmp_path / "missing.toml")
+    with pytest.raises(FileNotFoundError) as missing:  # the C++ loaders too
+        geardyn.load_config("geometry", str(tmp_path / "missing.toml"))
+    assert missing.value.filename == str(tmp_path / "missing.toml")
+    with pytest.raises(IsADirectoryError):
+        geardyn.GearPair.from_config(str(tmp_path))
     with pytest.raises(TypeError, match=r"Gear\(\): face_width is required"):
         geardyn.Gear(teeth=21, module=3e-3)
     with pytest.raises(TypeError, match="did you mean 'module'"):
@@ -175,21 +181,26 @@ def test_ctrl_c_interrupts_a_long_run():
 
 def test_saved_tables_are_byte_for_byte_the_cli_files(tmp_path):
     cli = geardyn._cli.cli_path()
-    for command, file in [("stiffness", "stiffness_visnadi2021_spur.toml"),
-                          ("hbm", "hbm_backlash_kahraman_singh.toml")]:
+    for command, file, sets in [
+            ("stiffness", "stiffness_visnadi2021_spur.toml", []),
+            ("hbm", "hbm_backlash_kahraman_singh.toml", []),
+            ("train", "train_two_stage_reducer.toml", ["analysis.run=[\"static\", \"modal\"]"])]:
+        overrides = ["output.plots=false"] + sets
         subprocess.run([cli, command, str(EXAMPLES / file), "--out", str(tmp_path / "cli"),
-                        "--quiet", "--set", "output.plots=false"], check=True)
-        result = geardyn.run(command, EXAMPLES / file)
+                        "--quiet"] + [a for s in overrides for a in ("--set", s)], check=True)
+        result = geardyn.run(command, EXAMPLES / file, overrides=overrides)
         result.save(tmp_path / "py")
+        assert result.tables
         for table in result.tables:
             assert (tmp_path / "py" / f"{table}.csv").read_bytes() == \
                 (tmp_path / "cli" / f"{table}.csv").read_bytes(), table
+        shutil.rmtree(tmp_path / "py"), shutil.rmtree(tmp_path / "cli")
 
 
 def test_train_and_sweep_results_are_dataframes_with_units_too():
     train = geardyn.run("train", EXAMPLES / "train_two_stage_reducer.toml",
                         overrides={"analysis.run": ["static", "modal", "campbell", "forced"]})
-    assert train.folder is None  # read into memory, temporary folder removed
+    assert isinstance(train, geardyn.Result)  # in-process from a file
     for table in train.tables:
         units = train.to_pandas(table).attrs["units"]
         assert "?" not in units.values(), f"train/{table}: {units}"

@@ -5,6 +5,7 @@
 /// Python (`geardyn.run`) are thin layers over these functions. Each function throws InputError
 /// for bad input and returns numerical failure as a status (AnalysisResult::numerical_failure).
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,24 @@ AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& co
 AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext& context);
 AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext& context);
 AnalysisResult ltcaAnalysis(const io::Config& config, const AnalysisContext& context);
+
+/// The inputs of `train`: its analysis configuration and the gearbox description — the
+/// analysis file itself when the gearbox is inline, else the file it names (TOML, or REXS
+/// imported in memory).
+struct TrainInputs {
+  io::Config analysis;
+  io::Config gearbox;
+  std::string analysis_source;        ///< the analysis file
+  std::string gearbox_source;         ///< the gearbox file (the analysis file when inline)
+  std::vector<std::string> warnings;  ///< of a REXS import
+};
+/// Reads the analysis file and its gearbox; `overrides` ("section.key=value") go to the file
+/// that declares the section. Throws InputError naming the key.
+TrainInputs loadTrainInputs(const std::filesystem::path& file,
+                            const std::vector<std::string>& overrides);
+/// `train`: kinematics and phasing, then the analyses of `analysis.run` (static, modal,
+/// Campbell, forced response, time response) on one gearbox (one load case).
+AnalysisResult trainAnalysis(const TrainInputs& inputs, const AnalysisContext& context);
 
 /// The analyses runAnalysis knows, in the CLI's order.
 const std::vector<std::string>& analysisNames();
