@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/error.h"
@@ -77,9 +78,12 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
   context.threads = threads;
   // Progress and Ctrl-C: at most every kCallbackInterval the callback takes the GIL, lets
   // Python handle its signals (KeyboardInterrupt) and reports the stage's progress.
-  context.progress = [&progress](const std::string& label, const std::string& unit) {
+  // Only the calling thread throws (a solver's worker thread must not: Python handles signals
+  // on its main thread only, and a KeyboardInterrupt left pending is raised on return).
+  const std::thread::id caller = std::this_thread::get_id();
+  context.progress = [&progress, caller](const std::string& label, const std::string& unit) {
     auto last = std::make_shared<std::atomic<double>>(-1.0);
-    return ProgressCallback([label, unit, last, &progress](double done, double total) {
+    return ProgressCallback([label, unit, last, &progress, caller](double done, double total) {
       const double now =
           std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
               .count();
@@ -87,7 +91,7 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
       if (done < total && now - before < kCallbackInterval) return;
       if (!last->compare_exchange_strong(before, now) && done < total) return;
       py::gil_scoped_acquire gil;
-      if (PyErr_CheckSignals() != 0) {
+      if (std::this_thread::get_id() == caller && PyErr_CheckSignals() != 0) {
         PyErr_Clear();
         throw Interrupted{};
       }

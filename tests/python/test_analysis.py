@@ -213,3 +213,25 @@ def test_train_and_sweep_results_are_dataframes_with_units_too():
     units = sweep.to_pandas("sweep").attrs["units"]
     assert units == {"case": "", "status": None, "seed": "", "excitation.mesh_frequency": "Hz",
                      "df": "", "f": "N", "message": None}
+
+
+def test_report_writes_the_result_folder_for_geardyn_report(monkeypatch, tmp_path):
+    import types
+
+    seen = {}
+
+    def write_report(results_dir, out=None):
+        folder = pathlib.Path(results_dir)
+        seen["files"] = sorted(p.name for p in folder.iterdir())
+        seen["folder"] = folder
+        pathlib.Path(out).write_text("<html></html>")
+        return out
+
+    monkeypatch.setitem(sys.modules, "geardyn.report", types.SimpleNamespace(write_report=write_report))
+    result = geardyn.run("geometry", PAIR)
+    out = tmp_path / "report.html"
+    assert result.report(out) == out and out.exists()
+    assert seen["files"] == ["gears.csv", "summary.json", "tooth_profiles.csv"]
+    assert not seen["folder"].exists()  # the temporary result folder is removed
+    result.report(tmp_path / "r2.html", folder=tmp_path / "kept")
+    assert (tmp_path / "kept" / "summary.json").exists()
