@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/run_estimates.h"
 #include "geardyn/error.h"
 #include "geardyn/io/config.h"
 #include "geardyn/io/fe_rotor_io.h"
@@ -104,6 +105,18 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
       }
     });
   };
+  // The resource check of the CLI: a run that would not fit is refused before it allocates
+  // (InputError); a long one is announced as a Python warning.
+  if (config) {
+    context.check_budget = [&config, &warn, &name](const std::string& stage, long long size) {
+      const std::string note =
+          analysis::checkRunEstimate(analysis::estimateStage(stage, size, *config), name);
+      if (!note.empty() && !warn.is_none()) {
+        py::gil_scoped_acquire gil;
+        warn(note);
+      }
+    };
+  }
   std::shared_ptr<AnalysisResult> result;
   try {
     py::gil_scoped_release release;

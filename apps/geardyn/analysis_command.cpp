@@ -10,13 +10,19 @@
 #include <memory>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/run_estimates.h"
 #include "geardyn/io/output_section.h"
 #include "geardyn/io/result_writer.h"
 #include "plotting.h"
 #include "progress.h"
-#include "run_estimates.h"
 
 namespace geardyn::cli {
+
+void checkRunEstimate(const RunEstimate& estimate, const CommandOptions& options,
+                      const std::string& label) {
+  const std::string note = analysis::checkRunEstimate(estimate, label);
+  if (!note.empty() && !options.quiet) std::cerr << note << "\n";
+}
 
 int runLibraryResult(const std::string& name, const std::string& plot_kind, bool plots,
                      const CommandOptions& options,
@@ -56,13 +62,8 @@ int runLibraryResult(const std::string& name, const std::string& plot_kind, bool
 
 int runLibraryAnalysis(const std::string& name, const io::Config& config,
                        const CommandOptions& options) {
-  const auto estimate = [&config](const std::string& what, long long size) {
-    if (what == "simulate" || what == "stats_time") return estimateTimeResponse(config);
-    if (what == "hbm") return estimateHarmonicBalance(config);
-    if (what == "rotor_time") return estimateRotorTime(config);
-    if (what == "rotor_fe_time") return estimateFeRotorTime(config, static_cast<int>(size));
-    if (what == "stats_monte_carlo") return estimateMonteCarlo(config, static_cast<int>(size));
-    return RunEstimate{};
+  const auto estimate = [&config](const std::string& stage, long long size) {
+    return analysis::estimateStage(stage, size, config);
   };
   const std::string plot_kind =
       name == "rotor" && config.resolved().contains("model") ? "rotor_fe" : name;

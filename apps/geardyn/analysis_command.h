@@ -7,9 +7,16 @@
 
 #include "command.h"
 #include "geardyn/analysis/analysis_result.h"
-#include "run_budget.h"
+#include "geardyn/analysis/run_budget.h"
 
 namespace geardyn::cli {
+
+using analysis::RunEstimate;
+
+/// Refuses a run that does not fit (InputError) and prints the note of a long one on stderr
+/// (unless quiet).
+void checkRunEstimate(const RunEstimate& estimate, const CommandOptions& options,
+                      const std::string& label);
 
 /// Runs `run` with a context for command `name` (progress lines, warnings, threads; `estimate`
 /// gives the size of a stage the analysis is about to run, refused when too large), writes the

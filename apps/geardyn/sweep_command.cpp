@@ -13,7 +13,9 @@
 #include <map>
 #include <thread>
 
+#include "analysis_command.h"
 #include "command.h"
+#include "geardyn/analysis/run_estimates.h"
 #include "geardyn/error.h"
 #include "geardyn/io/config.h"
 #include "geardyn/io/did_you_mean.h"
@@ -21,10 +23,11 @@
 #include "geardyn/io/sweep_io.h"
 #include "plotting.h"
 #include "progress.h"
-#include "run_estimates.h"
 #include "sweep_runner.h"
 
 namespace geardyn::cli {
+using analysis::estimateCommand;
+using analysis::formatDuration;
 namespace fs = std::filesystem;
 namespace {
 

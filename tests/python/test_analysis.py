@@ -235,3 +235,11 @@ def test_report_writes_the_result_folder_for_geardyn_report(monkeypatch, tmp_pat
     assert not seen["folder"].exists()  # the temporary result folder is removed
     result.report(tmp_path / "r2.html", folder=tmp_path / "kept")
     assert (tmp_path / "kept" / "summary.json").exists()
+
+
+def test_a_run_that_would_not_fit_is_refused_before_it_allocates(monkeypatch):
+    monkeypatch.setenv("GEARDYN_MEMORY_LIMIT", "1e6")  # 1 MB
+    with pytest.raises(geardyn.ConfigError, match="too large for this machine") as error:
+        geardyn.run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml",
+                    overrides={"solver.max_periods": 1000000, "solver.output_periods": 100000})
+    assert error.value.key.startswith("solver.")
