@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "geardyn/analysis/analyses.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/fe_rotor_io.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/fe_rotor_config.h"
 
 namespace {
 
@@ -43,9 +43,9 @@ int main(int argc, char** argv) {
   for (int i = 0; i <= repeat; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto schema = geardyn::analysis::analysisSchema(
-        command, geardyn::io::peekConfigString(file, "model.type"));
+        command, geardyn::config::peekConfigString(file, "model.type"));
     const auto t1 = std::chrono::steady_clock::now();
-    const auto config = geardyn::io::loadConfigFile(file, schema);
+    const auto config = geardyn::config::loadConfigFile(file, schema);
     const auto t2 = std::chrono::steady_clock::now();
     const auto result = geardyn::analysis::runAnalysis(command, config, {});
     const auto t3 = std::chrono::steady_clock::now();

@@ -5,10 +5,10 @@
 
 #include <numbers>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/geometry/involute.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/geometry_io.h"
 
 namespace {
 
@@ -56,10 +56,10 @@ profile_shift = 0.06307
 centre_distance = 0.051125
 speed_rpm = 970.0
 )";
-  const auto schema = geardyn::io::geometrySchema();
+  const auto schema = geardyn::config::geometrySchema();
   for (auto _ : state) {
     benchmark::DoNotOptimize(
-        geardyn::io::parseConfig(text, "bench.toml", schema).resolved().size());
+        geardyn::config::parseConfig(text, "bench.toml", schema).resolved().size());
   }
 }
 BENCHMARK(BM_ParseGeometryConfig);

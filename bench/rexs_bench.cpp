@@ -24,7 +24,7 @@ void importFile(benchmark::State& state, const char* name) {
   }
   for (auto _ : state) {
     const auto imported = config::importRexsFile(path);
-    const io::Config config = io::parseConfig(imported.toml, name, config::gearboxSchema());
+    const config::Config config = config::parseConfig(imported.toml, name, config::gearboxSchema());
     benchmark::DoNotOptimize(config.resolved().size());
   }
 }

@@ -15,9 +15,9 @@
 
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/analysis/run_estimates.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/result_writer.h"
 
 namespace py = pybind11;
@@ -56,7 +56,7 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
                                         const py::object& progress, const py::object& warn) {
   // `train` reads its analysis file and the gearbox file it names; the others one file.
   std::optional<analysis::TrainInputs> train;
-  std::optional<io::Config> config;
+  std::optional<config::Config> config;
   if (name == "train") {
     if (path.empty())
       throw InputError("train", "(a dict)", "a train analysis file (it names its gearbox file)");
@@ -66,10 +66,11 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
                        "one load case per in-process run: set gearbox.load_case, or run "
                        "`geardyn train` for every load case");
   } else {
-    const std::string type = path.empty() ? model_type : io::peekConfigString(path, "model.type");
-    const io::ConfigSchema schema = analysis::analysisSchema(name, type);
-    config = path.empty() ? io::parseConfig(text, source, schema, overrides)
-                          : io::loadConfigFile(path, schema, overrides);
+    const std::string type =
+        path.empty() ? model_type : config::peekConfigString(path, "model.type");
+    const config::ConfigSchema schema = analysis::analysisSchema(name, type);
+    config = path.empty() ? config::parseConfig(text, source, schema, overrides)
+                          : config::loadConfigFile(path, schema, overrides);
     if (!warn.is_none()) {
       for (const auto& note : config->notes()) warn(note);
     }

@@ -12,9 +12,9 @@
 #include <memory>
 #include <numbers>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/solvers/rotor_modal.h"
 
@@ -86,8 +86,9 @@ void bindFeRotor(py::module_& m) {
       "`geardyn rotor` configuration with [model] type = \"fe_geared_rotor\".")
       .def(py::init([](const std::string& config, const std::vector<std::string>& overrides,
                        const std::string& stiffness) {
-             const auto c = io::loadConfigFile(config, io::feRotorSchema(), overrides);
-             return std::make_shared<FeGearedRotor>(io::feRotorSpecFromConfig(c, stiffness).spec);
+             const auto c = config::loadConfigFile(config, config::feRotorSchema(), overrides);
+             return std::make_shared<FeGearedRotor>(
+                 config::feRotorSpecFromConfig(c, stiffness).spec);
            }),
            py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
            py::arg("stiffness") = "",

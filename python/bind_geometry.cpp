@@ -5,9 +5,10 @@
 
 #include <numbers>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/geometry_results.h"
 
 namespace py = pybind11;
 
@@ -131,8 +132,8 @@ void bindGeometry(py::module_& m) {
       .def_static(
           "from_config",
           [](const std::string& path, const std::vector<std::string>& overrides) {
-            return GearPair(io::gearPairSpecFromConfig(
-                io::loadConfigFile(path, io::geometrySchema(), overrides)));
+            return GearPair(config::gearPairSpecFromConfig(
+                config::loadConfigFile(path, config::geometrySchema(), overrides)));
           },
           py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
           "The pair of a `geardyn geometry` TOML file; overrides are 'section.key=value' strings.")

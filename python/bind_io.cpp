@@ -5,18 +5,27 @@
 
 #include <optional>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/hbm_config.h"
+#include "geardyn/config/identify_config.h"
+#include "geardyn/config/ltca_config.h"
+#include "geardyn/config/rotor_config.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/config/stats_config.h"
+#include "geardyn/config/stiffness_config.h"
+#include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/fe_rotor_io.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/hbm_io.h"
-#include "geardyn/io/identify_io.h"
-#include "geardyn/io/ltca_io.h"
-#include "geardyn/io/rotor_io.h"
-#include "geardyn/io/simulate_io.h"
-#include "geardyn/io/stats_io.h"
-#include "geardyn/io/stiffness_io.h"
-#include "geardyn/io/sweep_io.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/hbm_results.h"
+#include "geardyn/io/identify_results.h"
+#include "geardyn/io/ltca_results.h"
+#include "geardyn/io/rotor_results.h"
+#include "geardyn/io/simulate_results.h"
+#include "geardyn/io/stats_results.h"
+#include "geardyn/io/stiffness_results.h"
+#include "geardyn/io/sweep_results.h"
 
 namespace py = pybind11;
 
@@ -24,21 +33,21 @@ namespace geardyn::python {
 namespace {
 
 /// The schema of a command; `rotor` files with [model] type = "fe_geared_rotor" use the FE one.
-io::ConfigSchema schemaOf(const std::string& command, const std::string& path = "") {
-  if (command == "geometry") return io::geometrySchema();
-  if (command == "stiffness") return io::stiffnessSchema();
-  if (command == "simulate") return io::simulateSchema();
-  if (command == "stats") return io::statsSchema();
-  if (command == "hbm") return io::hbmSchema();
+config::ConfigSchema schemaOf(const std::string& command, const std::string& path = "") {
+  if (command == "geometry") return config::geometrySchema();
+  if (command == "stiffness") return config::stiffnessSchema();
+  if (command == "simulate") return config::simulateSchema();
+  if (command == "stats") return config::statsSchema();
+  if (command == "hbm") return config::hbmSchema();
   if (command == "rotor")
-    return !path.empty() && io::peekConfigString(path, "model.type") == "fe_geared_rotor"
-               ? io::feRotorSchema()
-               : io::rotorSchema();
-  if (command == "rotor_fe") return io::feRotorSchema();
-  if (command == "spectrum") return io::spectrumSchema();
-  if (command == "identify") return io::identifySchema();
-  if (command == "ltca") return io::ltcaSchema();
-  if (command == "sweep") return io::sweepSchema();
+    return !path.empty() && config::peekConfigString(path, "model.type") == "fe_geared_rotor"
+               ? config::feRotorSchema()
+               : config::rotorSchema();
+  if (command == "rotor_fe") return config::feRotorSchema();
+  if (command == "spectrum") return config::spectrumSchema();
+  if (command == "identify") return config::identifySchema();
+  if (command == "ltca") return config::ltcaSchema();
+  if (command == "sweep") return config::sweepSchema();
   throw InputError("command", command,
                    "one of geometry, stiffness, simulate, stats, hbm, rotor, rotor_fe, spectrum, "
                    "identify, ltca, sweep");
@@ -51,7 +60,7 @@ void bindIo(py::module_& m) {
       "load_config",
       [](const std::string& command, const std::string& path,
          const std::vector<std::string>& overrides) {
-        const auto config = io::loadConfigFile(path, schemaOf(command, path), overrides);
+        const auto config = config::loadConfigFile(path, schemaOf(command, path), overrides);
         return py::module_::import("json").attr("loads")(config.resolved().dump());
       },
       py::arg("command"), py::arg("path"), py::arg("overrides") = std::vector<std::string>{},

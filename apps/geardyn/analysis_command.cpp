@@ -11,7 +11,7 @@
 
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/analysis/run_estimates.h"
-#include "geardyn/io/output_section.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/io/result_writer.h"
 #include "plotting.h"
 #include "progress.h"
@@ -60,7 +60,7 @@ int runLibraryResult(const std::string& name, const std::string& plot_kind, bool
   return result.numerical_failure ? kExitNumericalFailure : kExitOk;
 }
 
-int runLibraryAnalysis(const std::string& name, const io::Config& config,
+int runLibraryAnalysis(const std::string& name, const config::Config& config,
                        const CommandOptions& options) {
   const auto estimate = [&config](const std::string& stage, long long size) {
     return analysis::estimateStage(stage, size, config);
@@ -68,7 +68,7 @@ int runLibraryAnalysis(const std::string& name, const io::Config& config,
   const std::string plot_kind =
       name == "rotor" && config.resolved().contains("model") ? "rotor_fe" : name;
   return runLibraryResult(
-      name, plot_kind, io::outputOptionsFromConfig(config).plots, options,
+      name, plot_kind, config::outputOptionsFromConfig(config).plots, options,
       [&](analysis::AnalysisContext& context) {
         return analysis::runAnalysis(name, config, context);
       },

@@ -29,7 +29,7 @@ int runLibraryResult(
     const std::function<RunEstimate(const std::string&, long long)>& estimate = {});
 
 /// The command `name` of the library's runAnalysis on a loaded configuration.
-int runLibraryAnalysis(const std::string& name, const io::Config& config,
+int runLibraryAnalysis(const std::string& name, const config::Config& config,
                        const CommandOptions& options);
 
 }  // namespace geardyn::cli

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/io/config.h"
-#include "geardyn/io/config_schema.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/config_schema.h"
 
 namespace geardyn::cli {
 
@@ -39,8 +39,8 @@ struct CommandOptions {
 
 /// One subcommand: its name, one-line help, configuration schema and what it runs.
 struct Command {
-  Command(std::string name_, std::string help_, std::function<io::ConfigSchema()> schema_,
-          std::function<int(const io::Config&, const CommandOptions&)> run_)
+  Command(std::string name_, std::string help_, std::function<config::ConfigSchema()> schema_,
+          std::function<int(const config::Config&, const CommandOptions&)> run_)
       : name(std::move(name_)),
         help(std::move(help_)),
         schema(std::move(schema_)),
@@ -48,15 +48,15 @@ struct Command {
 
   std::string name;
   std::string help;
-  std::function<io::ConfigSchema()> schema;
-  std::function<int(const io::Config&, const CommandOptions&)> run;
+  std::function<config::ConfigSchema()> schema;
+  std::function<int(const config::Config&, const CommandOptions&)> run;
   /// When set, the schema depends on the configuration file (e.g. `rotor` with [model] type =
   /// "fe_geared_rotor"); `schema` stays the default one.
-  std::function<io::ConfigSchema(const std::filesystem::path&)> schema_for_file;
+  std::function<config::ConfigSchema(const std::filesystem::path&)> schema_for_file;
   /// When set, the command reads its file itself (no schema validation by the caller): `sweep`.
   std::function<int(const CommandOptions&)> run_file;
   /// Further schemas `geardyn schema COMMAND` prints after the default one.
-  std::vector<std::function<io::ConfigSchema()>> variant_schemas;
+  std::vector<std::function<config::ConfigSchema()>> variant_schemas;
 };
 
 /// The analysis commands, in the order `geardyn --help` lists them.
@@ -65,10 +65,10 @@ std::vector<Command> allCommands();
 /// The schema `command` validates `file` with: its own (chosen by the file when it has
 /// variants), knowing the other analysis commands' schemas so that their sections and keys in
 /// the same file are ignored with a note but still spell-checked (one file, many commands).
-io::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file);
+config::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file);
 
 /// Loads `options.config_file` with commandSchema and prints its notes as warnings.
-io::Config loadCommandConfig(const Command& command, const CommandOptions& options);
+config::Config loadCommandConfig(const Command& command, const CommandOptions& options);
 
 /// Prints "what" to stdout unless quiet.
 void report(const CommandOptions& options, const std::string& text);

@@ -2,18 +2,27 @@
 
 #include "analysis_command.h"
 #include "command.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/hbm_config.h"
+#include "geardyn/config/identify_config.h"
+#include "geardyn/config/ltca_config.h"
+#include "geardyn/config/rotor_config.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/config/stats_config.h"
+#include "geardyn/config/stiffness_config.h"
+#include "geardyn/config/sweep_config.h"
 #include "geardyn/config/train_analysis.h"
-#include "geardyn/io/fe_rotor_io.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/hbm_io.h"
-#include "geardyn/io/identify_io.h"
-#include "geardyn/io/ltca_io.h"
-#include "geardyn/io/rotor_io.h"
-#include "geardyn/io/simulate_io.h"
-#include "geardyn/io/stats_io.h"
-#include "geardyn/io/stiffness_io.h"
-#include "geardyn/io/sweep_io.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/hbm_results.h"
+#include "geardyn/io/identify_results.h"
+#include "geardyn/io/ltca_results.h"
+#include "geardyn/io/rotor_results.h"
+#include "geardyn/io/simulate_results.h"
+#include "geardyn/io/stats_results.h"
+#include "geardyn/io/stiffness_results.h"
+#include "geardyn/io/sweep_results.h"
 
 namespace geardyn::cli {
 
@@ -22,8 +31,8 @@ int runTrain(const CommandOptions& options);
 
 namespace {
 /// The command that runs the library analysis `name` (analysis_command.cpp).
-std::function<int(const io::Config&, const CommandOptions&)> analysisRunner(std::string name) {
-  return [name](const io::Config& config, const CommandOptions& options) {
+std::function<int(const config::Config&, const CommandOptions&)> analysisRunner(std::string name) {
+  return [name](const config::Config& config, const CommandOptions& options) {
     return runLibraryAnalysis(name, config, options);
   };
 }
@@ -36,17 +45,18 @@ std::vector<Command> allCommands() {
       "frequency domain, full spectra, probe records, study) or, with [model] type = "
       "\"fe_geared_rotor\", the finite-element two-shaft rotor of Visnadi 2021 (Newmark, run-up, "
       "modal, Campbell, mesh-stiffness comparison)",
-      io::rotorSchema, analysisRunner("rotor")};
+      config::rotorSchema, analysisRunner("rotor")};
   rotor.schema_for_file = [](const std::filesystem::path& file) {
-    return io::peekConfigString(file, "model.type") == "fe_geared_rotor" ? io::feRotorSchema()
-                                                                         : io::rotorSchema();
+    return config::peekConfigString(file, "model.type") == "fe_geared_rotor"
+               ? config::feRotorSchema()
+               : config::rotorSchema();
   };
-  rotor.variant_schemas = {io::feRotorSchema};
+  rotor.variant_schemas = {config::feRotorSchema};
   Command sweep{"sweep",
                 "any analysis over a grid or random sample of its configuration keys, on all "
                 "cores or across machines (mpirun -n N geardyn sweep ...), resumable "
                 "(--resume), gathered into sweep.h5 and sweep.csv",
-                io::sweepSchema, nullptr};
+                config::sweepSchema, nullptr};
   sweep.run_file = runSweep;
   Command train{"train",
                 "any gear train described once (shafts, gears, meshes, bearings, couplings, "
@@ -57,43 +67,43 @@ std::vector<Command> allCommands() {
   train.variant_schemas = {config::gearboxSchema};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
-       io::geometrySchema, analysisRunner("geometry")},
+       config::geometrySchema, analysisRunner("geometry")},
       {"stiffness",
        "mesh stiffness over a mesh period: API, step, Fourier, potential energy, ISO 6336; "
        "statistics, Fourier coefficients, loaded transmission error",
-       io::stiffnessSchema, analysisRunner("stiffness")},
+       config::stiffnessSchema, analysisRunner("stiffness")},
       {"simulate",
        "time integration of the gear-pair model (Newmark, Dormand-Prince) to its steady state: "
        "transmission error, mesh force, harmonics, contact loss",
-       io::simulateSchema, analysisRunner("simulate")},
+       config::simulateSchema, analysisRunner("simulate")},
       {"stats",
        "statistics of the dynamic mean excitation (Gelman 2005): mean excitation ratio R from "
        "the model or from moments, with a simulated check",
-       io::statsSchema, analysisRunner("stats")},
+       config::statsSchema, analysisRunner("stats")},
       {"hbm",
        "harmonic-balance forced response (AFT) continued in frequency through folds, with Hill "
        "stability and Newmark checks",
-       io::hbmSchema, analysisRunner("hbm")},
+       config::hbmSchema, analysisRunner("hbm")},
       rotor,
       train,
       {"spectrum",
        "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
        "compensation, forward/backward whirl peaks of a gear pair",
-       io::spectrumSchema, analysisRunner("spectrum")},
+       config::spectrumSchema, analysisRunner("spectrum")},
       {"identify",
        "gear-mesh DTE parameters (k_m, e_m, c_m, TE harmonics, runouts) from full-spectrum whirl "
        "peaks: the thesis's three-step algorithm or a joint estimator with 95 % intervals",
-       io::identifySchema, analysisRunner("identify")},
+       config::identifySchema, analysisRunner("identify")},
       {"ltca",
        "loaded tooth contact analysis with flank modifications: loaded STE, load sharing, "
        "secant/tangent stiffness, Harris map, Gelman statistics against load",
-       io::ltcaSchema, analysisRunner("ltca")},
+       config::ltcaSchema, analysisRunner("ltca")},
       sweep,
   };
 }
 
-io::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file) {
-  io::ConfigSchema schema =
+config::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file) {
+  config::ConfigSchema schema =
       command.schema_for_file ? command.schema_for_file(file) : command.schema();
   for (const Command& other : allCommands()) {
     if (other.name == command.name || other.run_file) continue;
@@ -103,8 +113,8 @@ io::ConfigSchema commandSchema(const Command& command, const std::filesystem::pa
   return schema;
 }
 
-io::Config loadCommandConfig(const Command& command, const CommandOptions& options) {
-  io::Config config = io::loadConfigFile(
+config::Config loadCommandConfig(const Command& command, const CommandOptions& options) {
+  config::Config config = config::loadConfigFile(
       options.config_file, commandSchema(command, options.config_file), options.overrides);
   for (const auto& note : config.notes()) warn(note);
   return config;

@@ -9,8 +9,8 @@
 #include <map>
 
 #include "command.h"
+#include "geardyn/config/did_you_mean.h"
 #include "geardyn/error.h"
-#include "geardyn/io/did_you_mean.h"
 #include "geardyn/version.h"
 #include "rexs_command.h"
 
@@ -57,7 +57,7 @@ int rejectUnknownCommand(int argc, char** argv, const std::vector<std::string>& 
     if (name == given) return geardyn::cli::kExitOk;
   std::string list;
   for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
-  const auto match = geardyn::io::closestMatch(given, names);
+  const auto match = geardyn::config::closestMatch(given, names);
   std::cerr << "geardyn: unknown command \"" << given << "\""
             << (match ? "; did you mean " + *match + "?" : std::string())
             << " The commands are: " << list << " (geardyn --help)\n";

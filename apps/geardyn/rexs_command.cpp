@@ -63,8 +63,8 @@ int RexsCommands::runImport() const {
   const config::RexsImport imported = config::importRexsFile(import_file_, options);
   // The text must read back as a gearbox file (it is what analyses will read).
   std::vector<std::string> model_warnings;
-  const io::Config config =
-      io::parseConfig(imported.toml, import_file_.string(), config::gearboxSchema());
+  const config::Config config =
+      config::parseConfig(imported.toml, import_file_.string(), config::gearboxSchema());
   config::gearTrainFromConfig(config, model_warnings);
   const std::filesystem::path out =
       import_out_.empty() ? std::filesystem::path(import_file_.stem().string() + ".toml")
@@ -86,7 +86,7 @@ int RexsCommands::runImport() const {
 }
 
 int RexsCommands::runExport() const {
-  const io::Config config = io::loadConfigFile(export_file_, config::gearboxSchema());
+  const config::Config config = config::loadConfigFile(export_file_, config::gearboxSchema());
   std::vector<std::string> warnings;
   config::gearTrainFromConfig(config, warnings);  // refuse what would not build
   warnings.clear();

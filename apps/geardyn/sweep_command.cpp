@@ -16,11 +16,12 @@
 #include "analysis_command.h"
 #include "command.h"
 #include "geardyn/analysis/run_estimates.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/did_you_mean.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/sweep_io.h"
+#include "geardyn/io/sweep_results.h"
 #include "plotting.h"
 #include "progress.h"
 #include "sweep_runner.h"
@@ -42,8 +43,8 @@ const Command& findCommand(const std::vector<Command>& commands, const std::stri
 }
 
 /// Runs one case in-process into its own folder and reads its summary.
-io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& schema,
-                            const io::SweepDefinition& study, long long index,
+io::SweepCaseRecord runCase(const Command& command, const config::ConfigSchema& schema,
+                            const config::SweepDefinition& study, long long index,
                             const fs::path& cases_dir) {
   const StudyCase c = study.caseAt(index);
   io::SweepCaseRecord r;
@@ -59,7 +60,7 @@ io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& sche
   o.threads = 1;  // the sweep owns the cores
   o.quiet = true;
   try {
-    const auto config = io::loadConfigFile(o.config_file, schema, o.overrides);
+    const auto config = config::loadConfigFile(o.config_file, schema, o.overrides);
     const int code = command.run(config, o);
     const auto summary = nlohmann::json::parse(std::ifstream(o.out_dir / "summary.json"));
     // Success is the command's exit code 0; otherwise its own status ("max_periods", …).
@@ -76,7 +77,7 @@ io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& sche
       std::vector<std::string> keys;
       for (const auto& [key, value] : summary["results"].items()) keys.push_back("/" + key);
       const std::string first = "/" + missing.front().substr(1, missing.front().find('/', 1) - 1);
-      const auto match = io::closestMatch(first, keys);
+      const auto match = config::closestMatch(first, keys);
       r.message = fmt::format("no number at {} in results{}; the results of `{}` have {}",
                               fmt::join(missing, ", "),
                               match ? fmt::format(" (did you mean {}?)", *match) : "",
@@ -96,7 +97,7 @@ io::SweepCaseRecord runCase(const Command& command, const io::ConfigSchema& sche
   return r;
 }
 
-nlohmann::ordered_json outputStatistics(const io::SweepDefinition& study,
+nlohmann::ordered_json outputStatistics(const config::SweepDefinition& study,
                                         const std::vector<io::SweepCaseRecord>& records) {
   nlohmann::ordered_json stats = nlohmann::ordered_json::object();
   for (std::size_t k = 0; k < study.outputs.size(); ++k) {
@@ -134,12 +135,12 @@ nlohmann::ordered_json outputStatistics(const io::SweepDefinition& study,
 
 /// Every value a parameter lists (or the bounds of its range) loaded into the base
 /// configuration: a bad value is an error before any case runs, named by its place in the study.
-void checkStudyValues(const io::SweepDefinition& study, const io::ConfigSchema& schema,
+void checkStudyValues(const config::SweepDefinition& study, const config::ConfigSchema& schema,
                       const fs::path& file) {
   for (const auto& p : study.parameters) {
     const std::string where = "study.parameters." + p.key;
     if (!schema.findKey(p.key)) {
-      io::loadConfigFile(study.base, schema, {p.key + "=0"});  // throws with did-you-mean
+      config::loadConfigFile(study.base, schema, {p.key + "=0"});  // throws with did-you-mean
       throw InputError(where, "", "a key of the base configuration");
     }
     std::vector<std::pair<std::string, nlohmann::json>> probes;
@@ -155,22 +156,22 @@ void checkStudyValues(const io::SweepDefinition& study, const io::ConfigSchema& 
     }
     for (const auto& [label, value] : probes) {
       std::vector<std::string> overrides = study.set;
-      overrides.push_back(p.key + "=" + io::tomlLiteral(value));
+      overrides.push_back(p.key + "=" + config::tomlLiteral(value));
       try {
-        io::loadConfigFile(study.base, schema, overrides);
+        config::loadConfigFile(study.base, schema, overrides);
       } catch (const InputError& e) {
         if (e.key() != p.key) throw;
         std::string why = e.allowed();
         const auto at = why.rfind("; --set)");
         if (at != std::string::npos) why.replace(at, 8, "; " + file.string() + ")");
-        throw InputError(label, io::tomlLiteral(value), why);
+        throw InputError(label, config::tomlLiteral(value), why);
       }
     }
   }
 }
 
 /// A --set of a swept key would be overridden by every case: refused, with the way to do it.
-void rejectSweptOverrides(const io::SweepDefinition& study, const CommandOptions& options) {
+void rejectSweptOverrides(const config::SweepDefinition& study, const CommandOptions& options) {
   for (const auto& assignment : options.overrides) {
     const std::string key = assignment.substr(0, assignment.find('='));
     for (const auto& p : study.parameters) {
@@ -206,7 +207,8 @@ void refuseToDiscardJournal(const fs::path& journal, const CommandOptions& optio
 }
 
 /// Memory of the gathered records and of the running cases, and the time of all cases.
-RunEstimate estimateSweep(const io::SweepDefinition& study, const io::Config& base, int workers) {
+RunEstimate estimateSweep(const config::SweepDefinition& study, const config::Config& base,
+                          int workers) {
   const double cases = static_cast<double>(study.caseCount());
   const double p = static_cast<double>(study.parameters.size());
   const double o = static_cast<double>(study.outputs.size());
@@ -232,13 +234,14 @@ int runSweep(const CommandOptions& options) {
   std::unique_ptr<MpiWorld> mpi;
   if (launchedByMpi()) mpi = std::make_unique<MpiWorld>();
   const bool root = !mpi || mpi->rank() == 0;
-  io::SweepDefinition study = io::loadSweepDefinition(options.config_file, options.overrides);
+  config::SweepDefinition study =
+      config::loadSweepDefinition(options.config_file, options.overrides);
   const auto commands = allCommands();
   const Command& command = findCommand(commands, study.command);
   // The base configuration with the study's fixed overrides must load: a typo in a key fails here,
   // before any case runs (each case's own values are checked by the case).
   const auto base_schema = commandSchema(command, study.base);
-  const io::Config base = io::loadConfigFile(study.base, base_schema, study.set);
+  const config::Config base = config::loadConfigFile(study.base, base_schema, study.set);
   for (const auto& note : base.notes()) warn(note);
   for (std::string* key : {&study.seed_key}) {
     if (const std::string* renamed = base_schema.aliasTarget(*key)) {

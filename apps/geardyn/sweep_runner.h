@@ -9,7 +9,8 @@
 #include <functional>
 #include <vector>
 
-#include "geardyn/io/sweep_io.h"
+#include "geardyn/config/sweep_config.h"
+#include "geardyn/io/sweep_results.h"
 
 namespace geardyn::cli {
 

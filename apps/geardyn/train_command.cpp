@@ -8,9 +8,9 @@
 
 #include "analysis_command.h"
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/error.h"
-#include "geardyn/io/output_section.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 
 namespace geardyn::cli {
@@ -21,7 +21,7 @@ int runTrainOnce(const CommandOptions& options) {
   const analysis::TrainInputs inputs =
       analysis::loadTrainInputs(options.config_file, options.overrides);
   return runLibraryResult(
-      "train", "train", io::outputOptionsFromConfig(inputs.analysis).plots, options,
+      "train", "train", config::outputOptionsFromConfig(inputs.analysis).plots, options,
       [&](analysis::AnalysisContext& context) { return analysis::trainAnalysis(inputs, context); });
 }
 

@@ -4,34 +4,42 @@
 
 #include <chrono>
 
+#include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/hbm_config.h"
+#include "geardyn/config/identify_config.h"
+#include "geardyn/config/ltca_config.h"
+#include "geardyn/config/rotor_config.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/config/stats_config.h"
+#include "geardyn/config/stiffness_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/did_you_mean.h"
-#include "geardyn/io/fe_rotor_io.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/hbm_io.h"
-#include "geardyn/io/identify_io.h"
-#include "geardyn/io/ltca_io.h"
-#include "geardyn/io/rotor_io.h"
-#include "geardyn/io/simulate_io.h"
-#include "geardyn/io/stats_io.h"
-#include "geardyn/io/stiffness_io.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/hbm_results.h"
+#include "geardyn/io/identify_results.h"
+#include "geardyn/io/ltca_results.h"
+#include "geardyn/io/rotor_results.h"
+#include "geardyn/io/simulate_results.h"
+#include "geardyn/io/stats_results.h"
+#include "geardyn/io/stiffness_results.h"
 
 namespace geardyn::analysis {
 namespace {
 
 struct Entry {
   const char* name;
-  io::ConfigSchema (*schema)();
+  config::ConfigSchema (*schema)();
 };
 
 /// Each analysis's own schema; `rotor` has the finite-element variant too.
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> table = {
-      {"geometry", io::geometrySchema}, {"stiffness", io::stiffnessSchema},
-      {"simulate", io::simulateSchema}, {"stats", io::statsSchema},
-      {"hbm", io::hbmSchema},           {"rotor", io::rotorSchema},
-      {"spectrum", io::spectrumSchema}, {"identify", io::identifySchema},
-      {"ltca", io::ltcaSchema}};
+      {"geometry", config::geometrySchema}, {"stiffness", config::stiffnessSchema},
+      {"simulate", config::simulateSchema}, {"stats", config::statsSchema},
+      {"hbm", config::hbmSchema},           {"rotor", config::rotorSchema},
+      {"spectrum", config::spectrumSchema}, {"identify", config::identifySchema},
+      {"ltca", config::ltcaSchema}};
   return table;
 }
 
@@ -41,7 +49,7 @@ const Entry& entry(const std::string& name) {
   }
   std::string allowed = "one of";
   for (const auto& e : entries()) allowed += std::string(" ") + e.name;
-  if (const auto match = io::closestMatch(name, analysisNames())) {
+  if (const auto match = config::closestMatch(name, analysisNames())) {
     allowed += "; did you mean '" + *match + "'?";
   }
   throw InputError("analysis", name, allowed);
@@ -58,21 +66,21 @@ const std::vector<std::string>& analysisNames() {
   return names;
 }
 
-io::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type) {
+config::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type) {
   const Entry& own = entry(name);
-  io::ConfigSchema schema =
-      name == "rotor" && model_type == "fe_geared_rotor" ? io::feRotorSchema() : own.schema();
+  config::ConfigSchema schema =
+      name == "rotor" && model_type == "fe_geared_rotor" ? config::feRotorSchema() : own.schema();
   for (const auto& other : entries()) {
     if (other.name == name) continue;
     schema.addForeignSchema(other.schema());
-    if (std::string(other.name) == "rotor") schema.addForeignSchema(io::feRotorSchema());
+    if (std::string(other.name) == "rotor") schema.addForeignSchema(config::feRotorSchema());
   }
   return schema;
 }
 
-AnalysisResult runAnalysis(const std::string& name, const io::Config& config,
+AnalysisResult runAnalysis(const std::string& name, const config::Config& config,
                            const AnalysisContext& context) {
-  using Function = AnalysisResult (*)(const io::Config&, const AnalysisContext&);
+  using Function = AnalysisResult (*)(const config::Config&, const AnalysisContext&);
   Function function = nullptr;
   if (name == "geometry") function = geometryAnalysis;
   if (name == "stiffness") function = stiffnessAnalysis;

@@ -6,7 +6,7 @@
 
 namespace geardyn::analysis {
 
-AnalysisResult::AnalysisResult(std::string command, const io::Config& config,
+AnalysisResult::AnalysisResult(std::string command, const config::Config& config,
                                const AnalysisContext& context) {
   summary.command = std::move(command);
   summary.config_source = context.config_source;

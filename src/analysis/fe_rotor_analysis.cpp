@@ -12,8 +12,8 @@
 #include <thread>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
@@ -34,7 +34,7 @@ struct SteadyAnalysis {
   double last_change = 0.0;  // max |q(t) − q(t − T_m)| / max |q| over the last mesh period
 };
 
-SteadyAnalysis analyseSteady(const io::Config& config, const FeGearedRotor& model,
+SteadyAnalysis analyseSteady(const config::Config& config, const FeGearedRotor& model,
                              const FeTimeResponse& r) {
   SteadyAnalysis a;
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
@@ -73,7 +73,7 @@ SteadyAnalysis analyseSteady(const io::Config& config, const FeGearedRotor& mode
   return a;
 }
 
-double spectrumLimit(const io::Config& config, const SteadyAnalysis& a) {
+double spectrumLimit(const config::Config& config, const SteadyAnalysis& a) {
   return config.has("time.spectrum_max_frequency") ? config.real("time.spectrum_max_frequency")
          : a.frequencies.empty()                   ? 1e3
                                                    : 1.25 * a.frequencies.back();
@@ -172,7 +172,7 @@ void reportDivergence(const FeTimeResponse& r, std::vector<std::string>& warning
 /// The run-up: order tracking of the mesh order and 1× in windows, a waterfall of the first
 /// channel's acceleration, the speed of the largest mesh-order response per channel, and the
 /// Campbell crossings of the mesh line within the speed range.
-void runUpOutputs(const io::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
+void runUpOutputs(const config::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
                   AnalysisResult& result, nlohmann::ordered_json& results, std::string& text) {
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
   const int window = static_cast<int>(std::llround(config.real("time.runup_window") / dt));
@@ -247,13 +247,13 @@ std::string dampingRatioText(double zeta) {
   return std::abs(zeta) < 5e-5 ? fmt::format("{:.1e}", zeta) : fmt::format("{:.4f}", zeta);
 }
 
-int runTime(const io::Config& config, const AnalysisContext& context, io::RunSummary& summary,
+int runTime(const config::Config& config, const AnalysisContext& context, io::RunSummary& summary,
             AnalysisResult& result, std::string& text) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
   context.checkBudget("rotor_fe_time", model.dofCount());
-  FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.progress = context.progressFor("rotor: Newmark", "steps");
   const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
   reportDivergence(r, summary.warnings);
@@ -310,15 +310,15 @@ nlohmann::ordered_json modeJson(const RotorMode& m) {
           {"axial_fraction", m.axial_fraction}};
 }
 
-int runModal(const io::Config& config, io::RunSummary& summary, AnalysisResult& result,
+int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
              std::string& text) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
   const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
                                                       : config.real("speed.speed_rpm")) *
                        kRpm;
-  const auto modes = modalAnalysis(model, speed, io::modalOptionsFromConfig(config, "modal"));
+  const auto modes = modalAnalysis(model, speed, config::modalOptionsFromConfig(config, "modal"));
   io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
                       "lateral_fraction", "torsional_fraction", "axial_fraction"});
   io::CsvTable shapes({"mode", "dof", "re", "im", "amplitude"});
@@ -342,14 +342,14 @@ int runModal(const io::Config& config, io::RunSummary& summary, AnalysisResult& 
   return kOk;
 }
 
-int runCampbell(const io::Config& config, io::RunSummary& summary, AnalysisResult& result,
+int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
                 std::string& text) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
-  const auto speeds = io::campbellSpeedsFromConfig(config);
+  const auto speeds = config::campbellSpeedsFromConfig(config);
   const CampbellDiagram d = campbellDiagram(
-      model, speeds, io::modalOptionsFromConfig(config, "campbell"), standardOrderLines(model));
+      model, speeds, config::modalOptionsFromConfig(config, "campbell"), standardOrderLines(model));
   io::CsvTable table(
       {"speed_rpm", "mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction"});
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -389,8 +389,8 @@ int runCampbell(const io::Config& config, io::RunSummary& summary, AnalysisResul
 }
 
 /// Visnadi §4: the same rotor with each mesh-stiffness model; amplitudes at the mesh orders.
-int runCompare(const io::Config& config, const AnalysisContext& context, io::RunSummary& summary,
-               AnalysisResult& result, std::string& text) {
+int runCompare(const config::Config& config, const AnalysisContext& context,
+               io::RunSummary& summary, AnalysisResult& result, std::string& text) {
   const auto models = config.stringList("compare.models");
   if (models.empty()) throw InputError("compare.models", "[]", "at least one model");
   struct Case {
@@ -402,7 +402,7 @@ int runCompare(const io::Config& config, const AnalysisContext& context, io::Run
   };
   std::vector<Case> cases;
   for (const auto& name : models) {
-    io::FeRotorBuild build = io::feRotorSpecFromConfig(config, name);
+    config::FeRotorBuild build = config::feRotorSpecFromConfig(config, name);
     Case c{name, std::make_unique<FeGearedRotor>(build.spec), {}, 0.0, build.warnings};
     c.mean = c.model->meanMeshStiffness();
     cases.push_back(std::move(c));
@@ -418,7 +418,8 @@ int runCompare(const io::Config& config, const AnalysisContext& context, io::Run
   // The cases are independent: run them on the worker threads (options are read first, so that
   // configuration errors surface here, on the main thread).
   std::vector<FeTimeOptions> time_options;
-  for (const Case& c : cases) time_options.push_back(io::feTimeOptionsFromConfig(config, *c.model));
+  for (const Case& c : cases)
+    time_options.push_back(config::feTimeOptionsFromConfig(config, *c.model));
   const unsigned threads =
       context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
@@ -517,7 +518,7 @@ int runCompare(const io::Config& config, const AnalysisContext& context, io::Run
 
 }  // namespace
 
-AnalysisResult feRotorAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult feRotorAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("rotor", config, context);
   io::RunSummary& summary = result.summary;
   const std::string analysis = config.string("analysis.type");

@@ -3,13 +3,14 @@
 #include <fmt/format.h>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/geometry_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult geometryAnalysis(const io::Config& config, const AnalysisContext& context) {
-  const GearPair pair(io::gearPairSpecFromConfig(config));
+AnalysisResult geometryAnalysis(const config::Config& config, const AnalysisContext& context) {
+  const GearPair pair(config::gearPairSpecFromConfig(config));
   for (const auto& warning : pair.warnings()) context.warning(warning);
 
   AnalysisResult result("geometry", config, context);

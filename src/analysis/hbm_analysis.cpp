@@ -7,9 +7,11 @@
 #include <numbers>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/hbm_config.h"
+#include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/hbm_io.h"
-#include "geardyn/io/simulate_io.h"
+#include "geardyn/io/hbm_results.h"
+#include "geardyn/io/simulate_results.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -31,12 +33,12 @@ std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f)
 
 }  // namespace
 
-AnalysisResult hbmAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& context) {
   context.checkBudget("hbm");
-  const io::GearPairModelBuild build = io::buildGearPairModel(config, false);
+  const config::GearPairModelBuild build = config::buildGearPairModel(config, false);
   std::vector<std::string> warnings = build.warnings;
   const GearPairModel model(build.spec);
-  const HarmonicBalanceOptions hbm_options = io::harmonicBalanceOptionsFromConfig(config);
+  const HarmonicBalanceOptions hbm_options = config::harmonicBalanceOptionsFromConfig(config);
   HarmonicBalance hbm(model, hbm_options);
   const double scale = build.nondimensional ? 1.0 : 2.0 * std::numbers::pi;  // ω = scale · f
 
@@ -147,7 +149,7 @@ AnalysisResult hbmAnalysis(const io::Config& config, const AnalysisContext& cont
       GearPairModelSpec spec = model.spec();
       spec.mesh_frequency = f * scale / (2.0 * std::numbers::pi);
       const GearPairModel at(spec);
-      const TimeResponse r = solveTimeResponse(at, io::timeResponseOptionsFromConfig(config));
+      const TimeResponse r = solveTimeResponse(at, config::timeResponseOptionsFromConfig(config));
       const io::TimeResponseChannels c = io::channelsOf(at, r);
       const double p2p =
           *std::max_element(c.y.begin(), c.y.end()) - *std::min_element(c.y.begin(), c.y.end());

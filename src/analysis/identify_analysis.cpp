@@ -8,16 +8,18 @@
 #include <numbers>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/identify_config.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/identify_io.h"
-#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/identify_results.h"
+#include "geardyn/io/rotor_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("identify", config, context);
   const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
-  const LateralRotorSpec known = io::knownRotorFromConfig(config);
+  const LateralRotorSpec known = config::knownRotorFromConfig(config);
   std::vector<io::WhirlSpectrumInput> inputs;
   std::vector<MeasuredWhirlPeaks> data;
   for (const auto& entry : config.stringList("input.spectra")) {
@@ -31,7 +33,7 @@ AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext&
   if (config.has("truth.rotor_config")) {
     std::filesystem::path file = config.string("truth.rotor_config");
     if (file.is_relative()) file = base / file;
-    truth = io::lateralRotorSpecFromConfig(io::loadConfigFile(file, io::rotorSchema()));
+    truth = config::lateralRotorSpecFromConfig(config::loadConfigFile(file, config::rotorSchema()));
   } else {
     for (const auto& in : inputs)
       if (in.truth && !truth) truth = in.truth;
@@ -43,7 +45,7 @@ AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext&
         fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth, truth->gear_teeth));
   }
 
-  const IdentificationOptions id_options = io::identificationOptionsFromConfig(config);
+  const IdentificationOptions id_options = config::identificationOptionsFromConfig(config);
   const auto start = std::chrono::steady_clock::now();
   const DteIdentification r = identifyDte(known, data, id_options);
   const double seconds =

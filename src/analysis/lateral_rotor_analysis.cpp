@@ -9,9 +9,10 @@
 #include <random>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
-#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/rotor_results.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -66,7 +67,7 @@ struct StudyCase {
   LateralRotorSpec spec;
 };
 
-std::vector<StudyCase> studyCases(const io::Config& config, const LateralRotorSpec& base) {
+std::vector<StudyCase> studyCases(const config::Config& config, const LateralRotorSpec& base) {
   const double zeta_m_known = base.mesh_damping / std::sqrt(base.mesh_stiffness);
   std::vector<StudyCase> cases{{"baseline", "baseline", 1.0, base}};
   for (double f : config.realList("study.speed_factors")) {
@@ -115,10 +116,11 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
 
 }  // namespace
 
-AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult lateralRotorAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("rotor", config, context);
-  const LateralRotorModel model(io::lateralRotorSpecFromConfig(config));
-  const GearPairSpectrumOptions spectrum_options = io::gearPairSpectrumOptionsFromConfig(config);
+  const LateralRotorModel model(config::lateralRotorSpecFromConfig(config));
+  const GearPairSpectrumOptions spectrum_options =
+      config::gearPairSpectrumOptionsFromConfig(config);
   const GearWhirlSetup setup = setupOf(model);
   const double max_frequency =
       config.optionalReal("spectrum.max_frequency")
@@ -165,7 +167,7 @@ AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisCont
   RotorTimeResponse time;
   if (config.boolean("time.enabled")) {
     context.checkBudget("rotor_time");
-    RotorTimeOptions time_options = io::rotorTimeOptionsFromConfig(config);
+    RotorTimeOptions time_options = config::rotorTimeOptionsFromConfig(config);
     time_options.progress = context.progressFor("rotor: time response", "s simulated");
     // Checked before integrating: the grid's rate (snapped to the common period) is within a
     // sample per period of duration/(samples − 1).
@@ -334,7 +336,7 @@ AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisCont
       const LateralRotorModel m(c.spec);
       std::array<std::vector<WhirlComponent>, 2> peaks;
       if (in_time) {
-        RotorTimeOptions o = io::rotorTimeOptionsFromConfig(config);
+        RotorTimeOptions o = config::rotorTimeOptionsFromConfig(config);
         o.samples =
             static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
         const RotorTimeResponse r = solveRotorTimeResponse(m, o);

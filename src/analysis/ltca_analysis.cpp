@@ -7,20 +7,22 @@
 #include <chrono>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/ltca_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/ltca_io.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/ltca_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult ltcaAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("ltca", config, context);
-  const GearPair pair(io::gearPairSpecFromConfig(config));
+  const GearPair pair(config::gearPairSpecFromConfig(config));
   const int slices = static_cast<int>(config.integer("ltca.slices"));
   PotentialEnergyOptions pe;
   if (pair.baseHelixAngle() > 0.0) pe.slices = slices;  // the same slices as the contact
   auto stiffness = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
-  const PairModifications modifications = io::pairModificationsFromConfig(config, *stiffness);
+  const PairModifications modifications = config::pairModificationsFromConfig(config, *stiffness);
   const LoadedToothContact contact(stiffness, modifications, slices);
   const double force = config.real("ltca.force");
   const int positions = static_cast<int>(config.integer("ltca.positions"));

@@ -41,13 +41,13 @@ constexpr double kRotorSampleBytes = 600.0;
 // rotor (FE): one Newmark step per DOF (40 000 steps of 30 DOFs in 0.27 s with start-up).
 constexpr double kFeStepSecondsPerDof = 100e-9;
 
-std::string shown(const io::Config& config, const std::string& key) {
+std::string shown(const config::Config& config, const std::string& key) {
   return fmt::format("{}", config.integer(key));
 }
 
 }  // namespace
 
-RunEstimate estimateTimeResponse(const io::Config& config) {
+RunEstimate estimateTimeResponse(const config::Config& config) {
   const double steps_per_period = static_cast<double>(config.integer("solver.steps_per_period"));
   const double max_periods = static_cast<double>(config.integer("solver.max_periods"));
   const double points = static_cast<double>(config.integer("solver.output_points_per_period"));
@@ -75,7 +75,7 @@ RunEstimate estimateTimeResponse(const io::Config& config) {
   return e;
 }
 
-RunEstimate estimateMonteCarlo(const io::Config& config, int threads) {
+RunEstimate estimateMonteCarlo(const config::Config& config, int threads) {
   const double samples = static_cast<double>(config.integer("monte_carlo.samples"));
   const double teeth = static_cast<double>(config.integer("monte_carlo.teeth"));
   RunEstimate e;
@@ -88,7 +88,7 @@ RunEstimate estimateMonteCarlo(const io::Config& config, int threads) {
   return e;
 }
 
-RunEstimate estimateHarmonicBalance(const io::Config& config) {
+RunEstimate estimateHarmonicBalance(const config::Config& config) {
   const double n = 2.0 * static_cast<double>(config.integer("hbm.harmonics")) + 1.0;
   const double samples = static_cast<double>(config.integer("hbm.samples_per_period"));
   const double range = std::abs(config.real("sweep.stop") - config.real("sweep.start"));
@@ -122,7 +122,7 @@ RunEstimate estimateHarmonicBalance(const io::Config& config) {
   return e;
 }
 
-RunEstimate estimateRotorTime(const io::Config& config) {
+RunEstimate estimateRotorTime(const config::Config& config) {
   RunEstimate e;
   if (!config.boolean("time.enabled")) return e;
   const double samples = static_cast<double>(config.integer("time.samples"));
@@ -135,7 +135,7 @@ RunEstimate estimateRotorTime(const io::Config& config) {
   return e;
 }
 
-RunEstimate estimateFeRotorTime(const io::Config& config, int dofs) {
+RunEstimate estimateFeRotorTime(const config::Config& config, int dofs) {
   const double steps = std::ceil(config.real("time.duration") / config.real("time.time_step"));
   const double channels = 16.0;  // default channels; spectra use every step
   RunEstimate e;
@@ -148,7 +148,7 @@ RunEstimate estimateFeRotorTime(const io::Config& config, int dofs) {
   return e;
 }
 
-RunEstimate estimateStage(const std::string& stage, long long size, const io::Config& config) {
+RunEstimate estimateStage(const std::string& stage, long long size, const config::Config& config) {
   if (stage == "simulate" || stage == "stats_time") return estimateTimeResponse(config);
   if (stage == "hbm") return estimateHarmonicBalance(config);
   if (stage == "rotor_time") return estimateRotorTime(config);
@@ -157,7 +157,7 @@ RunEstimate estimateStage(const std::string& stage, long long size, const io::Co
   return {};
 }
 
-RunEstimate estimateCommand(const std::string& command, const io::Config& config) {
+RunEstimate estimateCommand(const std::string& command, const config::Config& config) {
   if (command == "simulate") return estimateTimeResponse(config);
   if (command == "stats" && config.string("stats.source") == "model" &&
       config.integer("monte_carlo.samples") > 0)

@@ -3,15 +3,16 @@
 #include <fmt/format.h>
 
 #include "geardyn/analysis/analyses.h"
-#include "geardyn/io/simulate_io.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/io/simulate_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult simulateAnalysis(const io::Config& config, const AnalysisContext& context) {
-  const io::GearPairModelBuild build = io::buildGearPairModel(config);
+AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisContext& context) {
+  const config::GearPairModelBuild build = config::buildGearPairModel(config);
   for (const auto& warning : build.warnings) context.warning(warning);
   const GearPairModel model(build.spec);
-  TimeResponseOptions solver = io::timeResponseOptionsFromConfig(config);
+  TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
   context.checkBudget("simulate");  // before it allocates
   solver.progress = context.progressFor("simulate", "periods of max_periods");
   const TimeResponse response = solveTimeResponse(model, solver);

@@ -8,13 +8,14 @@
 #include <random>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
-#include "geardyn/io/rotor_io.h"
+#include "geardyn/io/rotor_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("spectrum", config, context);
   std::filesystem::path file = config.string("input.file");
   if (file.is_relative()) file = std::filesystem::path(config.source()).parent_path() / file;
@@ -95,7 +96,8 @@ AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext&
     std::mt19937_64 rng(seed);
     for (auto& channel : channels) addRelativeNoise(channel, noise, rng);
   }
-  const GearPairSpectrumOptions spectrum_options = io::gearPairSpectrumOptionsFromConfig(config);
+  const GearPairSpectrumOptions spectrum_options =
+      config::gearPairSpectrumOptionsFromConfig(config);
   const double first_time = record.start_time + static_cast<double>(begin) / fs;
   const GearPairSpectrum spectrum =
       analyseGearPairRecord(channels, fs, first_time, reference, setup, spectrum_options);

@@ -5,12 +5,14 @@
 #include <thread>
 
 #include "geardyn/analysis/analyses.h"
-#include "geardyn/io/simulate_io.h"
-#include "geardyn/io/stats_io.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/config/stats_config.h"
+#include "geardyn/io/simulate_results.h"
+#include "geardyn/io/stats_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& context) {
+AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("stats", config, context);
   io::RunSummary& summary = result.summary;
   int exit_code = 0;
@@ -18,16 +20,16 @@ AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& co
 
   MeanExcitation stats;
   if (config.string("stats.source") == "moments") {
-    stats = io::meanExcitationFromConfigMoments(config);
+    stats = config::meanExcitationFromConfigMoments(config);
   } else if (config.string("stats.source") == "csv") {
-    stats = io::meanExcitationFromConfigCsv(config);
+    stats = config::meanExcitationFromConfigCsv(config);
   } else {
     const int threads =
         context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
     if (config.integer("monte_carlo.samples") > 0)
       context.checkBudget("stats_monte_carlo", threads);
     if (config.boolean("stats.simulate")) context.checkBudget("stats_time");
-    const io::GearPairModelBuild build = io::buildGearPairModel(config);
+    const config::GearPairModelBuild build = config::buildGearPairModel(config);
     summary.warnings = build.warnings;
     const GearPairModel model(build.spec);
     const double baseload = build.nondimensional           ? 1.0
@@ -35,7 +37,7 @@ AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& co
                                                            : model.meanForce();
     stats = meanExcitationFromModel(model, baseload);
     if (config.integer("monte_carlo.samples") > 0) {
-      MonteCarloOptions mc = io::monteCarloOptionsFromConfig(config, baseload, threads);
+      MonteCarloOptions mc = config::monteCarloOptionsFromConfig(config, baseload, threads);
       mc.progress = context.progressFor("stats: Monte Carlo", "samples");
       const auto samples = runMeanExcitationMonteCarlo(model, mc);
       summary.seed = mc.seed;
@@ -52,7 +54,7 @@ AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& co
             "the mean excitation statistics assume a linear contact (Gelman eq. 1); "
             "with contact loss the simulated mean of k·y differs from L_d");
       }
-      TimeResponseOptions solver = io::timeResponseOptionsFromConfig(config);
+      TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
       solver.progress = context.progressFor("stats: simulation", "periods of max_periods");
       const TimeResponse r = solveTimeResponse(model, solver);
       double mean_kx = 0.0;

@@ -3,15 +3,17 @@
 #include <fmt/format.h>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/stiffness_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/stiffness_io.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/stiffness_results.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult stiffnessAnalysis(const io::Config& config, const AnalysisContext& context) {
-  const GearPair pair(io::gearPairSpecFromConfig(config));
-  const io::MeshStiffnessModels models = io::buildMeshStiffnessModels(config, pair);
+AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisContext& context) {
+  const GearPair pair(config::gearPairSpecFromConfig(config));
+  const config::MeshStiffnessModels models = config::buildMeshStiffnessModels(config, pair);
 
   AnalysisResult result("stiffness", config, context);
   io::RunSummary& summary = result.summary;

@@ -12,10 +12,10 @@
 #include <numbers>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/rexs_gearbox.h"
 #include "geardyn/error.h"
-#include "geardyn/io/fe_rotor_io.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 
@@ -118,7 +118,7 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
   text += fmt::format("static: {} ({} rigid-body modes)\n", r.status, r.rigid_modes);
 }
 
-void runModal(const GearTrainModel& model, const io::Config& analysis, AnalysisResult& result,
+void runModal(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
               io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "modal", model.inputSpeed());
@@ -159,8 +159,8 @@ void runModal(const GearTrainModel& model, const io::Config& analysis, AnalysisR
   text += modes.size() > 8 ? ", …\n" : "\n";
 }
 
-void runCampbell(const GearTrainModel& model, const io::Config& analysis, AnalysisResult& result,
-                 io::RunSummary& summary, std::string& text) {
+void runCampbell(const GearTrainModel& model, const config::Config& analysis,
+                 AnalysisResult& result, io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const auto speeds = config::speedRangeFromConfig(analysis, "campbell", model.inputSpeed(), 0.0);
   TrainModalOptions options;
@@ -198,7 +198,7 @@ void runCampbell(const GearTrainModel& model, const io::Config& analysis, Analys
                       d.critical_speeds.size());
 }
 
-void runForced(const GearTrainModel& model, const io::Config& analysis, AnalysisResult& result,
+void runForced(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
                io::RunSummary& summary, std::string& text, const AnalysisContext& context) {
   const auto start = Clock::now();
   const auto speeds = config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1);
@@ -248,7 +248,7 @@ void runForced(const GearTrainModel& model, const io::Config& analysis, Analysis
       fmt::format("forced response: {} speeds in {:.2f} s\n", speeds.size(), secondsSince(start));
 }
 
-int runTime(const GearTrainModel& model, const io::Config& analysis, AnalysisResult& result,
+int runTime(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
             io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
@@ -341,9 +341,9 @@ int runTime(const GearTrainModel& model, const io::Config& analysis, AnalysisRes
 
 TrainInputs loadTrainInputs(const std::filesystem::path& file,
                             const std::vector<std::string>& overrides) {
-  const std::string ref = io::peekConfigString(file, "gearbox.file");
+  const std::string ref = config::peekConfigString(file, "gearbox.file");
   if (ref.empty()) {
-    io::Config both = io::loadConfigFile(file, config::trainSchema(true), overrides);
+    config::Config both = config::loadConfigFile(file, config::trainSchema(true), overrides);
     if (both.has("gearbox.load_case"))
       throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
                        "only with a REXS gearbox file named by gearbox.file");
@@ -363,13 +363,14 @@ TrainInputs loadTrainInputs(const std::filesystem::path& file,
     (to_gearbox ? gearbox_overrides : analysis_overrides).push_back(o);
   }
   const std::filesystem::path path = file.parent_path() / ref;
-  io::Config analysis = io::loadConfigFile(file, config::trainSchema(false), analysis_overrides);
+  config::Config analysis =
+      config::loadConfigFile(file, config::trainSchema(false), analysis_overrides);
   std::optional<int> load_case;
   if (analysis.has("gearbox.load_case"))
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
   std::vector<std::string> warnings;
   // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
-  io::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  config::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
   return {analysis, gearbox, file.string(), path.string(), warnings};
 }
 

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/stiffness_config.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/geometry/internal_gear_pair.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/stiffness_io.h"
 #include "geardyn/stiffness/api_stiffness.h"
 
 namespace geardyn::config {
@@ -26,7 +26,7 @@ const std::vector<std::string> kStiffnessChoices = {"constant", "api",  "potenti
 
 /// Mesh stiffness, damping and transmission error keys of a mesh (prefix "meshes.*") or of a
 /// planetary stage's sun or ring meshes (prefix "planetary.*.sun_planet").
-void addMeshModelKeys(io::ConfigSchema& schema, const std::string& prefix,
+void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
                       const std::string& what) {
   schema.string(prefix + "stiffness")
       .choices(kStiffnessChoices)
@@ -67,7 +67,7 @@ void addMeshModelKeys(io::ConfigSchema& schema, const std::string& prefix,
 }
 
 /// The tooth contact of a mesh from its keys (see addMeshModelKeys).
-TrainMeshContact contactFromConfig(const io::Config& config, const std::string& prefix) {
+TrainMeshContact contactFromConfig(const config::Config& config, const std::string& prefix) {
   TrainMeshContact c;
   const bool has_backlash = config.has(prefix + "backlash");
   const std::string law = config.has(prefix + "contact") ? config.string(prefix + "contact")
@@ -89,7 +89,7 @@ TrainMeshContact contactFromConfig(const io::Config& config, const std::string& 
   return c;
 }
 
-TransmissionError teFromConfig(const io::Config& config, const std::string& prefix) {
+TransmissionError teFromConfig(const config::Config& config, const std::string& prefix) {
   TransmissionError te;
   const auto amplitudes = config.realList(prefix + "te_amplitudes");
   auto phases = config.realList(prefix + "te_phases_deg");
@@ -101,7 +101,7 @@ TransmissionError teFromConfig(const io::Config& config, const std::string& pref
 
 /// The stiffness model a mesh asks for. `pair` is null for ring meshes (no model needs more
 /// than the face width and helix angle there).
-std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const io::Config& config,
+std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& config,
                                                          const std::string& prefix,
                                                          const GearPair* pair, double face_width,
                                                          double helix, double contact_ratio,
@@ -125,7 +125,7 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const io::Config& confi
                      "written for external pairs");
   }
   std::vector<std::string> own;
-  auto k = io::buildMeshStiffnessModel(model, config, *pair, own);
+  auto k = config::buildMeshStiffnessModel(model, config, *pair, own);
   const std::string where = prefix.substr(0, prefix.size() - 1);
   for (const auto& w : own) warnings.push_back(where + " (" + model + " model): " + w);
   return k;
@@ -140,7 +140,7 @@ const std::vector<std::string>& gearboxSectionNames() {
   return names;
 }
 
-void addGearboxSections(io::ConfigSchema& schema) {
+void addGearboxSections(config::ConfigSchema& schema) {
   schema.section("gearbox", "The gearbox as a whole.");
   schema.string("gearbox.name").defaultValue("").doc("free text");
   schema.string("gearbox.dofs")
@@ -218,7 +218,7 @@ void addGearboxSections(io::ConfigSchema& schema) {
       .doc("global x of the first section's start; positions on the shaft count from it");
 
   schema.collection("gears", "Gears on shafts.");
-  io::addGearSection(schema, "gears.*", "gear (internal = true makes it a ring gear)", true);
+  config::addGearSection(schema, "gears.*", "gear (internal = true makes it a ring gear)", true);
   schema.string("gears.*.shaft").required().doc("the shaft it sits on");
   schema.boolean("gears.*.internal").defaultValue(false).doc("a ring gear with internal teeth");
   schema.boolean("gears.*.body")
@@ -378,7 +378,7 @@ void addGearboxSections(io::ConfigSchema& schema) {
   schema.boolean("planetary.*.carrier_frame_terms")
       .defaultValue(true)
       .doc("Coriolis and centripetal terms of the carrier frame (Lin & Parker 1999)");
-  io::addGearSection(schema, "planetary.*.planet", "planet gear", true);
+  config::addGearSection(schema, "planetary.*.planet", "planet gear", true);
   schema.section("planetary.*.sun_planet", "The sun–planet meshes.");
   addMeshModelKeys(schema, "planetary.*.sun_planet.", "the sun–planet meshes");
   schema.section("planetary.*.ring_planet", "The ring–planet meshes.");
@@ -407,20 +407,21 @@ void addGearboxSections(io::ConfigSchema& schema) {
       .doc("where the load torque acts along a flexible output shaft (default: its end)");
 
   schema.section("mesh_stiffness", "Options of the mesh-stiffness models, shared by the meshes.");
-  io::addMeshStiffnessModelSections(schema);
+  config::addMeshStiffnessModelSections(schema);
 }
 
-io::ConfigSchema gearboxSchema() {
-  io::ConfigSchema schema("gearbox",
-                          "A gearbox description: shafts, gears, meshes, bearings, couplings, "
-                          "planetary stages and the operating point, read by `geardyn train` "
-                          "([gearbox] file = \"gearbox.toml\" in the analysis file).");
+config::ConfigSchema gearboxSchema() {
+  config::ConfigSchema schema("gearbox",
+                              "A gearbox description: shafts, gears, meshes, bearings, couplings, "
+                              "planetary stages and the operating point, read by `geardyn train` "
+                              "([gearbox] file = \"gearbox.toml\" in the analysis file).");
   schema.setTitle("Gearbox description file");
   addGearboxSections(schema);
   return schema;
 }
 
-GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::string>& warnings) {
+GearTrainSpec gearTrainFromConfig(const config::Config& config,
+                                  std::vector<std::string>& warnings) {
   GearTrainSpec spec;
   spec.name = config.string("gearbox.name");
   spec.dofs = parseTrainDofs(config.string("gearbox.dofs"), "gearbox.dofs");
@@ -447,7 +448,7 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
   }
   for (const std::string& name : config.names("gears")) {
     const std::string p = "gears." + name;
-    spec.gears.push_back({name, config.string(p + ".shaft"), io::gearSpecFromConfig(config, p),
+    spec.gears.push_back({name, config.string(p + ".shaft"), config::gearSpecFromConfig(config, p),
                           config.boolean(p + ".internal"), config.boolean(p + ".body"),
                           config.real(p + ".position")});
   }
@@ -535,7 +536,7 @@ GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::str
     st.sun = config.string(p + "sun");
     st.ring = config.string(p + "ring");
     st.carrier = config.string(p + "carrier");
-    st.planet = io::gearSpecFromConfig(config, p + "planet");
+    st.planet = config::gearSpecFromConfig(config, p + "planet");
     st.planets = static_cast<int>(config.integer(p + "planets"));
     st.planet_angles = config.realList(p + "planet_angles_deg");
     for (double& a : st.planet_angles) a *= kDeg;

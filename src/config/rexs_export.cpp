@@ -55,7 +55,7 @@ Json material(double e, double nu, double rho) {
 
 }  // namespace
 
-std::string exportRexsJson(const io::Config& gearbox, std::vector<std::string>& warnings) {
+std::string exportRexsJson(const config::Config& gearbox, std::vector<std::string>& warnings) {
   const Json& cfg = gearbox.resolved();
   Writer w;
   const int unit = w.add("gear_unit", cfg["gearbox"]["name"].get<std::string>(), Json::array());

@@ -436,7 +436,8 @@ RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& optio
       probe.add("output", tomlString(model.name(op.output)));
       std::vector<TomlSection> all = sections;
       all.push_back(probe);
-      const io::Config c = io::parseConfig(renderToml(all, ""), doc.source, gearboxSchema());
+      const config::Config c =
+          config::parseConfig(renderToml(all, ""), doc.source, gearboxSchema());
       std::vector<std::string> ignored;
       const GearTrainModel m(gearTrainFromConfig(c, ignored));
       ratio = m.bodies()[m.bodyIndex(model.name(op.torque_shaft))].speed_ratio;
@@ -523,21 +524,21 @@ RexsImport importRexsFile(const std::filesystem::path& file, const RexsImportOpt
   return result;
 }
 
-io::Config loadGearboxConfig(const std::filesystem::path& file,
-                             const std::vector<std::string>& overrides,
-                             std::optional<int> load_case, std::vector<std::string>& warnings) {
+config::Config loadGearboxConfig(const std::filesystem::path& file,
+                                 const std::vector<std::string>& overrides,
+                                 std::optional<int> load_case, std::vector<std::string>& warnings) {
   if (!io::rexs::isRexsPath(file)) {
     if (load_case)
       throw InputError("gearbox.load_case", std::to_string(*load_case),
                        "only with a REXS gearbox file (.rexs, .rexsj, .rexsz); " + file.string() +
                            " is a gearbox TOML file");
-    return io::loadConfigFile(file, gearboxSchema(), overrides);
+    return config::loadConfigFile(file, gearboxSchema(), overrides);
   }
   RexsImportOptions options;
   options.load_case = load_case;
   RexsImport imported = importRexsFile(file, options);
   warnings.insert(warnings.end(), imported.warnings.begin(), imported.warnings.end());
-  return io::parseConfig(imported.toml, file.string(), gearboxSchema(), overrides);
+  return config::parseConfig(imported.toml, file.string(), gearboxSchema(), overrides);
 }
 
 }  // namespace geardyn::config

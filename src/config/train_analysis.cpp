@@ -8,14 +8,14 @@
 #include <numbers>
 
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
-#include "geardyn/io/output_section.h"
 
 namespace geardyn::config {
 namespace {
 constexpr double kRpm = std::numbers::pi / 30.0;
 
-void addSpeedRange(io::ConfigSchema& schema, const std::string& s, int points,
+void addSpeedRange(config::ConfigSchema& schema, const std::string& s, int points,
                    const std::string& default_min) {
   schema.real(s + ".speed_min_rpm")
       .unit("rpm")
@@ -31,8 +31,8 @@ void addSpeedRange(io::ConfigSchema& schema, const std::string& s, int points,
 }
 }  // namespace
 
-io::ConfigSchema trainSchema(bool inline_gearbox) {
-  io::ConfigSchema schema(
+config::ConfigSchema trainSchema(bool inline_gearbox) {
+  config::ConfigSchema schema(
       "train",
       "Any gear train (shafts, gears, meshes, bearings, couplings, planetary stages): kinematics "
       "and mesh phasing, static load sharing, modal analysis with Lin & Parker mode types, "
@@ -116,30 +116,30 @@ io::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(200)
       .defaultValue(20)
       .doc("harmonics of the frequency-domain steady state it is compared with");
-  io::addOutputSection(schema);
+  config::addOutputSection(schema);
   return schema;
 }
 
-double analysisSpeed(const io::Config& analysis, const std::string& section, double operating) {
+double analysisSpeed(const config::Config& analysis, const std::string& section, double operating) {
   return analysis.has(section + ".speed_rpm") ? analysis.real(section + ".speed_rpm") * kRpm
                                               : operating;
 }
 
-TrainModalOptions trainModalOptionsFromConfig(const io::Config& analysis,
+TrainModalOptions trainModalOptionsFromConfig(const config::Config& analysis,
                                               const std::string& section) {
   TrainModalOptions o;
   o.modes = static_cast<int>(analysis.integer(section + ".modes"));
   return o;
 }
 
-TrainSteadyOptions trainSteadyOptionsFromConfig(const io::Config& analysis) {
+TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis) {
   TrainSteadyOptions o;
   o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
   o.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
   return o;
 }
 
-TrainTimeOptions trainTimeOptionsFromConfig(const io::Config& analysis) {
+TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis) {
   TrainTimeOptions o;
   o.duration = analysis.real("time.duration");
   o.time_step = analysis.real("time.time_step");
@@ -149,7 +149,7 @@ TrainTimeOptions trainTimeOptionsFromConfig(const io::Config& analysis) {
   return o;
 }
 
-std::vector<double> speedRangeFromConfig(const io::Config& analysis, const std::string& s,
+std::vector<double> speedRangeFromConfig(const config::Config& analysis, const std::string& s,
                                          double operating, double default_min_fraction) {
   const double op = std::abs(operating);
   if (!analysis.has(s + ".speed_max_rpm") && op == 0.0) {

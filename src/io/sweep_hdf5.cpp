@@ -3,14 +3,15 @@
 
 #include <limits>
 
-#include "geardyn/io/sweep_io.h"
+#include "geardyn/config/sweep_config.h"
+#include "geardyn/io/sweep_results.h"
 #include "geardyn/version.h"
 #include "hdf5_module.h"
 
 namespace geardyn::io {
 namespace fs = std::filesystem;
 
-void writeSweepHdf5(const fs::path& path, const SweepDefinition& study,
+void writeSweepHdf5(const fs::path& path, const config::SweepDefinition& study,
                     const std::vector<SweepCaseRecord>& records, const std::string& base_config) {
   using Type = detail::Hdf5Dataset::Type;
   const std::uint64_t n = records.size(), np = study.parameters.size(), no = study.outputs.size();

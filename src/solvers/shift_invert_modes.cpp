@@ -67,8 +67,6 @@ std::vector<DampedMode> shiftInvertModes(const SparseMatrix& M, const SparseMatr
   Spectra::GenEigsRealShiftSolver<QuadraticShiftSolve> solver(op, nev, ncv, sigma);
   solver.init();
   solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-12);
-  fprintf(stderr, "arnoldi: %ld iterations, %ld ops, nev %ld ncv %ld\n",
-          (long)solver.num_iterations(), (long)solver.num_operations(), (long)nev, (long)ncv);
   if (solver.info() != Spectra::CompInfo::Successful) {
     throw std::runtime_error(
         fmt::format("modal analysis: shift-invert Arnoldi did not converge ({} of {} eigenvalues)",

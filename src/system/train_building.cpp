@@ -6,8 +6,8 @@
 
 #include <cmath>
 
+#include "geardyn/config/did_you_mean.h"
 #include "geardyn/error.h"
-#include "geardyn/io/did_you_mean.h"
 
 namespace geardyn::detail {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 [[noreturn]] void unknownName(const std::string& name, const std::string& key,
                               const std::vector<std::string>& known, const char* what) {
   std::string hint;
-  if (auto match = io::closestMatch(name, known))
+  if (auto match = config::closestMatch(name, known))
     hint = fmt::format("; did you mean \"{}\"?", *match);
   std::string list;
   for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;

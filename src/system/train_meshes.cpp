@@ -25,6 +25,7 @@
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/system/detail/train_building.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/planet_phasing.h"
 
 namespace geardyn {
 namespace {
@@ -515,6 +516,16 @@ void GearTrainModel::buildMeshes() {
     } else {
       m.damping = 2.0 * m.damping_ratio * std::sqrt(m.mean_stiffness * m.equivalent_mass);
     }
+  }
+
+  // --- ring-to-sun phase of each planet, from its loaded flanks (system/planet_phasing.h) -----
+  for (std::size_t s = 0; s < stages.size(); ++s) {
+    const StageGeometry& g = stages[s];
+    const PlanetaryStageSpec& st = spec_.stages[s];
+    addRingSunPhases(
+        meshes_, bodies_, static_cast<int>(s), bodies_[g.carrier].speed_ratio,
+        planetMeshGeometry(spec_.gears[g.sun_gear].gear, st.planet, spec_.gears[g.ring_gear].gear,
+                           g.sun_planet.centre_distance, "planetary." + st.name));
   }
 }
 

@@ -7,8 +7,8 @@
 #include <limits>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/config/config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -53,7 +53,7 @@ teeth = 30
 module = 3e-3
 face_width = 0.02
 )";
-  const io::Config config = io::parseConfig(toml, "test", analysisSchema("geometry"));
+  const config::Config config = config::parseConfig(toml, "test", analysisSchema("geometry"));
   AnalysisContext context;
   context.config_source = "test.toml";
   const AnalysisResult result = runAnalysis("geometry", config, context);

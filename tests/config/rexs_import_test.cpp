@@ -35,7 +35,7 @@ fs::path rexsDir() {
 
 struct Imported {
   config::RexsImport rexs;
-  io::Config config;
+  config::Config config;
   GearTrainSpec spec;
 };
 
@@ -43,7 +43,7 @@ Imported importFile(const std::string& name, std::optional<int> load_case = {}) 
   config::RexsImportOptions options;
   options.load_case = load_case;
   auto rexs = config::importRexsFile(rexsDir() / name, options);
-  io::Config config = io::parseConfig(rexs.toml, name, config::gearboxSchema());
+  config::Config config = config::parseConfig(rexs.toml, name, config::gearboxSchema());
   std::vector<std::string> warnings;
   GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
   return {std::move(rexs), std::move(config), std::move(spec)};
@@ -140,7 +140,7 @@ TEST(RexsImport, FvaTwoStageGeometryAndLoadCases) {
 /// (examples/gearboxes/fva_two_stage.toml) gives the same frequencies to round-off.
 TEST(RexsImport, FvaTwoStageModesAtEveryLoadCaseMatchTheHandWrittenFile) {
   REQUIRE_REXS_DATA();
-  const io::Config hand = io::loadConfigFile(
+  const config::Config hand = config::loadConfigFile(
       fs::path(GEARDYN_SOURCE_DIR) / "examples" / "gearboxes" / "fva_two_stage.toml",
       config::gearboxSchema());
   std::vector<std::string> warnings;
@@ -225,9 +225,9 @@ TEST(RexsImport, FvaPlanetaryStage) {
     // Assemblability is the model's check: 4 equally spaced planets do not fit
     // ((17 + 61) / 4 is not an integer).
     const std::string stage = "planetary." + st.name;
-    const io::Config four =
-        io::parseConfig(im.rexs.toml, file, config::gearboxSchema(),
-                        {stage + ".planets=4", stage + ".planet_angles_deg=[]"});
+    const config::Config four =
+        config::parseConfig(im.rexs.toml, file, config::gearboxSchema(),
+                            {stage + ".planets=4", stage + ".planet_angles_deg=[]"});
     std::vector<std::string> warnings;
     EXPECT_THROW(GearTrainModel(config::gearTrainFromConfig(four, warnings)), InputError);
   }
@@ -288,8 +288,8 @@ TEST(RexsImport, RoundTripImportExportImport) {
     io::rexs::normalize(doc, warnings);
     io::rexs::checkReferences(doc);
     const auto again = config::importRexsGearbox(doc);
-    const io::Config second =
-        io::parseConfig(again.toml, "exported.rexsj", config::gearboxSchema());
+    const config::Config second =
+        config::parseConfig(again.toml, "exported.rexsj", config::gearboxSchema());
     expectSameJson(first.config.resolved(), second.resolved(), "");
   }
 }
@@ -408,7 +408,7 @@ const char* kSmallJson = R"({"model": {"version": "1.6", "applicationId": "test"
 TEST(RexsImport, SmallGearboxMeshCharacteristicAdditionalMassAndRoundTrip) {
   const auto doc = io::rexs::parseRexsJson(kSmallJson, "small.rexsj");
   const config::RexsImport im = config::importRexsGearbox(doc);
-  const io::Config config = io::parseConfig(im.toml, "small", config::gearboxSchema());
+  const config::Config config = config::parseConfig(im.toml, "small", config::gearboxSchema());
   std::vector<std::string> warnings;
   const GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
   ASSERT_EQ(spec.meshes.size(), 1u);
@@ -437,8 +437,8 @@ TEST(RexsImport, SmallGearboxMeshCharacteristicAdditionalMassAndRoundTrip) {
   const std::string json = config::exportRexsJson(config, warnings);
   auto again = io::rexs::parseRexsJson(json, "again.rexsj");
   io::rexs::normalize(again, warnings);
-  const io::Config second =
-      io::parseConfig(config::importRexsGearbox(again).toml, "again", config::gearboxSchema());
+  const config::Config second =
+      config::parseConfig(config::importRexsGearbox(again).toml, "again", config::gearboxSchema());
   auto a = config.resolved(), b = second.resolved();
   for (auto* j : {&a, &b})
     (*j)["meshes"]["stage"].erase("stiffness"), (*j)["meshes"]["stage"].erase("stiffness_value");
@@ -461,7 +461,7 @@ TEST(RexsImport, TorqueOnTheOutputIsCarriedToTheInput) {
                   R"("name": "Load", "attributes": [{"id": "defines_torque", "boolean": true},
                      {"id": "torque_around_u_axis", "unit": "N m", "floating_point": 200.0},)");
   const auto im = config::importRexsGearbox(io::rexs::parseRexsJson(json, "out.rexsj"));
-  const io::Config config = io::parseConfig(im.toml, "out", config::gearboxSchema());
+  const config::Config config = config::parseConfig(im.toml, "out", config::gearboxSchema());
   std::vector<std::string> warnings;
   const GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
   EXPECT_EQ(spec.operating.input_shaft, "input");

@@ -1,15 +1,15 @@
 // The sweep journal: records survive a kill (a cut last line is dropped), a journal of another
 // study is refused, records round-trip with NaN outputs.
 
-#include "geardyn/io/sweep_io.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
+#include "geardyn/io/sweep_results.h"
 
 namespace geardyn::io {
 namespace {

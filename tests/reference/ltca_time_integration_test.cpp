@@ -10,18 +10,19 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geardyn/io/config.h"
-#include "geardyn/io/simulate_io.h"
-#include "geardyn/io/stats_io.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/simulate_config.h"
+#include "geardyn/config/stats_config.h"
 #include "geardyn/solvers/time_response.h"
 
 namespace geardyn {
 namespace {
 
 GearPairModel ltcaExample() {
-  const auto config = io::loadConfigFile(
-      GEARDYN_SOURCE_DIR "/examples/stats_ltca_long_relief_underload.toml", io::statsSchema(), {});
-  return GearPairModel(io::buildGearPairModel(config).spec);
+  const auto config =
+      config::loadConfigFile(GEARDYN_SOURCE_DIR "/examples/stats_ltca_long_relief_underload.toml",
+                             config::statsSchema(), {});
+  return GearPairModel(config::buildGearPairModel(config).spec);
 }
 
 TimeResponseOptions options(TimeIntegrator method, int steps_per_period) {

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "geardyn/io/config.h"
-#include "geardyn/io/fe_rotor_io.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/solvers/rotor_modal.h"
@@ -20,9 +20,9 @@ namespace {
 
 constexpr double kRpm = std::numbers::pi / 30.0;
 
-io::Config exampleConfig(std::vector<std::string> overrides = {}) {
-  return io::loadConfigFile(GEARDYN_SOURCE_DIR "/examples/rotor_visnadi2021_compare_spur.toml",
-                            io::feRotorSchema(), overrides);
+config::Config exampleConfig(std::vector<std::string> overrides = {}) {
+  return config::loadConfigFile(GEARDYN_SOURCE_DIR "/examples/rotor_visnadi2021_compare_spur.toml",
+                                config::feRotorSchema(), overrides);
 }
 
 /// Mesh-order amplitudes (orders 1–10) of the steady bearing accelerations (first bearing of
@@ -33,10 +33,10 @@ struct Response {
   double change = 0.0;
 };
 
-Response respond(const io::Config& config, const std::string& stiffness) {
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config, stiffness);
+Response respond(const config::Config& config, const std::string& stiffness) {
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config, stiffness);
   const FeGearedRotor model(build.spec);
-  FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.channels.clear();
   for (int s = 0; s < 2; ++s)
     for (int d : {kUy, kUz}) o.channels.push_back(model.dofIndex(s, 0, d));
@@ -91,8 +91,8 @@ TEST(VisnadiCompare, QualitativeFindingsOfThePaperHold) {
   for (int c = 0; c < 2; ++c) {
     const double helix = c == 0 ? 0.0 : 5.0;
     SCOPED_TRACE(helix);
-    const io::Config config = exampleConfig({fmt::format("pinion.helix_angle_deg={}", helix),
-                                             fmt::format("gear.helix_angle_deg={}", -helix)});
+    const config::Config config = exampleConfig({fmt::format("pinion.helix_angle_deg={}", helix),
+                                                 fmt::format("gear.helix_angle_deg={}", -helix)});
     const Response api = respond(config, "api"), step = respond(config, "step");
     const Response sine = respond(config, "fourier"), beam = respond(config, "potential_energy");
     for (const Response* r : {&api, &step, &sine, &beam}) EXPECT_LT(r->change, 1e-6);  // steady
@@ -117,9 +117,9 @@ TEST(VisnadiCompare, QualitativeFindingsOfThePaperHold) {
 // the gear's torsion peaks where the Campbell diagram has the first (mesh-coupled) mode cross the
 // mesh line, to the 2 % that the 20 ms windows (≈ 8 rpm) and the sweep lag allow.
 TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
-  const io::Config config = exampleConfig({"analysis.type=time", "speed.speed_rpm=1200",
-                                           "speed.end_speed_rpm=2000", "time.duration=2.0"});
-  const io::FeRotorBuild build = io::feRotorSpecFromConfig(config);
+  const config::Config config = exampleConfig({"analysis.type=time", "speed.speed_rpm=1200",
+                                               "speed.end_speed_rpm=2000", "time.duration=2.0"});
+  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   const FeGearedRotor model(build.spec);
   std::vector<double> speeds;
   for (int i = 0; i <= 40; ++i) speeds.push_back((1200.0 + 20.0 * i) * kRpm);
@@ -132,7 +132,7 @@ TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
   ASSERT_GT(predicted, 0.0);
   EXPECT_GT(d.modes.front()[0].torsional_fraction, 0.1);  // a mode the mesh can drive
 
-  FeTimeOptions o = io::feTimeOptionsFromConfig(config, model);
+  FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.channels = {model.dofIndex(1, 1, kRx)};
   o.start_from_static = true;  // no start-up transient in the first windows
   const FeTimeResponse r = solveFeRotorTimeResponse(model, o);

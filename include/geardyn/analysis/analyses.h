@@ -10,30 +10,30 @@
 #include <vector>
 
 #include "geardyn/analysis/analysis_result.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/config_schema.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/config_schema.h"
 
 namespace geardyn::analysis {
 
-AnalysisResult geometryAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult stiffnessAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult simulateAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult hbmAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult geometryAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& context);
 /// `rotor` without [model]: Rao 2023's lateral rotor.
-AnalysisResult lateralRotorAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult lateralRotorAnalysis(const config::Config& config, const AnalysisContext& context);
 /// `rotor` with [model] type = "fe_geared_rotor": Visnadi 2021's finite-element rotor.
-AnalysisResult feRotorAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult statsAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult spectrumAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult identifyAnalysis(const io::Config& config, const AnalysisContext& context);
-AnalysisResult ltcaAnalysis(const io::Config& config, const AnalysisContext& context);
+AnalysisResult feRotorAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext& context);
 
 /// The inputs of `train`: its analysis configuration and the gearbox description — the
 /// analysis file itself when the gearbox is inline, else the file it names (TOML, or REXS
 /// imported in memory).
 struct TrainInputs {
-  io::Config analysis;
-  io::Config gearbox;
+  config::Config analysis;
+  config::Config gearbox;
   std::string analysis_source;        ///< the analysis file
   std::string gearbox_source;         ///< the gearbox file (the analysis file when inline)
   std::vector<std::string> warnings;  ///< of a REXS import
@@ -53,10 +53,10 @@ const std::vector<std::string>& analysisNames();
 /// which selects the finite-element `rotor` schema), knowing the other analyses' schemas so
 /// that their sections in the same file are ignored with a note but still spell-checked.
 /// Throws InputError for an unknown name, with a did-you-mean.
-io::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type = "");
+config::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type = "");
 
 /// Runs analysis `name` on a configuration validated with analysisSchema(name, ...).
-AnalysisResult runAnalysis(const std::string& name, const io::Config& config,
+AnalysisResult runAnalysis(const std::string& name, const config::Config& config,
                            const AnalysisContext& context);
 
 }  // namespace geardyn::analysis

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "geardyn/analysis/result_table.h"
-#include "geardyn/io/config.h"
+#include "geardyn/config/config.h"
 #include "geardyn/io/csv_table.h"
 #include "geardyn/io/result_writer.h"
 #include "geardyn/progress.h"
@@ -59,7 +59,7 @@ struct AnalysisResult {
   AnalysisResult() = default;
   /// A result of analysis `command` on `config`: the summary's command, resolved configuration
   /// and configuration source filled in.
-  AnalysisResult(std::string command, const io::Config& config, const AnalysisContext& context);
+  AnalysisResult(std::string command, const config::Config& config, const AnalysisContext& context);
 
   io::RunSummary summary;  ///< command, resolved configuration, seed, status, warnings, results
   std::vector<std::string> table_names;  ///< "time_response.csv", ... in the order written

@@ -6,26 +6,26 @@
 /// rounded up: an estimate errs on the large side.
 
 #include "geardyn/analysis/run_budget.h"
-#include "geardyn/io/config.h"
+#include "geardyn/config/config.h"
 
 namespace geardyn::analysis {
 
 /// simulate (and stats with stats.simulate): solver.steps_per_period × solver.max_periods
 /// steps; output_points_per_period × output_periods samples kept.
-RunEstimate estimateTimeResponse(const io::Config& config);
+RunEstimate estimateTimeResponse(const config::Config& config);
 /// stats: monte_carlo.samples samples, each over monte_carlo.teeth mesh periods.
-RunEstimate estimateMonteCarlo(const io::Config& config, int threads);
+RunEstimate estimateMonteCarlo(const config::Config& config, int threads);
 /// hbm: (2H+1) unknowns, samples_per_period AFT samples, the frequency range over max_step.
-RunEstimate estimateHarmonicBalance(const io::Config& config);
+RunEstimate estimateHarmonicBalance(const config::Config& config);
 /// rotor (Rao): time.samples samples (time and frequency domain, spectra, tables).
-RunEstimate estimateRotorTime(const io::Config& config);
+RunEstimate estimateRotorTime(const config::Config& config);
 /// rotor (finite element, analysis "time"): duration / time_step Newmark steps.
-RunEstimate estimateFeRotorTime(const io::Config& config, int dofs);
+RunEstimate estimateFeRotorTime(const config::Config& config, int dofs);
 /// The estimate of a stage an analysis reports through AnalysisContext::check_budget
 /// ("simulate", "stats_time", "hbm", "rotor_time", "rotor_fe_time" with `size` = DOFs,
 /// "stats_monte_carlo" with `size` = threads); {} for other stages.
-RunEstimate estimateStage(const std::string& stage, long long size, const io::Config& config);
+RunEstimate estimateStage(const std::string& stage, long long size, const config::Config& config);
 /// The estimate of one run of `command` with this configuration ({} when it is small).
-RunEstimate estimateCommand(const std::string& command, const io::Config& config);
+RunEstimate estimateCommand(const std::string& command, const config::Config& config);
 
 }  // namespace geardyn::analysis

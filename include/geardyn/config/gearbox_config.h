@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/io/config.h"
-#include "geardyn/io/config_schema.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/config_schema.h"
 #include "geardyn/system/gear_train.h"
 
 namespace geardyn::config {
@@ -21,14 +21,14 @@ const std::vector<std::string>& gearboxSectionNames();
 /// Adds the gearbox sections ([gearbox], [shafts.<name>], [gears.<name>], [meshes.<name>],
 /// [bearings.<name>], [couplings.<name>], [planetary.<name>], [operating_point],
 /// [mesh_stiffness.*]) to a schema.
-void addGearboxSections(io::ConfigSchema& schema);
+void addGearboxSections(config::ConfigSchema& schema);
 
 /// The schema of a gearbox file on its own (`geardyn schema gearbox`).
-io::ConfigSchema gearboxSchema();
+config::ConfigSchema gearboxSchema();
 
 /// The description in a configuration that holds the gearbox sections. Mesh-stiffness models
 /// are built here for each mesh's pair (InputError naming the key when a model does not apply,
 /// e.g. a potential-energy model on a ring mesh); their warnings are appended.
-GearTrainSpec gearTrainFromConfig(const io::Config& config, std::vector<std::string>& warnings);
+GearTrainSpec gearTrainFromConfig(const config::Config& config, std::vector<std::string>& warnings);
 
 }  // namespace geardyn::config

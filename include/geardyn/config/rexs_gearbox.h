@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/io/config.h"
+#include "geardyn/config/config.h"
 #include "geardyn/io/rexs/rexs_document.h"
 
 namespace geardyn::config {
@@ -64,9 +64,9 @@ RexsImport importRexsFile(const std::filesystem::path& file, const RexsImportOpt
 /// A gearbox file as a validated configuration: TOML read directly, a REXS file imported in
 /// memory first (its load case from `load_case`; the import's warnings appended). `overrides`
 /// are --set strings applied to the gearbox keys.
-io::Config loadGearboxConfig(const std::filesystem::path& file,
-                             const std::vector<std::string>& overrides,
-                             std::optional<int> load_case, std::vector<std::string>& warnings);
+config::Config loadGearboxConfig(const std::filesystem::path& file,
+                                 const std::vector<std::string>& overrides,
+                                 std::optional<int> load_case, std::vector<std::string>& warnings);
 
 /// The gearbox description (a validated gearbox configuration) as REXS JSON, version
 /// kRexsExportVersion: shafts with sections and materials, gears with flanks, parallel stages,
@@ -74,7 +74,7 @@ io::Config loadGearboxConfig(const std::filesystem::path& file,
 /// load case. Importing it gives the same description. What REXS cannot hold (damping, mesh
 /// models, transmission errors, anisotropic bearings, extra masses of shafts) is listed in
 /// `warnings`.
-std::string exportRexsJson(const io::Config& gearbox, std::vector<std::string>& warnings);
+std::string exportRexsJson(const config::Config& gearbox, std::vector<std::string>& warnings);
 
 /// The REXS version export writes: 2.0.0, the current one (its file structure is that of 1.x;
 /// units as in its schema: MPa, kg / dm^3, N mm / rad, deg).

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "geardyn/io/config.h"
-#include "geardyn/io/config_schema.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/config_schema.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
@@ -15,20 +15,20 @@
 namespace geardyn::config {
 
 /// The analysis sections; with `inline_gearbox` also the gearbox sections (gearbox_config.h).
-io::ConfigSchema trainSchema(bool inline_gearbox);
+config::ConfigSchema trainSchema(bool inline_gearbox);
 
 /// Input speed [rad/s] of a section's optional speed_rpm (default: the operating point's).
-double analysisSpeed(const io::Config& analysis, const std::string& section, double operating);
+double analysisSpeed(const config::Config& analysis, const std::string& section, double operating);
 
-TrainModalOptions trainModalOptionsFromConfig(const io::Config& analysis,
+TrainModalOptions trainModalOptionsFromConfig(const config::Config& analysis,
                                               const std::string& section);
-TrainSteadyOptions trainSteadyOptionsFromConfig(const io::Config& analysis);
-TrainTimeOptions trainTimeOptionsFromConfig(const io::Config& analysis);
+TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis);
+TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis);
 
 /// Ascending input speeds [rad/s] of a section with speed_min_rpm, speed_max_rpm (defaults: 0
 /// and 1.5 × the operating speed) and points; InputError naming the keys when the range is
 /// empty or the operating speed is 0 and no maximum is given.
-std::vector<double> speedRangeFromConfig(const io::Config& analysis, const std::string& section,
+std::vector<double> speedRangeFromConfig(const config::Config& analysis, const std::string& section,
                                          double operating, double default_min_fraction);
 
 }  // namespace geardyn::config

@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// Configuration and results of `geardyn stiffness`: the [mesh_stiffness] section and its
+/// per-model subsections, building the requested models for a gear pair, and their JSON / CSV
+/// forms (summary statistics, Fourier coefficients, curves over one mesh period, loaded static
+/// transmission error).
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "geardyn/config/config_schema.h"
+#include "geardyn/config/stiffness_config.h"
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/io/csv_table.h"
+#include "geardyn/models/transmission_error.h"
+#include "geardyn/stiffness/iso6336_stiffness.h"
+#include "geardyn/stiffness/mesh_stiffness.h"
+#include "geardyn/stiffness/potential_energy_stiffness.h"
+
+namespace geardyn::io {
+
+/// results.mesh_stiffness (the primary model) and results.models (every model): mean, min, max,
+/// std, contact ratio, Fourier coefficients; plus the API directional matrix, the ISO factors
+/// and the static transmission error where they apply.
+nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const GearPair& pair,
+                                            const config::MeshStiffnessModels& models);
+
+/// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [time_s,] k_total (primary), k_pair_1..n
+/// (primary), k_<model> for the others, [ste_m].
+CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
+                             const config::MeshStiffnessModels& models);
+
+/// fourier.csv from results.models (stiffnessResultsJson): model, order, cosine, sine,
+/// amplitude, phase_rad, relative_amplitude; order 0 holds the mean.
+CsvTable fourierTable(const nlohmann::ordered_json& results_models);
+
+}  // namespace geardyn::io

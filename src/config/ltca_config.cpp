@@ -1,0 +1,157 @@
+#include "geardyn/config/ltca_config.h"
+
+#include <fmt/format.h>
+
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/stiffness_config.h"
+#include "geardyn/error.h"
+
+namespace geardyn::config {
+
+void addModificationsSection(ConfigSchema& schema) {
+  schema.section("modifications",
+                 "Flank modifications and errors (separations along the line of "
+                 "action).");
+  schema.string("modifications.relief")
+      .choices({"none", "long", "short"})
+      .defaultValue("none")
+      .doc(
+          "tip relief of both gears designed for modifications.design_load: long = over the "
+          "two-pair zone (eps - 1) p_b, short = half of it; amount = one pair's deflection");
+  schema.real("modifications.design_load")
+      .unit("N")
+      .positive()
+      .optional()
+      .doc("F0, the load the relief is designed for (also the baseload of the statistics)");
+  schema.string("modifications.shape").choices({"linear", "parabolic"}).defaultValue("linear");
+  for (const char* gear : {"pinion", "gear"}) {
+    for (const char* end : {"tip", "root"}) {
+      schema.real(fmt::format("modifications.{}_{}_relief", gear, end))
+          .unit("m")
+          .min(0.0)
+          .defaultValue(0.0)
+          .doc(fmt::format("{} {} relief amount (added to a preset)", gear, end));
+      schema.real(fmt::format("modifications.{}_{}_relief_length", gear, end))
+          .unit("m")
+          .min(0.0)
+          .defaultValue(0.0)
+          .doc("its length along the line of action");
+    }
+    schema.real(fmt::format("modifications.{}_crowning", gear))
+        .unit("m")
+        .min(0.0)
+        .defaultValue(0.0)
+        .doc("lead crowning C_beta: separation C_beta (2z/b)^2");
+    schema.real(fmt::format("modifications.{}_slope_error", gear))
+        .unit("m")
+        .defaultValue(0.0)
+        .doc("profile slope error f_Halpha over the active profile");
+    schema.realList(fmt::format("modifications.{}_pitch_errors", gear))
+        .unit("m")
+        .defaultValue(nlohmann::ordered_json::array())
+        .doc("pitch error of each tooth (cyclic)");
+  }
+}
+
+ConfigSchema ltcaSchema() {
+  ConfigSchema schema("ltca",
+                      "Loaded tooth contact analysis: the static transmission error under load "
+                      "with flank modifications, the load sharing, secant and tangent mesh "
+                      "stiffness, a Harris map and Gelman's mean-excitation statistics against "
+                      "load.");
+  schema.string("title").optional().doc("free text describing the study");
+  addGearPairSections(schema, true);
+  schema.section("ltca", "The analysis.");
+  schema.real("ltca.force")
+      .unit("N")
+      .positive()
+      .required()
+      .doc("transmitted force along the line of action (T1 / r_b1)");
+  schema.integer("ltca.positions")
+      .min(8)
+      .max(100000)
+      .defaultValue(200)
+      .doc("mesh positions per period");
+  schema.integer("ltca.periods")
+      .min(1)
+      .max(100000)
+      .defaultValue(1)
+      .doc("mesh periods analysed (pitch errors: the teeth change from period to period)");
+  schema.integer("ltca.slices")
+      .min(1)
+      .max(10000)
+      .defaultValue(1)
+      .doc("face slices per tooth pair (helical gears and crowning need several)");
+  addModificationsSection(schema);
+  schema.section("harris", "Peak-to-peak loaded STE against load.");
+  schema.stringList("harris.compare_reliefs")
+      .choices({"none", "short", "long"})
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc(
+          "also map these tip-relief designs for modifications.design_load (with its shape) on "
+          "the same loads: harris_designs.csv");
+  schema.realList("harris.load_factors")
+      .unit("-")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc(
+          "loads as multiples of the design load (default 0.1 .. 2.0 in 20 steps when one is "
+          "given); empty and no design load: no map");
+  schema.section("statistics", "Gelman's statistics against load (needs a design load).");
+  schema.realList("statistics.load_factors")
+      .unit("-")
+      .defaultValue(nlohmann::ordered_json::array({0.25, 0.5, 0.75, 1.0, 1.25, 1.5}))
+      .doc("a = F/F0");
+  addOutputSection(schema);
+  return schema;
+}
+
+std::shared_ptr<const LoadedToothContact> loadedContactFromConfig(const Config& config,
+                                                                  const GearPair& pair,
+                                                                  int slices) {
+  PotentialEnergyOptions pe;
+  if (config.resolved().contains("mesh_stiffness")) pe = potentialEnergyOptionsFromConfig(config);
+  if (pair.baseHelixAngle() > 0.0) pe.slices = slices;
+  auto k = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
+  return std::make_shared<const LoadedToothContact>(k, pairModificationsFromConfig(config, *k),
+                                                    slices);
+}
+
+PairModifications pairModificationsFromConfig(const Config& config,
+                                              const PotentialEnergyMeshStiffness& stiffness) {
+  const ReliefShape shape = config.string("modifications.shape") == "linear"
+                                ? ReliefShape::kLinear
+                                : ReliefShape::kParabolic;
+  PairModifications m;
+  const std::string relief = config.string("modifications.relief");
+  if (relief != "none") {
+    if (!config.has("modifications.design_load")) {
+      throw InputError("modifications.design_load", "(not set)",
+                       fmt::format("needed by modifications.relief = \"{}\"", relief));
+    }
+    m = designedTipRelief(stiffness, config.real("modifications.design_load"), relief == "long",
+                          shape);
+  }
+  for (const char* gear : {"pinion", "gear"}) {
+    ToothModification& t = std::string(gear) == "pinion" ? m.pinion : m.gear;
+    for (const char* end : {"tip", "root"}) {
+      const double amount = config.real(fmt::format("modifications.{}_{}_relief", gear, end));
+      const double length =
+          config.real(fmt::format("modifications.{}_{}_relief_length", gear, end));
+      if (amount == 0.0 && length == 0.0) continue;
+      Relief& r = std::string(end) == "tip" ? t.tip : t.root;
+      if (r.amount > 0.0) {
+        throw InputError(fmt::format("modifications.{}_{}_relief", gear, end),
+                         fmt::format("{:g}", amount), "conflicts with modifications.relief");
+      }
+      r = {amount, length, shape};
+      r.validate(fmt::format("modifications.{}_{}_relief", gear, end).c_str());
+    }
+    t.crowning = config.real(fmt::format("modifications.{}_crowning", gear));
+    t.profile_slope_error = config.real(fmt::format("modifications.{}_slope_error", gear));
+    t.pitch_errors = config.realList(fmt::format("modifications.{}_pitch_errors", gear));
+  }
+  return m;
+}
+
+}  // namespace geardyn::config

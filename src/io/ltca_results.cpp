@@ -1,0 +1,53 @@
+#include "geardyn/io/ltca_results.h"
+
+#include <fmt/format.h>
+
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/ltca_config.h"
+#include "geardyn/config/output_section.h"
+#include "geardyn/config/stiffness_config.h"
+#include "geardyn/error.h"
+
+namespace geardyn::io {
+
+CsvTable ltcaTable(const std::vector<LoadedContactPoint>& points, double force) {
+  const std::size_t pairs = points.empty() ? 0 : points.front().pair_loads.size();
+  std::vector<std::string> columns{"phase", "ste_m", "no_load_te_m", "secant_stiffness",
+                                   "tangent_stiffness"};
+  for (std::size_t j = 0; j < pairs; ++j) columns.push_back(fmt::format("load_pair_{}", j));
+  for (std::size_t j = 0; j < pairs; ++j) columns.push_back(fmt::format("share_pair_{}", j));
+  CsvTable t(columns);
+  for (const auto& p : points) {
+    std::vector<CsvCell> row{p.phase, p.ste, p.no_load_te, p.secant, p.tangent};
+    for (double load : p.pair_loads) row.push_back(load);
+    for (double load : p.pair_loads) row.push_back(force > 0.0 ? load / force : 0.0);
+    t.addRow(row);
+  }
+  return t;
+}
+
+CsvTable harrisTable(const std::vector<HarrisPoint>& map) {
+  std::vector<std::string> columns{"force_n", "peak_to_peak_m", "mean_m"};
+  const std::size_t h = map.empty() ? 0 : map.front().harmonics.size();
+  for (std::size_t i = 0; i < h; ++i) columns.push_back(fmt::format("harmonic_{}_m", i + 1));
+  CsvTable t(columns);
+  for (const auto& p : map) {
+    std::vector<CsvCell> row{p.force, p.peak_to_peak, p.mean};
+    for (double v : p.harmonics) row.push_back(v);
+    t.addRow(row);
+  }
+  return t;
+}
+
+CsvTable loadStatisticsTable(const std::vector<LoadStatistics>& stats) {
+  CsvTable t({"a", "m1_k", "m1_ef", "d_k", "d_e", "r_ke", "delta_m1_ef", "variable_term_v",
+              "ratio_eq7", "ratio_eq11"});
+  for (const auto& s : stats) {
+    const auto& m = s.statistics;
+    t.addRow({s.a, m.m1_k, m.m1_ef, m.d_k, m.d_e, m.r_ke, m.delta_m1_ef, m.variable_term, m.ratio,
+              m.ratio_eq11});
+  }
+  return t;
+}
+
+}  // namespace geardyn::io
