@@ -69,6 +69,9 @@ def test_columns_are_read_only_views_of_the_result_memory():
     assert isinstance(radius, np.ndarray) and not radius.flags["OWNDATA"]
     assert not radius.flags["WRITEABLE"] and radius.base is not None
     assert result.table("gears")["base_radius_m"].ctypes.data == radius.ctypes.data  # no copy
+    history = geardyn.run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml")
+    frame = history.to_pandas("time_response")  # all-real table: pandas keeps the views
+    assert np.shares_memory(frame["t"].to_numpy(), history.table("time_response")["t"])
     del result  # the view keeps the result alive
     expected = 0.5 * 3e-3 * np.array([25, 30]) * np.cos(np.radians(20.0))
     np.testing.assert_allclose(radius, expected, rtol=1e-12)
