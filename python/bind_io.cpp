@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <optional>
+
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/geometry_config.h"
@@ -15,6 +17,15 @@
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/hbm_results.h"
+#include "geardyn/io/identify_results.h"
+#include "geardyn/io/ltca_results.h"
+#include "geardyn/io/rotor_results.h"
+#include "geardyn/io/simulate_results.h"
+#include "geardyn/io/stats_results.h"
+#include "geardyn/io/stiffness_results.h"
+#include "geardyn/io/sweep_results.h"
 
 namespace py = pybind11;
 
@@ -55,6 +66,18 @@ void bindIo(py::module_& m) {
       py::arg("command"), py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
       "Load and validate a configuration file for a command; returns the fully resolved "
       "configuration (defaults filled in) as a dict. Raises ValueError naming the bad key.");
+  m.def(
+      "config_unit",
+      [](const std::string& command, const std::string& key) -> std::optional<std::string> {
+        for (const auto& schema : {schemaOf(command), schemaOf("rotor_fe")}) {
+          if (const auto* spec = schema.findKey(key)) return spec->unit;
+          if (command != "rotor") break;
+        }
+        return std::nullopt;
+      },
+      py::arg("command"), py::arg("key"),
+      "The unit of configuration key `key` of `command` (\"\" or \"-\" when it has none), or "
+      "None when the command has no such key.");
   m.def(
       "config_reference",
       [](const std::string& command) { return schemaOf(command).referenceMarkdown(); },

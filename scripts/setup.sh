@@ -20,6 +20,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-h5py
   python3-scipy  # bench/rotor_scipy_compare.py only
+  python3-pandas python3-tqdm  # Python results as DataFrames, progress bars
+  python3-setuptools python3-wheel python3-pip python3-venv python3-build python3-pybind11  # pip install .
+  python3-nbconvert python3-ipykernel jupyter-nbconvert  # example notebooks in the tests
   libopenmpi-dev openmpi-bin  # mpirun -n N geardyn sweep
   chromium chromium-driver python3-selenium  # the HTML report's test in headless Chromium
 )

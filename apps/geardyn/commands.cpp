@@ -1,5 +1,6 @@
 /// The table of analysis commands. A new command adds one line here and one *_command.cpp.
 
+#include "analysis_command.h"
 #include "command.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
@@ -13,21 +14,29 @@
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/config/sweep_config.h"
 #include "geardyn/config/train_analysis.h"
+#include "geardyn/io/geometry_results.h"
+#include "geardyn/io/hbm_results.h"
+#include "geardyn/io/identify_results.h"
+#include "geardyn/io/ltca_results.h"
+#include "geardyn/io/rotor_results.h"
+#include "geardyn/io/simulate_results.h"
+#include "geardyn/io/stats_results.h"
+#include "geardyn/io/stiffness_results.h"
+#include "geardyn/io/sweep_results.h"
 
 namespace geardyn::cli {
 
-int runGeometry(const config::Config& config, const CommandOptions& options);
-int runStiffness(const config::Config& config, const CommandOptions& options);
-int runSimulate(const config::Config& config, const CommandOptions& options);
-int runStats(const config::Config& config, const CommandOptions& options);
-int runHbm(const config::Config& config, const CommandOptions& options);
-int runRotor(const config::Config& config, const CommandOptions& options);
-int runFeRotor(const config::Config& config, const CommandOptions& options);
 int runSweep(const CommandOptions& options);
-int runSpectrum(const config::Config& config, const CommandOptions& options);
-int runIdentify(const config::Config& config, const CommandOptions& options);
-int runLtca(const config::Config& config, const CommandOptions& options);
 int runTrain(const CommandOptions& options);
+
+namespace {
+/// The command that runs the library analysis `name` (analysis_command.cpp).
+std::function<int(const config::Config&, const CommandOptions&)> analysisRunner(std::string name) {
+  return [name](const config::Config& config, const CommandOptions& options) {
+    return runLibraryAnalysis(name, config, options);
+  };
+}
+}  // namespace
 
 std::vector<Command> allCommands() {
   Command rotor{
@@ -36,10 +45,7 @@ std::vector<Command> allCommands() {
       "frequency domain, full spectra, probe records, study) or, with [model] type = "
       "\"fe_geared_rotor\", the finite-element two-shaft rotor of Visnadi 2021 (Newmark, run-up, "
       "modal, Campbell, mesh-stiffness comparison)",
-      config::rotorSchema, [](const config::Config& config, const CommandOptions& options) {
-        return config.resolved().contains("model") ? runFeRotor(config, options)
-                                                   : runRotor(config, options);
-      }};
+      config::rotorSchema, analysisRunner("rotor")};
   rotor.schema_for_file = [](const std::filesystem::path& file) {
     return config::peekConfigString(file, "model.type") == "fe_geared_rotor"
                ? config::feRotorSchema()
@@ -61,37 +67,37 @@ std::vector<Command> allCommands() {
   train.variant_schemas = {config::gearboxSchema};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",
-       config::geometrySchema, runGeometry},
+       config::geometrySchema, analysisRunner("geometry")},
       {"stiffness",
        "mesh stiffness over a mesh period: API, step, Fourier, potential energy, ISO 6336; "
        "statistics, Fourier coefficients, loaded transmission error",
-       config::stiffnessSchema, runStiffness},
+       config::stiffnessSchema, analysisRunner("stiffness")},
       {"simulate",
        "time integration of the gear-pair model (Newmark, Dormand-Prince) to its steady state: "
        "transmission error, mesh force, harmonics, contact loss",
-       config::simulateSchema, runSimulate},
+       config::simulateSchema, analysisRunner("simulate")},
       {"stats",
        "statistics of the dynamic mean excitation (Gelman 2005): mean excitation ratio R from "
        "the model or from moments, with a simulated check",
-       config::statsSchema, runStats},
+       config::statsSchema, analysisRunner("stats")},
       {"hbm",
        "harmonic-balance forced response (AFT) continued in frequency through folds, with Hill "
        "stability and Newmark checks",
-       config::hbmSchema, runHbm},
+       config::hbmSchema, analysisRunner("hbm")},
       rotor,
       train,
       {"spectrum",
        "full spectra of probe records (CSV, WAV, HDF5) with a keyphasor: whole cycles, phase "
        "compensation, forward/backward whirl peaks of a gear pair",
-       config::spectrumSchema, runSpectrum},
+       config::spectrumSchema, analysisRunner("spectrum")},
       {"identify",
        "gear-mesh DTE parameters (k_m, e_m, c_m, TE harmonics, runouts) from full-spectrum whirl "
        "peaks: the thesis's three-step algorithm or a joint estimator with 95 % intervals",
-       config::identifySchema, runIdentify},
+       config::identifySchema, analysisRunner("identify")},
       {"ltca",
        "loaded tooth contact analysis with flank modifications: loaded STE, load sharing, "
        "secant/tangent stiffness, Harris map, Gelman statistics against load",
-       config::ltcaSchema, runLtca},
+       config::ltcaSchema, analysisRunner("ltca")},
       sweep,
   };
 }

@@ -13,7 +13,9 @@
 #include <map>
 #include <thread>
 
+#include "analysis_command.h"
 #include "command.h"
+#include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/config/sweep_config.h"
@@ -22,10 +24,11 @@
 #include "geardyn/io/sweep_results.h"
 #include "plotting.h"
 #include "progress.h"
-#include "run_estimates.h"
 #include "sweep_runner.h"
 
 namespace geardyn::cli {
+using analysis::estimateCommand;
+using analysis::formatDuration;
 namespace fs = std::filesystem;
 namespace {
 

@@ -30,6 +30,7 @@ print(f"{len(factors)} cases: dynamic factor {mean:.4f} ± "
 assert len(factors) == 64 and 1.0 < mean < 2.0
 again = geardyn.sweep(study, plots=False).table("sweep")["dynamic_factor"]
 assert list(again) == list(table["dynamic_factor"])  # same seed, same numbers
-png = pathlib.Path(tempfile.mkdtemp()) / "dynamic_factor.png"
-geardyn.plot.plot_histograms([factors], ["dynamic factor"], "Monte Carlo: gear pair", png)
-assert png.exists()
+with tempfile.TemporaryDirectory(prefix="geardyn-example-") as folder:
+    png = pathlib.Path(folder) / "dynamic_factor.png"
+    geardyn.plot.plot_histograms([factors], ["dynamic factor"], "Monte Carlo: gear pair", png)
+    assert png.exists()

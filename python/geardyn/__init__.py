@@ -1,7 +1,13 @@
 """geardyn: gear-pair and geared-rotor dynamics.
 
 From gear geometry to mesh stiffness, dynamic response, spectra and identification. The compiled
-core lives in ``geardyn._geardyn``; this package re-exports it and adds helpers (``plot``).
+core lives in ``geardyn._geardyn``; this package re-exports it and adds ``run`` (every analysis,
+in-process, results as numpy arrays and pandas DataFrames) and ``plot``.
+
+>>> r = run("geometry", pinion=Gear(teeth=25, module=3e-3, face_width=0.02),
+...         gear=Gear(teeth=30, module=3e-3, face_width=0.02))
+>>> r.to_pandas("gears").attrs["units"]["base_radius_m"]
+'m'
 
 >>> import geardyn
 >>> pinion = geardyn.Gear(teeth=25, module=3e-3, face_width=0.02)
@@ -11,6 +17,8 @@ core lives in ``geardyn._geardyn``; this package re-exports it and adds helpers 
 """
 
 from ._geardyn import (  # noqa: F401  (re-exported API)
+    AnalysisResult,
+    ConfigError,
     ConstantMeshStiffness,
     FeGearedRotor,
     FeTimeResponse,
@@ -37,7 +45,21 @@ from ._geardyn import (  # noqa: F401  (re-exported API)
     roll_angle_from_mesh_phase,
 )
 
-from .run import Result, run, sweep, to_toml  # noqa: F401,E402
+from . import _errors, _geardyn  # noqa: E402
+from ._cli import FolderResult, to_toml  # noqa: F401,E402
+from .analysis import COMMANDS, run, sweep  # noqa: F401,E402
+from .results import Result  # noqa: F401,E402
+
+# Keyword-argument errors in Python terms (missing, unknown with a did-you-mean).
+for _name in dir(_geardyn):
+    _obj = getattr(_geardyn, _name)
+    if _name.startswith("_") or _name in ("AnalysisResult", "ConfigError"):
+        continue
+    if isinstance(_obj, type) and "__init__" in vars(_obj):
+        _errors.check_class(_obj)
+    elif callable(_obj) and not isinstance(_obj, type) and _name in globals():
+        globals()[_name] = _errors.checked_function(_obj, _name)
+del _name, _obj
 
 MESH_STIFFNESS_MODELS = ("potential_energy", "api", "step", "fourier", "iso6336")
 
@@ -90,6 +112,7 @@ def _no_options(model, options):
 
 
 __all__ = [
+    "COMMANDS", "ConfigError", "FolderResult", "Result", "run", "sweep", "to_toml",
     "ConstantMeshStiffness", "FourierMeshStiffness", "Gear", "GearGeometry", "GearPair",
     "MeshStiffness", "PotentialEnergyMeshStiffness", "StepMeshStiffness", "__version__",
     "api_directional_stiffness", "api_mesh_stiffness", "config_reference", "iso6336_stiffness",

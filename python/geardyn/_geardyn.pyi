@@ -6,6 +6,38 @@ import numpy
 
 __version__: str
 
+class AnalysisResult:
+    """The in-memory result of one analysis (geardyn.run wraps it in geardyn.Result)."""
+    def __init__(self, *args: Any, **kwargs: Any) -> Any: ...
+    def columns(self: AnalysisResult, table: str) -> dict:
+        """The columns of a table as {name: numpy array} (read-only views of the result's memory: no copy) or {name: list of str} for text columns."""
+        ...
+    @property
+    def command(self) -> str: ...
+    @property
+    def errors(self) -> list[str]: ...
+    @property
+    def numerical_failure(self) -> bool: ...
+    @property
+    def report(self) -> str: ...
+    def save(self: AnalysisResult, folder: str) -> str:
+        """Writes the result folder as the CLI does (tables, summary.json; no plots); returns the path of summary.json."""
+        ...
+    @property
+    def status(self) -> str: ...
+    def summary_json(self: AnalysisResult) -> str:
+        """summary.json of the result (version, resolved configuration, seed, status, warnings, results) as JSON text"""
+        ...
+    @property
+    def table_names(self) -> list[str]: ...
+    @property
+    def wall_time_s(self) -> float: ...
+    @property
+    def warnings(self) -> list[str]: ...
+
+class ConfigError:
+    """Bad input: a configuration key or argument. A ValueError with .key (dotted key or argument name), .value (as given) and .allowed (what would be accepted)."""
+
 class ConstantMeshStiffness:
     """A constant mesh stiffness (API, ISO 6336 mean)."""
     def __init__(self: ConstantMeshStiffness, name: str, value: float, contact_ratio: float) -> None: ...
@@ -298,6 +330,14 @@ class StepMeshStiffness:
     @property
     def k_min(self) -> float: ...
 
+def analysis_names() -> list[str]:
+    """The analyses geardyn.run runs in-process."""
+    ...
+
+def analyze(command: str, *, path: str = '', text: str = '', source: str = '<dict>', model_type: str = '', overrides: list[str] = [], threads: int = 0, progress: object = None, warn: object = None) -> AnalysisResult:
+    """Runs analysis `command` in-process on a configuration file (`path`) or TOML `text`; the GIL is released while it runs. `progress(label, unit, done, total)` is called at most every 0.1 s; Ctrl-C raises KeyboardInterrupt. Returns an AnalysisResult."""
+    ...
+
 def api_directional_stiffness(k_prime: float, pressure_angle_deg: float = 20.0, loading: str = 'down', rotation: str = 'clockwise') -> numpy.ndarray:
     """2x2 [[Kxx, Kxy], [Kyx, Kyy]] of Visnadi eqs. 1-4, 6 [N/m]"""
     ...
@@ -308,6 +348,10 @@ def api_mesh_stiffness(face_width: float, helix_angle_deg: float = 0.0) -> float
 
 def config_reference(command: str) -> str:
     """The configuration reference of a command, as Markdown."""
+    ...
+
+def config_unit(command: str, key: str) -> Optional[str]:
+    """The unit of configuration key `key` of `command` ("" or "-" when it has none), or None when the command has no such key."""
     ...
 
 def full_spectrum(x: numpy.ndarray, y: numpy.ndarray, sample_rate: float, window: str = 'rectangular') -> tuple:

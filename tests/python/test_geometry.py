@@ -68,7 +68,7 @@ def test_bad_input_raises_value_error_naming_the_argument():
         standard_pair(25, 30, 3e-3, centre_distance=0.07)
     with pytest.raises(ValueError, match="driver"):
         standard_pair(25, 30, 3e-3, driver="motor")
-    with pytest.raises(ValueError, match="no such configuration file"):
+    with pytest.raises(FileNotFoundError, match="no such configuration file"):
         geardyn.GearPair.from_config("/nonexistent.toml")
 
 

@@ -21,6 +21,8 @@ class CsvTable {
 
   const std::vector<std::string>& columns() const noexcept { return columns_; }
   std::size_t rows() const noexcept { return rows_.size(); }
+  /// Row `i` (< rows()), one cell per column.
+  const std::vector<CsvCell>& row(std::size_t i) const { return rows_.at(i); }
   /// RFC 4180 text: comma separated, text quoted when it holds a comma, quote or newline.
   std::string toString() const;
 

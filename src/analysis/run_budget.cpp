@@ -1,19 +1,18 @@
 /// Memory limit and the up-front resource check of CLI runs (see run_budget.h).
 
-#include "run_budget.h"
+#include "geardyn/analysis/run_budget.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <iostream>
 #include <limits>
 #include <sstream>
 
 #include "geardyn/error.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
 double memoryLimitBytes() {
   if (const char* env = std::getenv("GEARDYN_MEMORY_LIMIT")) {
@@ -49,8 +48,7 @@ std::string formatDuration(double seconds) {
   return fmt::format("{:.3g} years", seconds / (365.25 * 86400));
 }
 
-void checkRunEstimate(const RunEstimate& estimate, const CommandOptions& options,
-                      const std::string& label) {
+std::string checkRunEstimate(const RunEstimate& estimate, const std::string& label) {
   const double limit = memoryLimitBytes();
   if (estimate.bytes > limit) {
     throw InputError(
@@ -62,13 +60,14 @@ void checkRunEstimate(const RunEstimate& estimate, const CommandOptions& options
                         ? "GEARDYN_MEMORY_LIMIT"
                         : fmt::format("{:.0f} % of MemAvailable", 100 * kMemoryFraction)));
   }
-  if (estimate.seconds > kLongRunSeconds && !options.quiet) {
-    std::cerr << fmt::format(
+  if (estimate.seconds > kLongRunSeconds) {
+    return fmt::format(
         "{}: note: this run is estimated to take up to {} ({} = {}; {}) and about {} of "
         "memory; proceeding\n",
         label, formatDuration(estimate.seconds), estimate.key, estimate.value, estimate.basis,
         formatBytes(estimate.bytes));
   }
+  return "";
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

@@ -1,16 +1,7 @@
-"""Every analysis command from Python: ``geardyn.run(command, config)``.
-
-``config`` is a TOML file or a nested dict with the configuration keys of the command (the same
-names as in the files and ``geardyn schema COMMAND``). The run goes through the ``geardyn``
-executable, so it is exactly the command-line analysis, with its validation, result files and
-plots. Bad input raises ``ValueError`` (with the key, value and allowed range); a numerical
-failure raises ``RuntimeError`` unless ``check=False``, with the result attached.
-
->>> import geardyn
->>> result = geardyn.run("stiffness", "examples/stiffness_visnadi2021_spur.toml",
-...                      overrides={"mesh_stiffness.models": ["api"]})      # doctest: +SKIP
->>> result.results["mesh_stiffness"]["mean"]                                # doctest: +SKIP
-241140000.0
+"""The ``geardyn`` executable from Python, for the commands that run across processes
+(``sweep``, which may use MPI, and ``train``): ``run_cli(command, config)``. Every other
+analysis runs in-process (geardyn.run, analysis.py). A run without ``out`` goes to a temporary
+folder that is read into memory and removed before run_cli returns.
 """
 
 import csv
@@ -23,15 +14,19 @@ import tempfile
 
 import numpy as np
 
-__all__ = ["Result", "run", "sweep", "cli_path", "to_toml"]
+__all__ = ["FolderResult", "run_cli", "cli_path", "to_toml"]
 
 
 def cli_path():
-    """The geardyn executable: $GEARDYN_CLI, the build tree beside this package
-    (build/python/geardyn -> build/bin/geardyn), or `geardyn` on PATH."""
+    """The geardyn executable: $GEARDYN_CLI, the one installed in this package (pip), the
+    build tree beside this package (build/python/geardyn -> build/bin/geardyn), or `geardyn`
+    on PATH."""
     override = os.environ.get("GEARDYN_CLI")
     if override:
         return override
+    installed = pathlib.Path(__file__).resolve().parent / "geardyn-cli"
+    if installed.exists():
+        return str(installed)
     beside = pathlib.Path(__file__).resolve().parents[2] / "bin" / "geardyn"
     if beside.exists():
         return str(beside)
@@ -80,11 +75,12 @@ def to_toml(config):
     return "\n".join(lines) + "\n"
 
 
-class Result:
-    """A finished run: its folder, summary (dict), results (dict) and tables (CSV files as
-    {column: numpy array}, read on first access)."""
+class FolderResult:
+    """A finished command-line run: its summary (dict), results (dict) and tables (CSV files
+    as {column: numpy array}). When the run went to a temporary folder, everything is read
+    into memory and the folder is removed (``folder`` is then None)."""
 
-    def __init__(self, folder, returncode, stdout, stderr):
+    def __init__(self, folder, returncode, stdout, stderr, keep=True):
         self.folder = pathlib.Path(folder)
         self.returncode = returncode
         self.stdout = stdout
@@ -93,17 +89,30 @@ class Result:
         self.summary = json.loads(summary_path.read_text()) if summary_path.exists() else {}
         self.results = self.summary.get("results", {})
         self.status = self.summary.get("status")
+        self.command = self.summary.get("command")
         self._tables = {}
+        if not keep:
+            for name in self.files:
+                if name.endswith(".csv"):
+                    self.table(name)
+            self.folder = None
 
     @property
     def files(self):
         return self.summary.get("files", [])
 
-    def table(self, name):
+    @property
+    def tables(self):
+        return [f[:-4] for f in self.files if f.endswith(".csv")]
+
+    def table(self, name=None):
         """A CSV result file as {column: numpy array} (numbers as float arrays, text as str)."""
+        name = name or self.tables[0]
+        name = name if name.endswith(".csv") else name + ".csv"
         if name not in self._tables:
-            path = self.folder / (name if name.endswith(".csv") else name + ".csv")
-            with open(path, newline="") as handle:
+            if self.folder is None:
+                raise KeyError(f"no table {name!r}; the result has {', '.join(self.tables)}")
+            with open(self.folder / name, newline="") as handle:
                 rows = list(csv.DictReader(handle))
             columns = {}
             for column in (rows[0].keys() if rows else []):
@@ -115,16 +124,38 @@ class Result:
             self._tables[name] = columns
         return self._tables[name]
 
+    def to_pandas(self, name=None):
+        """A table as a DataFrame, ``.attrs["units"]`` as for geardyn.Result."""
+        import pandas as pd
+
+        from ._units import sweep_units, unit_of
+
+        name = (name or self.tables[0]).removesuffix(".csv")
+        columns = self.table(name)
+        frame = pd.DataFrame(columns)
+        if self.command == "sweep" and name == "sweep":
+            units = sweep_units(self.summary.get("config"), columns)
+        else:
+            units = {c: (None if v.dtype.kind in "USO" else unit_of(name, c))
+                     for c, v in columns.items()}
+            units = {c: ("?" if u is None and columns[c].dtype.kind not in "USO" else u)
+                     for c, u in units.items()}
+        frame.attrs["units"] = units
+        frame.attrs["table"] = name
+        return frame
+
     def __repr__(self):
-        return f"Result(folder={str(self.folder)!r}, status={self.status!r})"
+        where = str(self.folder) if self.folder else "(in memory)"
+        return f"<geardyn {self.command} result: status {self.status}, folder {where}>"
 
 
-def run(command, config, out=None, overrides=None, threads=None, check=True, plots=None,
+def run_cli(command, config, out=None, overrides=None, threads=None, check=True, plots=None,
         resume=False, timeout=None, overwrite=False):
-    """Runs `geardyn COMMAND` on a configuration file or dict and returns a Result.
+    """Runs the `geardyn COMMAND` executable on a configuration file or dict and returns a
+    FolderResult (``geardyn.run`` uses it for `sweep` and `train`).
 
     - ``overrides``: {"section.key": value} or ["section.key=value", ...] (as --set).
-    - ``out``: the result folder (default: a new temporary folder).
+    - ``out``: the result folder (default: a temporary folder, read into memory and removed).
     - ``plots``: True/False to force output.plots.
     - ``threads``: worker threads (default: all cores).
     - ``resume`` / ``overwrite`` (sweep): continue, or discard, the journal of a previous sweep
@@ -142,6 +173,7 @@ def run(command, config, out=None, overrides=None, threads=None, check=True, plo
         path.write_text(to_toml(config))
     else:
         path = pathlib.Path(config)
+    keep = out is not None
     if out is None:
         out = tempfile.mkdtemp(prefix=f"geardyn-{command}-")
     args = [cli_path(), command, str(path), "--out", str(out), "--quiet"]
@@ -160,26 +192,25 @@ def run(command, config, out=None, overrides=None, threads=None, check=True, plo
         args.append("--resume")
     if overwrite:
         args.append("--overwrite")
-    done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
-    if work:
-        shutil.rmtree(work, ignore_errors=True)
+    try:
+        done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+        result = FolderResult(out, done.returncode, done.stdout, done.stderr, keep=keep)
+    finally:
+        if work:
+            shutil.rmtree(work, ignore_errors=True)
+        if not keep:
+            shutil.rmtree(out, ignore_errors=True)
     message = done.stderr.strip().splitlines()[-1] if done.stderr.strip() else ""
     if done.returncode == 2:
-        raise ValueError(message or f"geardyn {command}: bad input")
+        from ._geardyn import ConfigError
+
+        raise ConfigError(message or f"geardyn {command}: bad input")
     if done.returncode in (3,):
         raise OSError(message)
     if done.returncode == 4:
         raise RuntimeError(message)
-    result = Result(out, done.returncode, done.stdout, done.stderr)
     if done.returncode == 1 and check:
         error = RuntimeError(f"geardyn {command}: {result.status}: {message}")
         error.result = result
         raise error
     return result
-
-
-def sweep(study, out=None, threads=None, resume=False, check=True, plots=None, overwrite=False):
-    """`geardyn sweep`: ``study`` is a sweep file or a dict {"study": {...}} (see
-    docs/config/sweep.md); returns a Result whose ``table("sweep")`` has one row per case."""
-    return run("sweep", study, out=out, threads=threads, resume=resume, check=check, plots=plots,
-               overwrite=overwrite)

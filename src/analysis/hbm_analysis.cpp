@@ -1,25 +1,19 @@
-/// `geardyn hbm CONFIG`: harmonic-balance forced response swept in frequency.
+/// `hbm`: harmonic-balance forced response swept in frequency.
 
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <numbers>
 
-#include "command.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/hbm_config.h"
-#include "geardyn/config/output_section.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/hbm_results.h"
-#include "geardyn/io/result_writer.h"
 #include "geardyn/io/simulate_results.h"
-#include "plotting.h"
-#include "progress.h"
-#include "run_estimates.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 namespace {
 
 /// p2p of the stable branches of one sweep at frequency f (linear interpolation between
@@ -39,8 +33,8 @@ std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f)
 
 }  // namespace
 
-int runHbm(const config::Config& config, const CommandOptions& options) {
-  checkRunEstimate(estimateHarmonicBalance(config), options, "hbm");
+AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& context) {
+  context.checkBudget("hbm");
   const config::GearPairModelBuild build = config::buildGearPairModel(config, false);
   std::vector<std::string> warnings = build.warnings;
   const GearPairModel model(build.spec);
@@ -86,13 +80,13 @@ int runHbm(const config::Config& config, const CommandOptions& options) {
     if (direction != "both" && direction != which) continue;
     sweep.start = (which == "up" ? start : stop) * scale;
     sweep.stop = (which == "up" ? stop : start) * scale;
-    ProgressReporter progress("hbm: sweep " + which, "", ProgressReporter::enabledFor(options));
-    sweep.progress = progress.callback();
+    sweep.progress = context.progressFor("hbm: sweep " + which, "");
     runs.emplace_back(which, continueInFrequency(hbm, sweep));
   }
 
   const double sweep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  AnalysisResult result("hbm", config, context);
   std::vector<io::SweepRow> rows;
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
   nlohmann::ordered_json bifurcations = nlohmann::ordered_json::array();
@@ -121,13 +115,10 @@ int runHbm(const config::Config& config, const CommandOptions& options) {
                      {"folds", run.folds.size()},
                      {"step_cuts", run.failures},
                      {"message", run.message}};
-    if (!run.completed) std::cerr << "geardyn hbm: sweep " << which << ": " << run.message << "\n";
+    if (!run.completed) result.errors.push_back("sweep " + which + ": " + run.message);
   }
 
-  io::RunSummary summary;
-  summary.command = "hbm";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
+  io::RunSummary& summary = result.summary;
   summary.status = completed ? "ok" : "incomplete_sweep";
   nlohmann::ordered_json peak;
   for (const auto& r : rows) {
@@ -147,8 +138,7 @@ int runHbm(const config::Config& config, const CommandOptions& options) {
                      {"samples_per_period", hbm_options.samples_per_period},
                      {"natural_frequency", build.natural_frequency / scale}};
 
-  io::ResultWriter writer(options.resultFolder());
-  writer.writeCsv("sweep.csv", io::sweepTable(rows, hbm_options.harmonics));
+  result.addTable("sweep.csv", io::sweepTable(rows, hbm_options.harmonics));
 
   // Newmark checks at requested frequencies.
   const auto newmark_frequencies = config.realList("sweep.newmark_frequencies");
@@ -179,7 +169,7 @@ int runHbm(const config::Config& config, const CommandOptions& options) {
                                                           : nlohmann::ordered_json(difference)},
            {"status", toString(r.status)}});
     }
-    writer.writeCsv("newmark.csv", table);
+    result.addTable("newmark.csv", table);
     summary.results["newmark_checks"] = checks;
   }
 
@@ -220,25 +210,21 @@ int runHbm(const config::Config& config, const CommandOptions& options) {
                       x[k], y, force[k], y != 0.0 ? force[k] / y : 0.0});
       }
       const std::string name = fmt::format("period_{}_{}.csv", detail++, rows[i].sweep);
-      writer.writeCsv(name, table);
+      result.addTable(name, table);
       summary.results["details"].push_back(
           {{"file", name}, {"frequency", f}, {"stable", point.stable}, {"p2p", p2p}});
     }
   }
 
   summary.warnings = warnings;
-  for (const auto& warning : warnings) warn(warning);
-  auto path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& file : drawPlots("hbm", writer.folder())) writer.recordFile(file);
-    path = writer.writeSummary(summary);
-  }
+  for (const auto& warning : warnings) context.warning(warning);
   // Printed values carry the unit of the configuration (nondimensional models: none).
   const std::string length_unit = build.nondimensional ? "" : " m";
   const std::string frequency_unit = build.nondimensional ? "" : " Hz";
-  std::string text = fmt::format(
-      "harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
-      hbm_options.harmonics, hbm_options.samples_per_period, points, folds.size(), failures);
+  std::string& text = result.report;
+  text = fmt::format("harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
+                     hbm_options.harmonics, hbm_options.samples_per_period, points, folds.size(),
+                     failures);
   if (!peak.is_null()) {
     text += fmt::format("  peak p2p {:.6g}{} at {:.6g}{}\n", peak["p2p"].get<double>(), length_unit,
                         peak["frequency"].get<double>(), frequency_unit);
@@ -248,9 +234,8 @@ int runHbm(const config::Config& config, const CommandOptions& options) {
                         b["sweep"].get<std::string>(), b["frequency"].get<double>(), frequency_unit,
                         b["p2p"].get<double>(), length_unit);
   }
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return completed ? kExitOk : kExitNumericalFailure;
+  result.numerical_failure = !completed;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

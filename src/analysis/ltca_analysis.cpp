@@ -1,24 +1,22 @@
-/// `geardyn ltca CONFIG`: loaded tooth contact analysis, Harris map and Gelman's statistics
+/// `ltca CONFIG`: loaded tooth contact analysis, Harris map and Gelman's statistics
 /// against load.
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
-#include <iostream>
 
-#include "command.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/ltca_config.h"
-#include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
+#include "geardyn/io/geometry_results.h"
 #include "geardyn/io/ltca_results.h"
-#include "geardyn/io/result_writer.h"
-#include "plotting.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
-int runLtca(const config::Config& config, const CommandOptions& options) {
+AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext& context) {
+  AnalysisResult result("ltca", config, context);
   const GearPair pair(config::gearPairSpecFromConfig(config));
   const int slices = static_cast<int>(config.integer("ltca.slices"));
   PotentialEnergyOptions pe;
@@ -29,19 +27,15 @@ int runLtca(const config::Config& config, const CommandOptions& options) {
   const double force = config.real("ltca.force");
   const int positions = static_cast<int>(config.integer("ltca.positions"));
 
-  io::RunSummary summary;
-  summary.command = "ltca";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
+  io::RunSummary& summary = result.summary;
   summary.warnings = stiffness->warnings();
-  io::ResultWriter writer(options.resultFolder());
 
   const auto start = std::chrono::steady_clock::now();
   const auto points =
       contact.sweep(force, positions, static_cast<int>(config.integer("ltca.periods")));
   const double sweep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writer.writeCsv("ltca.csv", io::ltcaTable(points, force));
+  result.addTable("ltca.csv", io::ltcaTable(points, force));
   const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
                                             [](auto& a, auto& b) { return a.ste < b.ste; });
   double mean_tangent = 0.0;
@@ -74,7 +68,7 @@ int runLtca(const config::Config& config, const CommandOptions& options) {
     const auto map = harrisMap(contact, loads, positions);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    writer.writeCsv("harris.csv", io::harrisTable(map));
+    result.addTable("harris.csv", io::harrisTable(map));
     const auto best = std::min_element(
         map.begin(), map.end(), [](auto& a, auto& b) { return a.peak_to_peak < b.peak_to_peak; });
     summary.results["harris"] = {{"loads", loads.size()},
@@ -111,7 +105,7 @@ int runLtca(const config::Config& config, const CommandOptions& options) {
         text += fmt::format("  design {}: minimum {:.4g} um at {:.4g} N\n", name,
                             1e6 * low->peak_to_peak, low->force);
       }
-      writer.writeCsv("harris_designs.csv", table);
+      result.addTable("harris_designs.csv", table);
       summary.results["harris"]["designs"] = minima;
     }
   }
@@ -119,7 +113,7 @@ int runLtca(const config::Config& config, const CommandOptions& options) {
     double k_bar = 0.0;
     const auto stats = meanExcitationAgainstLoad(
         contact, *design, config.realList("statistics.load_factors"), positions, &k_bar);
-    writer.writeCsv("load_statistics.csv", io::loadStatisticsTable(stats));
+    result.addTable("load_statistics.csv", io::loadStatisticsTable(stats));
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (const auto& s : stats) {
       rows.push_back({{"a", s.a},
@@ -132,15 +126,9 @@ int runLtca(const config::Config& config, const CommandOptions& options) {
                                      {"mean_tangent_stiffness_at_design_load", k_bar},
                                      {"loads", rows}};
   }
-  auto path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& f : drawPlots("ltca", writer.folder())) writer.recordFile(f);
-    path = writer.writeSummary(summary);
-  }
-  for (const auto& w : summary.warnings) warn(w);
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return kExitOk;
+  for (const auto& w : summary.warnings) context.warning(w);
+  result.report = text;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

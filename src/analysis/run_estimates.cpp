@@ -2,14 +2,14 @@
 /// per-item costs measured with a Release build on the 2-core reference machine (ns per step,
 /// bytes per kept sample, including the CSV tables and summaries built from them), rounded up.
 
-#include "run_estimates.h"
+#include "geardyn/analysis/run_estimates.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 namespace {
 
 // Measured with the Release build on the 2-core reference machine while two other builds ran
@@ -148,6 +148,15 @@ RunEstimate estimateFeRotorTime(const config::Config& config, int dofs) {
   return e;
 }
 
+RunEstimate estimateStage(const std::string& stage, long long size, const config::Config& config) {
+  if (stage == "simulate" || stage == "stats_time") return estimateTimeResponse(config);
+  if (stage == "hbm") return estimateHarmonicBalance(config);
+  if (stage == "rotor_time") return estimateRotorTime(config);
+  if (stage == "rotor_fe_time") return estimateFeRotorTime(config, static_cast<int>(size));
+  if (stage == "stats_monte_carlo") return estimateMonteCarlo(config, static_cast<int>(size));
+  return {};
+}
+
 RunEstimate estimateCommand(const std::string& command, const config::Config& config) {
   if (command == "simulate") return estimateTimeResponse(config);
   if (command == "stats" && config.string("stats.source") == "model" &&
@@ -158,4 +167,4 @@ RunEstimate estimateCommand(const std::string& command, const config::Config& co
   return {};
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

@@ -1,26 +1,20 @@
-/// `geardyn rotor CONFIG`: the lateral geared rotor of Rao 2023 in time and frequency domain,
+/// `rotor` (no [model]): the lateral geared rotor of Rao 2023 in time and frequency domain,
 /// its full spectra, simulated probe records and the parametric study of §4.5.
 
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <numbers>
 #include <random>
 
-#include "command.h"
-#include "geardyn/config/output_section.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
-#include "geardyn/io/result_writer.h"
 #include "geardyn/io/rotor_results.h"
-#include "plotting.h"
-#include "progress.h"
-#include "run_estimates.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
@@ -122,7 +116,8 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
 
 }  // namespace
 
-int runRotor(const config::Config& config, const CommandOptions& options) {
+AnalysisResult lateralRotorAnalysis(const config::Config& config, const AnalysisContext& context) {
+  AnalysisResult result("rotor", config, context);
   const LateralRotorModel model(config::lateralRotorSpecFromConfig(config));
   const GearPairSpectrumOptions spectrum_options =
       config::gearPairSpectrumOptionsFromConfig(config);
@@ -134,12 +129,8 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
   const double noise = config.real("spectrum.noise_level");
   std::vector<std::string> warnings;
 
-  io::RunSummary summary;
-  summary.command = "rotor";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
+  io::RunSummary& summary = result.summary;
   if (noise > 0.0) summary.seed = seed;
-  io::ResultWriter writer(options.resultFolder());
   const auto& s = model.spec();
   summary.results["frequencies"] = {{"pinion_hz", s.pinion_speed},
                                     {"gear_hz", setup.gearSpeed()},
@@ -164,7 +155,7 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
   const double frequency_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto exact = io::frequencyDomainPeaks(parts, spectrum_options.frame);
-  writer.writeCsv("frequency_components.csv", io::whirlPeaksTable(exact));
+  result.addTable("frequency_components.csv", io::whirlPeaksTable(exact));
   summary.results["frequency_domain"] = {{"wall_time_s", frequency_seconds},
                                          {"peaks", io::whirlPeaksJson(exact)}};
 
@@ -175,11 +166,9 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
   bool ok = true;
   RotorTimeResponse time;
   if (config.boolean("time.enabled")) {
-    checkRunEstimate(estimateRotorTime(config), options, "rotor");
+    context.checkBudget("rotor_time");
     RotorTimeOptions time_options = config::rotorTimeOptionsFromConfig(config);
-    ProgressReporter progress("rotor: time response", "s simulated",
-                              ProgressReporter::enabledFor(options));
-    time_options.progress = progress.callback();
+    time_options.progress = context.progressFor("rotor: time response", "s simulated");
     // Checked before integrating: the grid's rate (snapped to the common period) is within a
     // sample per period of duration/(samples − 1).
     const std::string samples_shown = fmt::format("{} (over time.duration = {:g} s)",
@@ -208,12 +197,12 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
                       static_cast<long long>(static_cast<long long>(k) >= time.window_begin &&
                                              static_cast<long long>(k) < time.window_end)});
     }
-    writer.writeCsv("time_history.csv", history);
+    result.addTable("time_history.csv", history);
     text +=
         fmt::format("  time domain: {} ({} steps, {:.3g} s)\n", time.message, time.steps, seconds);
     if (!time.converged()) {
       ok = false;
-      std::cerr << "geardyn rotor: " << time.message << "\n";
+      result.errors.push_back(time.message);
     } else {
       auto channels = steadyChannels(time);
       if (noise > 0.0) {
@@ -222,8 +211,8 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
       }
       const GearPairSpectrum spectrum = analyseGearPairRecord(
           channels, time.sample_rate, time.t[time.window_begin], 0.0, setup, spectrum_options);
-      writer.writeCsv("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
-      writer.writeCsv("full_spectrum.csv", io::fullSpectrumTable(spectrum.display, max_frequency));
+      result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
+      result.addTable("full_spectrum.csv", io::fullSpectrumTable(spectrum.display, max_frequency));
       // Time domain against the exact solution, component by component.
       double largest = 0.0, amplitude_error = 0.0, phase_error = 0.0;
       for (int sh = 0; sh < 2; ++sh)
@@ -266,7 +255,7 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
       const auto& e = history[k];
       table.addRow({times[k], e(0), e(1), e(2), e(3)});
     }
-    writer.writeCsv("frequency_history.csv", table);
+    result.addTable("frequency_history.csv", table);
   }
 
   // Simulated probe records with a keyphasor.
@@ -316,8 +305,9 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
                           : f == "wav" ? io::RecordFormat::kWav
                                        : io::RecordFormat::kHdf5;
       const std::string name = f == "hdf5" ? "measurement.h5" : fmt::format("measurement.{}", f);
-      io::writeProbeRecord(writer.pathFor(name), format, record);
-      writer.recordFile(name);
+      result.files.push_back({name, [format, record](const std::filesystem::path& path) {
+                                io::writeProbeRecord(path, format, record);
+                              }});
       files.push_back(name);
     }
     summary.results["measurement"] = {{"files", files},
@@ -385,8 +375,8 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
       }
       cases_json.push_back(case_json);
     }
-    writer.writeCsv("study.csv", table);
-    writer.writeCsv("study_totals.csv", totals);
+    result.addTable("study.csv", table);
+    result.addTable("study_totals.csv", totals);
     std::array<nlohmann::ordered_json, 2> rankings;
     std::array<std::string, 2> dominant;
     for (int k = 0; k < 2; ++k) {
@@ -420,12 +410,7 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
 
   summary.status = ok ? "ok" : (time.converged() ? "study_incomplete" : toString(time.status));
   summary.warnings = warnings;
-  for (const auto& w : warnings) warn(w);
-  auto path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& file : drawPlots("rotor", writer.folder())) writer.recordFile(file);
-    path = writer.writeSummary(summary);
-  }
+  for (const auto& w : warnings) context.warning(w);
   for (int sh = 0; sh < 2; ++sh) {
     double mesh1 = 0.0;
     for (const auto& c : exact[sh])
@@ -433,9 +418,9 @@ int runRotor(const config::Config& config, const CommandOptions& options) {
     text += fmt::format("  {} shaft: static |z| {:.4g} m, largest 1st-mesh whirl {:.4g} m\n",
                         io::kShaftNames[sh], std::abs(exact[sh].front().value), mesh1);
   }
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return ok ? kExitOk : kExitNumericalFailure;
+  result.report = text;
+  result.numerical_failure = !ok;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

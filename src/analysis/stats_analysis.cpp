@@ -1,28 +1,21 @@
-/// `geardyn stats CONFIG`: Gelman's mean excitation ratio.
+/// `stats CONFIG`: Gelman's mean excitation ratio.
 
 #include <fmt/format.h>
 
-#include <iostream>
 #include <thread>
 
-#include "command.h"
-#include "geardyn/config/output_section.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/config/stats_config.h"
-#include "geardyn/io/result_writer.h"
+#include "geardyn/io/simulate_results.h"
 #include "geardyn/io/stats_results.h"
-#include "plotting.h"
-#include "progress.h"
-#include "run_estimates.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
-int runStats(const config::Config& config, const CommandOptions& options) {
-  io::RunSummary summary;
-  summary.command = "stats";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
-  int exit_code = kExitOk;
+AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext& context) {
+  AnalysisResult result("stats", config, context);
+  io::RunSummary& summary = result.summary;
+  int exit_code = 0;
   std::vector<std::pair<std::string, io::CsvTable>> monte_carlo_tables;
 
   MeanExcitation stats;
@@ -32,11 +25,10 @@ int runStats(const config::Config& config, const CommandOptions& options) {
     stats = config::meanExcitationFromConfigCsv(config);
   } else {
     const int threads =
-        options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+        context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
     if (config.integer("monte_carlo.samples") > 0)
-      checkRunEstimate(estimateMonteCarlo(config, threads), options, "stats");
-    if (config.boolean("stats.simulate"))
-      checkRunEstimate(estimateTimeResponse(config), options, "stats");
+      context.checkBudget("stats_monte_carlo", threads);
+    if (config.boolean("stats.simulate")) context.checkBudget("stats_time");
     const config::GearPairModelBuild build = config::buildGearPairModel(config);
     summary.warnings = build.warnings;
     const GearPairModel model(build.spec);
@@ -46,9 +38,7 @@ int runStats(const config::Config& config, const CommandOptions& options) {
     stats = meanExcitationFromModel(model, baseload);
     if (config.integer("monte_carlo.samples") > 0) {
       MonteCarloOptions mc = config::monteCarloOptionsFromConfig(config, baseload, threads);
-      ProgressReporter progress("stats: Monte Carlo", "samples",
-                                ProgressReporter::enabledFor(options));
-      mc.progress = progress.callback();
+      mc.progress = context.progressFor("stats: Monte Carlo", "samples");
       const auto samples = runMeanExcitationMonteCarlo(model, mc);
       summary.seed = mc.seed;
       summary.results["monte_carlo"] = io::monteCarloJson(mc, samples);
@@ -65,9 +55,7 @@ int runStats(const config::Config& config, const CommandOptions& options) {
             "with contact loss the simulated mean of k·y differs from L_d");
       }
       TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
-      ProgressReporter progress("stats: simulation", "periods of max_periods",
-                                ProgressReporter::enabledFor(options));
-      solver.progress = progress.callback();
+      solver.progress = context.progressFor("stats: simulation", "periods of max_periods");
       const TimeResponse r = solveTimeResponse(model, solver);
       double mean_kx = 0.0;
       for (std::size_t j = 0; j < r.t.size(); ++j) mean_kx += model.stiffness(r.t[j]) * r.x[j];
@@ -80,22 +68,15 @@ int runStats(const config::Config& config, const CommandOptions& options) {
           {"relative_difference", simulated / stats.dynamic_mean_excitation - 1.0}};
       if (!r.converged()) {
         summary.status = toString(r.status);
-        std::cerr << "geardyn stats: simulation " << toString(r.status) << ": " << r.message
-                  << "\n";
-        exit_code = kExitNumericalFailure;
+        result.errors.push_back("simulation " + toString(r.status) + ": " + r.message);
+        exit_code = 1;
       }
     }
   }
-  for (const auto& warning : summary.warnings) warn(warning);
+  for (const auto& warning : summary.warnings) context.warning(warning);
   summary.results["mean_excitation"] = io::toJson(stats);
 
-  io::ResultWriter writer(options.resultFolder());
-  for (const auto& [name, table] : monte_carlo_tables) writer.writeCsv(name, table);
-  auto path = writer.writeSummary(summary);
-  if (!monte_carlo_tables.empty() && config::outputOptionsFromConfig(config).plots) {
-    for (const auto& file : drawPlots("stats", writer.folder())) writer.recordFile(file);
-    path = writer.writeSummary(summary);
-  }
+  for (const auto& [name, table] : monte_carlo_tables) result.addTable(name, table);
   std::string text =
       fmt::format("mean excitation ratio R = {:.6g} (eq. 15: {:.6g}, eq. 11: {:.6g})\n",
                   stats.ratio, stats.ratio_eq15, stats.ratio_eq11);
@@ -118,9 +99,9 @@ int runStats(const config::Config& config, const CommandOptions& options) {
         r["std"].get<double>(), r["q05"].get<double>(), r["q50"].get<double>(),
         r["q95"].get<double>());
   }
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return exit_code;
+  result.report = text;
+  result.numerical_failure = exit_code != 0;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

@@ -1,26 +1,23 @@
-/// `geardyn identify CONFIG`: the gear-mesh DTE parameters from full-spectrum whirl peaks
+/// `identify CONFIG`: the gear-mesh DTE parameters from full-spectrum whirl peaks
 /// (Rao 2023 §4.6–4.7, ch. 5), by the thesis's three-step algorithm or the joint estimator.
 
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <numbers>
 
-#include "command.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/identify_config.h"
-#include "geardyn/config/output_section.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/identify_results.h"
-#include "geardyn/io/result_writer.h"
 #include "geardyn/io/rotor_results.h"
-#include "plotting.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
-int runIdentify(const config::Config& config, const CommandOptions& options) {
+AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisContext& context) {
+  AnalysisResult result("identify", config, context);
   const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
   const LateralRotorSpec known = config::knownRotorFromConfig(config);
   std::vector<io::WhirlSpectrumInput> inputs;
@@ -54,13 +51,9 @@ int runIdentify(const config::Config& config, const CommandOptions& options) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  io::RunSummary summary;
-  summary.command = "identify";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
+  io::RunSummary& summary = result.summary;
   summary.status = r.converged ? "ok" : "not_converged";
-  io::ResultWriter writer(options.resultFolder());
-  writer.writeCsv("identified.csv", io::identifiedTable(r, truth));
+  result.addTable("identified.csv", io::identifiedTable(r, truth));
 
   // Measured against re-simulated peaks (thesis Figs. 5.12/5.14).
   io::CsvTable resim({"speed_rpm", "shaft", "component", "frequency_hz", "measured_re",
@@ -84,7 +77,7 @@ int runIdentify(const config::Config& config, const CommandOptions& options) {
       }
     }
   }
-  writer.writeCsv("resimulated_peaks.csv", resim);
+  result.addTable("resimulated_peaks.csv", resim);
 
   nlohmann::ordered_json inputs_json = nlohmann::ordered_json::array();
   for (const auto& in : inputs) {
@@ -173,13 +166,8 @@ int runIdentify(const config::Config& config, const CommandOptions& options) {
          r.pinion_runout.amplitude.value / truth->pinion_runout - 1.0},
         {"gear_runout_relative_error", r.gear_runout.amplitude.value / truth->gear_runout - 1.0}};
   }
-  if (!r.converged) std::cerr << "geardyn identify: " << r.message << "\n";
-  for (const auto& w : summary.warnings) warn(w);
-  auto path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& f : drawPlots("identify", writer.folder())) writer.recordFile(f);
-    path = writer.writeSummary(summary);
-  }
+  if (!r.converged) result.errors.push_back(r.message);
+  for (const auto& w : summary.warnings) context.warning(w);
   const auto ci = [](const IdentifiedValue& v, double unit) {
     return fmt::format("{:.5g} [{:.4g}, {:.4g}]{}", v.value * unit, v.low * unit, v.high * unit,
                        v.identifiable ? "" : " (not identifiable)");
@@ -196,9 +184,9 @@ int runIdentify(const config::Config& config, const CommandOptions& options) {
   text += fmt::format("  runouts: pinion {:.4g} um at {:.4g} rad, gear {:.4g} um at {:.4g} rad\n",
                       1e6 * r.pinion_runout.amplitude.value, r.pinion_runout.phase.value,
                       1e6 * r.gear_runout.amplitude.value, r.gear_runout.phase.value);
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return r.converged ? kExitOk : kExitNumericalFailure;
+  result.report = text;
+  result.numerical_failure = !r.converged;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

@@ -5,10 +5,10 @@
 /// measured on the reference machine (Release build; see docs/cli.md, "Resource limits") and
 /// rounded up: an estimate errs on the large side.
 
+#include "geardyn/analysis/run_budget.h"
 #include "geardyn/config/config.h"
-#include "run_budget.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
 /// simulate (and stats with stats.simulate): solver.steps_per_period × solver.max_periods
 /// steps; output_points_per_period × output_periods samples kept.
@@ -21,7 +21,11 @@ RunEstimate estimateHarmonicBalance(const config::Config& config);
 RunEstimate estimateRotorTime(const config::Config& config);
 /// rotor (finite element, analysis "time"): duration / time_step Newmark steps.
 RunEstimate estimateFeRotorTime(const config::Config& config, int dofs);
+/// The estimate of a stage an analysis reports through AnalysisContext::check_budget
+/// ("simulate", "stats_time", "hbm", "rotor_time", "rotor_fe_time" with `size` = DOFs,
+/// "stats_monte_carlo" with `size` = threads); {} for other stages.
+RunEstimate estimateStage(const std::string& stage, long long size, const config::Config& config);
 /// The estimate of one run of `command` with this configuration ({} when it is small).
 RunEstimate estimateCommand(const std::string& command, const config::Config& config);
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

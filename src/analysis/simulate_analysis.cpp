@@ -1,50 +1,33 @@
-/// `geardyn simulate CONFIG`: time integration of the gear-pair model to its steady state.
+/// `simulate`: time integration of the gear-pair model to its steady state.
 
 #include <fmt/format.h>
 
-#include <iostream>
-
-#include "command.h"
-#include "geardyn/config/output_section.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/simulate_config.h"
-#include "geardyn/io/result_writer.h"
 #include "geardyn/io/simulate_results.h"
-#include "plotting.h"
-#include "progress.h"
-#include "run_estimates.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
-int runSimulate(const config::Config& config, const CommandOptions& options) {
+AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisContext& context) {
   const config::GearPairModelBuild build = config::buildGearPairModel(config);
-  for (const auto& warning : build.warnings) warn(warning);
+  for (const auto& warning : build.warnings) context.warning(warning);
   const GearPairModel model(build.spec);
   TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
-  checkRunEstimate(estimateTimeResponse(config), options, "simulate");  // before it allocates
-  ProgressReporter progress("simulate", "periods of max_periods",
-                            ProgressReporter::enabledFor(options));
-  solver.progress = progress.callback();
+  context.checkBudget("simulate");  // before it allocates
+  solver.progress = context.progressFor("simulate", "periods of max_periods");
   const TimeResponse response = solveTimeResponse(model, solver);
   const io::TimeResponseChannels channels = io::channelsOf(model, response);
 
-  io::RunSummary summary;
-  summary.command = "simulate";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
+  AnalysisResult result("simulate", config, context);
+  io::RunSummary& summary = result.summary;
   summary.warnings = build.warnings;
   summary.status = toString(response.status);
   summary.results = io::timeResponseResultsJson(
       build, model, response, channels, static_cast<int>(config.integer("solver.harmonics")));
+  result.addTable("time_response.csv", io::timeResponseTable(channels));
 
-  io::ResultWriter writer(options.resultFolder());
-  writer.writeCsv("time_response.csv", io::timeResponseTable(channels));
-  auto summary_path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& file : drawPlots("simulate", writer.folder())) writer.recordFile(file);
-    summary_path = writer.writeSummary(summary);
-  }
-
-  std::string text = fmt::format(
+  std::string& text = result.report;
+  text = fmt::format(
       "gear pair, {} stiffness, f_m / f_n = {:.4g}, zeta = {:.3g}\n", model.meshStiffness().model(),
       summary.results["model"]["frequency_ratio"].get<double>(), build.damping_ratio);
   text += fmt::format("  {}\n", response.message);
@@ -60,14 +43,11 @@ int runSimulate(const config::Config& config, const CommandOptions& options) {
             : summary.results["dynamic_factor"].get<double>(),
         100.0 * summary.results["contact_loss_fraction"].get<double>());
   }
-  text += fmt::format("results: {}\n", summary_path.string());
-  report(options, text);
   if (!response.converged()) {
-    std::cerr << "geardyn simulate: " << toString(response.status) << ": " << response.message
-              << "\n";
-    return kExitNumericalFailure;
+    result.numerical_failure = true;
+    result.errors.push_back(fmt::format("{}: {}", toString(response.status), response.message));
   }
-  return kExitOk;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

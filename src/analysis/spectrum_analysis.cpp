@@ -1,25 +1,22 @@
-/// `geardyn spectrum CONFIG`: full spectra and whirl peaks of a probe record (Rao 2023 §4.3–4.4,
+/// `spectrum CONFIG`: full spectra and whirl peaks of a probe record (Rao 2023 §4.3–4.4,
 /// §5.4–5.5): whole pinion cycles between keyphasor pulses, phases referred to the first pulse
 /// (the gear shaft through the gear ratio: its angle is taken as zero there too).
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <iostream>
 #include <random>
 
-#include "command.h"
-#include "geardyn/config/output_section.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
-#include "geardyn/io/result_writer.h"
 #include "geardyn/io/rotor_results.h"
-#include "plotting.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
-int runSpectrum(const config::Config& config, const CommandOptions& options) {
+AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisContext& context) {
+  AnalysisResult result("spectrum", config, context);
   std::filesystem::path file = config.string("input.file");
   if (file.is_relative()) file = std::filesystem::path(config.source()).parent_path() / file;
   io::RecordReadOptions read;
@@ -105,14 +102,10 @@ int runSpectrum(const config::Config& config, const CommandOptions& options) {
   const GearPairSpectrum spectrum =
       analyseGearPairRecord(channels, fs, first_time, reference, setup, spectrum_options);
 
-  io::RunSummary summary;
-  summary.command = "spectrum";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
+  io::RunSummary& summary = result.summary;
   if (noise > 0.0) summary.seed = seed;
-  io::ResultWriter writer(options.resultFolder());
-  writer.writeCsv("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
-  writer.writeCsv("full_spectrum.csv",
+  result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
+  result.addTable("full_spectrum.csv",
                   io::fullSpectrumTable(
                       spectrum.display,
                       config.optionalReal("spectrum.max_frequency").value_or(1.25 * highest)));
@@ -121,7 +114,7 @@ int runSpectrum(const config::Config& config, const CommandOptions& options) {
     history.addRow({first_time + static_cast<double>(k) / fs, channels[0][k], channels[1][k],
                     channels[2][k], channels[3][k]});
   }
-  writer.writeCsv("time_history.csv", history);
+  result.addTable("time_history.csv", history);
   summary.results = {
       {"record",
        {{"file", file.string()},
@@ -148,11 +141,6 @@ int runSpectrum(const config::Config& config, const CommandOptions& options) {
        {{"pinion", spectrum.coefficient_sigma[0]}, {"gear", spectrum.coefficient_sigma[1]}}},
       {"peaks", io::whirlPeaksJson(spectrum.peaks)}};
   if (!keyphasor_json.is_null()) summary.results["keyphasor"] = keyphasor_json;
-  auto path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& f : drawPlots("spectrum", writer.folder())) writer.recordFile(f);
-    path = writer.writeSummary(summary);
-  }
   std::string text = fmt::format(
       "full spectra of {} ({} samples at {:g} Hz, {} analysed): pinion {:.6g} Hz, mesh {:.6g} "
       "Hz\n",
@@ -166,9 +154,8 @@ int runSpectrum(const config::Config& config, const CommandOptions& options) {
     text += fmt::format("  {} shaft: largest whirl {} {:.4g} m at {:.6g} Hz\n", io::kShaftNames[sh],
                         top->name, std::abs(top->value), top->frequency);
   }
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return kExitOk;
+  result.report = text;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

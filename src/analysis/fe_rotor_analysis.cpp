@@ -1,4 +1,4 @@
-/// `geardyn rotor CONFIG` with [model] type = "fe_geared_rotor": the finite-element two-shaft
+/// `rotor` with [model] type = "fe_geared_rotor": the finite-element two-shaft
 /// geared rotor of Visnadi & de Castro (2021) — time response (constant speed or run-up), modal
 /// analysis, Campbell diagram and the comparison of mesh-stiffness models (Figs. 3–7).
 
@@ -8,24 +8,19 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
-#include <iostream>
 #include <numbers>
 #include <thread>
 
-#include "command.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/fe_rotor_config.h"
-#include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
-#include "geardyn/io/result_writer.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
-#include "plotting.h"
-#include "progress.h"
-#include "run_estimates.h"
 
-namespace geardyn::cli {
+namespace geardyn::analysis {
 namespace {
 
+constexpr int kOk = 0, kFailed = 1;  // what each analysis type returns
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kRpm = std::numbers::pi / 30.0;
 
@@ -171,7 +166,6 @@ nlohmann::ordered_json harmonicsJson(const std::vector<std::string>& names,
 void reportDivergence(const FeTimeResponse& r, std::vector<std::string>& warnings) {
   if (!r.converged()) {
     warnings.push_back("Newmark: " + r.message);
-    std::cerr << "geardyn rotor: diverged: " << r.message << "\n";
   }
 }
 
@@ -179,7 +173,7 @@ void reportDivergence(const FeTimeResponse& r, std::vector<std::string>& warning
 /// channel's acceleration, the speed of the largest mesh-order response per channel, and the
 /// Campbell crossings of the mesh line within the speed range.
 void runUpOutputs(const config::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
-                  io::ResultWriter& writer, nlohmann::ordered_json& results, std::string& text) {
+                  AnalysisResult& result, nlohmann::ordered_json& results, std::string& text) {
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
   const int window = static_cast<int>(std::llround(config.real("time.runup_window") / dt));
   const std::vector<double> orders{static_cast<double>(model.spec().pinion_teeth), 1.0};
@@ -202,7 +196,7 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
     }
     peaks[names[c]] = {{"speed_rpm", best_speed / kRpm}, {"mesh_order_acceleration", best}};
   }
-  writer.writeCsv("runup.csv", track_table);
+  result.addTable("runup.csv", track_table);
   // Waterfall of the first channel's acceleration.
   io::CsvTable waterfall({"t", "speed_rpm", "frequency_hz", "amplitude"});
   const double fmax = config.has("time.spectrum_max_frequency")
@@ -216,7 +210,7 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
       waterfall.addRow(
           {r.t[start] + 0.5 * window * dt, speed / kRpm, s.frequency[k], s.amplitude[k]});
   }
-  writer.writeCsv("waterfall.csv", waterfall);
+  result.addTable("waterfall.csv", waterfall);
   // Where the Campbell diagram puts the mesh-line crossings inside the ramp.
   const auto& p = model.spec().speed;
   const double lo = std::min(p.start, p.end), hi = std::max(p.start, p.end);
@@ -253,15 +247,14 @@ std::string dampingRatioText(double zeta) {
   return std::abs(zeta) < 5e-5 ? fmt::format("{:.1e}", zeta) : fmt::format("{:.4f}", zeta);
 }
 
-int runTime(const config::Config& config, const CommandOptions& options, io::RunSummary& summary,
-            io::ResultWriter& writer, std::string& text) {
+int runTime(const config::Config& config, const AnalysisContext& context, io::RunSummary& summary,
+            AnalysisResult& result, std::string& text) {
   const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
   const FeGearedRotor model(build.spec);
-  checkRunEstimate(estimateFeRotorTime(config, model.dofCount()), options, "rotor");
+  context.checkBudget("rotor_fe_time", model.dofCount());
   FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
-  ProgressReporter progress("rotor: Newmark", "steps", ProgressReporter::enabledFor(options));
-  o.progress = progress.callback();
+  o.progress = context.progressFor("rotor: Newmark", "steps");
   const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
   reportDivergence(r, summary.warnings);
   summary.results["model"] = modelJson(model, build.stiffness_model);
@@ -269,11 +262,11 @@ int runTime(const config::Config& config, const CommandOptions& options, io::Run
                              {"steps", r.steps},
                              {"factorisations", r.factorisations},
                              {"message", r.message}};
-  writer.writeCsv(
+  result.addTable(
       "time_history.csv",
       timeHistoryTable(model, r, static_cast<int>(config.integer("time.output_every"))));
   text += fmt::format("  {}\n", r.message);
-  if (!r.converged()) return kExitNumericalFailure;
+  if (!r.converged()) return kFailed;
   const auto names = channelNames(model, r);
   if (model.spec().speed.constant() && model.spec().speed.start == 0.0) {
     summary.results["steady"] = nullptr;  // at rest: no mesh period, no harmonics
@@ -282,10 +275,10 @@ int runTime(const config::Config& config, const CommandOptions& options, io::Run
     const SteadyAnalysis a = analyseSteady(config, model, r);
     io::CsvTable harmonics({"channel", "order", "frequency_hz", "displacement", "acceleration"});
     addHarmonicRows(harmonics, "", names, a);
-    writer.writeCsv("harmonics.csv", harmonics);
+    result.addTable("harmonics.csv", harmonics);
     io::CsvTable spectrum({"channel", "frequency_hz", "displacement", "acceleration"});
     addSpectrumRows(spectrum, "", names, a, spectrumLimit(config, a));
-    writer.writeCsv("spectrum.csv", spectrum);
+    result.addTable("spectrum.csv", spectrum);
     summary.results["steady"] = {{"window_s", a.window},
                                  {"last_period_change", a.last_change},
                                  {"mesh_orders", a.orders},
@@ -302,9 +295,9 @@ int runTime(const config::Config& config, const CommandOptions& options, io::Run
         "mesh-order 1..{} amplitudes in harmonics.csv\n",
         a.window, a.last_change, names.size(), a.orders.size());
   } else {
-    runUpOutputs(config, model, r, writer, summary.results, text);
+    runUpOutputs(config, model, r, result, summary.results, text);
   }
-  return kExitOk;
+  return kOk;
 }
 
 nlohmann::ordered_json modeJson(const RotorMode& m) {
@@ -317,7 +310,7 @@ nlohmann::ordered_json modeJson(const RotorMode& m) {
           {"axial_fraction", m.axial_fraction}};
 }
 
-int runModal(const config::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
              std::string& text) {
   const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
@@ -342,14 +335,14 @@ int runModal(const config::Config& config, io::RunSummary& summary, io::ResultWr
     text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {}  {}\n", j + 1, m.frequency,
                         dampingRatioText(m.damping_ratio), m.whirl);
   }
-  writer.writeCsv("modes.csv", table);
-  writer.writeCsv("mode_shapes.csv", shapes);
+  result.addTable("modes.csv", table);
+  result.addTable("mode_shapes.csv", shapes);
   summary.results["model"] = modelJson(model, build.stiffness_model);
   summary.results["modal"] = {{"speed_rpm", speed / kRpm}, {"modes", list}};
-  return kExitOk;
+  return kOk;
 }
 
-int runCampbell(const config::Config& config, io::RunSummary& summary, io::ResultWriter& writer,
+int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
                 std::string& text) {
   const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
@@ -366,10 +359,10 @@ int runCampbell(const config::Config& config, io::RunSummary& summary, io::Resul
                     m.whirl, m.forward_fraction});
     }
   }
-  writer.writeCsv("campbell.csv", table);
+  result.addTable("campbell.csv", table);
   io::CsvTable lines({"line", "order"});
   for (const auto& l : d.lines) lines.addRow({l.name, l.order});
-  writer.writeCsv("campbell_lines.csv", lines);
+  result.addTable("campbell_lines.csv", lines);
   io::CsvTable critical({"mode", "line", "speed_rpm", "frequency_hz", "whirl"});
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const auto& c : d.critical_speeds) {
@@ -381,7 +374,7 @@ int runCampbell(const config::Config& config, io::RunSummary& summary, io::Resul
                     {"frequency_hz", c.frequency},
                     {"whirl", c.whirl}});
   }
-  writer.writeCsv("critical_speeds.csv", critical);
+  result.addTable("critical_speeds.csv", critical);
   summary.results["model"] = modelJson(model, build.stiffness_model);
   summary.results["campbell"] = {{"speeds_rpm", {speeds.front() / kRpm, speeds.back() / kRpm}},
                                  {"points", speeds.size()},
@@ -392,12 +385,12 @@ int runCampbell(const config::Config& config, io::RunSummary& summary, io::Resul
   for (const auto& c : d.critical_speeds)
     text += fmt::format("    mode {} x {}: {:.1f} rpm ({:.1f} Hz, {})\n", c.mode + 1, c.line,
                         c.speed / kRpm, c.frequency, c.whirl);
-  return kExitOk;
+  return kOk;
 }
 
 /// Visnadi §4: the same rotor with each mesh-stiffness model; amplitudes at the mesh orders.
-int runCompare(const config::Config& config, const CommandOptions& options, io::RunSummary& summary,
-               io::ResultWriter& writer, std::string& text) {
+int runCompare(const config::Config& config, const AnalysisContext& context,
+               io::RunSummary& summary, AnalysisResult& result, std::string& text) {
   const auto models = config.stringList("compare.models");
   if (models.empty()) throw InputError("compare.models", "[]", "at least one model");
   struct Case {
@@ -428,7 +421,7 @@ int runCompare(const config::Config& config, const CommandOptions& options, io::
   for (const Case& c : cases)
     time_options.push_back(config::feTimeOptionsFromConfig(config, *c.model));
   const unsigned threads =
-      options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+      context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> errors(cases.size());
@@ -477,9 +470,9 @@ int runCompare(const config::Config& config, const CommandOptions& options, io::
                          {"harmonics", harmonicsJson(names, a)}};
     analyses.push_back(a);
   }
-  writer.writeCsv("compare_harmonics.csv", harmonics);
-  writer.writeCsv("compare_spectra.csv", spectra);
-  writer.writeCsv("compare_stiffness.csv", stiffness);
+  result.addTable("compare_harmonics.csv", harmonics);
+  result.addTable("compare_spectra.csv", spectra);
+  result.addTable("compare_stiffness.csv", stiffness);
 
   // Ratios to the reference model, per channel and order (acceleration: the bearing plots).
   const std::string reference = config.string("compare.reference");
@@ -505,7 +498,7 @@ int runCompare(const config::Config& config, const CommandOptions& options, io::
       ratio_json[cases[m].name] = {{"share_of_peaks_above_reference", above / total},
                                    {"share_of_peaks_below_reference", below / total}};
     }
-    writer.writeCsv("compare_ratios.csv", ratios);
+    result.addTable("compare_ratios.csv", ratios);
   }
   summary.results["model"] = modelJson(*cases.front().model, "(per case)");
   summary.results["compare"] = {
@@ -520,35 +513,32 @@ int runCompare(const config::Config& config, const CommandOptions& options, io::
         fmt::format("  {:<18s} mean k {:.4e} N/m, largest mesh-order acceleration {:.4g} m/s^2\n",
                     c.name, c.mean, largest);
   }
-  return ok ? kExitOk : kExitNumericalFailure;
+  return ok ? kOk : kFailed;
 }
 
 }  // namespace
 
-int runFeRotor(const config::Config& config, const CommandOptions& options) {
-  io::RunSummary summary;
-  summary.command = "rotor";
-  summary.config_source = options.config_file.string();
-  summary.config = config.resolved();
-  io::ResultWriter writer(options.resultFolder());
+AnalysisResult feRotorAnalysis(const config::Config& config, const AnalysisContext& context) {
+  AnalysisResult result("rotor", config, context);
+  io::RunSummary& summary = result.summary;
   const std::string analysis = config.string("analysis.type");
   std::string text = fmt::format("finite-element geared rotor: {} analysis\n", analysis);
-  int code = kExitOk;
-  if (analysis == "time") code = runTime(config, options, summary, writer, text);
-  if (analysis == "modal") code = runModal(config, summary, writer, text);
-  if (analysis == "campbell") code = runCampbell(config, summary, writer, text);
-  if (analysis == "compare_stiffness") code = runCompare(config, options, summary, writer, text);
-  summary.status = code == kExitOk ? "ok" : "diverged";
-  for (const auto& w : summary.warnings)
-    if (w.rfind("Newmark", 0) != 0) warn(w);
-  auto path = writer.writeSummary(summary);
-  if (config::outputOptionsFromConfig(config).plots) {
-    for (const auto& file : drawPlots("rotor_fe", writer.folder())) writer.recordFile(file);
-    path = writer.writeSummary(summary);
+  int code = kOk;
+  if (analysis == "time") code = runTime(config, context, summary, result, text);
+  if (analysis == "modal") code = runModal(config, summary, result, text);
+  if (analysis == "campbell") code = runCampbell(config, summary, result, text);
+  if (analysis == "compare_stiffness") code = runCompare(config, context, summary, result, text);
+  summary.status = code == kOk ? "ok" : "diverged";
+  for (const auto& w : summary.warnings) {
+    if (w.rfind("Newmark: ", 0) != 0) {
+      context.warning(w);
+    } else {
+      result.errors.push_back("diverged: " + w.substr(9));
+    }
   }
-  text += fmt::format("results: {}\n", path.string());
-  report(options, text);
-  return code;
+  result.report = text;
+  result.numerical_failure = code != kOk;
+  return result;
 }
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

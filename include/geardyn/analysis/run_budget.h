@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// The resource check every CLI run makes before it allocates (issue #18, item 1): an estimate
-/// of the memory of its large arrays and of its wall time, from its inputs alone. A run that
-/// would not fit in the memory limit is refused (InputError: exit 2, naming the key that drives
-/// the size, the estimate and the limit); a run estimated to take longer than
+/// The resource check every run (CLI and Python) makes before it allocates (issue #18, item 1): an
+/// estimate of the memory of its large arrays and of its wall time, from its inputs alone. A run
+/// that would not fit in the memory limit is refused (InputError: exit 2, naming the key that
+/// drives the size, the estimate and the limit); a run estimated to take longer than
 /// kLongRunSeconds says so on stderr and proceeds.
 ///
 /// The limit is 80 % of MemAvailable in /proc/meminfo (the kernel's estimate of what can be
@@ -12,9 +12,7 @@
 
 #include <string>
 
-#include "command.h"
-
-namespace geardyn::cli {
+namespace geardyn::analysis {
 
 /// Runs estimated to take longer than this many seconds say so before they start.
 inline constexpr double kLongRunSeconds = 30.0;
@@ -38,9 +36,9 @@ std::string formatBytes(double bytes);
 /// "45 s", "12 min", "33 h", "4.1 years".
 std::string formatDuration(double seconds);
 
-/// Refuses a run that does not fit (InputError) and announces a long one on stderr (unless
-/// quiet). `label` starts the note ("simulate").
-void checkRunEstimate(const RunEstimate& estimate, const CommandOptions& options,
-                      const std::string& label);
+/// Refuses a run that does not fit (InputError naming the key that drives its size). Returns
+/// a note for a run estimated to take longer than kLongRunSeconds ("" otherwise), to be shown
+/// before it starts; `label` starts the note ("simulate").
+std::string checkRunEstimate(const RunEstimate& estimate, const std::string& label);
 
-}  // namespace geardyn::cli
+}  // namespace geardyn::analysis

@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// Every analysis of geardyn as a library call: a validated configuration in, an
+/// AnalysisResult out (summary, tables, report, status). The CLI commands (apps/geardyn) and
+/// Python (`geardyn.run`) are thin layers over these functions. Each function throws InputError
+/// for bad input and returns numerical failure as a status (AnalysisResult::numerical_failure).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geardyn/analysis/analysis_result.h"
+#include "geardyn/config/config.h"
+#include "geardyn/config/config_schema.h"
+
+namespace geardyn::analysis {
+
+AnalysisResult geometryAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& context);
+/// `rotor` without [model]: Rao 2023's lateral rotor.
+AnalysisResult lateralRotorAnalysis(const config::Config& config, const AnalysisContext& context);
+/// `rotor` with [model] type = "fe_geared_rotor": Visnadi 2021's finite-element rotor.
+AnalysisResult feRotorAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisContext& context);
+AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext& context);
+
+/// The inputs of `train`: its analysis configuration and the gearbox description — the
+/// analysis file itself when the gearbox is inline, else the file it names (TOML, or REXS
+/// imported in memory).
+struct TrainInputs {
+  config::Config analysis;
+  config::Config gearbox;
+  std::string analysis_source;        ///< the analysis file
+  std::string gearbox_source;         ///< the gearbox file (the analysis file when inline)
+  std::vector<std::string> warnings;  ///< of a REXS import
+};
+/// Reads the analysis file and its gearbox; `overrides` ("section.key=value") go to the file
+/// that declares the section. Throws InputError naming the key.
+TrainInputs loadTrainInputs(const std::filesystem::path& file,
+                            const std::vector<std::string>& overrides);
+/// `train`: kinematics and phasing, then the analyses of `analysis.run` (static, modal,
+/// Campbell, forced response, time response) on one gearbox (one load case).
+AnalysisResult trainAnalysis(const TrainInputs& inputs, const AnalysisContext& context);
+
+/// The analyses runAnalysis knows, in the CLI's order.
+const std::vector<std::string>& analysisNames();
+
+/// The schema `name` validates a configuration with (`model_type` = the file's [model] type,
+/// which selects the finite-element `rotor` schema), knowing the other analyses' schemas so
+/// that their sections in the same file are ignored with a note but still spell-checked.
+/// Throws InputError for an unknown name, with a did-you-mean.
+config::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type = "");
+
+/// Runs analysis `name` on a configuration validated with analysisSchema(name, ...).
+AnalysisResult runAnalysis(const std::string& name, const config::Config& config,
+                           const AnalysisContext& context);
+
+}  // namespace geardyn::analysis

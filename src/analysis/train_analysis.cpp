@@ -1,0 +1,411 @@
+/// `train`: any gear train described once (a gearbox file or inline) and
+/// analysed: kinematics and phasing, statics, modes, Campbell, forced response, time response.
+
+#include "geardyn/config/train_analysis.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <filesystem>
+#include <numbers>
+
+#include "geardyn/analysis/analyses.h"
+#include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/gearbox_config.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
+#include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_reader.h"
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn::analysis {
+namespace {
+
+constexpr double kRpm = std::numbers::pi / 30.0;
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string stageTypes(const TrainMode& mode) {
+  std::string out;
+  for (const auto& t : mode.stage_type) out += (out.empty() ? "" : "/") + t;
+  return out;
+}
+
+void writeKinematics(const GearTrainModel& model, AnalysisResult& result, io::RunSummary& summary,
+                     std::string& text) {
+  const double speed = model.inputSpeed();
+  io::CsvTable bodies({"body", "kind", "shaft", "speed_ratio", "speed_rpm", "centre_y_m",
+                       "centre_z_m", "axial_x_m", "mass_kg", "polar_inertia_kg_m2"});
+  Json json = Json::array();
+  for (const TrainBody& b : model.bodies()) {
+    bodies.addRow({b.name, b.kind == TrainBodyKind::kPlanet ? "planet" : "shaft",
+                   b.shaft >= 0 ? model.spec().shafts[b.shaft].name : std::string(), b.speed_ratio,
+                   b.speed_ratio * speed / kRpm, b.centre.x(), b.centre.y(), b.axial, b.mass,
+                   b.polar_inertia});
+    json.push_back({{"body", b.name},
+                    {"speed_ratio", b.speed_ratio},
+                    {"speed_rpm", b.speed_ratio * speed / kRpm},
+                    {"centre_m", {b.centre.x(), b.centre.y()}},
+                    {"mass_kg", b.mass},
+                    {"polar_inertia_kg_m2", b.polar_inertia}});
+  }
+  result.addTable("bodies.csv", bodies);
+  io::CsvTable meshes({"mesh", "kind", "body_a", "body_b", "teeth_a", "teeth_b",
+                       "mesh_frequency_Hz", "phase_periods", "centre_distance_m",
+                       "pressure_angle_deg", "contact_ratio", "mean_stiffness_N_per_m",
+                       "damping_N_s_per_m"});
+  Json mj = Json::array();
+  for (const TrainMesh& m : model.meshes()) {
+    const double f = m.frequency_ratio * std::abs(speed);
+    meshes.addRow(
+        {m.name, toString(m.kind), model.bodies()[m.body_a].name, model.bodies()[m.body_b].name,
+         std::to_string(m.teeth_a), std::to_string(m.teeth_b), f, m.phase, m.centre_distance,
+         m.pressure_angle / std::numbers::pi * 180, m.contact_ratio, m.mean_stiffness, m.damping});
+    mj.push_back({{"mesh", m.name},
+                  {"kind", toString(m.kind)},
+                  {"mesh_frequency_Hz", f},
+                  {"phase_periods", m.phase},
+                  {"mean_stiffness_N_per_m", m.mean_stiffness}});
+    text += fmt::format("  mesh {:<20} {:>9.2f} Hz  phase {:.4f}  k̄ {:.4g} N/m\n", m.name, f,
+                        m.phase, m.mean_stiffness);
+  }
+  result.addTable("meshes.csv", meshes);
+  summary.results["kinematics"] = {{"input_speed_rpm", speed / kRpm},
+                                   {"output_torque_N_m", model.outputTorque()},
+                                   {"bodies", json},
+                                   {"meshes", mj}};
+}
+
+void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSummary& summary,
+               std::string& text) {
+  const auto start = Clock::now();
+  const TrainStaticResult r = solveTrainStatic(model, model.inputSpeed());
+  io::CsvTable forces({"component", "kind", "force"});
+  Json meshes = Json::object(), elements = Json::object();
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    forces.addRow({model.meshes()[m].name, "mesh_N", r.mesh_force[m]});
+    meshes[model.meshes()[m].name] = r.mesh_force[m];
+  }
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    const TrainElement& el = model.elements()[e];
+    const bool torque = el.local_stiffness.rows() == 1;
+    forces.addRow({el.name, el.kind + (torque ? "_N_m" : "_N"), r.element_force[e]});
+    elements[el.name] = r.element_force[e];
+  }
+  result.addTable("static_forces.csv", forces);
+  Json sharing = Json::array();
+  for (const auto& s : r.load_sharing) {
+    sharing.push_back({{"stage", s.stage},
+                       {"load_sharing_factor", s.load_sharing_factor},
+                       {"sun_planet_force_N", s.sun_planet_force},
+                       {"ring_planet_force_N", s.ring_planet_force}});
+    text +=
+        fmt::format("  {}: planet load sharing factor {:.4f}\n", s.stage, s.load_sharing_factor);
+  }
+  summary.results["static"] = {{"status", r.status},
+                               {"rigid_modes", r.rigid_modes},
+                               {"relative_residual", r.residual},
+                               {"mesh_force_N", meshes},
+                               {"element_force", elements},
+                               {"load_sharing", sharing},
+                               {"wall_time_s", secondsSince(start)}};
+  if (r.status != "ok") summary.warnings.push_back(r.message);
+  text += fmt::format("static: {} ({} rigid-body modes)\n", r.status, r.rigid_modes);
+}
+
+void runModal(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
+              io::RunSummary& summary, std::string& text) {
+  const auto start = Clock::now();
+  const double speed = config::analysisSpeed(analysis, "modal", model.inputSpeed());
+  const auto modes =
+      trainModes(model, speed, config::trainModalOptionsFromConfig(analysis, "modal"));
+  std::vector<std::string> header{"mode",         "frequency_Hz", "damping_ratio",
+                                  "multiplicity", "stage_type",   "translational_fraction"};
+  for (const TrainMesh& m : model.meshes()) header.push_back("strain_" + m.name);
+  for (const TrainElement& e : model.elements()) header.push_back("strain_" + e.name);
+  io::CsvTable table(header);
+  io::CsvTable shapes({"mode", "dof", "real", "imag"});
+  Json list = Json::array();
+  for (std::size_t j = 0; j < modes.size(); ++j) {
+    const TrainMode& m = modes[j];
+    std::vector<io::CsvCell> row{std::to_string(j + 1), m.frequency,
+                                 m.damping_ratio,       std::to_string(m.multiplicity),
+                                 stageTypes(m),         m.translational_fraction};
+    for (double e : m.mesh_strain_energy) row.push_back(e);
+    for (double e : m.element_strain_energy) row.push_back(e);
+    table.addRow(row);
+    for (int i = 0; i < model.dofCount(); ++i) {
+      shapes.addRow(
+          {static_cast<long long>(j + 1), model.dofName(i), m.shape(i).real(), m.shape(i).imag()});
+    }
+    list.push_back({{"frequency_Hz", m.frequency},
+                    {"damping_ratio", m.damping_ratio},
+                    {"multiplicity", m.multiplicity},
+                    {"stage_type", m.stage_type}});
+  }
+  result.addTable("modes.csv", table);
+  result.addTable("mode_shapes.csv", shapes);
+  summary.results["modal"] = {
+      {"speed_rpm", speed / kRpm}, {"modes", list}, {"wall_time_s", secondsSince(start)}};
+  text += fmt::format("modal at {:.1f} rpm: {} modes", speed / kRpm, modes.size());
+  for (std::size_t j = 0; j < modes.size() && j < 8; ++j) {
+    text += fmt::format("{} {:.1f} Hz", j ? "," : ":", modes[j].frequency);
+  }
+  text += modes.size() > 8 ? ", …\n" : "\n";
+}
+
+void runCampbell(const GearTrainModel& model, const config::Config& analysis,
+                 AnalysisResult& result, io::RunSummary& summary, std::string& text) {
+  const auto start = Clock::now();
+  const auto speeds = config::speedRangeFromConfig(analysis, "campbell", model.inputSpeed(), 0.0);
+  TrainModalOptions options;
+  options.modes =
+      std::min<int>(static_cast<int>(analysis.integer("campbell.modes")), model.dofCount());
+  const auto lines =
+      trainOrderLines(model, static_cast<int>(analysis.integer("campbell.mesh_harmonics")));
+  const TrainCampbell d = trainCampbell(model, speeds, options, lines);
+  std::vector<std::string> header{"speed_rpm"};
+  for (std::size_t j = 0; j < d.modes.front().size(); ++j)
+    header.push_back(fmt::format("mode_{}_Hz", j + 1));
+  io::CsvTable table(header);
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    std::vector<io::CsvCell> row{speeds[i] / kRpm};
+    for (const auto& m : d.modes[i]) row.push_back(m.frequency);
+    table.addRow(row);
+  }
+  result.addTable("campbell.csv", table);
+  io::CsvTable lt({"line", "Hz_per_rpm"});
+  for (const auto& l : lines) lt.addRow({l.name, l.slope * kRpm});
+  result.addTable("order_lines.csv", lt);
+  io::CsvTable ct({"mode", "line", "speed_rpm", "frequency_Hz"});
+  Json crit = Json::array();
+  for (const auto& c : d.critical_speeds) {
+    ct.addRow({std::to_string(c.mode + 1), c.line, c.speed / kRpm, c.frequency});
+    crit.push_back({{"mode", c.mode + 1},
+                    {"line", c.line},
+                    {"speed_rpm", c.speed / kRpm},
+                    {"frequency_Hz", c.frequency}});
+  }
+  result.addTable("critical_speeds.csv", ct);
+  summary.results["campbell"] = {
+      {"speeds", speeds.size()}, {"critical_speeds", crit}, {"wall_time_s", secondsSince(start)}};
+  text += fmt::format("campbell: {} speeds, {} critical speeds\n", speeds.size(),
+                      d.critical_speeds.size());
+}
+
+void runForced(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
+               io::RunSummary& summary, std::string& text, const AnalysisContext& context) {
+  const auto start = Clock::now();
+  const auto speeds = config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1);
+  const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
+  std::vector<std::string> header{"speed_rpm"};
+  for (const TrainMesh& m : model.meshes()) {
+    header.push_back("dynamic_factor_" + m.name);
+    header.push_back("p2p_N_" + m.name);
+    header.push_back("h1_N_" + m.name);
+  }
+  for (const TrainElement& e : model.elements()) {
+    header.push_back(
+        fmt::format("dynamic_{}_{}", e.name, e.local_stiffness.rows() == 1 ? "N_m" : "N"));
+  }
+  io::CsvTable table(header);
+  std::vector<double> worst(model.meshes().size(), 0.0), worst_speed(model.meshes().size(), 0.0);
+  const TrainSteadySolver solver(model, steady);
+  const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    if (progress) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
+    if (speeds[i] == 0.0) continue;
+    const TrainSteadyState s = solver.solve(speeds[i]);
+    std::vector<io::CsvCell> row{speeds[i] / kRpm};
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      row.push_back(s.dynamic_factor[m]);
+      row.push_back(s.mesh_force_max[m] - s.mesh_force_min[m]);
+      row.push_back(s.mesh_force_harmonics[m][0]);
+      if (s.dynamic_factor[m] > worst[m])
+        worst[m] = s.dynamic_factor[m], worst_speed[m] = speeds[i];
+    }
+    for (double f : s.element_dynamic_force) row.push_back(f);
+    table.addRow(row);
+  }
+  result.addTable("forced_response.csv", table);
+  Json peaks = Json::object();
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    peaks[model.meshes()[m].name] = {{"max_dynamic_factor", worst[m]},
+                                     {"at_speed_rpm", worst_speed[m] / kRpm}};
+    text += fmt::format("  {}: max dynamic factor {:.3f} at {:.0f} rpm\n", model.meshes()[m].name,
+                        worst[m], worst_speed[m] / kRpm);
+  }
+  summary.results["forced"] = {{"speeds", speeds.size()},
+                               {"mesh_harmonics", steady.mesh_harmonics},
+                               {"meshes", peaks},
+                               {"wall_time_s", secondsSince(start)}};
+  text +=
+      fmt::format("forced response: {} speeds in {:.2f} s\n", speeds.size(), secondsSince(start));
+}
+
+int runTime(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
+            io::RunSummary& summary, std::string& text) {
+  const auto start = Clock::now();
+  const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
+  const TrainTimeResponse r =
+      solveTrainTimeResponse(model, speed, config::trainTimeOptionsFromConfig(analysis));
+  const double seconds = secondsSince(start);
+  if (r.status != "completed") {
+    summary.warnings.push_back(r.message);
+    summary.results["time"] = {{"status", r.status}, {"steps", r.steps}};
+    return 1;
+  }
+  // The frequency-domain steady state on the same window, for the comparison a user would make.
+  TrainSteadyOptions steady;
+  steady.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
+  steady.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
+  Json comparison = nullptr;
+  std::vector<std::string> header{"t_s"};
+  for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_N_" + m.name);
+  bool compare = true;
+  TrainSteadyState s;
+  try {
+    s = solveTrainSteadyState(model, speed, steady);
+  } catch (const InputError& e) {
+    compare = false;
+    summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
+  }
+  if (compare) {
+    for (const TrainMesh& m : model.meshes()) header.push_back("steady_mesh_force_N_" + m.name);
+  }
+  io::CsvTable table(header);
+  Eigen::MatrixXd q;
+  if (compare) q = s.displacement(r.t);
+  Json differences = Json::object();
+  std::vector<double> worst(model.meshes().size(), 0.0);
+  for (Eigen::Index k = 0; k < r.t.size(); ++k) {
+    std::vector<io::CsvCell> row{r.t(k)};
+    for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) row.push_back(r.mesh_force(k, m));
+    if (compare) {
+      for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+        const double f = model.meshes()[m].force(r.t(k), speed, q.row(k).transpose());
+        worst[m] = std::max(worst[m], std::abs(f - r.mesh_force(k, static_cast<Eigen::Index>(m))));
+        row.push_back(f);
+      }
+    }
+    table.addRow(row);
+  }
+  result.addTable("time_history.csv", table);
+  // Mesh-force harmonics of the Newmark window (whole common periods) against the balance's:
+  // pointwise values near a stiffness jump converge slowly in both methods (Gibbs, step size),
+  // the harmonics at the mesh orders quickly.
+  Json harmonics = Json::object();
+  if (compare) {
+    const int periods = static_cast<int>(analysis.integer("time.record_periods"));
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      const double p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
+      differences[model.meshes()[m].name] = p2p > 0 ? worst[m] / p2p : 0.0;
+      const Eigen::VectorXd f = r.mesh_force.col(static_cast<Eigen::Index>(m));
+      const double scale = s.mesh_force_harmonics[m][0];
+      Json orders = Json::array();
+      for (int l = 1; l <= 3 && l <= static_cast<int>(s.mesh_force_harmonics[m].size()); ++l) {
+        const double step = 2.0 * std::numbers::pi * l * s.mesh_multiple[m] * periods /
+                            static_cast<double>(f.size());
+        std::complex<double> sum = 0.0;
+        for (Eigen::Index k = 0; k < f.size(); ++k) sum += f(k) * std::polar(1.0, -step * k);
+        const double newmark = 2.0 * std::abs(sum) / static_cast<double>(f.size());
+        const double hbm = s.mesh_force_harmonics[m][l - 1];
+        orders.push_back({{"order", l},
+                          {"newmark_N", newmark},
+                          {"steady_state_N", hbm},
+                          {"difference_relative_to_order_1",
+                           scale > 0 ? std::abs(newmark - hbm) / scale : 0.0}});
+      }
+      harmonics[model.meshes()[m].name] = orders;
+    }
+  }
+  summary.results["time"] = {{"status", r.status},
+                             {"speed_rpm", speed / kRpm},
+                             {"time_step_s", r.time_step},
+                             {"steps", r.steps},
+                             {"wall_time_s", seconds},
+                             {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
+                             {"max_difference_to_steady_state_relative_to_p2p", differences},
+                             {"mesh_force_harmonics", harmonics}};
+  text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s\n", r.steps, r.time_step,
+                      seconds);
+  return 0;
+}
+
+}  // namespace
+
+TrainInputs loadTrainInputs(const std::filesystem::path& file,
+                            const std::vector<std::string>& overrides) {
+  const std::string ref = config::peekConfigString(file, "gearbox.file");
+  if (ref.empty()) {
+    config::Config both = config::loadConfigFile(file, config::trainSchema(true), overrides);
+    if (both.has("gearbox.load_case"))
+      throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
+                       "only with a REXS gearbox file named by gearbox.file");
+    return {both, both, file.string(), file.string(), {}};
+  }
+  std::vector<std::string> analysis_overrides, gearbox_overrides;
+  const auto& sections = config::gearboxSectionNames();
+  for (const auto& o : overrides) {
+    const std::string first = o.substr(0, o.find_first_of(".="));
+    // [gearbox] file, load_case and all_load_cases belong to the analysis file.
+    std::string key = o.substr(0, o.find('='));
+    key.erase(key.find_last_not_of(" \t") + 1);
+    const bool analysis_key =
+        key == "gearbox.file" || key == "gearbox.load_case" || key == "gearbox.all_load_cases";
+    const bool to_gearbox =
+        std::find(sections.begin(), sections.end(), first) != sections.end() && !analysis_key;
+    (to_gearbox ? gearbox_overrides : analysis_overrides).push_back(o);
+  }
+  const std::filesystem::path path = file.parent_path() / ref;
+  config::Config analysis =
+      config::loadConfigFile(file, config::trainSchema(false), analysis_overrides);
+  std::optional<int> load_case;
+  if (analysis.has("gearbox.load_case"))
+    load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
+  std::vector<std::string> warnings;
+  // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
+  config::Config gearbox = io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  return {analysis, gearbox, file.string(), path.string(), warnings};
+}
+
+AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& context) {
+  const auto start = Clock::now();
+  AnalysisResult result("train", loaded.analysis, context);
+  io::RunSummary& summary = result.summary;
+  if (loaded.gearbox_source != loaded.analysis_source) {
+    summary.config["gearbox_description"] = loaded.gearbox.resolved();
+  }
+  std::vector<std::string> warnings = loaded.warnings;
+  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings));
+  warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
+  summary.warnings = warnings;
+  std::string text = fmt::format(
+      "gear train {}: {} bodies, {} meshes, {} DOFs ({})\n",
+      model.spec().name.empty() ? loaded.gearbox_source : model.spec().name, model.bodies().size(),
+      model.meshes().size(), model.dofCount(), toString(model.spec().dofs));
+  writeKinematics(model, result, summary, text);
+  int code = 0;
+  for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
+    if (analysis == "static") runStatic(model, result, summary, text);
+    if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
+    if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text);
+    if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
+    if (analysis == "time")
+      code = std::max(code, runTime(model, loaded.analysis, result, summary, text));
+  }
+  summary.status = code == 0 ? "ok" : "diverged";
+  summary.results["wall_time_s"] = secondsSince(start);
+  for (const auto& w : summary.warnings) context.warning(w);
+  result.report = text;
+  result.numerical_failure = code != 0;
+  result.wall_time_s = secondsSince(start);
+  return result;
+}
+
+}  // namespace geardyn::analysis
