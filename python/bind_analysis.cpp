@@ -58,9 +58,10 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
   std::optional<analysis::TrainInputs> train;
   std::optional<config::Config> config;
   if (name == "train") {
-    if (path.empty())
-      throw InputError("train", "(a dict)", "a train analysis file (it names its gearbox file)");
-    train = analysis::loadTrainInputs(path, overrides);
+    // A dict's relative gearbox.file is relative to the working directory.
+    train = path.empty() ? analysis::parseTrainInputs(text, source.empty() ? "(dict)" : source,
+                                                      std::filesystem::current_path(), overrides)
+                         : analysis::loadTrainInputs(path, overrides);
     if (train->analysis.boolean("gearbox.all_load_cases"))
       throw InputError("gearbox.all_load_cases", "true",
                        "one load case per in-process run: set gearbox.load_case, or run "

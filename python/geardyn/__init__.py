@@ -119,4 +119,13 @@ __all__ = [
     "load_config", "mesh_stiffness", "MESH_STIFFNESS_MODELS", "mesh_phase_from_roll_angle",
     "roll_angle_from_mesh_phase",
 ]
-from . import report  # noqa: F401,E402  (geardyn.report.write_report: the HTML report)
+
+
+def __getattr__(name):
+    """``geardyn.report`` (write_report: the HTML report) is imported on first use, so that
+    ``python -m geardyn.report`` (what `geardyn report` runs) does not import it twice."""
+    if name == "report":
+        import importlib
+
+        return importlib.import_module(".report", __name__)
+    raise AttributeError(f"module 'geardyn' has no attribute {name!r}")

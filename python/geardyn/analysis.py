@@ -5,8 +5,9 @@ arguments add sections (a dict, or a geardyn object such as ``geardyn.Gear`` for
 [gear]). The keys are those of the files (``geardyn.config_reference(command)``). The analysis
 runs in this process, in the compiled library, without the GIL, with a progress bar on long
 runs (tqdm when importable, else stderr) and Ctrl-C; nothing is written unless ``out`` is
-given. ``sweep`` (and ``train`` on a dict) go through the ``geardyn`` executable
-(geardyn._cli), into a temporary folder that is removed.
+given; a dict's relative ``gearbox.file`` is relative to the working directory. ``sweep``
+goes through the ``geardyn`` executable (geardyn._cli), into a temporary folder that is
+removed.
 
 Bad input raises geardyn.ConfigError (a ValueError with .key, .value, .allowed); a file that
 cannot be read raises OSError; a numerical failure raises RuntimeError with the result attached
@@ -31,8 +32,8 @@ from .results import Result
 
 __all__ = ["run", "sweep", "COMMANDS"]
 
-#: Commands ``run`` knows: the in-process analyses, then the executable's sweep and train.
-COMMANDS = tuple(_geardyn.analysis_names()) + ("sweep", "train")
+#: Commands ``run`` knows: the in-process analyses and train, then the executable's sweep.
+COMMANDS = tuple(_geardyn.analysis_names()) + ("train", "sweep")
 
 # Keys of a [pinion] / [gear] section, read from a geardyn.Gear given as a keyword argument.
 _GEAR_KEYS = ("teeth", "module", "face_width", "pressure_angle_deg", "helix_angle_deg",
@@ -115,8 +116,7 @@ def _overrides(overrides):
 
 def run(command, config=None, *, out=None, overrides=None, threads=None, check=True, plots=None,
         progress=True, resume=False, timeout=None, overwrite=False, **sections):
-    """Runs analysis ``command`` and returns a geardyn.Result (sweep, and train on a dict:
-    FolderResult).
+    """Runs analysis ``command`` and returns a geardyn.Result (sweep: FolderResult).
 
     - ``config``: a TOML file (str or path), a dict of sections, or None.
     - ``**sections``: sections added to (or merged into) ``config``, e.g.
@@ -127,10 +127,8 @@ def run(command, config=None, *, out=None, overrides=None, threads=None, check=T
     - ``progress``: False for no progress display.
     """
     command = _command(command)
-    # In-process: every analysis, and `train` on a file; through the executable: `sweep`, and
-    # `train` on a dict (it is written to a temporary file there, removed afterwards).
-    file_train = command == "train" and isinstance(config, (str, os.PathLike)) and not sections
-    if command == "sweep" or (command == "train" and not file_train):
+    # In-process: every analysis; through the executable: `sweep` (a study of many runs).
+    if command == "sweep":
         if sections:
             config = _merge(config or {}, {k: _section(k, v) for k, v in sections.items()})
         return run_cli(command, config, out=out, overrides=overrides, threads=threads,

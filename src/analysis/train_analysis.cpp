@@ -4,18 +4,20 @@
 #include "geardyn/config/train_analysis.h"
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <chrono>
 #include <cmath>
 #include <complex>
 #include <filesystem>
 #include <numbers>
+#include <string_view>
 
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
-#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 
@@ -341,13 +343,27 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
 
 TrainInputs loadTrainInputs(const std::filesystem::path& file,
                             const std::vector<std::string>& overrides) {
-  const std::string ref = config::peekConfigString(file, "gearbox.file");
+  return parseTrainInputs(config::readConfigFile(file), file.string(), file.parent_path(),
+                          overrides);
+}
+
+TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
+                             const std::filesystem::path& base_dir,
+                             const std::vector<std::string>& overrides) {
+  std::string ref;
+  try {
+    const toml::table table = toml::parse(text, source);
+    if (auto node = table.at_path("gearbox.file"); node && node.is_string())
+      ref = *node.value<std::string>();
+  } catch (const std::exception&) {
+    // parseConfig below reports a syntax error with its location.
+  }
   if (ref.empty()) {
-    config::Config both = config::loadConfigFile(file, config::trainSchema(true), overrides);
+    config::Config both = config::parseConfig(text, source, config::trainSchema(true), overrides);
     if (both.has("gearbox.load_case"))
       throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
                        "only with a REXS gearbox file named by gearbox.file");
-    return {both, both, file.string(), file.string(), {}};
+    return {both, both, source, source, {}};
   }
   std::vector<std::string> analysis_overrides, gearbox_overrides;
   const auto& sections = config::gearboxSectionNames();
@@ -362,16 +378,17 @@ TrainInputs loadTrainInputs(const std::filesystem::path& file,
         std::find(sections.begin(), sections.end(), first) != sections.end() && !analysis_key;
     (to_gearbox ? gearbox_overrides : analysis_overrides).push_back(o);
   }
-  const std::filesystem::path path = file.parent_path() / ref;
+  const std::filesystem::path path = base_dir / ref;
   config::Config analysis =
-      config::loadConfigFile(file, config::trainSchema(false), analysis_overrides);
+      config::parseConfig(text, source, config::trainSchema(false), analysis_overrides);
   std::optional<int> load_case;
   if (analysis.has("gearbox.load_case"))
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
   std::vector<std::string> warnings;
   // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
-  config::Config gearbox = io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
-  return {analysis, gearbox, file.string(), path.string(), warnings};
+  config::Config gearbox =
+      io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  return {analysis, gearbox, source, path.string(), warnings};
 }
 
 AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& context) {

@@ -515,8 +515,7 @@ Config parseConfig(std::string_view toml_text, const std::string& source_name,
   return config;
 }
 
-Config loadConfigFile(const std::filesystem::path& file, const ConfigSchema& schema,
-                      const std::vector<std::string>& overrides) {
+std::string readConfigFile(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
     throw InputError(
@@ -527,7 +526,12 @@ Config loadConfigFile(const std::filesystem::path& file, const ConfigSchema& sch
   if (!in) throw InputError("config", file.string(), "cannot be opened for reading");
   std::ostringstream text;
   text << in.rdbuf();
-  return parseConfig(text.str(), file.string(), schema, overrides);
+  return text.str();
+}
+
+Config loadConfigFile(const std::filesystem::path& file, const ConfigSchema& schema,
+                      const std::vector<std::string>& overrides) {
+  return parseConfig(readConfigFile(file), file.string(), schema, overrides);
 }
 
 }  // namespace geardyn::config

@@ -82,9 +82,10 @@ std::vector<MonteCarloSample> runMeanExcitationMonteCarlo(const GearPairModel& m
   options.validate();
   std::vector<MonteCarloSample> samples(options.samples);
   std::atomic<long long> finished{0};
+  std::atomic<bool> stop{false};
   const auto work = [&](int first, int last) {
     std::vector<double> pitch(options.teeth), profile(options.teeth), kappa(options.teeth);
-    for (int i = first; i < last; ++i) {
+    for (int i = first; i < last && !stop.load(std::memory_order_relaxed); ++i) {
       std::mt19937_64 rng(streamSeed(options.seed, static_cast<std::uint64_t>(i)));
       std::normal_distribution<double> normal(0.0, 1.0);
       std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -102,17 +103,21 @@ std::vector<MonteCarloSample> runMeanExcitationMonteCarlo(const GearPairModel& m
     }
   };
   const int threads = std::min(options.threads, options.samples);
-  if (threads <= 1) {
-    work(0, options.samples);
-  } else {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) {
-      pool.emplace_back(
-          work, static_cast<int>(static_cast<long long>(options.samples) * t / threads),
-          static_cast<int>(static_cast<long long>(options.samples) * (t + 1) / threads));
-    }
+  // The first chunk runs on the calling thread, which alone reports progress: a callback that
+  // throws (an interrupted run) stops every worker before the exception leaves.
+  const auto chunk = [&](int t) {
+    return static_cast<int>(static_cast<long long>(options.samples) * t / std::max(threads, 1));
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, chunk(t), chunk(t + 1));
+  try {
+    work(0, chunk(1));
+  } catch (...) {
+    stop = true;
     for (auto& thread : pool) thread.join();
+    throw;
   }
+  for (auto& thread : pool) thread.join();
   return samples;
 }
 

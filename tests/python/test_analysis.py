@@ -218,6 +218,31 @@ def test_train_and_sweep_results_are_dataframes_with_units_too():
                      "df": "", "f": "N", "message": None}
 
 
+def test_train_on_a_dict_runs_in_process_like_its_file(monkeypatch):
+    import tomllib
+
+    run = {"analysis.run": ["static", "modal"]}
+    from_file = geardyn.run("train", EXAMPLES / "train_two_stage_reducer.toml", overrides=run)
+    gearbox = tomllib.loads((EXAMPLES / "gearboxes" / "two_stage_reducer.toml").read_text())
+    before = _tmp_entries()
+    inline = geardyn.run("train", {**gearbox, "analysis": {"run": ["static", "modal"]}})
+    assert isinstance(inline, geardyn.Result)  # in-process: no executable, no folder
+    assert not {e for e in _tmp_entries() - before if e.startswith(("geardyn", "tmp"))}
+    monkeypatch.chdir(EXAMPLES)  # a dict's relative gearbox.file: from the working directory
+    named = geardyn.run("train", {"gearbox": {"file": "gearboxes/two_stage_reducer.toml"}},
+                        analysis={"run": ["static", "modal"]})
+    for result in (inline, named):
+        for table in ("modes", "meshes"):
+            a, b = result.to_pandas(table), from_file.to_pandas(table)
+            assert list(a.columns) == list(b.columns)
+            numeric = a.select_dtypes("number").columns
+            assert np.array_equal(a[numeric].to_numpy(), b[numeric].to_numpy()), table
+    with pytest.raises(geardyn.ConfigError) as error:
+        geardyn.run("train", {"gearbox": {"file": "gearboxes/two_stage_reducer.toml"}},
+                    overrides={"gears.z1.teth": 20})
+    assert "did you mean" in str(error.value) and "teeth" in str(error.value)
+
+
 def test_report_writes_the_result_folder_for_geardyn_report(monkeypatch, tmp_path):
     import types
 

@@ -58,3 +58,15 @@ def test_missing_plotly_js_names_the_fix(tmp_path, monkeypatch):
 def test_write_report_refuses_a_folder_without_summary(tmp_path):
     with pytest.raises(FileNotFoundError, match="no summary.json"):
         report.write_report(tmp_path)
+
+
+def test_python_m_geardyn_report_imports_the_module_once(tmp_path):
+    # `geardyn report` runs `python -m geardyn.report`: importing the package must not import
+    # geardyn.report first (runpy's RuntimeWarning "found in sys.modules"), made an error here.
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-W", "error::RuntimeWarning", "-m", "geardyn.report",
+                           str(tmp_path)], capture_output=True, text=True)
+    assert "RuntimeWarning" not in done.stderr, done.stderr
+    assert "no summary.json" in done.stderr and done.returncode != 0

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <thread>
 
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "support/numeric_assertions.h"
@@ -17,17 +20,23 @@ GearPairModel model() {
   return GearPairModel(testing::issue4ExampleSpec());
 }
 
+/// A Monte Carlo of `samples` revolutions of 7 teeth with a 5 % tooth stiffness scatter.
+MonteCarloOptions scatteredStiffness(int samples, int threads) {
+  MonteCarloOptions o;
+  o.samples = samples;
+  o.teeth = 7;
+  o.stiffness_std = 0.05;
+  o.baseload = 1418.4;
+  o.threads = threads;
+  return o;
+}
+
 TEST(MonteCarlo, BitIdenticalWhateverTheThreads) {
   const GearPairModel m = model();
-  MonteCarloOptions o;
-  o.samples = 101;
-  o.teeth = 7;
+  MonteCarloOptions o = scatteredStiffness(101, 1);
   o.seed = 42;
   o.pitch_error_std = 1e-6;
   o.profile_error_std = 1e-6;
-  o.stiffness_std = 0.05;
-  o.baseload = 1418.4;
-  o.threads = 1;
   const auto one = runMeanExcitationMonteCarlo(m, o);
   o.threads = 2;
   const auto two = runMeanExcitationMonteCarlo(m, o);
@@ -40,6 +49,28 @@ TEST(MonteCarlo, BitIdenticalWhateverTheThreads) {
   }
   o.seed = 43;
   EXPECT_NE(runMeanExcitationMonteCarlo(m, o)[0].ratio, one[0].ratio);
+}
+
+// An interrupted run (Python's Ctrl-C: the progress callback throws on the calling thread)
+// stops every worker and leaves promptly, not after the last sample.
+TEST(MonteCarlo, ProgressRunsOnTheCallingThreadAndAThrowStopsTheWorkers) {
+  const GearPairModel m = model();
+  MonteCarloOptions o = scatteredStiffness(4000, 4);
+  const std::thread::id caller = std::this_thread::get_id();
+  int calls = 0;
+  bool other_thread = false;
+  o.progress = [&](double done, double) {
+    other_thread = other_thread || std::this_thread::get_id() != caller;
+    if (++calls == 5) throw std::runtime_error("interrupted at " + std::to_string(done));
+  };
+  EXPECT_THROW(runMeanExcitationMonteCarlo(m, o), std::runtime_error);
+  EXPECT_FALSE(other_thread);
+  EXPECT_EQ(calls, 5);  // the calling thread's chunk stopped at the throw
+  calls = 0;
+  o.progress = [&](double, double) { ++calls; };
+  o.samples = 8;
+  runMeanExcitationMonteCarlo(m, o);
+  EXPECT_EQ(calls, 2);  // the caller's chunk: samples 0 and 1 of 8 on 4 threads
 }
 
 TEST(MonteCarlo, WithoutRandomnessEverySampleIsTheDeterministicRatio) {

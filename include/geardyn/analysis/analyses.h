@@ -42,6 +42,11 @@ struct TrainInputs {
 /// that declares the section. Throws InputError naming the key.
 TrainInputs loadTrainInputs(const std::filesystem::path& file,
                             const std::vector<std::string>& overrides);
+/// As loadTrainInputs, from the text of an analysis file (e.g. a dict from Python); `source`
+/// names it in messages and `base_dir` resolves a relative gearbox.file.
+TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
+                             const std::filesystem::path& base_dir,
+                             const std::vector<std::string>& overrides);
 /// `train`: kinematics and phasing, then the analyses of `analysis.run` (static, modal,
 /// Campbell, forced response, time response) on one gearbox (one load case).
 AnalysisResult trainAnalysis(const TrainInputs& inputs, const AnalysisContext& context);

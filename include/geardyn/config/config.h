@@ -58,6 +58,10 @@ class Config {
 Config parseConfig(std::string_view toml_text, const std::string& source_name,
                    const ConfigSchema& schema, const std::vector<std::string>& overrides = {});
 
+/// The text of a configuration file. A missing or unreadable file is an InputError (key
+/// `config`).
+std::string readConfigFile(const std::filesystem::path& file);
+
 /// As parseConfig, reading the file first. A missing or unreadable file is an InputError.
 Config loadConfigFile(const std::filesystem::path& file, const ConfigSchema& schema,
                       const std::vector<std::string>& overrides = {});
