@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -145,12 +144,20 @@ bool fewOfMany(const GearTrainModel& model, const TrainModalOptions& options) {
   return n >= kSparseModalDofs && options.modes > 0 && 4 * options.modes < n;
 }
 
+/// The rigid-body threshold [Hz]: options.rigid_frequency, or 1e-6 of `highest` [Hz].
+double rigidThreshold(const TrainModalOptions& options, double highest) {
+  return options.rigid_frequency >= 0 ? options.rigid_frequency : 1e-6 * highest;
+}
+
 /// A few modes of a large (FE) train: shift-invert Arnoldi nearest σ < 0, just below the
 /// rigid-body modes at 0: 1e-3 of the softest uncoupled DOF's sqrt(K_ii / M_ii), a Rayleigh
 /// quotient, hence at or above the lowest elastic modes' scale. `highest` gets the stiffest
-/// uncoupled DOF's frequency [Hz] (the scale of the rigid-body threshold).
-std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed, int count,
-                                double& highest) {
+/// uncoupled DOF's frequency [Hz] (the scale of the rigid-body threshold). At least
+/// options.modes elastic modes (not rigid, damping ratio within options.max_damping_ratio)
+/// are returned when the train has that many.
+std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed,
+                                const TrainModalOptions& options, double& highest,
+                                Eigen::VectorXd* krylov_start) {
   const SparseMatrix K = sparse.K + (speed * speed) * sparse.Komega;
   const SparseMatrix D = sparse.C + speed * sparse.G;
   const Eigen::VectorXd m = sparse.M.diagonal(), k = K.diagonal();
@@ -163,18 +170,35 @@ std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed, int cou
   }
   if (!std::isfinite(softest)) softest = 1.0;
   highest = std::sqrt(stiffest) / kTwoPi;
-  // Each elastic mode is a conjugate pair; rigid-body and overdamped eigenvalues near σ come
-  // first: a margin of 12.
-  std::vector<TrainMode> modes;
-  for (detail::DampedMode& found :
-       detail::shiftInvertModes(sparse.M, D, K, 2 * count + 12, -1e-3 * std::sqrt(softest))) {
-    modes.push_back(fromDamped(std::move(found)));
+  const double rigid = rigidThreshold(options, highest);
+  const int count = options.modes;
+  const int most = 2 * static_cast<int>(sparse.M.rows()) - 3;
+  // Each elastic mode is a conjugate pair; rigid-body (λ ≈ 0) and overdamped eigenvalues near
+  // σ come first. The Arnoldi cost grows with the square of the eigenvalues asked for, so the
+  // pairs plus a margin of 4 are asked for, and again with the margin widened by what was
+  // missing when fewer elastic modes come back (a fixed margin of 12 cost 30 % on a Campbell
+  // diagram of a 624-DOF train).
+  for (int margin = 4;;) {
+    const int asked = std::min(2 * count + margin, most);
+    std::vector<TrainMode> modes;
+    int elastic = 0;
+    for (detail::DampedMode& found : detail::shiftInvertModes(
+             sparse.M, D, K, asked, -1e-3 * std::sqrt(softest), krylov_start)) {
+      modes.push_back(fromDamped(std::move(found)));
+      const TrainMode& mode = modes.back();
+      elastic += std::abs(mode.eigenvalue) / kTwoPi >= rigid &&
+                 mode.damping_ratio <= options.max_damping_ratio;
+    }
+    if (elastic >= count || asked == most) return modes;
+    margin += 2 * (count - elastic) + 2;
   }
-  return modes;
 }
 
+/// The modes at `input_speed`; `sparse` and `krylov_start` (see detail::shiftInvertModes)
+/// serve the shift-invert path of large trains, as in a Campbell diagram.
 std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
-                               const TrainModalOptions& options, const SparseTrain* sparse);
+                               const TrainModalOptions& options, const SparseTrain* sparse,
+                               Eigen::VectorXd* krylov_start = nullptr);
 
 }  // namespace
 
@@ -198,7 +222,8 @@ std::vector<TrainMode> trainModes(const GearTrainModel& model, double input_spee
 namespace {
 
 std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
-                               const TrainModalOptions& options, const SparseTrain* sparse) {
+                               const TrainModalOptions& options, const SparseTrain* sparse,
+                               Eigen::VectorXd* krylov_start) {
   options.validate();
   std::vector<TrainMode> modes;
   const bool few = fewOfMany(model, options);
@@ -207,7 +232,7 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
   double sparse_highest = 0.0;
   bool undamped = false;
   if (few) {
-    modes = fewModes(*sparse, input_speed, options.modes, sparse_highest);
+    modes = fewModes(*sparse, input_speed, options, sparse_highest, krylov_start);
   } else {
     const Eigen::MatrixXd K = model.meanStiffnessAt(input_speed);
     const Eigen::MatrixXd D = model.dampingAt(input_speed);
@@ -249,7 +274,7 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
   // The rigid-body threshold: 1e-6 of the highest frequency found (the sparse path finds only
   // the low ones: 1e-6 of the stiffest uncoupled DOF's frequency instead).
   const double highest = std::max(sparse_highest, modes.empty() ? 0.0 : modes.back().frequency);
-  const double rigid = options.rigid_frequency >= 0 ? options.rigid_frequency : 1e-6 * highest;
+  const double rigid = rigidThreshold(options, highest);
   std::vector<TrainMode> kept;
   for (TrainMode& mode : modes) {
     if (mode.damping_ratio > options.max_damping_ratio) continue;
@@ -329,26 +354,30 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
   std::optional<SparseTrain> sparse;
   const SparseTrain* sparse_train = fewOfMany(model, candidates) ? &sparse.emplace(model) : nullptr;
   // The speeds are independent eigenproblems: solved on every core (the model and its sparse
-  // matrices are read-only), then tracked in order. An exception in a worker is rethrown here.
+  // matrices are read-only), each core a contiguous run of speeds so that every Arnoldi run
+  // starts from the previous speed's eigenvectors; then tracked in order. An exception in a
+  // worker is rethrown here.
   std::vector<std::vector<TrainMode>> solved(speeds.size());
-  std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  auto work = [&] {
-    for (std::size_t i = next++; i < speeds.size(); i = next++) {
+  const std::size_t threads =
+      std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), speeds.size());
+  auto work = [&](std::size_t first, std::size_t last) {
+    Eigen::VectorXd krylov_start;
+    for (std::size_t i = first; i < last; ++i) {
       try {
-        solved[i] = modesAt(model, speeds[i], candidates, sparse_train);
+        solved[i] = modesAt(model, speeds[i], candidates, sparse_train, &krylov_start);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
+        return;
       }
     }
   };
-  const std::size_t threads =
-      std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), speeds.size());
+  const auto first = [&](std::size_t t) { return speeds.size() * t / threads; };
   std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, first(t), first(t + 1));
+  work(0, first(1));
   for (auto& thread : pool) thread.join();
   if (failure) std::rethrow_exception(failure);
   for (std::size_t i = 0; i < speeds.size(); ++i) {

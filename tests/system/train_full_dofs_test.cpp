@@ -139,6 +139,24 @@ TEST(TrainFullDofs, ShiftInvertModesAreTheDenseSolversLowestModes) {
   }
 }
 
+// Without axial support a spur train has a free axial translation per shaft: with the
+// rolling mode, 5 rigid-body modes (10 eigenvalues at λ = 0) come before the elastic ones, more
+// than the first Arnoldi run's margin, so the shift-invert path must ask again.
+TEST(TrainFullDofs, ShiftInvertModesSkipManyRigidBodyModes) {
+  GearTrainSpec spec = flexibleReducer(0.0, 0.04);
+  for (auto& b : spec.bearings) b.k_axial = 0.0, b.c_axial = 0.0;
+  const GearTrainModel model(spec);
+  ASSERT_GE(model.dofCount(), kSparseModalDofs);
+  TrainModalOptions few;
+  few.modes = 8;
+  const auto sparse = trainModes(model, 0.0, few);
+  const auto dense = trainModes(model, 0.0);
+  ASSERT_EQ(sparse.size(), 8u);
+  for (std::size_t j = 0; j < sparse.size(); ++j) {
+    EXPECT_NEAR(sparse[j].frequency, dense[j].frequency, 1e-8 * dense[j].frequency) << j;
+  }
+}
+
 TEST(TrainFullDofs, SparseAndDenseNewmarkStepsAgree) {
   const GearTrainModel model(testing::flexibleReducer(12.0, 0.05));
   ASSERT_GE(model.dofCount(), kSparseTrainDofs);

@@ -17,9 +17,13 @@ namespace geardyn::detail {
 /// The modes with Im λ > 0 among the `eigenvalues` eigenvalues of A nearest σ [1/s], in
 /// solver order; the shapes are the displacement parts, largest entry 1. Throws
 /// std::runtime_error naming the cause when the factorisation or Arnoldi fails.
+/// `krylov_start` (optional, length 2n): in, Arnoldi's start vector when it has that length
+/// (else a random one); out, the sum of the computed eigenvectors (real and imaginary parts,
+/// each of unit norm): the start for a neighbouring problem, e.g. the next speed of a
+/// Campbell diagram, whose eigenvectors differ little.
 std::vector<DampedMode> shiftInvertModes(const Eigen::SparseMatrix<double>& M,
                                          const Eigen::SparseMatrix<double>& D,
                                          const Eigen::SparseMatrix<double>& K, int eigenvalues,
-                                         double sigma);
+                                         double sigma, Eigen::VectorXd* krylov_start = nullptr);
 
 }  // namespace geardyn::detail
