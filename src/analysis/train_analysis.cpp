@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/run_budget.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/error.h"
@@ -399,7 +400,9 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
     summary.config["gearbox_description"] = loaded.gearbox.resolved();
   }
   std::vector<std::string> warnings = loaded.warnings;
-  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings));
+  // A train whose dense matrices would not fit is refused before they are allocated.
+  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings),
+                             memoryLimitBytes());
   warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
   summary.warnings = warnings;
   std::string text = fmt::format(

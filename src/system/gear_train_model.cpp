@@ -99,7 +99,8 @@ bool GearTrainModel::hasNonlinearMeshes() const {
                      [](const TrainMesh& m) { return m.nonlinear(); });
 }
 
-GearTrainModel::GearTrainModel(GearTrainSpec spec) : spec_(std::move(spec)) {
+GearTrainModel::GearTrainModel(GearTrainSpec spec, double memory_limit)
+    : spec_(std::move(spec)), memory_limit_(memory_limit) {
   if (spec_.dofs == TrainDofs::kFull && !spec_.stages.empty()) {
     throw InputError("planetary." + spec_.stages[0].name, "",
                      "gearbox.dofs = \"torsional\" or \"planar\": planetary stages are "
@@ -275,7 +276,20 @@ void GearTrainModel::buildBodies() {
                        "its sections', gears' or disks')");
     }
   }
+  checkDenseFits(static_cast<double>(bodies_.size()) * per, "gearbox.dofs", toString(spec_.dofs));
   dof_count_ = static_cast<int>(bodies_.size()) * per;
+}
+
+void GearTrainModel::checkDenseFits(double dofs, const std::string& key,
+                                    const std::string& value) const {
+  const double bytes = kDenseMatrices * dofs * dofs * sizeof(double);
+  if (bytes <= memory_limit_) return;
+  throw InputError(
+      key, value,
+      fmt::format("a model that fits in memory: {:.0f} DOFs need {:.3g} GB for {} dense "
+                  "{}×{} matrices, over the limit of {:.3g} GB (80 % of the "
+                  "available memory, or GEARDYN_MEMORY_LIMIT)",
+                  dofs, bytes / 1e9, kDenseMatrices, dofs, dofs, memory_limit_ / 1e9));
 }
 
 void GearTrainModel::buildElements() {

@@ -146,7 +146,17 @@ void GearTrainModel::buildShaftNodes(int s) {
   for (double xi : x) {
     if (xi - nodes.back() > tol) nodes.push_back(xi);
   }
-  // Split long elements evenly.
+  // Split long elements evenly, once the nodes are known to fit (their count as a double: a
+  // tiny max_element_length must not overflow an int or allocate before it is refused).
+  if (shaft.max_element_length) {
+    double count = static_cast<double>(bodies_.size()) + 1.0;
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+      count +=
+          std::max(1.0, std::ceil((nodes[i] - nodes[i - 1]) / *shaft.max_element_length - 1e-9));
+    }
+    checkDenseFits(count * dofsPerBody(), key + ".max_element_length",
+                   fmt::format("{:g} m", *shaft.max_element_length));
+  }
   if (shaft.max_element_length) {
     std::vector<double> fine{nodes.front()};
     for (std::size_t i = 1; i < nodes.size(); ++i) {

@@ -157,6 +157,29 @@ TEST(TrainFullDofs, ShiftInvertModesSkipManyRigidBodyModes) {
   }
 }
 
+// The memory check comes before the nodes and matrices are allocated: the model's own size
+// is the limit's boundary (10 dense n×n doubles), on either side of it.
+TEST(TrainFullDofs, AModelOverTheMemoryLimitIsRefusedNamingTheKey) {
+  const GearTrainModel fits(flexibleReducer(0.0, 0.04));
+  const double n = fits.dofCount();
+  const double bytes = GearTrainModel::kDenseMatrices * n * n * sizeof(double);
+  EXPECT_NO_THROW(GearTrainModel(flexibleReducer(0.0, 0.04), bytes));
+  try {
+    GearTrainModel(flexibleReducer(0.0, 0.04), 0.99 * bytes);
+    ADD_FAILURE() << "accepted over the limit";
+  } catch (const InputError& e) {
+    // The last flexible shaft's nodes push the count over; rigid ones are checked as a whole.
+    EXPECT_EQ(e.key(), "shafts.output.max_element_length") << e.what();
+    EXPECT_NE(std::string(e.what()).find("0.04 m"), std::string::npos) << e.what();
+  }
+  try {
+    GearTrainModel(flexibleReducer(0.0, 0.04, 2.1e11, false), 1e3);
+    ADD_FAILURE() << "accepted over the limit";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "gearbox.dofs") << e.what();
+  }
+}
+
 TEST(TrainFullDofs, SparseAndDenseNewmarkStepsAgree) {
   const GearTrainModel model(testing::flexibleReducer(12.0, 0.05));
   ASSERT_GE(model.dofCount(), kSparseTrainDofs);

@@ -20,6 +20,7 @@
 /// ("input.n0", "input.n1", …), joined by Timoshenko beam elements.
 
 #include <Eigen/Dense>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -105,8 +106,17 @@ struct TrainElement {
 
 class GearTrainModel {
  public:
+  /// The dense n×n matrices a model of n DOFs holds (M, K, C, G, K_Ω, mean mesh stiffness),
+  /// with the assembly's and the analyses' working copies (structure stiffness, K and D at a
+  /// speed, two more): what `memory_limit` is checked against.
+  static constexpr int kDenseMatrices = 10;
+
   /// Validates the description (InputError naming the component and key) and assembles.
-  explicit GearTrainModel(GearTrainSpec spec);
+  /// `memory_limit` [B]: a train whose kDenseMatrices n×n doubles would not fit is refused
+  /// before its bodies and matrices are allocated (InputError naming the finest flexible
+  /// shaft's max_element_length, or gearbox.dofs), e.g. analysis::memoryLimitBytes().
+  explicit GearTrainModel(GearTrainSpec spec,
+                          double memory_limit = std::numeric_limits<double>::infinity());
 
   const GearTrainSpec& spec() const noexcept { return spec_; }
   const TrainKinematics& kinematics() const noexcept { return kinematics_; }
@@ -175,6 +185,8 @@ class GearTrainModel {
  private:
   void buildBodies();
   void buildShaftNodes(int shaft);
+  /// Throws InputError(key, value) when `dofs` DOFs of dense matrices exceed memory_limit_.
+  void checkDenseFits(double dofs, const std::string& key, const std::string& value) const;
   void assembleBeams();
   void addBeamElements();
   void fullMeshGradient(const TrainMesh& m, std::vector<int>& dofs, Eigen::VectorXd& v) const;
@@ -194,6 +206,7 @@ class GearTrainModel {
   std::vector<std::vector<int>> shaft_nodes_;     // spec shaft index → its bodies by x
   std::vector<BeamElement> beams_;
   int dof_count_ = 0;
+  double memory_limit_ = std::numeric_limits<double>::infinity();  // [B]
   double output_torque_ = 0.0;
   Eigen::MatrixXd M_, K_, C_, G_, Komega_, Kmesh_;
   Eigen::VectorXd F0_;
