@@ -432,7 +432,8 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
     r.spec.mesh_damping = dashpotFromRatio(std::exp(p.logRatio(t)), r.spec.mesh_stiffness, p.m_eff);
   }
   r.message = fmt::format(
-      "joint weighted least squares: {} iterations, chi^2 = {:.4g} for {} degrees of freedom{}",
+      "joint weighted least squares: {} iterations, chi^2 [-] = {:.4g} for {} degrees of "
+      "freedom{}",
       r.iterations, r.chi_square, r.degrees_of_freedom,
       r.converged ? "" : " (iteration limit reached)");
   return r;

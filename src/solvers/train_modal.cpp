@@ -331,10 +331,10 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
   // The speeds are independent eigenproblems: solved on every core (the model and its sparse
   // matrices are read-only), then tracked in order. An exception in a worker is rethrown here.
   std::vector<std::vector<TrainMode>> solved(speeds.size());
-  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> next{0}, finished{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  auto work = [&] {
+  auto work = [&](bool report) {
     for (std::size_t i = next++; i < speeds.size(); i = next++) {
       try {
         solved[i] = modesAt(model, speeds[i], candidates, sparse_train);
