@@ -45,7 +45,11 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
         fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth, truth->gear_teeth));
   }
 
-  const IdentificationOptions id_options = config::identificationOptionsFromConfig(config);
+  IdentificationOptions id_options = config::identificationOptionsFromConfig(config);
+  id_options.progress =
+      id_options.method == IdentificationMethod::kJoint
+          ? context.progressFor("identify: joint fit", "iterations of max_iterations")
+          : context.progressFor("identify: three-step fit", "mesh harmonics");
   const auto start = std::chrono::steady_clock::now();
   const DteIdentification r = identifyDte(known, data, id_options);
   const double seconds =

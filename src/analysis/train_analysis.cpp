@@ -171,10 +171,11 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
       std::min<int>(static_cast<int>(analysis.integer("campbell.modes")), model.dofCount());
   const auto lines =
       trainOrderLines(model, static_cast<int>(analysis.integer("campbell.mesh_harmonics")));
-  const TrainCampbell d = trainCampbell(model, speeds, options, lines);
+  const TrainCampbell d = trainCampbell(model, speeds, options, lines,
+                                        context.progressFor("train: Campbell", "speeds"));
   std::vector<std::string> header{"speed_rpm"};
   for (std::size_t j = 0; j < d.modes.front().size(); ++j)
-    header.push_back(fmt::format("mode_{}_Hz", j + 1));
+    header.push_back(fmt::format("mode_{}_hz", j + 1));
   io::CsvTable table(header);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     std::vector<io::CsvCell> row{speeds[i] / kRpm};

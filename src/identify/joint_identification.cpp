@@ -324,6 +324,7 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
   double cost = res.squaredNorm(), lambda = 1e-3;
   r.converged = false;
   for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
+    if (options.progress) options.progress(r.iterations, options.max_iterations);
     const Eigen::MatrixXd j = p.jacobian(t);
     const Eigen::MatrixXd jtj = j.transpose() * j;
     const Eigen::VectorXd g = j.transpose() * res;

@@ -308,7 +308,8 @@ std::vector<TrainOrderLine> trainOrderLines(const GearTrainModel& model, int mes
 
 TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<double>& speeds,
                             const TrainModalOptions& options,
-                            const std::vector<TrainOrderLine>& lines) {
+                            const std::vector<TrainOrderLine>& lines,
+                            const ProgressCallback& progress) {
   if (speeds.size() < 2) throw InputError("campbell.speeds", "", "at least two speeds");
   for (std::size_t i = 1; i < speeds.size(); ++i) {
     if (!(speeds[i] > speeds[i - 1])) {
@@ -342,13 +343,16 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
       }
+      const std::size_t done = ++finished;
+      if (report && progress)
+        progress(static_cast<double>(done), static_cast<double>(speeds.size()));
     }
   };
   const std::size_t threads =
       std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), speeds.size());
   std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, false);
+  work(true);
   for (auto& thread : pool) thread.join();
   if (failure) std::rethrow_exception(failure);
   for (std::size_t i = 0; i < speeds.size(); ++i) {

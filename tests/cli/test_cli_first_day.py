@@ -104,6 +104,23 @@ def test_long_runs_show_progress_with_eta_unless_quiet(tmp_path):
             (command, result.stderr)
 
 
+def test_ltca_identify_and_train_campbell_show_progress(tmp_path):
+    for command, config, extra, label in [
+            ("ltca", EXAMPLES / "ltca_visnadi2021_long_relief.toml", [], "ltca: Harris map: "),
+            ("ltca", EXAMPLES / "ltca_visnadi2021_long_relief.toml", [], "ltca: loaded contact: "),
+            ("identify", EXAMPLES / "identify_rao2023_table41.toml", [], "identify: joint fit: "),
+            ("train", EXAMPLES / "train_two_stage_reducer.toml",
+             ["--set", 'analysis.run=["campbell"]'], "train: Campbell: ")]:
+        result = run_env(command, config, "--out", tmp_path / command, "--progress",
+                         "--set", "output.plots=false", *extra, env=PROGRESS_NOW)
+        assert result.returncode == 0, (command, result.stderr)
+        assert any(l.startswith(label) and "ETA" in l for l in result.stderr.splitlines()), \
+            (command, result.stderr)
+        quiet = run_env(command, config, "--out", tmp_path / (command + "_q"), "--progress",
+                        "--quiet", "--set", "output.plots=false", *extra, env=PROGRESS_NOW)
+        assert "ETA" not in quiet.stderr
+
+
 # --- item 4: messages name real keys, in the user's units -------------------------------------
 
 def test_simulate_at_zero_speed_names_the_speed_key(tmp_path):
