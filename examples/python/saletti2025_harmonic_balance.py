@@ -17,7 +17,7 @@ print(f"peak {peak['p2p'] * 1e6:.2f} um p2p at {peak['frequency']:.1f} Hz, "
 assert result.results["failures"] == 0 and len(result.results["folds"]) >= 2
 assert 1500 < peak["frequency"] < 1800
 sweep = result.to_pandas("sweep")  # one row per continuation point, units in .attrs
-assert sweep.attrs["units"]["frequency"] == "Hz" and len(sweep) == result.results["points"]
+assert sweep.attrs["units"]["frequency_hz"] == "Hz" and len(sweep) == result.results["points"]
 with tempfile.TemporaryDirectory(prefix="geardyn-example-") as out:
     result.plot(out)
     assert (pathlib.Path(out) / "forced_response.png").exists()

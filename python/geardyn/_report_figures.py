@@ -4,7 +4,7 @@ as the PNG plots. Gear-pair commands here; rotors, trains and sweeps in _report_
 
 import csv
 
-from ._tables import _read_columns, log_floor, mesh_frequency_per_rpm, stability_runs
+from ._tables import _read_columns, log_floor, mesh_frequency_per_rpm, read_rows, stability_runs
 
 UM = "µm"
 _COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
@@ -100,17 +100,17 @@ def stiffness(folder, summary):
     table = _read_columns(folder / "mesh_stiffness.csv")
     phase = table["mesh_fraction"]
     primary = summary["results"]["mesh_stiffness"]["model"]
-    has_ste = "ste_m" in table
+    has_ste = "ste_transverse_m" in table
     layout = rows_layout(f"{_title(summary, 'mesh stiffness')}", "mesh phase [mesh periods]",
                          ["mesh stiffness [N/m]"] + (["loaded STE [µm]"] if has_ste else []))
-    data = [line(phase, table["k_total"], primary, line={"width": 2.5})]
+    data = [line(phase, table["k_total_transverse_n_per_m"], primary, line={"width": 2.5})]
     for name in table:
         if name.startswith("k_pair_"):
-            data.append(line(phase, table[name], f"{primary}, pair {name.rsplit('_', 1)[1]}", line={"dash": "dash"}))
-        elif name.startswith("k_") and name != "k_total":
-            data.append(line(phase, table[name], name[2:]))
+            data.append(line(phase, table[name], f"{primary}, pair {name.split('_')[2]}", line={"dash": "dash"}))
+        elif name.startswith("k_") and name != "k_total_transverse_n_per_m":
+            data.append(line(phase, table[name], name[2:].replace("_transverse_n_per_m", "")))
     if has_ste:
-        data.append(line(phase, [1e6 * v for v in table["ste_m"]], "loaded STE", row=1, line={"color": "black"}))
+        data.append(line(phase, [1e6 * v for v in table["ste_transverse_m"]], "loaded STE", row=1, line={"color": "black"}))
     return [figure("Mesh stiffness", "Mesh stiffness of every model over one mesh period"
                    + (" and the loaded static transmission error." if has_ste else "."), data, layout,
                    640 if has_ste else 480)]
@@ -120,9 +120,10 @@ def simulate(folder, summary):
     table = _read_columns(folder / "time_response.csv")
     si = summary["results"]["model"]["units"] == "SI"
     layout = rows_layout(_title(summary, "gear-pair time response"), "t [s]" if si else "t1 = ω_n t [-]",
-                         [f"y = x - e [{UM if si else '-'}]", f"mesh force [{'N' if si else '-'}]"])
-    data = [line(table["t"], [v * (1e6 if si else 1.0) for v in table["y"]], "relative deflection y"),
-            line(table["t"], table["mesh_force"], "mesh force", row=1, line={"color": _COLOURS[3]})]
+                         [f"y = x - e [{UM if si else '-'}]", f"transverse mesh force [{'N' if si else '-'}]"])
+    t, u = table["t_s" if si else "t_nondim"], "" if si else "nondim"
+    data = [line(t, [v * (1e6 if si else 1.0) for v in table["y_transverse_" + (u or "m")]], "relative deflection y"),
+            line(t, table["mesh_force_transverse_" + (u or "n")], "mesh force", row=1, line={"color": _COLOURS[3]})]
     return [figure("Time history", "Steady periods of the Newmark time response.", data, layout, 600)]
 
 
@@ -168,8 +169,7 @@ def hbm(folder, summary):
     results = summary["results"]
     si = summary["config"]["model"]["units"] == "SI"
     unit = 1e6 if si else 1.0
-    with open(folder / "sweep.csv", newline="") as handle:
-        rows = list(csv.DictReader(handle))
+    rows = read_rows(folder / "sweep.csv")
     per_rpm = mesh_frequency_per_rpm(summary) if si else None
     data = forced_response_traces(rows, unit, per_rpm)
     folds = results.get("folds", [])
@@ -192,7 +192,7 @@ def hbm(folder, summary):
                              [f"y [{UM if si else '-'}]", "contact force [N]", "F / y [N/m]"])
         data = []
         for i, detail in enumerate(details):
-            table = _read_columns(folder / detail["file"])
+            table = _read_columns(folder / detail["file"], short=True)
             state = "stable" if detail["stable"] else "unstable"
             common = {"legendgroup": str(i), "line": {"color": _COLOURS[i % len(_COLOURS)]}}
             name = f"{detail['frequency']:g} Hz ({state})"
@@ -207,15 +207,15 @@ def hbm(folder, summary):
 def ltca(folder, summary):
     table = _read_columns(folder / "ltca.csv")
     layout = rows_layout(f"{_title(summary, 'loaded tooth contact')}: {summary['results']['ltca']['force']:g} N",
-                         "mesh phase [periods]", [f"along the line of action [{UM}]", "load share [-]"])
-    data = [line(table["phase"], [1e6 * v for v in table["ste_m"]], "loaded STE"),
-            line(table["phase"], [1e6 * v for v in table["no_load_te_m"]], "no-load TE", line={"dash": "dash"})]
-    data += [line(table["phase"], table[n], n.replace("share_", ""), row=1) for n in table if n.startswith("share_pair_")]
+                         "mesh phase [periods]", [f"along the transverse line of action [{UM}]", "load share [-]"])
+    data = [line(table["mesh_fraction"], [1e6 * v for v in table["ste_transverse_m"]], "loaded STE"),
+            line(table["mesh_fraction"], [1e6 * v for v in table["no_load_te_transverse_m"]], "no-load TE", line={"dash": "dash"})]
+    data += [line(table["mesh_fraction"], table[n], n.replace("share_", ""), row=1) for n in table if n.startswith("share_pair_")]
     out = [figure("Loaded tooth contact", "Loaded STE and load share of each tooth pair.", data, layout, 600)]
     if (folder / "harris.csv").exists():
         harris = _read_columns(folder / "harris.csv")
-        data = [line(harris["force_n"], [1e6 * v for v in harris["peak_to_peak_m"]], "peak to peak", mode="lines+markers")]
-        data += [line(harris["force_n"], [1e6 * v for v in harris[n]], n.replace("_m", "")) for n in harris
+        data = [line(harris["force_transverse_n"], [1e6 * v for v in harris["peak_to_peak_m"]], "peak to peak", mode="lines+markers")]
+        data += [line(harris["force_transverse_n"], [1e6 * v for v in harris[n]], n.replace("_m", "")) for n in harris
                  if n.startswith("harmonic_")]
         out.append(figure("Harris map", "Peak-to-peak loaded STE and its harmonics against load.", data,
                           axes_layout("Harris map", "transmitted force [N]", f"loaded STE [{UM}]")))
@@ -232,10 +232,10 @@ def identify(folder, summary):
     for k, (speed, shaft) in enumerate((s, sh) for s in speeds for sh in shafts):
         keep = [i for i in range(len(table["shaft"])) if table["shaft"][i] == shaft and table["speed_rpm"][i] == speed]
         f = [table["frequency_hz"][i] for i in keep]
-        data.append({"type": "bar", "x": f, "y": [1e6 * table["measured_amplitude"][i] for i in keep],
+        data.append({"type": "bar", "x": f, "y": [1e6 * table["measured_amplitude_m"][i] for i in keep],
                      "name": "measured", "legendgroup": "m", "showlegend": k == 0, "marker": {"color": "#999"},
                      "xaxis": f"x{k + 1}" if k else "x", "yaxis": f"y{k + 1}" if k else "y"})
-        data.append(markers(f, [1e6 * table["model_amplitude"][i] for i in keep], "re-simulated", row=k,
+        data.append(markers(f, [1e6 * table["model_amplitude_m"][i] for i in keep], "re-simulated", row=k,
                             legendgroup="r", showlegend=k == 0, marker={"color": _COLOURS[3], "size": 8,
                                                                         "symbol": "circle-open"}))
     return [figure("Measured and re-simulated whirl peaks", "Forward whirl at f > 0, backward at f < 0.",

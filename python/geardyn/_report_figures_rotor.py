@@ -17,7 +17,7 @@ def _title(summary, fallback):
 
 
 def _orbits(folder, summary, only_steady):
-    table = _read_columns(folder / "time_history.csv")
+    table = _read_columns(folder / "time_history.csv", short=True)
     keep = range(len(table["x1"]))
     if only_steady and "steady" in table:
         keep = [i for i in keep if table["steady"][i] == 1.0]
@@ -53,9 +53,9 @@ def _full_spectrum(folder, summary):
     data = []
     for k, shaft in enumerate(("pinion", "gear")):
         f = [spectrum["frequency_hz"][i] for i, s in enumerate(spectrum["shaft"]) if s == shaft]
-        a = [1e6 * spectrum["amplitude"][i] for i, s in enumerate(spectrum["shaft"]) if s == shaft]
+        a = [1e6 * spectrum["amplitude_m"][i] for i, s in enumerate(spectrum["shaft"]) if s == shaft]
         pf = [peaks["frequency_hz"][i] for i, s in enumerate(peaks["shaft"]) if s == shaft]
-        pa = [1e6 * peaks["amplitude"][i] for i, s in enumerate(peaks["shaft"]) if s == shaft]
+        pa = [1e6 * peaks["amplitude_m"][i] for i, s in enumerate(peaks["shaft"]) if s == shaft]
         data.append(line(f, a, "FFT", row=k, legendgroup="fft", showlegend=k == 0, line={"color": "#666", "width": 1}))
         data.append(markers(pf, pa, "whirl peaks", row=k, legendgroup="p", showlegend=k == 0,
                             marker={"color": _COLOURS[3], "symbol": "circle-open", "size": 7}))
@@ -77,7 +77,7 @@ def _study(folder, summary):
     data, everything = [], []
     for k, shaft in enumerate(("pinion", "gear")):
         for j, case in enumerate(cases):
-            values = {study["component"][i]: 1e6 * study["amplitude"][i] for i in range(len(study["case"]))
+            values = {study["component"][i]: 1e6 * study["amplitude_m"][i] for i in range(len(study["case"]))
                       if study["case"][i] == case and study["shaft"][i] == shaft}
             ys = [values.get(c) for c in components]
             everything += [v for v in ys if v]
@@ -159,7 +159,7 @@ def _fe_campbell(folder, summary):
 
 
 def _fe_time(folder, summary):
-    history = _read_columns(folder / "time_history.csv")
+    history = _read_columns(folder / "time_history.csv", short=True)
     channels = [c for c in history if c not in ("t", "speed_rpm", "mesh_stiffness", "mesh_force")
                 and not c.endswith(("_vel", "_acc"))]
     layout = rows_layout(f"{_title(summary, 'rotor')}: time response", "time [s]",
@@ -185,7 +185,7 @@ def _fe_time(folder, summary):
 
 def _fe_compare(folder, summary):
     stiffness = _long_table(folder / "compare_stiffness.csv", ["model"])
-    data = [line(d["mesh_fraction"], d["stiffness"], m) for (m,), d in stiffness.items()]
+    data = [line(d["mesh_fraction"], d["stiffness_normal_n_per_m"], m) for (m,), d in stiffness.items()]
     return [figure("Mesh-stiffness models", "The models compared over one mesh period.", data,
                    axes_layout(f"{_title(summary, 'rotor')}: mesh stiffness", "mesh phase [mesh periods]",
                                "k_m [N/m]"))]
@@ -253,7 +253,7 @@ def _train_mode_shapes(folder, name, modes, count=16):
         largest = max(abs(v) for v in values.values()) or 1.0
         columns.append([values.get(d, 0.0) / largest for d in dofs])
     z = [[columns[j][i] for j in range(len(numbers))] for i in range(len(dofs))]
-    labels = [f"{m}: {f:.0f} Hz" for m, f in zip(numbers, modes["frequency_Hz"])]
+    labels = [f"{m}: {f:.0f} Hz" for m, f in zip(numbers, modes["frequency_hz"])]
     data = [{"type": "heatmap", "z": z, "x": labels, "y": dofs, "zmin": -1, "zmax": 1, "colorscale": "RdBu",
              "reversescale": True, "colorbar": {"title": {"text": "shape / largest [-]"}},
              "hovertemplate": "mode %{x}<br>%{y}: %{z:.3f}<extra></extra>"}]
@@ -269,7 +269,7 @@ def train(folder, summary):
     name = summary["config"].get("gearbox", {}).get("name") or "gear train"
     if "modal" in results and (folder / "modes.csv").exists():
         modes = _read_columns(folder / "modes.csv")
-        data = [{"type": "bar", "x": [f"mode {int(m)}" for m in modes["mode"]], "y": modes["frequency_Hz"],
+        data = [{"type": "bar", "x": [f"mode {int(m)}" for m in modes["mode"]], "y": modes["frequency_hz"],
                  "text": modes.get("stage_type"), "name": "natural frequency"}]
         out.append(figure("Modes", "Natural frequencies (hover: the kind of mode).", data,
                           axes_layout(f"{name}: modes", "mode", "natural frequency [Hz]")))
@@ -283,11 +283,11 @@ def train(folder, summary):
         data = [line(speeds, v, n.replace("_", " "), line={"color": "#444", "width": 1})
                 for n, v in table.items() if n.startswith("mode_")]
         data += [line(speeds, [slope * s for s in speeds], n, line={"dash": "dash" if n.startswith("1x ") else "dashdot"})
-                 for n, slope in zip(lines["line"], lines["Hz_per_rpm"])]
+                 for n, slope in zip(lines["line"], lines["hz_per_rpm"])]
         if (folder / "critical_speeds.csv").stat().st_size:
             critical = _read_columns(folder / "critical_speeds.csv")
             if critical:
-                data.append(markers(critical["speed_rpm"], critical["frequency_Hz"], "crossings (critical speeds)",
+                data.append(markers(critical["speed_rpm"], critical["frequency_hz"], "crossings (critical speeds)",
                                     marker={"symbol": "x", "size": 9, "color": "black"}))
         layout = axes_layout(f"{name}: Campbell diagram", "input speed [rpm]", "natural frequency [Hz]")
         layout["yaxis"]["range"] = [0, top]
@@ -302,8 +302,8 @@ def train(folder, summary):
     if "time" in results and (folder / "time_history.csv").exists():
         table = _read_columns(folder / "time_history.csv")
         t_ms = [1e3 * (t - table["t_s"][0]) for t in table["t_s"]]
-        data = [line(t_ms, [1e-3 * f for f in v], n[len("mesh_force_N_"):]) for n, v in table.items()
-                if n.startswith("mesh_force_N_")]
+        data = [line(t_ms, [1e-3 * f for f in v], n[len("mesh_force_"):-len("_normal_n")])
+                for n, v in table.items() if n.startswith("mesh_force_") and n.endswith("_normal_n")]
         out.append(figure("Time history", "Dynamic mesh forces in the steady window.", data,
                           axes_layout(f"{name}: mesh forces", "time [ms]", "mesh force [kN]")))
     return out

@@ -5,19 +5,37 @@ import csv
 import json
 import math
 import pathlib
+import re
+
+# Column names end with their unit, and a gear pair's line-of-action quantities name their plane
+# ("p2p_transverse_m", "frequency_hz"); short_name drops both for the plotting code ("p2p").
+_UNIT_SUFFIX = re.compile(r"(_transverse|_normal)?_(hz|m|n|n_m|rad|s|n_per_m|m_per_s|m_per_s2|rad_per_s|rad_per_s2|nondim)$",
+                          re.IGNORECASE)
 
 
-def _read_columns(path):
-    """A CSV table as {column: [floats or strings]}."""
+def short_name(name):
+    """``name`` without its unit and plane: "p2p_transverse_m" -> "p2p", "t_s" -> "t"."""
+    return _UNIT_SUFFIX.sub("", name)
+
+
+def read_rows(path):
+    """A CSV table as a list of rows {short column name: text} (see short_name)."""
+    with open(path, newline="") as handle:
+        return [{short_name(k): v for k, v in row.items()} for row in csv.DictReader(handle)]
+
+
+def _read_columns(path, short=False):
+    """A CSV table as {column: [floats or strings]} (short=True: short column names)."""
     with open(path, newline="") as handle:
         rows = list(csv.DictReader(handle))
     columns = {}
     for name in rows[0].keys() if rows else []:
         values = [row[name] for row in rows]
+        key = short_name(name) if short else name
         try:
-            columns[name] = [float(v) for v in values]
+            columns[key] = [float(v) for v in values]
         except ValueError:
-            columns[name] = values
+            columns[key] = values
     return columns
 
 

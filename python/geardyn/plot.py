@@ -127,15 +127,15 @@ def plot_stiffness(result_dir, save=False):
     def twice(values):
         return list(values) + list(values)
 
-    has_ste = "ste_m" in table
+    has_ste = "ste_transverse_m" in table
     figure, axes = plt.subplots(2 if has_ste else 1, 1, figsize=(9, 7 if has_ste else 4.8), squeeze=False)
     ax = axes[0][0]
-    ax.plot(two, [k / 1e8 for k in twice(table["k_total"])], lw=1.6, label=primary)
+    ax.plot(two, [k / 1e8 for k in twice(table["k_total_transverse_n_per_m"])], lw=1.6, label=primary)
     for name in [c for c in table if c.startswith("k_pair_")]:
         ax.plot(two, [k / 1e8 for k in twice(table[name])], lw=0.7, ls="--",
-                label=f"{primary}, pair {name.rsplit('_', 1)[1]}")
-    for name in [c for c in table if c.startswith("k_") and c not in ("k_total",) and not c.startswith("k_pair_")]:
-        ax.plot(two, [k / 1e8 for k in twice(table[name])], lw=1.1, label=name[2:])
+                label=f"{primary}, pair {name.split('_')[2]}")
+    for name in [c for c in table if c.startswith("k_") and c != "k_total_transverse_n_per_m" and not c.startswith("k_pair_")]:
+        ax.plot(two, [k / 1e8 for k in twice(table[name])], lw=1.1, label=name[2:].replace("_transverse_n_per_m", ""))
     ax.set_xlabel("mesh phase [mesh periods]")
     ax.set_ylabel("mesh stiffness [1e8 N/m]")
     ax.set_xlim(0, 2)
@@ -145,7 +145,7 @@ def plot_stiffness(result_dir, save=False):
     ax.set_title(f"{title}\ncontact ratio {results['mesh_stiffness']['contact_ratio']:.4f}", fontsize=9)
     if has_ste:
         ax = axes[1][0]
-        ax.plot(two, [d * 1e6 for d in twice(table["ste_m"])], color="black", lw=1.2)
+        ax.plot(two, [d * 1e6 for d in twice(table["ste_transverse_m"])], color="black", lw=1.2)
         ax.set_xlabel("mesh phase [mesh periods]")
         ax.set_ylabel("loaded STE [µm]")
         ax.set_xlim(0, 2)
@@ -164,13 +164,14 @@ def plot_simulate(result_dir, save=False):
     table = _read_columns(folder / "time_response.csv")
     results = summary["results"]
     si = results["model"]["units"] == "SI"
-    t = table["t"]
+    t = table["t_s" if si else "t_nondim"]
     figure, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
-    axes[0].plot(t, [y * (1e6 if si else 1.0) for y in table["y"]], lw=1.0)
+    axes[0].plot(t, [y * (1e6 if si else 1.0) for y in table["y_transverse_" + ("m" if si else "nondim")]], lw=1.0)
     axes[0].set_ylabel("y = x - e [µm]" if si else "y = x - e [-]")
-    axes[1].plot(t, table["mesh_force"], lw=1.0, color="tab:red", label="mesh force")
+    axes[1].plot(t, table["mesh_force_transverse_" + ("n" if si else "nondim")], lw=1.0, color="tab:red",
+                 label="mesh force")
     axes[1].axhline(results["model"]["mean_force"], color="0.4", lw=0.8, ls="--", label="mean load F")
-    axes[1].set_ylabel("mesh force [N]" if si else "mesh force [-]")
+    axes[1].set_ylabel("transverse mesh force [N]" if si else "mesh force [-]")
     axes[1].set_xlabel("t [s]" if si else "t1 = omega_n t [-]")
     axes[1].legend(fontsize=8)
     for ax in axes:
@@ -215,8 +216,8 @@ def plot_identify(result_dir, save=False):
         for ax, shaft in zip(row, ("pinion", "gear")):
             keep = [i for i in range(len(table["shaft"])) if table["shaft"][i] == shaft and table["speed_rpm"][i] == speed]
             f = [table["frequency_hz"][i] for i in keep]
-            measured = [table["measured_amplitude"][i] * 1e6 for i in keep]
-            model = [table["model_amplitude"][i] * 1e6 for i in keep]
+            measured = [table["measured_amplitude_m"][i] * 1e6 for i in keep]
+            model = [table["model_amplitude_m"][i] * 1e6 for i in keep]
             ax.vlines(f, 0, measured, color="0.6", lw=4, label="measured")
             ax.plot(f, model, "o", color="tab:red", ms=4, mfc="none", label="re-simulated (identified)")
             ax.set_title(f"{shaft} shaft, {speed:g} rpm", fontsize=9)
@@ -242,13 +243,13 @@ def plot_ltca(result_dir, save=False):
     table = _read_columns(folder / "ltca.csv")
     figures = {}
     figure, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
-    top.plot(table["phase"], [v * 1e6 for v in table["ste_m"]], label="loaded STE")
-    top.plot(table["phase"], [v * 1e6 for v in table["no_load_te_m"]], "--", label="no-load TE")
-    top.set_ylabel("along the line of action [µm]")
+    top.plot(table["mesh_fraction"], [v * 1e6 for v in table["ste_transverse_m"]], label="loaded STE")
+    top.plot(table["mesh_fraction"], [v * 1e6 for v in table["no_load_te_transverse_m"]], "--", label="no-load TE")
+    top.set_ylabel("along the transverse line of action [µm]")
     top.legend(fontsize=8)
     top.grid(alpha=0.3)
     for name in [c for c in table if c.startswith("share_pair_")]:
-        bottom.plot(table["phase"], table[name], label=name.replace("share_", ""))
+        bottom.plot(table["mesh_fraction"], table[name], label=name.replace("share_", ""))
     bottom.set_ylabel("load share [-]")
     bottom.set_xlabel("mesh phase [periods]")
     bottom.legend(fontsize=8)
@@ -259,14 +260,14 @@ def plot_ltca(result_dir, save=False):
     if (folder / "harris.csv").exists():
         harris = _read_columns(folder / "harris.csv")
         figure, ax = plt.subplots(figsize=(7, 4.5))
-        ax.plot(harris["force_n"], [v * 1e6 for v in harris["peak_to_peak_m"]], "o-", label="peak to peak")
+        ax.plot(harris["force_transverse_n"], [v * 1e6 for v in harris["peak_to_peak_m"]], "o-", label="peak to peak")
         for name in [c for c in harris if c.startswith("harmonic_")]:
-            ax.plot(harris["force_n"], [v * 1e6 for v in harris[name]], lw=0.8, label=name.replace("_m", ""))
+            ax.plot(harris["force_transverse_n"], [v * 1e6 for v in harris[name]], lw=0.8, label=name.replace("_m", ""))
         if (folder / "harris_designs.csv").exists():
             others = _read_columns(folder / "harris_designs.csv")
             for name in dict.fromkeys(others["design"]):
                 keep = [i for i, d in enumerate(others["design"]) if d == name]
-                ax.plot([others["force_n"][i] for i in keep], [others["peak_to_peak_m"][i] * 1e6 for i in keep],
+                ax.plot([others["force_transverse_n"][i] for i in keep], [others["peak_to_peak_m"][i] * 1e6 for i in keep],
                         "--", lw=1.0, label=f"peak to peak, design {name}")
         design = summary["config"]["modifications"].get("design_load")
         if design:

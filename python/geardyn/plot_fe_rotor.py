@@ -33,7 +33,7 @@ def _fe_compare(folder, summary, title):
     ax = axes[0]
     for model in models:
         k = stiffness[(model,)]
-        ax.plot(k["mesh_fraction"], [v / 1e8 for v in k["stiffness"]], lw=1.2, label=model)
+        ax.plot(k["mesh_fraction"], [v / 1e8 for v in k["stiffness_normal_n_per_m"]], lw=1.2, label=model)
     ax.set_xlabel("mesh phase [mesh periods]")
     ax.set_ylabel("k_m [1e8 N/m]")
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
@@ -64,7 +64,7 @@ def _fe_compare(folder, summary, title):
 
 def _fe_time(folder, summary, title):
     figures = {}
-    history = _read_columns(folder / "time_history.csv")
+    history = _read_columns(folder / "time_history.csv", short=True)
     channels = [c for c in history if c not in ("t", "speed_rpm", "mesh_stiffness", "mesh_force")
                 and not c.endswith("_vel") and not c.endswith("_acc")]
     figure, axes = plt.subplots(2, 1, figsize=(10, 6), sharex=True, layout="constrained")

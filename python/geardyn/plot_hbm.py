@@ -2,13 +2,12 @@
 unstable branches and folds (as Saletti et al. 2025, Fig. 5) and one period of the periodic
 solutions at the detail frequencies (their Figs. 7-10)."""
 
-import csv
 import pathlib
 
 from matplotlib.lines import Line2D
 
 from ._plot_common import _axes, _read_columns, _read_summary, finish, plt
-from ._tables import mesh_frequency_per_rpm, stability_runs
+from ._tables import mesh_frequency_per_rpm, read_rows, stability_runs
 
 _SWEEP_COLOURS = {"up": "tab:blue", "down": "tab:orange"}
 
@@ -24,8 +23,7 @@ def forced_response_figure(result_dir, ax=None):
     results = summary["results"]
     si = summary["config"]["model"]["units"] == "SI"
     unit = 1e6 if si else 1.0
-    with open(folder / "sweep.csv", newline="") as handle:
-        rows = list(csv.DictReader(handle))
+    rows = read_rows(folder / "sweep.csv")
     figure, ax = _axes(ax, (9.5, 5))
     handles, styles = [], set()
     both = len({r["sweep"] for r in rows}) > 1
@@ -82,7 +80,7 @@ def details_figure(result_dir, axes=None):
     else:
         figure = axes[0][0].figure
     for row, detail in zip(axes, details):
-        table = _read_columns(folder / detail["file"])
+        table = _read_columns(folder / detail["file"], short=True)
         tau = table["tau"]
         row[0].plot(tau, [v * unit for v in table["y"]])
         row[1].plot(tau, table["mesh_force"], color="tab:red")

@@ -23,7 +23,7 @@ def orbits_figure(result_dir, axes=None, only_steady=True):
     forward or backward against the shaft's rotation. `axes`: two axes, or None."""
     folder = pathlib.Path(result_dir)
     summary = _read_summary(folder)
-    table = _read_columns(folder / "time_history.csv")
+    table = _read_columns(folder / "time_history.csv", short=True)
     if axes is None:
         figure, axes = plt.subplots(1, 2, figsize=(10.5, 5), layout="constrained")
     else:
@@ -85,9 +85,9 @@ def full_spectrum_figure(result_dir, axes=None, dynamic_range=1e-6):
         figure = axes[0].figure
     for ax, shaft in zip(axes, ("pinion", "gear")):
         f = [spectrum["frequency_hz"][i] for i, s in enumerate(spectrum["shaft"]) if s == shaft]
-        a = [spectrum["amplitude"][i] * 1e6 for i, s in enumerate(spectrum["shaft"]) if s == shaft]
+        a = [spectrum["amplitude_m"][i] * 1e6 for i, s in enumerate(spectrum["shaft"]) if s == shaft]
         pf = [peaks["frequency_hz"][i] for i, s in enumerate(peaks["shaft"]) if s == shaft]
-        pa = [peaks["amplitude"][i] * 1e6 for i, s in enumerate(peaks["shaft"]) if s == shaft]
+        pa = [peaks["amplitude_m"][i] * 1e6 for i, s in enumerate(peaks["shaft"]) if s == shaft]
         floor = log_floor(a + pa, dynamic_range) or 1e-12
         ax.plot(f, [max(v, floor) for v in a], lw=0.6, color="0.4", label="FFT (display window)")
         ax.plot(pf, pa, "o", color="tab:red", ms=3, mfc="none", label="whirl peaks (exact bins or fit)")
@@ -114,11 +114,11 @@ def study_figure(result_dir, axes=None, dynamic_range=1e-6):
         figure, axes = plt.subplots(2, 1, figsize=(13, 7.5), sharex=True, layout="constrained")
     else:
         figure = axes[0].figure
-    floor = log_floor([1e6 * a for a in study["amplitude"]], dynamic_range) or 1e-12
+    floor = log_floor([1e6 * a for a in study["amplitude_m"]], dynamic_range) or 1e-12
     width = 0.8 / len(cases)
     for ax, shaft in zip(axes, ("pinion", "gear")):
         for k, case in enumerate(cases):
-            values = {study["component"][i]: study["amplitude"][i] * 1e6 for i in range(len(study["case"]))
+            values = {study["component"][i]: study["amplitude_m"][i] * 1e6 for i in range(len(study["case"]))
                       if study["case"][i] == case and study["shaft"][i] == shaft}
             ax.bar([j + k * width for j in range(len(components))], [values[c] for c in components],
                    width=width, label=case)

@@ -64,7 +64,7 @@ def _mode_shapes_along_shafts(folder, summary, title, modes, shapes, count):
             ax.plot(xs, uz, color=f"C{k}", lw=1.1, ls="--", marker="s" if len(xs) == 1 else None,
                     ms=3)
         ax.set_yticks([-k for k in range(len(order))], order, fontsize=6)
-        ax.set_title(f"mode {j + 1}: {modes['frequency_Hz'][j]:.1f} Hz", fontsize=8)
+        ax.set_title(f"mode {j + 1}: {modes['frequency_hz'][j]:.1f} Hz", fontsize=8)
         ax.tick_params(labelsize=6)
         ax.set_xlabel("x along the shafts [mm]", fontsize=7)
     speed = summary["results"]["modal"]["speed_rpm"]
@@ -111,7 +111,7 @@ def _mode_shapes(folder, summary, title):
                            alpha=0.6, zorder=3)
         kind = modes["stage_type"][j] if "stage_type" in modes else ""
         kind = kind if isinstance(kind, str) else ""
-        ax.set_title(f"mode {j + 1}: {modes['frequency_Hz'][j]:.1f} Hz"
+        ax.set_title(f"mode {j + 1}: {modes['frequency_hz'][j]:.1f} Hz"
                      + (f"\n{kind}" if kind else ""), fontsize=8,
                      color=_TYPE_COLOURS.get(kind.split('/')[0], "0.2"))
         ax.set_aspect("equal")
@@ -146,7 +146,7 @@ def _campbell(folder, summary, title, ax=None):
             ax.plot(speeds, values, color="0.25", lw=1.0)
             top = max(top, max(values))
     top *= 1.1
-    for name, slope in zip(lines["line"], lines["Hz_per_rpm"]):
+    for name, slope in zip(lines["line"], lines["hz_per_rpm"]):
         y = [slope * s for s in speeds]
         style = "--" if name.startswith("1x ") else "-."
         (line,) = ax.plot(speeds, y, style, lw=0.9)
@@ -155,7 +155,7 @@ def _campbell(folder, summary, title, ax=None):
         ax.text(s_end, slope * s_end, " " + name, fontsize=6, color=line.get_color(),
                 va="bottom", ha="right" if s_end < speeds[-1] else "left")
     if critical:
-        ax.plot(critical["speed_rpm"], critical["frequency_Hz"], "kx", ms=5,
+        ax.plot(critical["speed_rpm"], critical["frequency_hz"], "kx", ms=5,
                 label="critical speeds (order line crosses a mode)")
     operating = summary["results"]["kinematics"]["input_speed_rpm"]
     if operating:
@@ -189,10 +189,10 @@ def _forced(folder, summary, title, axes=None):
     for name, values in table.items():
         if name.startswith("dynamic_factor_"):
             top_ax.plot(speeds, values, lw=1.1, label=name[len("dynamic_factor_"):])
-        if name.startswith("h1_N_"):
-            floor = log_floor([v for n, vs in table.items() if n.startswith("h1_N_") for v in vs]) or 1e-12
+        if name.startswith("h1_") and name.endswith("_normal_n"):
+            floor = log_floor([v for n, vs in table.items() if n.startswith("h1_") for v in vs]) or 1e-12
             bottom_ax.semilogy(speeds, [max(v, floor) for v in values], lw=1.1,
-                               label=name[len("h1_N_"):])
+                               label=name[len("h1_"):-len("_normal_n")])
     operating = abs(summary["results"]["kinematics"]["input_speed_rpm"])
     for ax in (top_ax, bottom_ax):
         if operating:
@@ -210,13 +210,14 @@ def _forced(folder, summary, title, axes=None):
 def _time(folder, summary, title):
     table = _read_columns(folder / "time_history.csv")
     t_ms = [1e3 * (t - table["t_s"][0]) for t in table["t_s"]]
-    meshes = [n[len("mesh_force_N_"):] for n in table if n.startswith("mesh_force_N_")]
+    meshes = [n[len("mesh_force_"):-len("_normal_n")] for n in table
+              if n.startswith("mesh_force_") and n.endswith("_normal_n")]
     shown = meshes[:4]
     figure, axes = plt.subplots(len(shown), 1, figsize=(10.5, 2.2 * len(shown) + 0.6), sharex=True,
                                 squeeze=False, layout="constrained")
     for ax, name in zip(axes[:, 0], shown):
-        ax.plot(t_ms, [1e-3 * f for f in table["mesh_force_N_" + name]], lw=1.4, label="Newmark")
-        steady = table.get("steady_mesh_force_N_" + name)
+        ax.plot(t_ms, [1e-3 * f for f in table["mesh_force_" + name + "_normal_n"]], lw=1.4, label="Newmark")
+        steady = table.get("steady_mesh_force_" + name + "_normal_n")
         if steady:
             ax.plot(t_ms, [1e-3 * f for f in steady], "--", lw=1.0, color="k",
                     label="frequency-domain steady state")

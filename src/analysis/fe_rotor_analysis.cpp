@@ -79,6 +79,12 @@ double spectrumLimit(const config::Config& config, const SteadyAnalysis& a) {
                                                    : 1.25 * a.frequencies.back();
 }
 
+/// The unit of a DOF's displacement: "rad" for the rotations (…rx, …ry, …rz), else "m".
+std::string dofUnit(const std::string& name) {
+  const auto dot = name.rfind('.');
+  return name.compare(dot == std::string::npos ? 0 : dot + 1, 1, "r") == 0 ? "rad" : "m";
+}
+
 std::vector<std::string> channelNames(const FeGearedRotor& model, const FeTimeResponse& r) {
   std::vector<std::string> names;
   for (int c : r.channels) names.push_back(model.dofName(c));
@@ -108,11 +114,14 @@ nlohmann::ordered_json modelJson(const FeGearedRotor& model, const std::string& 
 }
 
 io::CsvTable timeHistoryTable(const FeGearedRotor& model, const FeTimeResponse& r, int every) {
-  std::vector<std::string> columns{"t", "speed_rpm", "mesh_stiffness", "mesh_force"};
+  // The mesh acts along the contact normal (docs/theory/mesh_stiffness.md, "Which plane").
+  std::vector<std::string> columns{"t_s", "speed_rpm", "mesh_stiffness_normal_n_per_m",
+                                   "mesh_force_normal_n"};
   for (const auto& name : channelNames(model, r)) {
-    columns.push_back(name);
-    columns.push_back(name + "_vel");
-    columns.push_back(name + "_acc");
+    const std::string u = dofUnit(name);
+    columns.push_back(name + "_" + u);
+    columns.push_back(name + "_vel_" + u + "_per_s");
+    columns.push_back(name + "_acc_" + u + "_per_s2");
   }
   io::CsvTable table(columns);
   for (std::size_t k = 0; k < r.t.size(); k += every) {
@@ -133,8 +142,8 @@ void addHarmonicRows(io::CsvTable& table, const std::string& model_name,
     for (std::size_t h = 0; h < a.orders.size(); ++h) {
       std::vector<io::CsvCell> row;
       if (!model_name.empty()) row.push_back(model_name);
-      row.insert(row.end(), {names[c], a.orders[h], a.frequencies[h], a.displacement[c][h],
-                             a.acceleration[c][h]});
+      row.insert(row.end(), {names[c], dofUnit(names[c]), a.orders[h], a.frequencies[h],
+                             a.displacement[c][h], a.acceleration[c][h]});
       table.addRow(row);
     }
   }
@@ -147,7 +156,7 @@ void addSpectrumRows(io::CsvTable& table, const std::string& model_name,
     for (std::size_t k = 0; k < d.frequency.size() && d.frequency[k] <= fmax; ++k) {
       std::vector<io::CsvCell> row;
       if (!model_name.empty()) row.push_back(model_name);
-      row.insert(row.end(), {names[c], d.frequency[k], d.amplitude[k],
+      row.insert(row.end(), {names[c], dofUnit(names[c]), d.frequency[k], d.amplitude[k],
                              a.acceleration_spectrum[c].amplitude[k]});
       table.addRow(row);
     }
@@ -178,7 +187,7 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
   const int window = static_cast<int>(std::llround(config.real("time.runup_window") / dt));
   const std::vector<double> orders{static_cast<double>(model.spec().pinion_teeth), 1.0};
   const auto names = channelNames(model, r);
-  io::CsvTable track_table({"channel", "t", "speed_rpm", "mesh_order_displacement",
+  io::CsvTable track_table({"channel", "unit", "t_s", "speed_rpm", "mesh_order_displacement",
                             "mesh_order_acceleration", "x1_displacement"});
   nlohmann::ordered_json peaks = nlohmann::ordered_json::object();
   const Eigen::Index channels = r.displacement.cols();
@@ -190,15 +199,17 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
     const OrderTrack& acc = tracks[channels + c];
     double best = -1.0, best_speed = 0.0;
     for (std::size_t w = 0; w < disp.time.size(); ++w) {
-      track_table.addRow({names[c], disp.time[w], disp.speed[w] / kRpm, disp.amplitude[0][w],
-                          acc.amplitude[0][w], disp.amplitude[1][w]});
+      track_table.addRow({names[c], dofUnit(names[c]), disp.time[w], disp.speed[w] / kRpm,
+                          disp.amplitude[0][w], acc.amplitude[0][w], disp.amplitude[1][w]});
       if (acc.amplitude[0][w] > best) best = acc.amplitude[0][w], best_speed = acc.speed[w];
     }
     peaks[names[c]] = {{"speed_rpm", best_speed / kRpm}, {"mesh_order_acceleration", best}};
   }
   result.addTable("runup.csv", track_table);
   // Waterfall of the first channel's acceleration.
-  io::CsvTable waterfall({"t", "speed_rpm", "frequency_hz", "amplitude"});
+  // The first channel's acceleration [m/s² or rad/s², the unit column].
+  io::CsvTable waterfall({"unit", "t_s", "speed_rpm", "frequency_hz", "amplitude"});
+  const std::string waterfall_unit = dofUnit(names.front()) + "/s^2";
   const double fmax = config.has("time.spectrum_max_frequency")
                           ? config.real("time.spectrum_max_frequency")
                           : 1.25 * model.spec().speed.maxSpeed() * orders[0] / kTwoPi;
@@ -207,8 +218,8 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
     double speed = 0.0;
     for (int k = 0; k < window; ++k) speed += r.speed[start + k] / window;
     for (std::size_t k = 0; k < s.frequency.size() && s.frequency[k] <= fmax; ++k)
-      waterfall.addRow(
-          {r.t[start] + 0.5 * window * dt, speed / kRpm, s.frequency[k], s.amplitude[k]});
+      waterfall.addRow({waterfall_unit, r.t[start] + 0.5 * window * dt, speed / kRpm,
+                        s.frequency[k], s.amplitude[k]});
   }
   result.addTable("waterfall.csv", waterfall);
   // Where the Campbell diagram puts the mesh-line crossings inside the ramp.
@@ -273,10 +284,12 @@ int runTime(const config::Config& config, const AnalysisContext& context, io::Ru
     text += "  at rest (speed.speed_rpm = 0): no mesh harmonics\n";
   } else if (model.spec().speed.constant()) {
     const SteadyAnalysis a = analyseSteady(config, model, r);
-    io::CsvTable harmonics({"channel", "order", "frequency_hz", "displacement", "acceleration"});
+    // unit: of the channel's displacement (m or rad); its acceleration is in unit/s².
+    io::CsvTable harmonics(
+        {"channel", "unit", "order", "frequency_hz", "displacement", "acceleration"});
     addHarmonicRows(harmonics, "", names, a);
     result.addTable("harmonics.csv", harmonics);
-    io::CsvTable spectrum({"channel", "frequency_hz", "displacement", "acceleration"});
+    io::CsvTable spectrum({"channel", "unit", "frequency_hz", "displacement", "acceleration"});
     addSpectrumRows(spectrum, "", names, a, spectrumLimit(config, a));
     result.addTable("spectrum.csv", spectrum);
     summary.results["steady"] = {{"window_s", a.window},
@@ -291,7 +304,8 @@ int runTime(const config::Config& config, const AnalysisContext& context, io::Ru
           a.last_change));
     }
     text += fmt::format(
-        "  steady window {:.3g} s (change over the last mesh period {:.2g}); {} channels: "
+        "  steady window {:.3g} s (relative change over the last mesh period {:.2g} [-]); {} "
+        "channels: "
         "mesh-order 1..{} amplitudes in harmonics.csv\n",
         a.window, a.last_change, names.size(), a.orders.size());
   } else {
@@ -332,7 +346,7 @@ int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResu
                      m.shape(i).imag(), std::abs(m.shape(i))});
     }
     list.push_back(modeJson(m));
-    text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {}  {}\n", j + 1, m.frequency,
+    text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {} [-]  {}\n", j + 1, m.frequency,
                         dampingRatioText(m.damping_ratio), m.whirl);
   }
   result.addTable("modes.csv", table);
@@ -441,9 +455,10 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
     if (e) std::rethrow_exception(e);
 
   io::CsvTable harmonics(
-      {"model", "channel", "order", "frequency_hz", "displacement", "acceleration"});
-  io::CsvTable spectra({"model", "channel", "frequency_hz", "displacement", "acceleration"});
-  io::CsvTable stiffness({"model", "mesh_fraction", "stiffness"});
+      {"model", "channel", "unit", "order", "frequency_hz", "displacement", "acceleration"});
+  io::CsvTable spectra(
+      {"model", "channel", "unit", "frequency_hz", "displacement", "acceleration"});
+  io::CsvTable stiffness({"model", "mesh_fraction", "stiffness_normal_n_per_m"});
   nlohmann::ordered_json per_model = nlohmann::ordered_json::object();
   std::vector<SteadyAnalysis> analyses;
   bool ok = true;

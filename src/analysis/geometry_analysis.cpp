@@ -25,7 +25,7 @@ AnalysisResult geometryAnalysis(const config::Config& config, const AnalysisCont
       "gear pair {}/{} teeth, m_n = {:g} mm, a_w = {:.6g} mm, alpha_wt = {:.6g} deg\n"
       "  base diameters    {:.7g} / {:.7g} mm\n"
       "  tip diameters     {:.7g} / {:.7g} mm\n"
-      "  contact ratio     transverse {:.7f}, overlap {:.7f}, total {:.7f}\n",
+      "  contact ratio [-] transverse {:.7f}, overlap {:.7f}, total {:.7f}\n",
       pair.spec().pinion.teeth, pair.spec().gear.teeth, mm(pair.spec().pinion.normal_module),
       mm(pair.centreDistance()), summary.results["operating_pressure_angle_deg"].get<double>(),
       mm(2 * pair.pinion().base_radius), mm(2 * pair.gear().base_radius),

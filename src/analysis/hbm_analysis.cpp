@@ -138,12 +138,15 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
                      {"samples_per_period", hbm_options.samples_per_period},
                      {"natural_frequency", build.natural_frequency / scale}};
 
-  result.addTable("sweep.csv", io::sweepTable(rows, hbm_options.harmonics));
+  result.addTable("sweep.csv", io::sweepTable(rows, hbm_options.harmonics, build.nondimensional));
 
   // Newmark checks at requested frequencies.
   const auto newmark_frequencies = config.realList("sweep.newmark_frequencies");
   if (!newmark_frequencies.empty()) {
-    io::CsvTable table({"frequency", "p2p_newmark", "p2p_hbm", "relative_difference", "status"});
+    const std::string u = build.nondimensional ? "nondim" : "m";
+    io::CsvTable table({build.nondimensional ? "frequency_nondim" : "frequency_hz",
+                        "p2p_newmark_transverse_" + u, "p2p_hbm_transverse_" + u,
+                        "relative_difference", "status"});
     nlohmann::ordered_json checks = nlohmann::ordered_json::array();
     for (double f : newmark_frequencies) {
       GearPairModelSpec spec = model.spec();
@@ -202,7 +205,12 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
         continue;
       found.push_back(p2p);
       const auto force = hbm.meshForceSignal(point.q, point.omega);
-      io::CsvTable table({"tau", "t", "x", "y", "mesh_force", "mesh_stiffness"});
+      const bool nd = build.nondimensional;
+      io::CsvTable table(
+          {"tau_rad", nd ? "t_nondim" : "t_s", nd ? "x_transverse_nondim" : "x_transverse_m",
+           nd ? "y_transverse_nondim" : "y_transverse_m",
+           nd ? "mesh_force_transverse_nondim" : "mesh_force_transverse_n",
+           nd ? "mesh_stiffness_transverse_nondim" : "mesh_stiffness_transverse_n_per_m"});
       for (std::size_t k = 0; k < x.size(); ++k) {
         const double phase = static_cast<double>(k) / x.size();
         const double y = x[k] - model.transmissionError().value(model.spec().initial_phase + phase);
@@ -218,9 +226,10 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
 
   summary.warnings = warnings;
   for (const auto& warning : warnings) context.warning(warning);
-  // Printed values carry the unit of the configuration (nondimensional models: none).
-  const std::string length_unit = build.nondimensional ? "" : " m";
-  const std::string frequency_unit = build.nondimensional ? "" : " Hz";
+  // Printed values carry the unit of the configuration (nondimensional models: [-], the
+  // frequency as Ω/ω_n and the deflection in x₀).
+  const std::string length_unit = build.nondimensional ? " [-]" : " m";
+  const std::string frequency_unit = build.nondimensional ? " [-]" : " Hz";
   std::string& text = result.report;
   text = fmt::format("harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
                      hbm_options.harmonics, hbm_options.samples_per_period, points, folds.size(),

@@ -45,7 +45,11 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
         fmt::format("the truth's rotor has {}/{} teeth", truth->pinion_teeth, truth->gear_teeth));
   }
 
-  const IdentificationOptions id_options = config::identificationOptionsFromConfig(config);
+  IdentificationOptions id_options = config::identificationOptionsFromConfig(config);
+  id_options.progress =
+      id_options.method == IdentificationMethod::kJoint
+          ? context.progressFor("identify: joint fit", "iterations of max_iterations")
+          : context.progressFor("identify: three-step fit", "mesh harmonics");
   const auto start = std::chrono::steady_clock::now();
   const DteIdentification r = identifyDte(known, data, id_options);
   const double seconds =
@@ -56,9 +60,9 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
   result.addTable("identified.csv", io::identifiedTable(r, truth));
 
   // Measured against re-simulated peaks (thesis Figs. 5.12/5.14).
-  io::CsvTable resim({"speed_rpm", "shaft", "component", "frequency_hz", "measured_re",
-                      "measured_im", "measured_amplitude", "model_re", "model_im",
-                      "model_amplitude"});
+  io::CsvTable resim({"speed_rpm", "shaft", "component", "frequency_hz", "measured_re_m",
+                      "measured_im_m", "measured_amplitude_m", "model_re_m", "model_im_m",
+                      "model_amplitude_m"});
   double worst = 0.0, largest = 0.0;
   for (const auto& d : data) {
     LateralRotorSpec at = r.spec;
@@ -168,14 +172,15 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
   }
   if (!r.converged) result.errors.push_back(r.message);
   for (const auto& w : summary.warnings) context.warning(w);
-  const auto ci = [](const IdentifiedValue& v, double unit) {
-    return fmt::format("{:.5g} [{:.4g}, {:.4g}]{}", v.value * unit, v.low * unit, v.high * unit,
+  const auto ci = [](const IdentifiedValue& v, double scale, const char* unit) {
+    return fmt::format("{:.5g} {}, 95 % interval {:.4g} {} to {:.4g} {}{}", v.value * scale, unit,
+                       v.low * scale, unit, v.high * scale, unit,
                        v.identifiable ? "" : " (not identifiable)");
   };
   std::string text = fmt::format("{} ({:.3g} ms)\n", r.message, 1e3 * seconds);
-  text += fmt::format("  k_m  = {} N/m\n", ci(r.mesh_stiffness, 1.0));
-  text += fmt::format("  e_m  = {} um\n", ci(r.mean_te, 1e6));
-  text += fmt::format("  c_m  = {} N s/m\n", ci(r.mesh_damping, 1.0));
+  text += fmt::format("  k_m  = {}\n", ci(r.mesh_stiffness, 1.0, "N/m"));
+  text += fmt::format("  e_m  = {}\n", ci(r.mean_te, 1e6, "um"));
+  text += fmt::format("  c_m  = {}\n", ci(r.mesh_damping, 1.0, "N s/m"));
   for (std::size_t i = 0; i < r.te_x.size(); ++i) {
     text += fmt::format("  TE {}: x {:.4g} um at {:.4g} rad, y {:.4g} um at {:.4g} rad\n", i + 1,
                         1e6 * r.te_x[i].amplitude.value, r.te_x[i].phase.value,

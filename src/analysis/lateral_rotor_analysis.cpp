@@ -190,7 +190,8 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
                                       {"transient_end_s", time.t[time.transient_end]},
                                       {"window_start_s", time.t[time.window_begin]},
                                       {"window_periods", time.window_periods}};
-    io::CsvTable history({"t", "x1", "y1", "x2", "y2", "steady"});
+    // Displacements of the pinion (1) and gear (2) centres [m] (Rao 2023, Fig. 2.1 axes).
+    io::CsvTable history({"t_s", "x1_m", "y1_m", "x2_m", "y2_m", "steady"});
     for (std::size_t k = 0; k < time.t.size(); ++k) {
       const auto& e = time.eta[k];
       history.addRow({time.t[k], e(0), e(1), e(2), e(3),
@@ -236,7 +237,8 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
           {"note",
            "over peaks above 1e-3 of the largest; includes the noise when noise_level > 0"}};
       text += fmt::format(
-          "  time vs frequency domain: amplitudes within {:.2e}, phases within {:.2e} rad\n",
+          "  time vs frequency domain: relative amplitudes within {:.2e} [-], phases within "
+          "{:.2e} rad\n",
           amplitude_error, phase_error);
     }
   }
@@ -250,7 +252,7 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
       for (int k = 0; k < n; ++k) times.push_back(model.commonPeriod() * k / n);
     }
     const auto history = superposeWhirlResponse(parts, times);
-    io::CsvTable table({"t", "x1", "y1", "x2", "y2"});
+    io::CsvTable table({"t_s", "x1_m", "y1_m", "x2_m", "y2_m"});
     for (std::size_t k = 0; k < times.size(); ++k) {
       const auto& e = history[k];
       table.addRow({times[k], e(0), e(1), e(2), e(3)});
@@ -323,8 +325,8 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
   // Parametric study (§4.5).
   if (config.boolean("study.enabled")) {
     const bool in_time = config.string("study.method") == "time";
-    io::CsvTable table(
-        {"case", "group", "factor", "shaft", "component", "frequency_hz", "amplitude", "phase"});
+    io::CsvTable table({"case", "group", "factor", "shaft", "component", "frequency_hz",
+                        "amplitude_m", "phase_rad"});
     io::CsvTable totals({"case", "group", "factor", "shaft", "mesh_rms_m", "mesh_relative_change",
                          "dynamic_rms_m", "dynamic_relative_change"});
     // Two measures: the gear-mesh vibration (mesh harmonics) and the whole dynamic orbit

@@ -28,11 +28,14 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
   const int positions = static_cast<int>(config.integer("ltca.positions"));
 
   io::RunSummary& summary = result.summary;
-  summary.warnings = stiffness->warnings();
+  summary.warnings = pair.warnings();
+  summary.warnings.insert(summary.warnings.end(), stiffness->warnings().begin(),
+                          stiffness->warnings().end());
 
   const auto start = std::chrono::steady_clock::now();
   const auto points =
-      contact.sweep(force, positions, static_cast<int>(config.integer("ltca.periods")));
+      contact.sweep(force, positions, static_cast<int>(config.integer("ltca.periods")),
+                    context.progressFor("ltca: loaded contact", "positions"));
   const double sweep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.addTable("ltca.csv", io::ltcaTable(points, force));
@@ -65,7 +68,8 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
       loads.push_back(f * reference);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const auto map = harrisMap(contact, loads, positions);
+    const auto map =
+        harrisMap(contact, loads, positions, 3, context.progressFor("ltca: Harris map", "loads"));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     result.addTable("harris.csv", io::harrisTable(map));
@@ -90,13 +94,15 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
       const ReliefShape shape = config.string("modifications.shape") == "linear"
                                     ? ReliefShape::kLinear
                                     : ReliefShape::kParabolic;
-      io::CsvTable table({"design", "force_n", "peak_to_peak_m", "mean_m"});
+      io::CsvTable table({"design", "force_transverse_n", "peak_to_peak_m", "mean_m"});
       nlohmann::ordered_json minima = nlohmann::ordered_json::object();
       for (const auto& name : designs) {
         const PairModifications m =
             name == "none" ? PairModifications{}
                            : designedTipRelief(*stiffness, *design, name == "long", shape);
-        const auto other = harrisMap(LoadedToothContact(stiffness, m, slices), loads, positions);
+        const auto other =
+            harrisMap(LoadedToothContact(stiffness, m, slices), loads, positions, 3,
+                      context.progressFor("ltca: Harris map, design " + name, "loads"));
         for (const auto& p : other) table.addRow({name, p.force, p.peak_to_peak, p.mean});
         const auto low = std::min_element(other.begin(), other.end(), [](auto& a, auto& b) {
           return a.peak_to_peak < b.peak_to_peak;
@@ -112,7 +118,8 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
   if (design) {
     double k_bar = 0.0;
     const auto stats = meanExcitationAgainstLoad(
-        contact, *design, config.realList("statistics.load_factors"), positions, &k_bar);
+        contact, *design, config.realList("statistics.load_factors"), positions, &k_bar,
+        context.progressFor("ltca: statistics against load", "loads"));
     result.addTable("load_statistics.csv", io::loadStatisticsTable(stats));
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (const auto& s : stats) {

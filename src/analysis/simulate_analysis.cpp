@@ -24,19 +24,21 @@ AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisCont
   summary.status = toString(response.status);
   summary.results = io::timeResponseResultsJson(
       build, model, response, channels, static_cast<int>(config.integer("solver.harmonics")));
-  result.addTable("time_response.csv", io::timeResponseTable(channels));
+  result.addTable("time_response.csv", io::timeResponseTable(channels, build.nondimensional));
 
   std::string& text = result.report;
-  text = fmt::format(
-      "gear pair, {} stiffness, f_m / f_n = {:.4g}, zeta = {:.3g}\n", model.meshStiffness().model(),
-      summary.results["model"]["frequency_ratio"].get<double>(), build.damping_ratio);
+  text =
+      fmt::format("gear pair, {} stiffness, f_m / f_n [-] = {:.4g}, zeta = {:.3g}\n",
+                  model.meshStiffness().model(),
+                  summary.results["model"]["frequency_ratio"].get<double>(), build.damping_ratio);
   text += fmt::format("  {}\n", response.message);
   if (summary.results.contains("mesh_force")) {
     const auto& f = summary.results["mesh_force"];
-    const std::string force_unit = build.nondimensional ? "" : " N";
+    // Along the transverse line of action; nondimensional models: in F₀.
+    const std::string force_unit = build.nondimensional ? " [-]" : " N";
     text += fmt::format(
-        "  mesh force: mean {:.6g}{}, peak to peak {:.6g}{}, dynamic factor {:.4g}, contact "
-        "loss {:.1f} %\n",
+        "  transverse mesh force: mean {:.6g}{}, peak to peak {:.6g}{}, dynamic factor {:.4g} "
+        "[-], contact loss {:.1f} %\n",
         f["mean"].get<double>(), force_unit, f["peak_to_peak"].get<double>(), force_unit,
         summary.results["dynamic_factor"].is_null()
             ? 0.0

@@ -109,7 +109,7 @@ AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisCont
                   io::fullSpectrumTable(
                       spectrum.display,
                       config.optionalReal("spectrum.max_frequency").value_or(1.25 * highest)));
-  io::CsvTable history({"t", "x1", "y1", "x2", "y2"});
+  io::CsvTable history({"t_s", "x1_m", "y1_m", "x2_m", "y2_m"});
   for (std::size_t k = 0; k < channels[0].size(); ++k) {
     history.addRow({first_time + static_cast<double>(k) / fs, channels[0][k], channels[1][k],
                     channels[2][k], channels[3][k]});

@@ -78,22 +78,23 @@ AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext
 
   for (const auto& [name, table] : monte_carlo_tables) result.addTable(name, table);
   std::string text =
-      fmt::format("mean excitation ratio R = {:.6g} (eq. 15: {:.6g}, eq. 11: {:.6g})\n",
+      fmt::format("mean excitation ratio R [-] = {:.6g} (eq. 15: {:.6g}, eq. 11: {:.6g})\n",
                   stats.ratio, stats.ratio_eq15, stats.ratio_eq11);
   text += fmt::format(
-      "  a = {:.4g}, d_k = {:.4g}, d_e = {:.4g}, r_ke = {:.4g}, delta m1(e_f) = {:.4g}\n", stats.a,
-      stats.d_k, stats.d_e, stats.r_ke, stats.delta_m1_ef);
+      "  normalised [-]: a = {:.4g}, d_k = {:.4g}, d_e = {:.4g}, r_ke = {:.4g}, delta m1(e_f) = "
+      "{:.4g}\n",
+      stats.a, stats.d_k, stats.d_e, stats.r_ke, stats.delta_m1_ef);
   text += fmt::format("  the dynamic mean excitation is {} the transmitted mean load\n",
                       stats.classification());
   if (summary.results.contains("simulation")) {
-    text += fmt::format("  simulated mean of k y: {:.8g} (relative difference {:.2g})\n",
+    text += fmt::format("  simulated mean of k y [-]: {:.8g} (relative difference {:.2g})\n",
                         summary.results["simulation"]["dynamic_mean_excitation"].get<double>(),
                         summary.results["simulation"]["relative_difference"].get<double>());
   }
   if (summary.results.contains("monte_carlo")) {
     const auto& r = summary.results["monte_carlo"]["ratio"];
     text += fmt::format(
-        "  Monte Carlo, {} samples: R mean {:.6g}, std {:.3g}, 5/50/95 % {:.5g} / {:.5g} / "
+        "  Monte Carlo, {} samples: R [-] mean {:.6g}, std {:.3g}, 5/50/95 % {:.5g} / {:.5g} / "
         "{:.5g}\n",
         summary.results["monte_carlo"]["samples"].get<int>(), r["mean"].get<double>(),
         r["std"].get<double>(), r["q05"].get<double>(), r["q50"].get<double>(),

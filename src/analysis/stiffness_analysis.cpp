@@ -31,7 +31,7 @@ AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisCon
   result.addTable("fourier.csv", io::fourierTable(summary.results["models"]));
 
   std::string& text = result.report;
-  text = fmt::format("mesh stiffness of {}/{} teeth, contact ratio {:.6f}\n",
+  text = fmt::format("mesh stiffness of {}/{} teeth, contact ratio [-] {:.6f}\n",
                      pair.spec().pinion.teeth, pair.spec().gear.teeth, pair.contactRatioTotal());
   text += fmt::format("  {:<18} {:>12} {:>12} {:>12} {:>12}\n", "model [N/m]", "mean", "min", "max",
                       "std");
@@ -45,6 +45,19 @@ AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisCon
     text += fmt::format("  loaded STE at F = {:g} N: mean {:.4g} um, peak to peak {:.4g} um\n",
                         ste["force"].get<double>(), ste["mean"].get<double>() * 1e6,
                         ste["peak_to_peak"].get<double>() * 1e6);
+  }
+  const auto& plane = summary.results["plane"];
+  text += "  plane: k, F and STE along the transverse line of action (F = T1/r_b1)\n";
+  if (pair.baseHelixAngle() > 0.0) {
+    const auto& normal = plane["normal"];
+    text += fmt::format(
+        "  normal plane (beta_b = {:.4f} deg): k_n = k / cos^2 beta_b, mean {:.5e} N/m",
+        plane["base_helix_angle_deg"].get<double>(), normal["stiffness_mean"].get<double>());
+    if (normal.contains("force")) {
+      text += fmt::format("; F_n = F / cos beta_b = {:g} N; STE_n = STE cos beta_b, mean {:.4g} um",
+                          normal["force"].get<double>(), normal["ste_mean"].get<double>() * 1e6);
+    }
+    text += "\n";
   }
   return result;
 }

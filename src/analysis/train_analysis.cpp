@@ -59,9 +59,9 @@ void writeKinematics(const GearTrainModel& model, AnalysisResult& result, io::Ru
   }
   result.addTable("bodies.csv", bodies);
   io::CsvTable meshes({"mesh", "kind", "body_a", "body_b", "teeth_a", "teeth_b",
-                       "mesh_frequency_Hz", "phase_periods", "centre_distance_m",
-                       "pressure_angle_deg", "contact_ratio", "mean_stiffness_N_per_m",
-                       "damping_N_s_per_m"});
+                       "mesh_frequency_hz", "phase_periods", "centre_distance_m",
+                       "pressure_angle_deg", "contact_ratio", "mean_stiffness_normal_n_per_m",
+                       "damping_normal_n_s_per_m"});
   Json mj = Json::array();
   for (const TrainMesh& m : model.meshes()) {
     const double f = m.frequency_ratio * std::abs(speed);
@@ -74,8 +74,8 @@ void writeKinematics(const GearTrainModel& model, AnalysisResult& result, io::Ru
                   {"mesh_frequency_Hz", f},
                   {"phase_periods", m.phase},
                   {"mean_stiffness_N_per_m", m.mean_stiffness}});
-    text += fmt::format("  mesh {:<20} {:>9.2f} Hz  phase {:.4f}  k̄ {:.4g} N/m\n", m.name, f,
-                        m.phase, m.mean_stiffness);
+    text += fmt::format("  mesh {:<20} {:>9.2f} Hz  phase {:.4f} periods  k̄ {:.4g} N/m\n", m.name,
+                        f, m.phase, m.mean_stiffness);
   }
   result.addTable("meshes.csv", meshes);
   summary.results["kinematics"] = {{"input_speed_rpm", speed / kRpm},
@@ -88,16 +88,18 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                std::string& text) {
   const auto start = Clock::now();
   const TrainStaticResult r = solveTrainStatic(model, model.inputSpeed());
-  io::CsvTable forces({"component", "kind", "force"});
+  // Mesh forces along the contact normal [N]; elements in N, or N m for torsional ones.
+  io::CsvTable forces({"component", "kind", "unit", "force"});
   Json meshes = Json::object(), elements = Json::object();
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-    forces.addRow({model.meshes()[m].name, "mesh_N", r.mesh_force[m]});
+    forces.addRow({model.meshes()[m].name, "mesh_N", "N", r.mesh_force[m]});
     meshes[model.meshes()[m].name] = r.mesh_force[m];
   }
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const TrainElement& el = model.elements()[e];
     const bool torque = el.local_stiffness.rows() == 1;
-    forces.addRow({el.name, el.kind + (torque ? "_N_m" : "_N"), r.element_force[e]});
+    forces.addRow(
+        {el.name, el.kind + (torque ? "_N_m" : "_N"), torque ? "N m" : "N", r.element_force[e]});
     elements[el.name] = r.element_force[e];
   }
   result.addTable("static_forces.csv", forces);
@@ -107,8 +109,8 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                        {"load_sharing_factor", s.load_sharing_factor},
                        {"sun_planet_force_N", s.sun_planet_force},
                        {"ring_planet_force_N", s.ring_planet_force}});
-    text +=
-        fmt::format("  {}: planet load sharing factor {:.4f}\n", s.stage, s.load_sharing_factor);
+    text += fmt::format("  {}: planet load sharing factor {:.4f} [-]\n", s.stage,
+                        s.load_sharing_factor);
   }
   summary.results["static"] = {{"status", r.status},
                                {"rigid_modes", r.rigid_modes},
@@ -127,7 +129,7 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
   const double speed = config::analysisSpeed(analysis, "modal", model.inputSpeed());
   const auto modes =
       trainModes(model, speed, config::trainModalOptionsFromConfig(analysis, "modal"));
-  std::vector<std::string> header{"mode",         "frequency_Hz", "damping_ratio",
+  std::vector<std::string> header{"mode",         "frequency_hz", "damping_ratio",
                                   "multiplicity", "stage_type",   "translational_fraction"};
   for (const TrainMesh& m : model.meshes()) header.push_back("strain_" + m.name);
   for (const TrainElement& e : model.elements()) header.push_back("strain_" + e.name);
@@ -163,7 +165,8 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
 }
 
 void runCampbell(const GearTrainModel& model, const config::Config& analysis,
-                 AnalysisResult& result, io::RunSummary& summary, std::string& text) {
+                 AnalysisResult& result, io::RunSummary& summary, std::string& text,
+                 const AnalysisContext& context) {
   const auto start = Clock::now();
   const auto speeds = config::speedRangeFromConfig(analysis, "campbell", model.inputSpeed(), 0.0);
   TrainModalOptions options;
@@ -171,10 +174,11 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
       std::min<int>(static_cast<int>(analysis.integer("campbell.modes")), model.dofCount());
   const auto lines =
       trainOrderLines(model, static_cast<int>(analysis.integer("campbell.mesh_harmonics")));
-  const TrainCampbell d = trainCampbell(model, speeds, options, lines);
+  const TrainCampbell d = trainCampbell(model, speeds, options, lines,
+                                        context.progressFor("train: Campbell", "speeds"));
   std::vector<std::string> header{"speed_rpm"};
   for (std::size_t j = 0; j < d.modes.front().size(); ++j)
-    header.push_back(fmt::format("mode_{}_Hz", j + 1));
+    header.push_back(fmt::format("mode_{}_hz", j + 1));
   io::CsvTable table(header);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     std::vector<io::CsvCell> row{speeds[i] / kRpm};
@@ -182,10 +186,10 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
     table.addRow(row);
   }
   result.addTable("campbell.csv", table);
-  io::CsvTable lt({"line", "Hz_per_rpm"});
+  io::CsvTable lt({"line", "hz_per_rpm"});
   for (const auto& l : lines) lt.addRow({l.name, l.slope * kRpm});
   result.addTable("order_lines.csv", lt);
-  io::CsvTable ct({"mode", "line", "speed_rpm", "frequency_Hz"});
+  io::CsvTable ct({"mode", "line", "speed_rpm", "frequency_hz"});
   Json crit = Json::array();
   for (const auto& c : d.critical_speeds) {
     ct.addRow({std::to_string(c.mode + 1), c.line, c.speed / kRpm, c.frequency});
@@ -209,12 +213,12 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
   std::vector<std::string> header{"speed_rpm"};
   for (const TrainMesh& m : model.meshes()) {
     header.push_back("dynamic_factor_" + m.name);
-    header.push_back("p2p_N_" + m.name);
-    header.push_back("h1_N_" + m.name);
+    header.push_back("p2p_" + m.name + "_normal_n");  // mesh force along the contact normal
+    header.push_back("h1_" + m.name + "_normal_n");
   }
   for (const TrainElement& e : model.elements()) {
     header.push_back(
-        fmt::format("dynamic_{}_{}", e.name, e.local_stiffness.rows() == 1 ? "N_m" : "N"));
+        fmt::format("dynamic_{}_{}", e.name, e.local_stiffness.rows() == 1 ? "n_m" : "n"));
   }
   io::CsvTable table(header);
   std::vector<double> worst(model.meshes().size(), 0.0), worst_speed(model.meshes().size(), 0.0);
@@ -240,8 +244,8 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
     peaks[model.meshes()[m].name] = {{"max_dynamic_factor", worst[m]},
                                      {"at_speed_rpm", worst_speed[m] / kRpm}};
-    text += fmt::format("  {}: max dynamic factor {:.3f} at {:.0f} rpm\n", model.meshes()[m].name,
-                        worst[m], worst_speed[m] / kRpm);
+    text += fmt::format("  {}: max dynamic factor {:.3f} [-] at {:.0f} rpm\n",
+                        model.meshes()[m].name, worst[m], worst_speed[m] / kRpm);
   }
   summary.results["forced"] = {{"speeds", speeds.size()},
                                {"mesh_harmonics", steady.mesh_harmonics},
@@ -269,7 +273,7 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
   steady.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
   Json comparison = nullptr;
   std::vector<std::string> header{"t_s"};
-  for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_N_" + m.name);
+  for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
   bool compare = true;
   TrainSteadyState s;
   try {
@@ -279,7 +283,8 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
     summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
   }
   if (compare) {
-    for (const TrainMesh& m : model.meshes()) header.push_back("steady_mesh_force_N_" + m.name);
+    for (const TrainMesh& m : model.meshes())
+      header.push_back("steady_mesh_force_" + m.name + "_normal_n");
   }
   io::CsvTable table(header);
   Eigen::MatrixXd q;
@@ -414,7 +419,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
     if (analysis == "static") runStatic(model, result, summary, text);
     if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
-    if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text);
+    if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text, context);
     if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
       code = std::max(code, runTime(model, loaded.analysis, result, summary, text));

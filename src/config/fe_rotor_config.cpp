@@ -218,7 +218,9 @@ ConfigSchema feRotorSchema() {
   schema.string("mesh.stiffness")
       .choices(meshStiffnessModelNames())
       .defaultValue("potential_energy")
-      .doc("mesh-stiffness model of the time, modal and campbell analyses ([mesh_stiffness.*])");
+      .doc(
+          "mesh-stiffness model of the time, modal and campbell analyses ([mesh_stiffness.*]); "
+          "its k acts along the contact normal, inclined by β_b to the transverse plane");
   schema.real("mesh.line_of_action_angle_deg")
       .unit("deg")
       .optional()
@@ -229,7 +231,7 @@ ConfigSchema feRotorSchema() {
       .unit("N s/m")
       .min(0.0)
       .defaultValue(0.0)
-      .doc("dashpot c_m along the line of action");
+      .doc("dashpot c_m along the contact normal");
   schema.realList("mesh.te_amplitudes")
       .unit("m")
       .defaultValue(nlohmann::ordered_json::array())

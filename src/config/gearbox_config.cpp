@@ -37,7 +37,9 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .unit("N/m")
       .positive()
       .optional()
-      .doc("k along the line of action when stiffness = \"constant\"");
+      .doc(
+          "k when stiffness = \"constant\"; every mesh model's k acts along the contact normal, "
+          "inclined by β_b to the transverse plane (torsional stiffness k cos² β_b r_b²)");
   schema.real(prefix + "damping_ratio")
       .unit("-")
       .min(0.0)
@@ -451,6 +453,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     spec.gears.push_back({name, config.string(p + ".shaft"), config::gearSpecFromConfig(config, p),
                           config.boolean(p + ".internal"), config.boolean(p + ".body"),
                           config.real(p + ".position")});
+    for (auto& note : plausibilityNotes(spec.gears.back().gear, p)) warnings.push_back(note);
   }
   auto gear_named = [&](const std::string& gear, const std::string& key) -> const TrainGearSpec& {
     for (const auto& g : spec.gears) {
@@ -537,6 +540,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     st.ring = config.string(p + "ring");
     st.carrier = config.string(p + "carrier");
     st.planet = config::gearSpecFromConfig(config, p + "planet");
+    for (auto& note : plausibilityNotes(st.planet, p + "planet")) warnings.push_back(note);
     st.planets = static_cast<int>(config.integer(p + "planets"));
     st.planet_angles = config.realList(p + "planet_angles_deg");
     for (double& a : st.planet_angles) a *= kDeg;
@@ -575,6 +579,11 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
   spec.operating.input_shaft = config.string("operating_point.input");
   spec.operating.output_shaft = config.string("operating_point.output");
   spec.operating.input_speed = config.real("operating_point.speed_rpm") * kRpm;
+  if (auto note = speedPlausibilityNote(config.real("operating_point.speed_rpm"),
+                                        "operating_point.speed_rpm");
+      !note.empty()) {
+    warnings.push_back(std::move(note));
+  }
   spec.operating.input_torque = config.real("operating_point.torque");
   spec.operating.input_position = config.optionalReal("operating_point.input_position");
   spec.operating.output_position = config.optionalReal("operating_point.output_position");

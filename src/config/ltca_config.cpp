@@ -67,7 +67,9 @@ ConfigSchema ltcaSchema() {
       .unit("N")
       .positive()
       .required()
-      .doc("transmitted force along the line of action (T1 / r_b1)");
+      .doc(
+          "transmitted force F = T₁/r_b1 along the transverse line of action (helical: the normal "
+          "tooth force is F / cos β_b); the STE and stiffnesses are transverse too");
   schema.integer("ltca.positions")
       .min(8)
       .max(100000)

@@ -21,9 +21,6 @@
 namespace geardyn::config {
 namespace {
 
-/// Speeds above this are flagged as implausible (a unit mix-up more likely than a real gear).
-constexpr double kPlausibleMaxRpm = 200000.0;
-
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 using Json = nlohmann::ordered_json;
@@ -257,11 +254,8 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
                        "not available in nondimensional units: give mesh_frequency (Ω)");
     const double rpm = config.real(speed_key);
     b.spec.mesh_frequency = pair->spec().pinion.teeth * rpm / 60.0;
-    if (rpm > kPlausibleMaxRpm)
-      b.warnings.push_back(
-          fmt::format("{} = {:g} rpm is above {:g} rpm: is it in rpm (not "
-                      "rad/s or Hz)?",
-                      speed_key, rpm, kPlausibleMaxRpm));
+    if (auto note = speedPlausibilityNote(rpm, speed_key); !note.empty())
+      b.warnings.push_back(std::move(note));
   }
   b.spec.initial_phase = config.real("excitation.initial_phase");
 

@@ -15,7 +15,11 @@ using Json = nlohmann::ordered_json;
 
 void addGearPairModelSections(ConfigSchema& schema) {
   schema.section(
-      "model", "The dynamic model: a single-DOF gear pair along the line of action (Gelman 2005).");
+      "model",
+      "The dynamic model: a single-DOF gear pair along the transverse line of action (Gelman "
+      "2005): x = r_b1θ₁ − r_b2θ₂ [m], the force F = T₁/r_b1 [N] and the mesh stiffness k [N/m] "
+      "are transverse-plane quantities (helical: the normal tooth force is F / cos β_b, the "
+      "normal stiffness k / cos² β_b).");
   schema.string("model.type")
       .choices({"gear_pair", "gear_pair_contacts", "gear_pair_ltca"})
       .defaultValue("gear_pair")
@@ -64,7 +68,10 @@ void addGearPairModelSections(ConfigSchema& schema) {
       .min(0.0)
       .optional()
       .doc("c (instead of damping_ratio)");
-  schema.real("model.mean_force").unit("N").optional().doc("F = T₁/R₁ (nondimensional: a = F/F₀)");
+  schema.real("model.mean_force")
+      .unit("N")
+      .optional()
+      .doc("F = T₁/R₁ along the transverse line of action (nondimensional: a = F/F₀)");
   schema.real("model.torque")
       .unit("N m")
       .optional()

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/output_section.h"
 #include "geardyn/config/simulate_config.h"
@@ -30,11 +32,11 @@ ConfigSchema statsSchema() {
           "csv: a table with K [N/m] and E_f [m] sampled evenly over whole mesh periods (e.g. "
           "mesh_stiffness.csv of geardyn stiffness)");
   schema.string("stats.csv_stiffness_column")
-      .defaultValue("k_total")
-      .doc("csv: column of the mesh stiffness K");
+      .defaultValue("k_total_transverse_n_per_m")
+      .doc("csv: column of the mesh stiffness K (the name before 2026-11, k_total, still reads)");
   schema.string("stats.csv_error_column")
-      .defaultValue("ste_m")
-      .doc("csv: column of the static transmission error E_f = E + F/K");
+      .defaultValue("ste_transverse_m")
+      .doc("csv: column of the static transmission error E_f = E + F/K (or the older ste_m)");
   schema.real("stats.baseload")
       .unit("N")
       .positive()
@@ -132,9 +134,20 @@ MeanExcitation meanExcitationFromConfigCsv(const Config& config) {
   std::filesystem::path file = config.string("stats.csv_file");
   if (file.is_relative()) file = std::filesystem::path(config.source()).parent_path() / file;
   const io::NumericCsv csv(file, "stats.csv_file");
+  // The names geardyn stiffness wrote before its columns carried their plane and unit still read.
+  const auto column = [&](const std::string& key, const char* current,
+                          const char* legacy) -> const std::vector<double>& {
+    const std::string name = config.string(key);
+    const auto& names = csv.columns();
+    if (name == current && std::find(names.begin(), names.end(), name) == names.end() &&
+        std::find(names.begin(), names.end(), legacy) != names.end()) {
+      return csv.column(legacy, key);
+    }
+    return csv.column(name, key);
+  };
   const auto& stiffness =
-      csv.column(config.string("stats.csv_stiffness_column"), "stats.csv_stiffness_column");
-  const auto& error = csv.column(config.string("stats.csv_error_column"), "stats.csv_error_column");
+      column("stats.csv_stiffness_column", "k_total_transverse_n_per_m", "k_total");
+  const auto& error = column("stats.csv_error_column", "ste_transverse_m", "ste_m");
   double k_mean = 0.0;
   for (double k : stiffness) {
     if (!(k > 0.0))

@@ -121,11 +121,16 @@ const std::vector<std::string>& meshStiffnessModelNames() {
 
 void addMeshStiffnessSections(ConfigSchema& schema) {
   schema.section("mesh_stiffness",
-                 "Mesh-stiffness models to compute and compare, and the output grid.");
+                 "Mesh-stiffness models to compute and compare, and the output grid. Every k(φ) "
+                 "[N/m] is taken along the transverse line of action: it relates the transverse "
+                 "force F = T₁/r_b1 to the transverse approach of the flanks r_b1θ₁ + r_b2θ₂ "
+                 "(helical: the normal-plane stiffness is k / cos² β_b).");
   schema.stringList("mesh_stiffness.models")
       .choices(meshStiffnessModelNames())
       .defaultValue(nlohmann::ordered_json::array({"potential_energy"}))
-      .doc("models to compute; the first is the primary one (k_total in the CSV)");
+      .doc(
+          "models to compute; the first is the primary one (k_total_transverse_n_per_m in the "
+          "CSV)");
   schema.integer("mesh_stiffness.positions")
       .min(8)
       .max(1000000)
@@ -141,8 +146,9 @@ void addMeshStiffnessSections(ConfigSchema& schema) {
       .min(0.0)
       .defaultValue(0.0)
       .doc(
-          "force along the line of action F; > 0 adds the loaded static transmission error δ = F/k "
-          "+ e");
+          "transmitted force F = T₁/r_b1 along the transverse line of action (helical: the "
+          "normal tooth force is F / cos β_b); > 0 adds the loaded static transmission error "
+          "δ = F/k + e, along the transverse line of action too");
   schema.realList("mesh_stiffness.error_amplitudes")
       .unit("m")
       .defaultValue(nlohmann::ordered_json::array())
@@ -255,7 +261,10 @@ void addMeshStiffnessModelSections(ConfigSchema& schema) {
       .doc("helical: face slices (0: exact integral over the face)");
   schema.boolean("mesh_stiffness.potential_energy.helical_cos2_beta_b")
       .defaultValue(false)
-      .doc("helical: multiply by cos² β_b");
+      .doc(
+          "helical: false (Wan 2015): the sum of the transverse spur slices is the transverse "
+          "stiffness k; true: that sum is taken as the normal-plane stiffness k_n and projected "
+          "to the transverse plane, k = k_n cos² β_b (F_t = F_n cos β_b, δ_n = δ_t cos β_b)");
   schema.integer("mesh_stiffness.potential_energy.table_points")
       .min(16)
       .max(1000000)

@@ -10,7 +10,8 @@ namespace geardyn {
 std::vector<LoadStatistics> meanExcitationAgainstLoad(const LoadedToothContact& contact,
                                                       double design_load,
                                                       const std::vector<double>& loads,
-                                                      int positions, double* mean_stiffness) {
+                                                      int positions, double* mean_stiffness,
+                                                      const ProgressCallback& progress) {
   if (!(design_load > 0.0)) {
     throw InputError("ltca.design_load", fmt::format("{:g}", design_load), "must be > 0 [N]");
   }
@@ -20,6 +21,7 @@ std::vector<LoadStatistics> meanExcitationAgainstLoad(const LoadedToothContact& 
   const double x0 = design_load / k_bar;
   std::vector<LoadStatistics> out;
   for (double a : loads) {
+    if (progress) progress(static_cast<double>(out.size()), static_cast<double>(loads.size()));
     if (!(a > 0.0)) throw InputError("ltca.statistics_loads", fmt::format("{:g}", a), "> 0");
     LoadStatistics s;
     s.a = a;

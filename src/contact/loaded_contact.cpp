@@ -87,8 +87,8 @@ LoadedContactPoint LoadedToothContact::solve(double phase, double force, int per
   return p;
 }
 
-std::vector<LoadedContactPoint> LoadedToothContact::sweep(double force, int positions,
-                                                          int periods) const {
+std::vector<LoadedContactPoint> LoadedToothContact::sweep(double force, int positions, int periods,
+                                                          const ProgressCallback& progress) const {
   if (positions < 2 || periods < 1) {
     throw InputError("ltca.positions", fmt::format("{} x {} periods", positions, periods),
                      "at least 2 positions over at least one period");
@@ -101,6 +101,8 @@ std::vector<LoadedContactPoint> LoadedToothContact::sweep(double force, int posi
       point.phase += p;
       out.push_back(std::move(point));
     }
+    if (progress)
+      progress(static_cast<double>(p + 1) * positions, static_cast<double>(periods) * positions);
   }
   return out;
 }
@@ -117,10 +119,11 @@ std::vector<std::complex<double>> steHarmonics(const std::vector<LoadedContactPo
 }
 
 std::vector<HarrisPoint> harrisMap(const LoadedToothContact& contact,
-                                   const std::vector<double>& forces, int positions,
-                                   int harmonics) {
+                                   const std::vector<double>& forces, int positions, int harmonics,
+                                   const ProgressCallback& progress) {
   std::vector<HarrisPoint> out;
   for (double f : forces) {
+    if (progress) progress(static_cast<double>(out.size()), static_cast<double>(forces.size()));
     const auto period = contact.sweep(f, positions);
     HarrisPoint h;
     h.force = f;

@@ -86,4 +86,24 @@ GearBodyMass gearBodyMass(const GearSpec& g) {
   return out;
 }
 
+std::vector<std::string> plausibilityNotes(const GearSpec& gear, const std::string& name) {
+  std::vector<std::string> notes;
+  if (gear.normal_module < 0.1e-3 || gear.normal_module > 0.1)
+    notes.push_back(fmt::format(
+        "{}.module = {:g} m is outside the usual 0.1 mm to 100 mm: lengths are in metres "
+        "(a 3 mm module is 0.003)",
+        name, gear.normal_module));
+  if (gear.face_width < 1e-3 || gear.face_width > 2.0)
+    notes.push_back(fmt::format(
+        "{}.face_width = {:g} m is outside the usual 1 mm to 2 m: lengths are in metres", name,
+        gear.face_width));
+  return notes;
+}
+
+std::string speedPlausibilityNote(double rpm, const std::string& key) {
+  if (!(std::abs(rpm) > kPlausibleMaxRpm)) return {};
+  return fmt::format("{} = {:g} rpm is above {:g} rpm: is it in rpm (not rad/s or Hz)?", key, rpm,
+                     kPlausibleMaxRpm);
+}
+
 }  // namespace geardyn

@@ -101,18 +101,8 @@ Driver parseDriver(const std::string& text, const std::string& key) {
 
 /// Values outside the usual engineering ranges: a module of 3 is 3 m, not 3 mm (SI units).
 static std::vector<std::string> plausibilityNotes(const GearPairSpec& spec) {
-  std::vector<std::string> notes;
-  for (const auto& [name, g] : {std::pair{"pinion", &spec.pinion}, std::pair{"gear", &spec.gear}}) {
-    if (g->normal_module < 0.1e-3 || g->normal_module > 0.1)
-      notes.push_back(fmt::format(
-          "{}.module = {:g} m is outside the usual 0.1 mm to 100 mm: lengths are in metres "
-          "(a 3 mm module is 0.003)",
-          name, g->normal_module));
-    if (g->face_width < 1e-3 || g->face_width > 2.0)
-      notes.push_back(fmt::format(
-          "{}.face_width = {:g} m is outside the usual 1 mm to 2 m: lengths are in metres", name,
-          g->face_width));
-  }
+  std::vector<std::string> notes = plausibilityNotes(spec.pinion, "pinion");
+  for (auto& note : plausibilityNotes(spec.gear, "gear")) notes.push_back(std::move(note));
   return notes;
 }
 
@@ -327,9 +317,8 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
       throw InputError("pair.speed_rpm", fmt::format("{:g}", n1), "must be finite and >= 0");
     }
     mesh_frequency_ = g1.teeth * n1 / 60.0;
-    if (n1 > 200000.0)
-      warnings_.push_back(fmt::format(
-          "pair.speed_rpm = {:g} rpm is above 200000 rpm: is it in rpm (not rad/s or Hz)?", n1));
+    if (auto note = speedPlausibilityNote(n1, "pair.speed_rpm"); !note.empty())
+      warnings_.push_back(std::move(note));
   }
 } catch (const InputError& error) {
   const auto notes = plausibilityNotes(spec);

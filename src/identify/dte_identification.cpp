@@ -196,6 +196,7 @@ DteIdentification threeStep(const LateralRotorSpec& known,
   // Step 2: X_i, Y_i from the mesh harmonics.
   const Complex j(0.0, 1.0);
   for (int i = 1; i <= harmonics; ++i) {
+    if (options.progress) options.progress(i - 1, harmonics);
     rows.clear();
     rhs.clear();
     for (const auto& d : data) {

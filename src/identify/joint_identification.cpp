@@ -324,6 +324,7 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
   double cost = res.squaredNorm(), lambda = 1e-3;
   r.converged = false;
   for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
+    if (options.progress) options.progress(r.iterations, options.max_iterations);
     const Eigen::MatrixXd j = p.jacobian(t);
     const Eigen::MatrixXd jtj = j.transpose() * j;
     const Eigen::VectorXd g = j.transpose() * res;
@@ -432,7 +433,8 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
     r.spec.mesh_damping = dashpotFromRatio(std::exp(p.logRatio(t)), r.spec.mesh_stiffness, p.m_eff);
   }
   r.message = fmt::format(
-      "joint weighted least squares: {} iterations, chi^2 = {:.4g} for {} degrees of freedom{}",
+      "joint weighted least squares: {} iterations, chi^2 [-] = {:.4g} for {} degrees of "
+      "freedom{}",
       r.iterations, r.chi_square, r.degrees_of_freedom,
       r.converged ? "" : " (iteration limit reached)");
   return r;

@@ -45,11 +45,21 @@ SweepRow sweepRow(HarmonicBalance& hbm, const GearPairModel& model, const SweepP
   return row;
 }
 
-CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics) {
-  std::vector<std::string> columns = {
-      "frequency",         "branch",       "p2p",  "mean", "max", "min", "rms", "stable",
-      "newton_iterations", "contact_loss", "sweep"};
-  for (int h = 0; h <= harmonics; ++h) columns.push_back("h" + std::to_string(h));
+CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics, bool nondimensional) {
+  // x along the transverse line of action; the unit ends each name ("nondim": Ω/ω_n and x₀).
+  const std::string x = nondimensional ? "_transverse_nondim" : "_transverse_m";
+  std::vector<std::string> columns = {nondimensional ? "frequency_nondim" : "frequency_hz",
+                                      "branch",
+                                      "p2p" + x,
+                                      "mean" + x,
+                                      "max" + x,
+                                      "min" + x,
+                                      "rms" + x,
+                                      "stable",
+                                      "newton_iterations",
+                                      "contact_loss",
+                                      "sweep"};
+  for (int h = 0; h <= harmonics; ++h) columns.push_back("h" + std::to_string(h) + x);
   CsvTable table(columns);
   for (const auto& r : rows) {
     std::vector<CsvCell> cells = {r.frequency,

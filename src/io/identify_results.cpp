@@ -52,13 +52,14 @@ std::vector<std::pair<std::string, WhirlComponent>> readPeakTable(const std::fil
     return cells;
   };
   const auto header = split(line);
-  const auto column = [&](const std::string& name) {
+  // The names of whirlPeaksTable, or the ones it wrote before its columns carried units.
+  const auto column = [&](const std::string& name, const std::string& older = "") {
     for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return i;
+      if (header[i] == name || (!older.empty() && header[i] == older)) return i;
     throw InputError(key, path.string(), fmt::format("has no column '{}'", name));
   };
   const std::size_t cs = column("shaft"), cc = column("component"), cf = column("frequency_hz"),
-                    cr = column("re"), ci = column("im");
+                    cr = column("re_m", "re"), ci = column("im_m", "im");
   std::vector<std::pair<std::string, WhirlComponent>> rows;
   for (int row = 2; std::getline(in, line); ++row) {
     if (line.empty()) continue;
@@ -161,12 +162,17 @@ nlohmann::ordered_json identifiedJson(const DteIdentification& r) {
 }
 
 CsvTable identifiedTable(const DteIdentification& r, const std::optional<LateralRotorSpec>& truth) {
-  CsvTable t(
-      {"parameter", "harmonic", "value", "ci_low", "ci_high", "identifiable", "true", "error"});
+  // Each row in its parameter's unit (the unit column); error: relative, or in rad for phases.
+  CsvTable t({"parameter", "harmonic", "unit", "value", "ci_low", "ci_high", "identifiable", "true",
+              "error"});
   const auto add = [&](const std::string& name, long long harmonic, const IdentifiedValue& v,
                        std::optional<double> exact, bool phase) {
-    std::vector<CsvCell> row{name,  harmonic, v.value,
-                             v.low, v.high,   static_cast<long long>(v.identifiable)};
+    const std::string unit = phase                      ? "rad"
+                             : name == "mesh_stiffness" ? "N/m"
+                             : name == "mesh_damping"   ? "N s/m"
+                                                        : "m";
+    std::vector<CsvCell> row{
+        name, harmonic, unit, v.value, v.low, v.high, static_cast<long long>(v.identifiable)};
     if (exact) {
       row.push_back(*exact);
       row.push_back(phase ? std::remainder(v.value - *exact, 2.0 * std::numbers::pi)

@@ -12,9 +12,13 @@ namespace geardyn::io {
 
 CsvTable ltcaTable(const std::vector<LoadedContactPoint>& points, double force) {
   const std::size_t pairs = points.empty() ? 0 : points.front().pair_loads.size();
-  std::vector<std::string> columns{"phase", "ste_m", "no_load_te_m", "secant_stiffness",
-                                   "tangent_stiffness"};
-  for (std::size_t j = 0; j < pairs; ++j) columns.push_back(fmt::format("load_pair_{}", j));
+  // The STE, the stiffnesses and the loads along the transverse line of action (the force is
+  // T1 / r_b1): the names say so, as in mesh_stiffness.csv of geardyn stiffness.
+  std::vector<std::string> columns{"mesh_fraction", "ste_transverse_m", "no_load_te_transverse_m",
+                                   "secant_stiffness_transverse_n_per_m",
+                                   "tangent_stiffness_transverse_n_per_m"};
+  for (std::size_t j = 0; j < pairs; ++j)
+    columns.push_back(fmt::format("load_pair_{}_transverse_n", j));
   for (std::size_t j = 0; j < pairs; ++j) columns.push_back(fmt::format("share_pair_{}", j));
   CsvTable t(columns);
   for (const auto& p : points) {
@@ -27,7 +31,8 @@ CsvTable ltcaTable(const std::vector<LoadedContactPoint>& points, double force) 
 }
 
 CsvTable harrisTable(const std::vector<HarrisPoint>& map) {
-  std::vector<std::string> columns{"force_n", "peak_to_peak_m", "mean_m"};
+  // The loaded STE (peak to peak, mean, harmonics) under the transverse force T1 / r_b1.
+  std::vector<std::string> columns{"force_transverse_n", "peak_to_peak_m", "mean_m"};
   const std::size_t h = map.empty() ? 0 : map.front().harmonics.size();
   for (std::size_t i = 0; i < h; ++i) columns.push_back(fmt::format("harmonic_{}_m", i + 1));
   CsvTable t(columns);

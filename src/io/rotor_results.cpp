@@ -16,7 +16,8 @@
 namespace geardyn::io {
 
 CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks) {
-  CsvTable t({"shaft", "component", "frequency_hz", "re", "im", "amplitude", "phase"});
+  // Complex whirl radii [m] (z = x + j y) and their phase [rad].
+  CsvTable t({"shaft", "component", "frequency_hz", "re_m", "im_m", "amplitude_m", "phase_rad"});
   for (int s = 0; s < 2; ++s) {
     for (const auto& c : peaks[s]) {
       t.addRow({std::string(kShaftNames[s]), c.name, c.frequency, c.value.real(), c.value.imag(),
@@ -27,7 +28,7 @@ CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks
 }
 
 CsvTable fullSpectrumTable(const std::array<FullSpectrum, 2>& spectra, double max_frequency) {
-  CsvTable t({"shaft", "frequency_hz", "re", "im", "amplitude", "phase"});
+  CsvTable t({"shaft", "frequency_hz", "re_m", "im_m", "amplitude_m", "phase_rad"});
   for (int s = 0; s < 2; ++s) {
     const auto& sp = spectra[s];
     for (std::size_t i = 0; i < sp.frequency.size(); ++i) {

@@ -116,8 +116,13 @@ nlohmann::ordered_json timeResponseResultsJson(const config::GearPairModelBuild&
   return results;
 }
 
-CsvTable timeResponseTable(const TimeResponseChannels& c) {
-  CsvTable table({"t", "x", "v", "y", "mesh_force", "k"});
+CsvTable timeResponseTable(const TimeResponseChannels& c, bool nondimensional) {
+  // Along the transverse line of action (docs/theory/mesh_stiffness.md, "Which plane"); the
+  // unit ends each name, or "nondim" for Gelman's nondimensional form.
+  const auto unit = [&](const char* si) { return std::string(nondimensional ? "nondim" : si); };
+  CsvTable table({"t_" + unit("s"), "x_transverse_" + unit("m"), "v_transverse_" + unit("m_per_s"),
+                  "y_transverse_" + unit("m"), "mesh_force_transverse_" + unit("n"),
+                  "k_transverse_" + unit("n_per_m")});
   for (std::size_t j = 0; j < c.t.size(); ++j)
     table.addRow({c.t[j], c.x[j], c.v[j], c.y[j], c.force[j], c.k[j]});
   return table;

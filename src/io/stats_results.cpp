@@ -55,8 +55,8 @@ nlohmann::ordered_json monteCarloJson(const MonteCarloOptions& options,
 }
 
 CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples) {
-  CsvTable table(
-      {"sample", "ratio", "dynamic_mean_excitation", "r_ke", "d_k", "d_e", "delta_m1_ef", "phase"});
+  CsvTable table({"sample", "ratio", "dynamic_mean_excitation", "r_ke", "d_k", "d_e", "delta_m1_ef",
+                  "phase_fraction"});
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const auto& s = samples[i];
     table.addRow({static_cast<long long>(i), s.ratio, s.dynamic_mean_excitation, s.r_ke, s.d_k,

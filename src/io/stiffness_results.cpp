@@ -40,6 +40,30 @@ nlohmann::ordered_json summaryJson(const MeshStiffness& k, int order) {
   return json;
 }
 
+/// Where k, F and the STE are taken (docs/theory/mesh_stiffness.md, "Which plane"): along the
+/// transverse line of action, F = T₁/r_b1 and δ = r_b1 θ₁ + r_b2 θ₂. The normal-plane values
+/// follow from the tooth force's inclination β_b to the transverse plane: F_n = F / cos β_b,
+/// δ_n = δ cos β_b (the approach along the contact normal), k_n = F_n / δ_n = k / cos² β_b.
+nlohmann::ordered_json planeJson(const GearPair& pair, const nlohmann::ordered_json& results) {
+  const double cb = std::cos(pair.baseHelixAngle());
+  nlohmann::ordered_json normal;
+  normal["stiffness_mean"] = results["mesh_stiffness"]["mean"].get<double>() / (cb * cb);
+  normal["stiffness_min"] = results["mesh_stiffness"]["min"].get<double>() / (cb * cb);
+  normal["stiffness_max"] = results["mesh_stiffness"]["max"].get<double>() / (cb * cb);
+  if (results.contains("static_transmission_error")) {
+    const auto& ste = results["static_transmission_error"];
+    normal["force"] = ste["force"].get<double>() / cb;
+    normal["ste_mean"] = ste["mean"].get<double>() * cb;
+    normal["ste_peak_to_peak"] = ste["peak_to_peak"].get<double>() * cb;
+  }
+  return {{"plane", "transverse"},
+          {"line_of_action",
+           "k [N/m], F [N] and the STE [m] act along the transverse line of action: F = T1/r_b1, "
+           "STE = r_b1 theta1 + r_b2 theta2 (the transverse approach of the flanks)"},
+          {"base_helix_angle_deg", pair.baseHelixAngle() / kDegree},
+          {"normal", normal}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const GearPair& pair,
@@ -126,6 +150,7 @@ nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const 
                                             {"peak_to_peak", hi - lo},
                                             {"harmonic_amplitudes", amplitude}};
   }
+  results["plane"] = planeJson(pair, results);
   return results;
 }
 
@@ -136,12 +161,14 @@ CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
   const config::TransmissionErrorSpec te = config::transmissionErrorFromConfig(config);
   std::vector<std::string> columns = {"roll_angle_rad", "mesh_fraction"};
   if (f_m && *f_m > 0.0) columns.push_back("time_s");
-  columns.push_back("k_total");
-  for (int j = 0; j < primary.pairCount(); ++j) columns.push_back(fmt::format("k_pair_{}", j + 1));
+  // k, F and the STE along the transverse line of action (planeJson): the names say so.
+  columns.push_back("k_total_transverse_n_per_m");
+  for (int j = 0; j < primary.pairCount(); ++j)
+    columns.push_back(fmt::format("k_pair_{}_transverse_n_per_m", j + 1));
   for (std::size_t m = 1; m < models.models.size(); ++m) {
-    columns.push_back("k_" + models.models[m]->model());
+    columns.push_back("k_" + models.models[m]->model() + "_transverse_n_per_m");
   }
-  if (te.force > 0.0) columns.push_back("ste_m");
+  if (te.force > 0.0) columns.push_back("ste_transverse_m");
   CsvTable table(columns);
   const int n = static_cast<int>(config.integer("mesh_stiffness.positions"));
   const int z1 = pair.spec().pinion.teeth;

@@ -224,8 +224,8 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
   if (out.message.empty()) {
     switch (out.status) {
       case TimeResponseStatus::kSteadyState:
-        out.message = fmt::format("steady state after {} periods (change {:.2g})", out.periods,
-                                  out.last_change);
+        out.message = fmt::format("steady state after {} periods (relative change [-] {:.2g})",
+                                  out.periods, out.last_change);
         break;
       case TimeResponseStatus::kMaxPeriods:
         out.message =

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -333,7 +334,8 @@ std::vector<TrainOrderLine> trainOrderLines(const GearTrainModel& model, int mes
 
 TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<double>& speeds,
                             const TrainModalOptions& options,
-                            const std::vector<TrainOrderLine>& lines) {
+                            const std::vector<TrainOrderLine>& lines,
+                            const ProgressCallback& progress) {
   if (speeds.size() < 2) throw InputError("campbell.speeds", "", "at least two speeds");
   for (std::size_t i = 1; i < speeds.size(); ++i) {
     if (!(speeds[i] > speeds[i - 1])) {
@@ -360,11 +362,15 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
   std::vector<std::vector<TrainMode>> solved(speeds.size());
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  std::atomic<std::size_t> finished{0};
+  std::atomic<bool> stop{false};
   const std::size_t threads =
       std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), speeds.size());
-  auto work = [&](std::size_t first, std::size_t last) {
+  // The calling thread alone reports progress; a callback that throws (an interrupted run)
+  // stops the workers before the exception leaves.
+  auto work = [&](std::size_t first, std::size_t last, bool report) {
     Eigen::VectorXd krylov_start;
-    for (std::size_t i = first; i < last; ++i) {
+    for (std::size_t i = first; i < last && !stop; ++i) {
       try {
         solved[i] = modesAt(model, speeds[i], candidates, sparse_train, &krylov_start);
       } catch (...) {
@@ -372,14 +378,24 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
         if (!failure) failure = std::current_exception();
         return;
       }
+      const std::size_t done = ++finished;
+      if (report && progress)
+        progress(static_cast<double>(done), static_cast<double>(speeds.size()));
     }
   };
   const auto first = [&](std::size_t t) { return speeds.size() * t / threads; };
   std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, first(t), first(t + 1));
-  work(0, first(1));
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, first(t), first(t + 1), false);
+  try {
+    work(0, first(1), true);
+  } catch (...) {
+    stop = true;
+    for (auto& thread : pool) thread.join();
+    throw;
+  }
   for (auto& thread : pool) thread.join();
   if (failure) std::rethrow_exception(failure);
+  if (progress) progress(static_cast<double>(speeds.size()), static_cast<double>(speeds.size()));
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     std::vector<TrainMode> found = std::move(solved[i]);
     if (i == 0) {

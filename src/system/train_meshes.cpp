@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -45,7 +46,14 @@ PairGeometry externalPair(const GearSpec& a, const GearSpec& b, std::optional<do
   spec.gear = b;
   spec.centre_distance = distance;
   const GearPair pair = makeGearPair(spec, key_a, key_b, key_pair);
-  for (const auto& w : pair.warnings()) warnings.push_back(key_pair + ": " + w);
+  // Implausible modules and face widths are noted once per gear under its own key (the
+  // gearbox description); the pair's notes name them "pinion" and "gear".
+  auto implausible = plausibilityNotes(a, "pinion");
+  for (auto& note : plausibilityNotes(b, "gear")) implausible.push_back(std::move(note));
+  for (const auto& w : pair.warnings()) {
+    if (std::find(implausible.begin(), implausible.end(), w) == implausible.end())
+      warnings.push_back(key_pair + ": " + w);
+  }
   return {pair.centreDistance(),
           pair.operatingPressureAngle(),
           pair.baseHelixAngle(),

@@ -33,11 +33,13 @@ def test_simulate_backlash_example(tmp_path):
     assert len(r["mesh_force"]["harmonic_amplitudes"]) == 10
     with open(tmp_path / "time_response.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
-    assert list(rows[0]) == ["t", "x", "v", "y", "mesh_force", "k"]
+    assert list(rows[0]) == ["t_s", "x_transverse_m", "v_transverse_m_per_s", "y_transverse_m",
+                             "mesh_force_transverse_n", "k_transverse_n_per_m"]
     assert len(rows) == 4 * 128
     row = rows[77]
     # Backlash law above the clearance: force = k (y - b).
-    assert float(row["mesh_force"]) == pytest.approx(float(row["k"]) * (float(row["y"]) - 1e-4), rel=1e-9)
+    assert float(row["mesh_force_transverse_n"]) == pytest.approx(
+        float(row["k_transverse_n_per_m"]) * (float(row["y_transverse_m"]) - 1e-4), rel=1e-9)
 
 
 def test_simulate_contact_loss_and_newton(tmp_path):

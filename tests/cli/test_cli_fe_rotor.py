@@ -38,9 +38,9 @@ def test_time_analysis_writes_steady_harmonics_and_the_resolved_config(tmp_path)
     assert len(table) == 8 * 10
     history = rows(tmp_path / "time_history.csv")
     assert len(history) == 3001  # 30,000 steps written every 10th, with t = 0
-    assert float(history[0]["t"]) == 0.0 and float(history[0]["pinion_shaft.1.uy"]) == 0.0
+    assert float(history[0]["t_s"]) == 0.0 and float(history[0]["pinion_shaft.1.uy_m"]) == 0.0
     # The mesh force settles around T / r_bp (the steady mean of the dynamic force).
-    tail = [float(r["mesh_force"]) for r in history[-480:]]
+    tail = [float(r["mesh_force_normal_n"]) for r in history[-480:]]
     assert sum(tail) / len(tail) == pytest.approx(results["model"]["nominal_mesh_force"], rel=2e-2)
 
 

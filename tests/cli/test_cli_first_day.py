@@ -2,9 +2,13 @@
 messages that name real keys in the user's units, sweeps that do not lose work, and a command
 line that says what it wants. Each test fails on the main branch before the issue."""
 
+import csv
 import json
 import os
+import re
 import subprocess
+
+import pytest
 
 from cli_support import CLI, EXAMPLES, run
 
@@ -98,6 +102,23 @@ def test_long_runs_show_progress_with_eta_unless_quiet(tmp_path):
         assert result.returncode in (0, 1), result.stderr  # rotor: 4 s is still transient
         assert any(l.startswith(label) and "ETA" in l for l in result.stderr.splitlines()), \
             (command, result.stderr)
+
+
+def test_ltca_identify_and_train_campbell_show_progress(tmp_path):
+    for command, config, extra, label in [
+            ("ltca", EXAMPLES / "ltca_visnadi2021_long_relief.toml", [], "ltca: Harris map: "),
+            ("ltca", EXAMPLES / "ltca_visnadi2021_long_relief.toml", [], "ltca: loaded contact: "),
+            ("identify", EXAMPLES / "identify_rao2023_table41.toml", [], "identify: joint fit: "),
+            ("train", EXAMPLES / "train_two_stage_reducer.toml",
+             ["--set", 'analysis.run=["campbell"]'], "train: Campbell: ")]:
+        result = run_env(command, config, "--out", tmp_path / command, "--progress",
+                         "--set", "output.plots=false", *extra, env=PROGRESS_NOW)
+        assert result.returncode == 0, (command, result.stderr)
+        assert any(l.startswith(label) and "ETA" in l for l in result.stderr.splitlines()), \
+            (command, result.stderr)
+        quiet = run_env(command, config, "--out", tmp_path / (command + "_q"), "--progress",
+                        "--quiet", "--set", "output.plots=false", *extra, env=PROGRESS_NOW)
+        assert "ETA" not in quiet.stderr
 
 
 # --- item 4: messages name real keys, in the user's units -------------------------------------
@@ -363,6 +384,173 @@ def test_old_spellings_work_with_a_warning_naming_the_new_key(tmp_path):
     file.write_text(HBM.read_text().replace("torque = 100.0", "torque = 100.0\npinion_torque = 100.0"))
     both = run("hbm", file, "--out", tmp_path / "both")
     assert both.returncode == 2 and "keep only model.torque" in both.stderr, both.stderr
+
+
+# --- item 5: units on everything printed -------------------------------------------------------
+
+# One CSV convention: the unit ends the column's name, lower case (docs/cli.md, "Result files").
+UNIT_SUFFIX = re.compile(
+    r"(^|_)(m|mm|um|n|n_m|n_per_m|n_s_per_m|hz|hz_per_rpm|rpm|s|rad|deg|kg|kg_m2|m_per_s|"
+    r"m_per_s2|rad_per_s|rad_per_s2|periods|nondim|pa)$")
+# Dimensionless by their meaning: ratios, fractions, counts, flags, Gelman's (2005) normalised
+# statistics (k = K/K̄, e_f = E/x₀: a, m1_k, d_k, r_ke, ...), indices.
+DIMENSIONLESS = re.compile(
+    r"^(.*ratio.*|.*fraction.*|.*relative.*|.*factor.*|share_pair_\d+|order|mode|case|count|"
+    r"teeth|teeth_[ab]|undercut|steady|stable|branch|newton_iterations|contact_loss|multiplicity|strain_.*|"
+    r"sample|seed|harmonic|identifiable|a|m1_k|m1_ef|d_k|d_e|r_ke|delta_m1_ef|variable_term_v|"
+    r"dynamic_mean_excitation)$")
+MODE_SHAPES = {"re", "im", "amplitude", "real", "imag"}  # normalised shapes
+
+# Every example, with what keeps the default suite short (the flexible train's Newmark run
+# takes minutes; its tables are the other trains').
+QUICK = {"train_two_stage_flexible": ["--set", 'analysis.run=["static", "modal"]']}
+
+
+def _numeric(values):
+    values = [v for v in values if v != ""]
+    try:
+        return bool(values) and all(float(v) == float(v) or v.lower() == "nan" for v in values)
+    except ValueError:
+        return False
+
+
+def _columns_without_units(path):
+    with open(path, newline="") as handle:
+        rows = list(csv.reader(handle))
+    header, body = rows[0], rows[1:]
+    if "unit" in header:  # one unit per row, named in its own column
+        return []
+    bad = []
+    for i, name in enumerate(header):
+        if not _numeric([r[i] for r in body if i < len(r)]):
+            continue  # text
+        if UNIT_SUFFIX.search(name) or DIMENSIONLESS.match(name):
+            continue
+        if path.name == "mode_shapes.csv" and name in MODE_SHAPES:
+            continue
+        bad.append(name)
+    return bad
+
+
+NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d+(?:[eE][-+]?\d+)?|\d+[eE][-+]?\d+)(?![\w.])")
+# A number is followed by its unit, or by "/", "..", "to" or "->" and another number (a pair or
+# a range in one unit).
+AFTER = re.compile(r"\s*(\[-\]|%|µm|um|mm|m/s\^2|N/m|N s/m|N m|N|Hz|rpm|ms|s|rad|deg|kg|m|"
+                   r"periods|GB|MB)(?![\w/])")
+JOIN = re.compile(r"\s*(/|\.\.|to|->)\s*")
+
+
+def _numbers_without_units(line, table_unit):
+    if table_unit:
+        return []
+    bad = []
+    for match in NUMBER.finditer(line):
+        rest = line[match.end():]
+        while True:
+            join = JOIN.match(rest)
+            if not join or not NUMBER.match(rest[join.end():]):
+                break
+            rest = rest[join.end() + NUMBER.match(rest[join.end():]).end():]
+        declared = re.search(r"\[[^\]]+\]", line[:match.start()])
+        if not AFTER.match(rest) and not declared:
+            bad.append(match.group())
+    return bad
+
+
+def _stdout_lines_without_units(text):
+    bad, table_unit = [], False
+    for line in text.splitlines():
+        if line.startswith("results:"):
+            continue
+        if re.search(r"\[[^\]]+\]", line) and not NUMBER.search(line):
+            table_unit = True  # a table header: "model [N/m]   mean   min ..."
+            continue
+        if table_unit and not line.startswith("  ") or not line.strip():
+            table_unit = False
+        # A table row: the name then numbers only.
+        row = table_unit and re.fullmatch(r"\s+\S+(\s+[-+\d.eE]+)+", line)
+        if _numbers_without_units(line, row):
+            bad.append(line)
+    return bad
+
+
+def test_every_example_prints_units_and_names_them_in_every_csv_header(tmp_path):
+    missing_columns, missing_units = {}, {}
+    for example in sorted(EXAMPLES.glob("*.toml")):
+        command = example.stem.split("_")[0]
+        out = tmp_path / example.stem
+        result = run(command, example, "--out", out, "--set", "output.plots=false",
+                     *QUICK.get(example.stem, []))
+        assert result.returncode == 0, (example.stem, result.stderr)
+        lines = _stdout_lines_without_units(result.stdout)
+        if lines:
+            missing_units[example.stem] = lines
+        for table in out.rglob("*.csv"):
+            # The sweep's own table: the swept keys and the outputs the study names.
+            if command == "sweep" and table.parent == out:
+                continue
+            bad = _columns_without_units(table)
+            if bad:
+                missing_columns[f"{example.stem}/{table.relative_to(out)}"] = bad
+    assert not missing_columns, missing_columns
+    assert not missing_units, missing_units
+
+
+def test_implausible_lengths_and_speeds_warn_in_pair_commands_and_gearboxes(tmp_path):
+    ltca = run("ltca", EXAMPLES / "ltca_visnadi2021_long_relief.toml", "--out", tmp_path / "l",
+               "--set", "output.plots=false", "--set", "pinion.face_width=20",
+               "--set", "gear.face_width=20")
+    assert ltca.returncode == 0, ltca.stderr
+    assert "warning: pinion.face_width = 20 m is outside the usual 1 mm to 2 m" in ltca.stderr
+    config = tmp_path / "pair.toml"
+    config.write_text(ONE_FILE)
+    fast = run("simulate", config, "--out", tmp_path / "s", "--set", "pair.speed_rpm=300000")
+    assert "pair.speed_rpm = 300000 rpm is above 200000 rpm" in fast.stderr, fast.stderr
+    reducer = EXAMPLES / "train_two_stage_reducer.toml"
+    only_static = ["--set", 'analysis.run=["static"]', "--set", "output.plots=false"]
+    wide = run("train", reducer, "--out", tmp_path / "t1", *only_static,
+               "--set", "gears.z1.face_width=20", "--set", "operating_point.speed_rpm=300000")
+    assert wide.returncode == 0, wide.stderr
+    assert "warning: gears.z1.face_width = 20 m is outside the usual 1 mm to 2 m" in wide.stderr
+    assert "operating_point.speed_rpm = 300000 rpm is above 200000 rpm" in wide.stderr
+    assert "pinion.face_width" not in wide.stderr  # the gearbox's key, once
+    millimetres = run("train", reducer, "--out", tmp_path / "t2", *only_static,
+                      "--set", "gears.z1.module=3", "--set", "gears.z2.module=3")
+    assert "gears.z1.module = 3 m is outside the usual 0.1 mm to 100 mm" in millimetres.stderr, \
+        millimetres.stderr
+
+
+# --- item 6: the plane of k, F and the TE of a helical pair -----------------------------------
+
+def test_helical_force_plane_is_stated_in_schema_output_and_headers(tmp_path):
+    import csv
+    import math
+    config = tmp_path / "pair.toml"
+    config.write_text(ONE_FILE.replace("positions = 200", "positions = 200\ntransmitted_force = 6000.0"))
+    result = run("stiffness", config, "--out", tmp_path / "k")
+    assert result.returncode == 0, result.stderr
+    assert "k, F and STE along the transverse line of action (F = T1/r_b1)" in result.stdout
+    # β_b by hand: tan α_t = tan 20° / cos 15°, tan β_b = tan 15° cos α_t.
+    alpha_t = math.atan(math.tan(math.radians(20.0)) / math.cos(math.radians(15.0)))
+    beta_b = math.atan(math.tan(math.radians(15.0)) * math.cos(alpha_t))
+    assert f"normal plane (beta_b = {math.degrees(beta_b):.4f} deg)" in result.stdout, result.stdout
+    assert f"F_n = F / cos beta_b = {6000.0 / math.cos(beta_b):g} N" in result.stdout
+    plane = json.loads((tmp_path / "k" / "summary.json").read_text())["results"]["plane"]
+    assert plane["plane"] == "transverse"
+    assert plane["normal"]["force"] == pytest.approx(6000.0 / math.cos(beta_b), rel=1e-12)
+    with open(tmp_path / "k" / "mesh_stiffness.csv", newline="") as handle:
+        header = next(csv.reader(handle))
+    assert "k_total_transverse_n_per_m" in header and "ste_transverse_m" in header
+    simulate = run("simulate", config, "--out", tmp_path / "s")
+    assert simulate.returncode == 0, simulate.stderr
+    header = (tmp_path / "s" / "time_response.csv").read_text().splitlines()[0].split(",")
+    assert "mesh_force_transverse_n" in header and "x_transverse_m" in header
+    schema = run("schema", "stiffness").stdout
+    assert "transmitted force F = T₁/r_b1 along the transverse line of action" in schema
+    assert "taken as the normal-plane stiffness k_n and projected" in schema
+    assert "along the transverse line of action" in run("schema", "simulate").stdout
+    assert "along the transverse line of action" in run("schema", "ltca").stdout
+    assert "along the contact normal" in run("schema", "train").stdout
 
 
 # --- item 10: correctness loose ends ----------------------------------------------------------

@@ -38,9 +38,10 @@ def test_complete_curves_through_every_fold(sweep):
     assert any(1550 < f < 1700 for f in up) and any(2150 < f < 2300 for f in up)
     with open(out / "sweep.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
-    assert list(rows[0])[:10] == ["frequency", "branch", "p2p", "mean", "max", "min", "rms", "stable",
-                                  "newton_iterations", "contact_loss"]
-    assert "h14" in rows[0] and "h15" not in rows[0]
+    x = "_transverse_m"  # along the transverse line of action, in metres
+    assert list(rows[0])[:10] == ["frequency_hz", "branch", "p2p" + x, "mean" + x, "max" + x, "min" + x,
+                                  "rms" + x, "stable", "newton_iterations", "contact_loss"]
+    assert "h14" + x in rows[0] and "h15" + x not in rows[0]
     assert any(r["stable"] == "0" for r in rows)  # the unstable middle branch is traced
 
 
@@ -64,7 +65,7 @@ def test_paper_observations_in_the_details(sweep):
 
     def levels(detail):
         with open(out / detail["file"], newline="") as handle:
-            return {round(float(r["mesh_stiffness"]) / 2.6e8, 6) for r in csv.DictReader(handle)}
+            return {round(float(r["mesh_stiffness_transverse_n_per_m"]) / 2.6e8, 6) for r in csv.DictReader(handle)}
 
     # 3250 Hz: the mesh stiffness alternates k_c and 2 k_c; 1250 Hz: it also drops to 0.
     assert levels(at[3250.0][0]) == {1.0, 2.0}

@@ -28,7 +28,7 @@ def test_loads_share_the_force(ltca):
         shares = [float(v) for k, v in row.items() if k.startswith("share_pair_")]
         assert sum(shares) == pytest.approx(1.0, abs=1e-12)
         assert min(shares) >= 0.0
-        assert float(row["ste_m"]) >= float(row["no_load_te_m"])
+        assert float(row["ste_transverse_m"]) >= float(row["no_load_te_transverse_m"])
 
 
 def test_harris_minimum_at_the_design_load_and_statistics_sign_change(ltca):
@@ -50,9 +50,9 @@ def test_unmodified_pair_has_the_potential_energy_stiffness(tmp_path):
     with open(tmp_path / "l" / "ltca.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     for row in rows:
-        assert float(row["secant_stiffness"]) == pytest.approx(float(row["tangent_stiffness"]), rel=1e-12)
-        assert float(row["ste_m"]) == pytest.approx(3000.0 / float(row["secant_stiffness"]), rel=1e-12)
-    mean = sum(float(r["secant_stiffness"]) for r in rows) / len(rows)
+        assert float(row["secant_stiffness_transverse_n_per_m"]) == pytest.approx(float(row["tangent_stiffness_transverse_n_per_m"]), rel=1e-12)
+        assert float(row["ste_transverse_m"]) == pytest.approx(3000.0 / float(row["secant_stiffness_transverse_n_per_m"]), rel=1e-12)
+    mean = sum(float(r["secant_stiffness_transverse_n_per_m"]) for r in rows) / len(rows)
     # The exact mean of the Visnadi pair is 3.1636e8; 2000 samples of a curve with jumps: ~1e-4.
     assert mean == pytest.approx(3.1636e8, rel=1e-3)
 
@@ -96,7 +96,7 @@ HBM_LTCA = EXAMPLES / "hbm_ltca_visnadi2021_long_relief.toml"
 
 def sweep_p2p(folder):
     with open(folder / "sweep.csv", newline="") as handle:
-        return [float(r["p2p"]) for r in csv.DictReader(handle)]
+        return [float(r["p2p_transverse_m"]) for r in csv.DictReader(handle)]
 
 
 def test_contact_elements_without_modification_are_the_potential_energy_one_sided_model(tmp_path):
@@ -155,7 +155,7 @@ def test_rotor_mesh_from_the_loaded_contact(ltca, tmp_path):
     result = run("rotor", config, "--out", tmp_path / "r")
     assert result.returncode == 0, result.stderr
     with open(out / "harris.csv", newline="") as handle:
-        at_f0 = [r for r in csv.DictReader(handle) if float(r["force_n"]) == pytest.approx(3000.0)][0]
+        at_f0 = [r for r in csv.DictReader(handle) if float(r["force_transverse_n"]) == pytest.approx(3000.0)][0]
     summary = json.loads((tmp_path / "r" / "summary.json").read_text())
     mesh = summary["results"]["mesh"]
     assert mesh["stiffness"] == pytest.approx(results["ltca"]["mean_tangent_stiffness"], rel=1e-12)

@@ -56,8 +56,8 @@ def test_analysis_reads_rexs_directly_and_picks_the_load_case(tmp_path):
     path = analysis(tmp_path, "box.toml")
     via_toml = run("train", path, "--out", tmp_path / "b")
     assert via_toml.returncode == 0, via_toml.stderr
-    a = [float(m["frequency_Hz"]) for m in rows(tmp_path / "a" / "modes.csv")]
-    b = [float(m["frequency_Hz"]) for m in rows(tmp_path / "b" / "modes.csv")]
+    a = [float(m["frequency_hz"]) for m in rows(tmp_path / "a" / "modes.csv")]
+    b = [float(m["frequency_hz"]) for m in rows(tmp_path / "b" / "modes.csv")]
     assert a == b  # the same gearTrainFromConfig path: identical
     summary = json.loads((tmp_path / "a" / "summary.json").read_text())
     assert summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"] == 1234.0
@@ -95,8 +95,8 @@ def test_export_and_reimport(tmp_path):
     assert run("import", exported, "-o", second).returncode == 0
     for toml in (first, second):
         assert run("train", analysis(tmp_path, toml.name), "--out", tmp_path / toml.stem).returncode == 0
-    a = [float(m["frequency_Hz"]) for m in rows(tmp_path / "first" / "modes.csv")]
-    b = [float(m["frequency_Hz"]) for m in rows(tmp_path / "second" / "modes.csv")]
+    a = [float(m["frequency_hz"]) for m in rows(tmp_path / "first" / "modes.csv")]
+    b = [float(m["frequency_hz"]) for m in rows(tmp_path / "second" / "modes.csv")]
     assert a == pytest.approx(b, rel=1e-10)
 
 

@@ -22,7 +22,7 @@ def peaks(path):
 
 
 def value(row):
-    return complex(float(row["re"]), float(row["im"]))
+    return complex(float(row["re_m"]), float(row["im_m"]))
 
 
 @pytest.fixture(scope="module")
@@ -68,14 +68,14 @@ def test_spectrum_structure_of_table41(table41):
             for d in ("fwd", "bwd"):
                 row = p[(shaft, f"mesh_{i}_{d}")]
                 assert float(row["frequency_hz"]) == pytest.approx((1 if d == "fwd" else -1) * 176.0 * i)
-                assert float(row["amplitude"]) > 1e-7
-        assert float(p[(shaft, "static")]["amplitude"]) > 1e-6
-    assert float(p[("pinion", "pinion_1x_bwd")]["amplitude"]) == pytest.approx(200e-6, rel=1e-6)
+                assert float(row["amplitude_m"]) > 1e-7
+        assert float(p[(shaft, "static")]["amplitude_m"]) > 1e-6
+    assert float(p[("pinion", "pinion_1x_bwd")]["amplitude_m"]) == pytest.approx(200e-6, rel=1e-6)
     assert float(p[("pinion", "pinion_1x_bwd")]["frequency_hz"]) == pytest.approx(-11.0)
-    assert float(p[("pinion", "pinion_1x_fwd")]["amplitude"]) < 1e-9
-    assert float(p[("gear", "gear_1x_fwd")]["amplitude"]) == pytest.approx(300e-6, rel=1e-6)
+    assert float(p[("pinion", "pinion_1x_fwd")]["amplitude_m"]) < 1e-9
+    assert float(p[("gear", "gear_1x_fwd")]["amplitude_m"]) == pytest.approx(300e-6, rel=1e-6)
     assert float(p[("gear", "gear_1x_fwd")]["frequency_hz"]) == pytest.approx(11.0 * 16 / 35)
-    assert float(p[("gear", "gear_1x_bwd")]["amplitude"]) < 1e-9
+    assert float(p[("gear", "gear_1x_bwd")]["amplitude_m"]) < 1e-9
     conventions = summary["results"]["conventions"]
     assert "1/N" in conventions["fft"] and "-z" in conventions["rotation"]["pinion"]
     assert summary["seed"] is None if "seed" in summary else True
@@ -126,8 +126,8 @@ def test_shaft_frame_puts_both_runouts_forward(tmp_path):
     assert result.returncode == 0, result.stderr
     fd = peaks(tmp_path / "frequency_components.csv")
     assert float(fd[("pinion", "pinion_1x_fwd")]["frequency_hz"]) == pytest.approx(11.0)
-    assert float(fd[("pinion", "pinion_1x_fwd")]["amplitude"]) == pytest.approx(200e-6)
-    assert float(fd[("gear", "gear_1x_fwd")]["amplitude"]) == pytest.approx(300e-6)
+    assert float(fd[("pinion", "pinion_1x_fwd")]["amplitude_m"]) == pytest.approx(200e-6)
+    assert float(fd[("gear", "gear_1x_fwd")]["amplitude_m"]) == pytest.approx(300e-6)
 
 
 def test_parametric_study(tmp_path):
@@ -218,8 +218,8 @@ def test_pcm_wav_is_scaled(tmp_path):
     assert result.returncode == 0, result.stderr
     p = peaks(tmp_path / "out" / "spectrum_peaks.csv")
     # x + jy = A e^{+j 2 pi 176 t} on the pinion shaft: forward, radius 20000/32768 * 1e-4.
-    assert float(p[("pinion", "mesh_1_fwd")]["amplitude"]) == pytest.approx(20000 / 32768 * 1e-4, rel=2e-3)
-    assert float(p[("gear", "mesh_1_bwd")]["amplitude"]) == pytest.approx(20000 / 32768 * 1e-4, rel=2e-3)
+    assert float(p[("pinion", "mesh_1_fwd")]["amplitude_m"]) == pytest.approx(20000 / 32768 * 1e-4, rel=2e-3)
+    assert float(p[("gear", "mesh_1_bwd")]["amplitude_m"]) == pytest.approx(20000 / 32768 * 1e-4, rel=2e-3)
 
 
 def test_rotor_bad_input_names_the_key(tmp_path):

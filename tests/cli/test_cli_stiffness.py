@@ -12,6 +12,8 @@ CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
 SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 SPUR = SOURCE / "examples" / "stiffness_visnadi2021_spur.toml"
 HELICAL = SOURCE / "examples" / "stiffness_visnadi2021_helical.toml"
+T = "_transverse_n_per_m"  # k along the transverse line of action, in N/m
+K = "k_total" + T
 PLOTS = os.environ.get("GEARDYN_PLOTS", "1") == "1"
 
 
@@ -42,11 +44,11 @@ def test_visnadi_spur_end_to_end(tmp_path):
     with open(tmp_path / "mesh_stiffness.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     assert len(rows) == 1000
-    assert list(rows[0])[:6] == ["roll_angle_rad", "mesh_fraction", "time_s", "k_total", "k_pair_1", "k_pair_2"]
-    assert "k_iso6336" in rows[0] and "ste_m" in rows[0]
+    assert list(rows[0])[:6] == ["roll_angle_rad", "mesh_fraction", "time_s", K, "k_pair_1" + T, "k_pair_2" + T]
+    assert "k_iso6336" + T in rows[0] and "ste_transverse_m" in rows[0]
     row = rows[317]
-    assert float(row["k_total"]) == pytest.approx(float(row["k_pair_1"]) + float(row["k_pair_2"]), rel=1e-14)
-    assert float(row["ste_m"]) == pytest.approx(2000 / float(row["k_total"]), rel=1e-14)
+    assert float(row[K]) == pytest.approx(float(row["k_pair_1" + T]) + float(row["k_pair_2" + T]), rel=1e-14)
+    assert float(row["ste_transverse_m"]) == pytest.approx(2000 / float(row[K]), rel=1e-14)
     fourier = (tmp_path / "fourier.csv").read_text().splitlines()
     assert fourier[0].startswith("model,order,cosine_n_per_m")
     assert len(fourier) == 1 + 5 * 11
@@ -92,7 +94,7 @@ def test_transmission_error_with_a_geometric_error_table(tmp_path):
                  "--set", "mesh_stiffness.error_table_values=[0.0, 2e-6]")
     assert result.returncode == 0, result.stderr
     with open(tmp_path / "mesh_stiffness.csv", newline="") as handle:
-        rows = {round(float(r["mesh_fraction"]), 3): float(r["ste_m"]) for r in csv.DictReader(handle)}
+        rows = {round(float(r["mesh_fraction"]), 3): float(r["ste_transverse_m"]) for r in csv.DictReader(handle)}
     assert rows[0.25] == pytest.approx(5e-6 + 1e-6, rel=1e-12)   # k_max (double contact)
     assert rows[0.75] == pytest.approx(1e-5 + 1e-6, rel=1e-12)   # k_min, e back down to 1 µm
     assert rows[0.63] == pytest.approx(5e-6 + 2e-6 * (1 - 0.13 / 0.5), rel=1e-12)

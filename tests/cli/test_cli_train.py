@@ -29,7 +29,7 @@ def test_lin_parker_table_from_the_command_line(tmp_path):
     assert result.returncode == 0, result.stderr
     modes = rows(tmp_path / "modes.csv")
     assert len(modes) == 18
-    found = {(round(float(m["frequency_Hz"]), 1), m["stage_type"]) for m in modes}
+    found = {(round(float(m["frequency_hz"]), 1), m["stage_type"]) for m in modes}
     # Lin & Parker 1999 (N = 3): rotational and translational frequencies [Hz].
     for hz, kind in [(1475.7, "rotational"), (11775.3, "rotational"), (743.2, "translational"),
                      (9647.9, "translational")]:
@@ -50,7 +50,7 @@ def test_reducer_writes_every_analysis_and_records_both_files(tmp_path):
                  "campbell.csv", "critical_speeds.csv", "forced_response.csv", "time_history.csv"]:
         assert (tmp_path / name).exists(), name
     meshes = {m["mesh"]: m for m in rows(tmp_path / "meshes.csv")}
-    assert float(meshes["stage1"]["mesh_frequency_Hz"]) == pytest.approx(23 * 1500 / 60)
+    assert float(meshes["stage1"]["mesh_frequency_hz"]) == pytest.approx(23 * 1500 / 60)
     # Newmark agrees with the frequency-domain steady state within 0.5 % of the p2p.
     for mesh, difference in results["time"]["max_difference_to_steady_state_relative_to_p2p"].items():
         assert difference < 5e-3, mesh

@@ -71,7 +71,7 @@ def test_columns_are_read_only_views_of_the_result_memory():
     assert result.table("gears")["base_radius_m"].ctypes.data == radius.ctypes.data  # no copy
     history = geardyn.run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml")
     frame = history.to_pandas("time_response")  # all-real table: pandas keeps the views
-    assert np.shares_memory(frame["t"].to_numpy(), history.table("time_response")["t"])
+    assert np.shares_memory(frame["t_s"].to_numpy(), history.table("time_response")["t_s"])
     del result  # the view keeps the result alive
     expected = 0.5 * 3e-3 * np.array([25, 30]) * np.cos(np.radians(20.0))
     np.testing.assert_allclose(radius, expected, rtol=1e-12)
@@ -207,7 +207,7 @@ def test_train_and_sweep_results_are_dataframes_with_units_too():
     for table in train.tables:
         units = train.to_pandas(table).attrs["units"]
         assert "?" not in units.values(), f"train/{table}: {units}"
-    assert train.to_pandas("meshes").attrs["units"]["mean_stiffness_N_per_m"] == "N/m"
+    assert train.to_pandas("meshes").attrs["units"]["mean_stiffness_normal_n_per_m"] == "N/m"
     sweep = geardyn.sweep({"study": {"command": "simulate",
                                      "base": str(EXAMPLES / "simulate_gear_pair_backlash.toml"),
                                      "outputs": ["df=/dynamic_factor",

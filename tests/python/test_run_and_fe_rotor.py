@@ -21,7 +21,7 @@ def test_run_accepts_a_dict_with_the_config_key_names(tmp_path):
     assert result.status == "ok"
     assert result.results["mesh_stiffness"]["mean"] == pytest.approx(2.4114e8, rel=1e-4)
     table = result.table("mesh_stiffness")
-    assert isinstance(table["k_total"], np.ndarray) and table["k_total"].size > 100
+    assert isinstance(table["k_total_transverse_n_per_m"], np.ndarray) and table["k_total_transverse_n_per_m"].size > 100
 
 
 def test_run_maps_errors_to_exceptions(tmp_path):

@@ -21,12 +21,11 @@ struct LoadStatistics {
   std::vector<double> phase, tangent, ste;  ///< the curves over one period [N/m], [m]
 };
 
-/// The statistics at each normalised load (ζ = 0, m₁(ė) = 0 over whole periods).
-std::vector<LoadStatistics> meanExcitationAgainstLoad(const LoadedToothContact& contact,
-                                                      double design_load,
-                                                      const std::vector<double>& loads,
-                                                      int positions,
-                                                      double* mean_stiffness = nullptr);
+/// The statistics at each normalised load (ζ = 0, m₁(ė) = 0 over whole periods); `progress`:
+/// loads done of all.
+std::vector<LoadStatistics> meanExcitationAgainstLoad(
+    const LoadedToothContact& contact, double design_load, const std::vector<double>& loads,
+    int positions, double* mean_stiffness = nullptr, const ProgressCallback& progress = {});
 
 /// The SDOF gear-pair model (Gelman eq. 1) of one load: the tangent stiffness as a table and
 /// E = δ − F/K as a table error, with the given mass, damping and mesh frequency.

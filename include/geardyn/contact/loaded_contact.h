@@ -18,6 +18,7 @@
 
 #include "geardyn/contact/profile_modification.h"
 #include "geardyn/models/mesh_contact_elements.h"
+#include "geardyn/progress.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
 
 namespace geardyn {
@@ -53,8 +54,10 @@ class LoadedToothContact {
   void slice(double phase, int pair, int slice, double& stiffness, double& separation,
              int period = 0) const;
 
-  /// `positions` evenly spaced phases of mesh periods first..first+periods−1.
-  std::vector<LoadedContactPoint> sweep(double force, int positions, int periods = 1) const;
+  /// `positions` evenly spaced phases of mesh periods first..first+periods−1; `progress` is
+  /// called once per period with the positions done.
+  std::vector<LoadedContactPoint> sweep(double force, int positions, int periods = 1,
+                                        const ProgressCallback& progress = {}) const;
 
  private:
   struct Slice {
@@ -99,9 +102,9 @@ struct HarrisPoint {
 };
 
 /// Peak-to-peak (and the first `harmonics` mesh harmonics) of the loaded STE over `positions`
-/// phases of one mesh period, for each force.
+/// phases of one mesh period, for each force (`progress`: forces done of all).
 std::vector<HarrisPoint> harrisMap(const LoadedToothContact& contact,
                                    const std::vector<double>& forces, int positions,
-                                   int harmonics = 3);
+                                   int harmonics = 3, const ProgressCallback& progress = {});
 
 }  // namespace geardyn

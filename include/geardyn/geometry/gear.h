@@ -5,6 +5,7 @@
 /// on the mating gear and the centre distance.
 
 #include <string>
+#include <vector>
 
 namespace geardyn {
 
@@ -46,5 +47,16 @@ struct GearBodyMass {
 };
 /// For the reference radius r = z m_n / (2 cos β) of `gear`.
 GearBodyMass gearBodyMass(const GearSpec& gear);
+
+/// Values outside the usual engineering ranges, where a unit mix-up (a module of 3 meant as
+/// 3 mm is 3 m in SI) is likelier than such a gear: a note per value, naming the key
+/// (`name`.module, `name`.face_width), the value in metres and the usual range (module 0.1 mm
+/// to 100 mm, face width 1 mm to 2 m). Warnings, not errors.
+std::vector<std::string> plausibilityNotes(const GearSpec& gear, const std::string& name);
+
+/// Speeds above this are flagged as implausible [rpm]: rad/s or Hz given as rpm is likelier.
+inline constexpr double kPlausibleMaxRpm = 200000.0;
+/// The note on `key` = `rpm` when it is above kPlausibleMaxRpm (empty otherwise).
+std::string speedPlausibilityNote(double rpm, const std::string& key);
 
 }  // namespace geardyn

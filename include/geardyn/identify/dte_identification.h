@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "geardyn/models/lateral_rotor.h"
+#include "geardyn/progress.h"
 #include "geardyn/signal/full_spectrum.h"
 #include "geardyn/solvers/rotor_response.h"
 
@@ -61,6 +62,8 @@ struct IdentificationOptions {
   /// value (amplitudes, k_m, c_m, e_m) or this many radians (phases).
   double identifiable_width = 0.5;
   int max_iterations = 200;
+  /// Called with the work done: joint, iterations of max_iterations; three_step, harmonics.
+  ProgressCallback progress;
 };
 
 /// One identified quantity with its 95 % confidence interval.

@@ -29,6 +29,6 @@ struct SweepRow {
 SweepRow sweepRow(HarmonicBalance& hbm, const GearPairModel& model, const SweepPoint& point,
                   const std::string& sweep, double frequency_scale);
 
-CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics);
+CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics, bool nondimensional = false);
 
 }  // namespace geardyn::io

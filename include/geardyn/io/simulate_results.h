@@ -30,7 +30,8 @@ nlohmann::ordered_json timeResponseResultsJson(const config::GearPairModelBuild&
                                                const TimeResponse& response,
                                                const TimeResponseChannels& channels, int harmonics);
 
-/// time_response.csv: t, x, v, y, mesh_force, k.
-CsvTable timeResponseTable(const TimeResponseChannels& channels);
+/// time_response.csv: t_s, x_transverse_m, v_transverse_m_per_s, y_transverse_m,
+/// mesh_force_transverse_n, k_transverse_n_per_m (nondimensional: each unit is "nondim").
+CsvTable timeResponseTable(const TimeResponseChannels& channels, bool nondimensional = false);
 
 }  // namespace geardyn::io

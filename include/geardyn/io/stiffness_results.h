@@ -23,12 +23,14 @@ namespace geardyn::io {
 
 /// results.mesh_stiffness (the primary model) and results.models (every model): mean, min, max,
 /// std, contact ratio, Fourier coefficients; plus the API directional matrix, the ISO factors
-/// and the static transmission error where they apply.
+/// and the static transmission error where they apply; results.plane: the plane of k, F and the
+/// STE (transverse) and their normal-plane values k / cos² β_b, F / cos β_b, STE cos β_b.
 nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const GearPair& pair,
                                             const config::MeshStiffnessModels& models);
 
-/// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [time_s,] k_total (primary), k_pair_1..n
-/// (primary), k_<model> for the others, [ste_m].
+/// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [time_s,] k_total_transverse_n_per_m
+/// (primary), k_pair_1..n_transverse_n_per_m (primary), k_<model>_transverse_n_per_m for the
+/// others, [ste_transverse_m]: every k and the STE along the transverse line of action.
 CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
                              const config::MeshStiffnessModels& models);
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/progress.h"
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {
@@ -79,9 +80,11 @@ struct TrainCampbell {
   std::vector<TrainCriticalSpeed> critical_speeds;  ///< ascending in speed
 };
 
-/// Modes over ascending speeds, tracked by the MAC of neighbouring speeds' shapes.
+/// Modes over ascending speeds, tracked by the MAC of neighbouring speeds' shapes. `progress`
+/// (speeds solved of all) is called on the calling thread only.
 TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<double>& speeds,
                             const TrainModalOptions& options,
-                            const std::vector<TrainOrderLine>& lines);
+                            const std::vector<TrainOrderLine>& lines,
+                            const ProgressCallback& progress = {});
 
 }  // namespace geardyn
