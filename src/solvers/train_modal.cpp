@@ -192,6 +192,8 @@ std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed,
     }
     if (elastic >= count || asked == most) return modes;
     margin += 2 * (count - elastic) + 2;
+    // The start vector now lies in this problem's own invariant subspace: start afresh.
+    if (krylov_start != nullptr) krylov_start->resize(0);
   }
 }
 
