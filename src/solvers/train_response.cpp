@@ -268,28 +268,37 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
       }
     }
   }
-  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu(blocks);
-  Eigen::MatrixXcd DinvV(n, r), DinvF(n, blocks);
+  // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised and
+  // D(−h)⁻¹ y = conj(D(h)⁻¹ conj y) (half the LUs of the 2H + 1 blocks).
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu(H + 1);
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Identity(r * blocks, r * blocks);
   Eigen::VectorXcd b(r * blocks);
-  for (int h = -H; h <= H; ++h) {
+  for (int h = 0; h <= H; ++h) {
     const double w = h * w0;
     Eigen::MatrixXcd D = (Kbar - w * w * M).cast<Complex>() + Complex(0.0, w) * C.cast<Complex>();
     // At h = 0 the rigid-body modes (rolling, which no mesh deflects) are fixed by their
     // mass-weighted amplitude Rᵀ M X₀ = 0; their own equation is 0 = Rᵀ F₀ = 0 (balanced loads).
     if (h == 0 && R.cols() > 0) D += (penalty * (M * R) * (M * R).transpose()).cast<Complex>();
-    lu[h + H].compute(D);
-    DinvV = lu[h + H].solve(V);
-    DinvF.col(h + H) = lu[h + H].solve(F.col(h + H));
-    const Eigen::MatrixXcd B = V.transpose() * DinvV;  // Vᵀ D(h)⁻¹ V (r × r)
-    b.segment((h + H) * r, r) = V.transpose() * DinvF.col(h + H);
-    for (int m = 0; m < r; ++m) {
-      const int P = base.mesh_multiple[m];
-      for (int l = -L; l <= L; ++l) {
-        const int g = h - l * P;
-        if (l == 0 || g < -H || g > H) continue;
-        // Row block h, column (g, m): B(:, m) k̃_{m,l}.
-        A.block((h + H) * r, (g + H) * r + m, r, 1) += B.col(m) * k_hat[m][L + l];
+    lu[h].compute(D);
+    const Eigen::MatrixXcd B = V.transpose() * lu[h].solve(V);  // Vᵀ D(h)⁻¹ V (r × r)
+    for (const int sign : {1, -1}) {
+      if (h == 0 && sign < 0) continue;
+      const int hh = sign * h;
+      const bool conjugate = sign < 0;
+      const Eigen::VectorXcd DinvF =
+          conjugate ? Eigen::VectorXcd(lu[h].solve(F.col(hh + H).conjugate()).conjugate())
+                    : Eigen::VectorXcd(lu[h].solve(F.col(hh + H)));
+      b.segment((hh + H) * r, r) = V.transpose() * DinvF;
+      for (int m = 0; m < r; ++m) {
+        const int P = base.mesh_multiple[m];
+        const Eigen::VectorXcd Bm =
+            conjugate ? Eigen::VectorXcd(B.col(m).conjugate()) : Eigen::VectorXcd(B.col(m));
+        for (int l = -L; l <= L; ++l) {
+          const int g = hh - l * P;
+          if (l == 0 || g < -H || g > H) continue;
+          // Row block hh, column (g, m): B(:, m) k̃_{m,l}.
+          A.block((hh + H) * r, (g + H) * r + m, r, 1) += Bm * k_hat[m][L + l];
+        }
       }
     }
   }
@@ -312,7 +321,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
       }
       load -= g_sum * V.col(m);
     }
-    s.harmonic.col(h) = lu[h + H].solve(load);
+    s.harmonic.col(h) = lu[h].solve(load);
   }
 
   // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.
