@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "geardyn/error.h"
+#include "geardyn/solvers/detail/harmonic_blocks.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {
@@ -116,6 +117,9 @@ void TrainSteadyOptions::validate() const {
                      "an integer >= 1");
   }
   if (samples < 0) throw InputError("steady.samples", std::to_string(samples), ">= 0 (0: derived)");
+  if (sparse_dofs < 1) {
+    throw InputError("steady.sparse_dofs", std::to_string(sparse_dofs), "an integer >= 1");
+  }
 }
 
 TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harmonics,
@@ -250,8 +254,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   const Eigen::MatrixXd Kbar = model.meanStiffnessAt(input_speed);
   const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
-  const Eigen::MatrixXd R = rigidModes(Kbar, M);
-  const double penalty = std::max(Kbar.diagonal().cwiseAbs().maxCoeff(), 1e-300);
+  detail::HarmonicBlocks blocks_of(Kbar, M, C, rigidModes(Kbar, M), options_.sparse_dofs);
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
   // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.
@@ -268,26 +271,17 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
       }
     }
   }
-  // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised and
-  // D(−h)⁻¹ y = conj(D(h)⁻¹ conj y) (half the LUs of the 2H + 1 blocks).
-  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu(H + 1);
+  // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised (detail::HarmonicBlocks).
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Identity(r * blocks, r * blocks);
   Eigen::VectorXcd b(r * blocks);
   for (int h = 0; h <= H; ++h) {
-    const double w = h * w0;
-    Eigen::MatrixXcd D = (Kbar - w * w * M).cast<Complex>() + Complex(0.0, w) * C.cast<Complex>();
-    // At h = 0 the rigid-body modes (rolling, which no mesh deflects) are fixed by their
-    // mass-weighted amplitude Rᵀ M X₀ = 0; their own equation is 0 = Rᵀ F₀ = 0 (balanced loads).
-    if (h == 0 && R.cols() > 0) D += (penalty * (M * R) * (M * R).transpose()).cast<Complex>();
-    lu[h].compute(D);
-    const Eigen::MatrixXcd B = V.transpose() * lu[h].solve(V);  // Vᵀ D(h)⁻¹ V (r × r)
+    blocks_of.factorize(h, h * w0);
+    const Eigen::MatrixXcd B = V.transpose() * blocks_of.solve(h, V);  // Vᵀ D(h)⁻¹ V (r × r)
     for (const int sign : {1, -1}) {
       if (h == 0 && sign < 0) continue;
       const int hh = sign * h;
       const bool conjugate = sign < 0;
-      const Eigen::VectorXcd DinvF =
-          conjugate ? Eigen::VectorXcd(lu[h].solve(F.col(hh + H).conjugate()).conjugate())
-                    : Eigen::VectorXcd(lu[h].solve(F.col(hh + H)));
+      const Eigen::VectorXcd DinvF = blocks_of.solve(hh, F.col(hh + H));
       b.segment((hh + H) * r, r) = V.transpose() * DinvF;
       for (int m = 0; m < r; ++m) {
         const int P = base.mesh_multiple[m];
@@ -321,7 +315,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
       }
       load -= g_sum * V.col(m);
     }
-    s.harmonic.col(h) = lu[h].solve(load);
+    s.harmonic.col(h) = blocks_of.solve(h, load);
   }
 
   // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.

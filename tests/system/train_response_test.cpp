@@ -163,6 +163,25 @@ TEST(TrainSteadyState, ConstantStiffnessWithoutErrorIsStatic) {
   }
 }
 
+// The flexible reducer (full DOFs, FE shafts, a rolling mode): the sparse harmonic blocks
+// (bordered h = 0 block) and the dense ones (penalty) are two factorisations of one system, so
+// the steady states agree to round-off amplified by the blocks' conditioning: 1e-9 of the
+// largest harmonic amplitude.
+TEST(TrainSteadyState, SparseAndDenseHarmonicBlocksAgree) {
+  const GearTrainModel model(testing::flexibleReducer(12.0, 0.05));
+  TrainSteadyOptions options;
+  options.mesh_harmonics = 4;
+  ASSERT_GE(model.dofCount(), options.sparse_dofs);
+  const TrainSteadyState sparse = solveTrainSteadyState(model, model.inputSpeed(), options);
+  options.sparse_dofs = model.dofCount() + 1;
+  const TrainSteadyState dense = solveTrainSteadyState(model, model.inputSpeed(), options);
+  const double scale = dense.harmonic.cwiseAbs().maxCoeff();
+  EXPECT_LT((sparse.harmonic - dense.harmonic).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    EXPECT_NEAR(sparse.dynamic_factor[m], dense.dynamic_factor[m], 1e-9) << m;
+  }
+}
+
 /// Parker (2000) in the forced response: a sun–planet transmission error of one order l,
 /// phased planet by planet, moves the central members only as the rule says — rotation only
 /// (l z_s / N integer), translation only ((l z_s ± 1)/N integer), or not at all.

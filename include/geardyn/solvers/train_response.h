@@ -61,6 +61,9 @@ struct TrainSteadyOptions {
   /// Samples of one base period for the time-domain quantities (mesh-force peaks); 0: derived
   /// (at least 8 per highest harmonic, a power of two).
   int samples = 0;
+  /// DOF count from which the harmonic blocks are factorised sparse (Eigen::SparseLU) rather
+  /// than dense; FE trains' banded matrices make that far cheaper (detail/harmonic_blocks.h).
+  int sparse_dofs = 64;
   void validate() const;
 };
 

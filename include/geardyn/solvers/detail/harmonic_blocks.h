@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// The harmonic blocks of a linear train's periodic steady state (train_response.cpp),
+/// factorised once per speed: D(h) = K̄ − (hω₀)² M + i hω₀ C for h = 0..H (D(−h) = conj D(h)
+/// since K̄, M and C are real). Dense LU for small trains; sparse LU (Eigen::SparseLU) from
+/// `sparse_dofs` DOFs, where the FE trains' banded matrices make it far cheaper.
+///
+/// A train with rigid-body modes R (K̄ R = 0, the rolling mode no mesh deflects) has a
+/// singular D(0); its static balance fixes them by Rᵀ M X₀ = 0. The dense path adds the penalty
+/// p (MR)(MR)ᵀ (p the largest |K̄_ii|), the sparse path borders the block instead,
+/// [D(0) MR; (MR)ᵀ 0], whose dense border would fill a sparse penalty term in. Both give the
+/// same X₀ when the loads are balanced (Rᵀ F₀ = 0).
+
+#include <Eigen/Dense>
+#include <Eigen/SparseLU>
+#include <complex>
+#include <memory>
+#include <vector>
+
+namespace geardyn::detail {
+
+class HarmonicBlocks {
+ public:
+  using Complex = std::complex<double>;
+
+  /// K̄ [N/m], M [kg], C [N s/m] at the speed, R the rigid-body modes (n × k, may be empty).
+  HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
+                 const Eigen::MatrixXd& R, int sparse_dofs);
+  ~HarmonicBlocks();
+
+  /// Factorises D(h) at the angular frequency w = hω₀ [rad/s], for h = 0..H in order.
+  void factorize(int h, double w);
+  /// D(h)⁻¹ rhs for h ≥ 0 (factorised), and for h < 0 through conj(D(|h|)⁻¹ conj rhs).
+  Eigen::MatrixXcd solve(int h, const Eigen::MatrixXcd& rhs) const;
+  bool sparse() const noexcept { return sparse_; }
+
+ private:
+  using SparseMatrixC = Eigen::SparseMatrix<Complex>;
+  using SparseLUC = Eigen::SparseLU<SparseMatrixC>;
+  Eigen::MatrixXcd solveNonNegative(int h, const Eigen::MatrixXcd& rhs) const;
+
+  const Eigen::MatrixXd &K_, &M_, &C_;
+  Eigen::MatrixXd MR_;  // M R, the constraint of the rigid-body modes
+  double penalty_ = 0.0;
+  bool sparse_ = false;
+  int n_ = 0;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> dense_;
+  SparseMatrixC Ks_, Ms_, Cs_;
+  std::vector<std::unique_ptr<SparseLUC>> sparse_lu_;
+};
+
+}  // namespace geardyn::detail

@@ -1,0 +1,90 @@
+/// The harmonic blocks of a linear train's steady state (detail/harmonic_blocks.h).
+
+#include "geardyn/solvers/detail/harmonic_blocks.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace geardyn::detail {
+namespace {
+
+Eigen::SparseMatrix<std::complex<double>> complexSparseOf(const Eigen::MatrixXd& A) {
+  // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
+  const double scale = std::max(A.cwiseAbs().maxCoeff(), 1e-300);
+  return A.cast<std::complex<double>>().sparseView(1.0, 1e-14 * scale);
+}
+
+}  // namespace
+
+HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
+                               const Eigen::MatrixXd& C, const Eigen::MatrixXd& R, int sparse_dofs)
+    : K_(K), M_(M), C_(C), sparse_(K.rows() >= sparse_dofs), n_(static_cast<int>(K.rows())) {
+  if (R.cols() > 0) MR_ = M * R;
+  penalty_ = std::max(K.diagonal().cwiseAbs().maxCoeff(), 1e-300);
+  if (sparse_) {
+    Ks_ = complexSparseOf(K);
+    Ms_ = complexSparseOf(M);
+    Cs_ = complexSparseOf(C);
+  }
+}
+
+HarmonicBlocks::~HarmonicBlocks() = default;
+
+void HarmonicBlocks::factorize(int h, double w) {
+  if (!sparse_) {
+    Eigen::MatrixXcd D = (K_ - w * w * M_).cast<Complex>() + Complex(0.0, w) * C_.cast<Complex>();
+    if (h == 0 && MR_.cols() > 0) D += (penalty_ * MR_ * MR_.transpose()).cast<Complex>();
+    dense_.resize(std::max<std::size_t>(dense_.size(), h + 1));
+    dense_[h].compute(D);
+    return;
+  }
+  SparseMatrixC D = Ks_ - (w * w) * Ms_ + Complex(0.0, w) * Cs_;
+  if (h == 0 && MR_.cols() > 0) {
+    // [D(0) MR; (MR)ᵀ 0]: the border's nonzeros appended to D's.
+    const int k = static_cast<int>(MR_.cols());
+    std::vector<Eigen::Triplet<Complex>> entries;
+    entries.reserve(D.nonZeros() + 2 * static_cast<std::size_t>(n_) * k);
+    for (int j = 0; j < D.outerSize(); ++j) {
+      for (SparseMatrixC::InnerIterator it(D, j); it; ++it) {
+        entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
+      }
+    }
+    for (int c = 0; c < k; ++c) {
+      for (int i = 0; i < n_; ++i) {
+        if (MR_(i, c) == 0.0) continue;
+        entries.emplace_back(i, n_ + c, MR_(i, c));
+        entries.emplace_back(n_ + c, i, MR_(i, c));
+      }
+    }
+    D.resize(n_ + k, n_ + k);
+    D.setFromTriplets(entries.begin(), entries.end());
+  }
+  D.makeCompressed();
+  sparse_lu_.resize(std::max<std::size_t>(sparse_lu_.size(), h + 1));
+  sparse_lu_[h] = std::make_unique<SparseLUC>();
+  sparse_lu_[h]->compute(D);
+  if (sparse_lu_[h]->info() != Eigen::Success) {
+    throw std::runtime_error(fmt::format(
+        "steady state: the harmonic block D(h) = K̄ − (hω₀)²M + i hω₀ C cannot be factorised at "
+        "h = {}, hω₀ = {:g} rad/s ({})",
+        h, w, sparse_lu_[h]->lastErrorMessage()));
+  }
+}
+
+Eigen::MatrixXcd HarmonicBlocks::solveNonNegative(int h, const Eigen::MatrixXcd& rhs) const {
+  if (!sparse_) return dense_[h].solve(rhs);
+  const SparseLUC& lu = *sparse_lu_[h];
+  if (lu.rows() == n_) return lu.solve(rhs);
+  Eigen::MatrixXcd padded = Eigen::MatrixXcd::Zero(lu.rows(), rhs.cols());
+  padded.topRows(n_) = rhs;
+  return Eigen::MatrixXcd(lu.solve(padded)).topRows(n_);
+}
+
+Eigen::MatrixXcd HarmonicBlocks::solve(int h, const Eigen::MatrixXcd& rhs) const {
+  if (h >= 0) return solveNonNegative(h, rhs);
+  return solveNonNegative(-h, rhs.conjugate()).conjugate();
+}
+
+}  // namespace geardyn::detail
