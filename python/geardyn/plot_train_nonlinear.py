@@ -22,7 +22,7 @@ def _stable_flags(table):
 
 def train_nonlinear_figure(result_dir, axes=None, max_meshes=8, title=None):
     """p2p mesh deflection [µm] against input speed [rpm], one panel per mesh (the first
-    `max_meshes`): every sweep in its colour (the up sweep wide and pale under the down sweep),
+    `max_meshes` by name): every sweep in its colour (the up sweep wide and pale under the down sweep),
     stable runs solid and unstable runs dashed, folds x, Newmark checks o. The legend has solid
     entries per sweep and separate entries for the two line styles. On `axes` (a flat list, one
     per mesh) if given; returns the Figure."""
@@ -31,12 +31,13 @@ def train_nonlinear_figure(result_dir, axes=None, max_meshes=8, title=None):
     results = summary["results"]["nonlinear"]
     sweeps = {name: _read_columns(folder / info["file"])
               for name, info in results["sweeps"].items() if info["points"] > 0}
-    meshes = list(results["mesh_multiples"])[:max_meshes]
+    # By name, so that a planetary stage's sun-planet and ring-planet meshes each fill a row.
+    meshes = sorted(results["mesh_multiples"])[:max_meshes]
     if axes is None:
         columns = 1 if len(meshes) == 1 else (2 if len(meshes) <= 4 else 3)
         rows = math.ceil(len(meshes) / columns)
         figure, grid = plt.subplots(rows, columns, figsize=(4.6 * columns + 1.8, 3.0 * rows + 0.9),
-                                    squeeze=False, sharex=True, layout="constrained")
+                                    squeeze=False, layout="constrained")
         axes = [ax for row in grid for ax in row]
         for ax in axes[len(meshes):]:
             ax.axis("off")
@@ -71,8 +72,9 @@ def train_nonlinear_figure(result_dir, axes=None, max_meshes=8, title=None):
         top.tick_params(labelsize=6)
     shown = axes[:len(meshes)]
     columns = sum(1 for ax in shown if ax.get_subplotspec().is_first_row()) or 1
-    for ax in shown[-columns:]:
-        ax.set_xlabel("input speed [rpm]", fontsize=8)
+    for i, ax in enumerate(shown):
+        if i + columns >= len(shown):  # the lowest panel of its column
+            ax.set_xlabel("input speed [rpm]", fontsize=8)
     handles = [Line2D([], [], ls="-", color=_SWEEP_COLOURS[name],
                       lw=2.6 if both and name == "up" else 1.2,
                       alpha=0.45 if both and name == "up" else 1.0, label=f"harmonic balance, sweep {name}")

@@ -74,14 +74,16 @@ Json perMesh(const GearTrainModel& model, const std::vector<double>& values) {
   return out;
 }
 
-/// Continuation steps from the train (deriveContinuationSteps per mode): of the modes the meshes
-/// excite, those with a resonance j ω₀ = ω_n (j <= H) inside the range; the one giving the
-/// smallest largest step, ζ ω_n / j, sets the steps (none: 1/50 of the range). Steps the user gave
-/// are kept (and bound the derived ones). Returns the mode used.
-Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& modes, int H) {
+/// Continuation steps from the train (deriveContinuationSteps): of the modes the meshes excite,
+/// those with a resonance j ω₀ = ω_n (j <= H, the highest such j) inside the range; the narrowest,
+/// ζ ω_n / j (ζ floored at 1e-3 as there), bounds the largest step, itself at most 1/50 of the
+/// range. Steps the user gave are kept (and bound the derived ones). Returns that resonance
+/// (null when no excited mode has one in the range) and which bound applied.
+Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& modes, int H,
+                      double scale) {
   const double lo = std::min(sweep.start, sweep.stop), hi = std::max(sweep.start, sweep.stop);
-  double best = HUGE_VAL, wn = 0.0, zeta = 0.0;
-  Json source = nullptr;
+  double narrowest = HUGE_VAL, wn = 0.0, zeta = 0.0;
+  Json resonance = nullptr;
   for (const TrainMode& mode : modes) {
     double energy = 0.0;
     for (double e : mode.mesh_strain_energy) energy += e;
@@ -92,20 +94,20 @@ Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& 
       if (w / j >= lo && w / j <= hi) order = j;
     }
     if (order == 0) continue;
-    ContinuationOptions trial;
-    trial.start = sweep.start;
-    trial.stop = sweep.stop;
-    deriveContinuationSteps(trial, w, mode.damping_ratio, H);
-    if (trial.max_step < best) {
-      best = trial.max_step, wn = w, zeta = mode.damping_ratio;
-      source = {{"frequency_Hz", mode.frequency},
-                {"damping_ratio", mode.damping_ratio},
-                {"harmonic", order},
-                {"mesh_strain_energy", energy}};
+    const double width = std::clamp(mode.damping_ratio, 1e-3, 0.5) * w / order;
+    if (width < narrowest) {
+      narrowest = width, wn = w, zeta = mode.damping_ratio;
+      resonance = {{"mode_frequency_Hz", mode.frequency},
+                   {"damping_ratio", mode.damping_ratio},
+                   {"harmonic", order},
+                   {"speed_rpm", w / order / scale},
+                   {"mesh_strain_energy", energy},
+                   {"half_width_rpm", width / scale}};
     }
   }
   deriveContinuationSteps(sweep, wn, zeta, H);
-  return source;
+  return {{"narrowest_resonance", resonance},
+          {"limited_by", narrowest < (hi - lo) / 50.0 ? "narrowest_resonance" : "range / 50"}};
 }
 
 /// The steps the user gave must be ordered (the derived ones are by construction).
@@ -293,9 +295,9 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
   TrainModalOptions modal;
   modal.keep_rigid = false;
   const auto modes = trainModes(model, hbm.inputSpeed(0.5 * (sweep.start + sweep.stop)), modal);
-  const Json step_source = deriveTrainSteps(sweep, modes, options.harmonics);
+  const Json step_source = deriveTrainSteps(sweep, modes, options.harmonics, scale);
   checkSteps(sweep, scale);
-  if (step_source.is_null()) {
+  if (step_source["narrowest_resonance"].is_null()) {
     summary.warnings.push_back(fmt::format(
         "nonlinear: no mode the meshes excite has a resonance (f_n = j f₀, j <= H = {}) between "
         "{:g} and {:g} rpm: the response there is quasi-static",
@@ -387,7 +389,8 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                                     {"max_step_rpm", sweep.max_step / scale},
                                     {"fold_tolerance_rpm", sweep.fold_tolerance / scale},
                                     {"derived", !analysis.has("nonlinear.max_step_rpm")},
-                                    {"from_mode", step_source}}},
+                                    {"narrowest_resonance", step_source["narrowest_resonance"]},
+                                    {"limited_by", step_source["limited_by"]}}},
                                   {"sweeps", sweeps},
                                   {"points", points},
                                   {"wall_time_s", sweep_seconds},

@@ -82,8 +82,8 @@ void addNonlinearSection(config::ConfigSchema& schema) {
       .optional()
       .doc(
           "largest continuation step (along the scaled arc, in speed units); absent: derived "
-          "from the train, min(range / 50, ζ_n f_n / j) over the modes the meshes excite whose "
-          "resonance j f₀ = f_n (j <= H) lies in the range");
+          "from the train, the smaller of range / 50 and ζ n_r, n_r the speed of the narrowest "
+          "resonance j f₀ = f_n (j <= H) in the range of a mode the meshes excite");
   schema.real("nonlinear.initial_step_rpm")
       .unit("rpm")
       .positive()

@@ -49,7 +49,7 @@ def test_sweeps_have_two_folds_each_an_unstable_middle_branch_and_contact_loss(p
     types = [b["type"] for b in info["bifurcations"]]
     assert types.count("fold") == 4 and len(info["folds"]) == 4
     # Steps derived from the train's modes (no step key in the example), timing recorded.
-    assert info["continuation_steps"]["derived"] and info["continuation_steps"]["from_mode"]
+    assert info["continuation_steps"]["derived"] and info["continuation_steps"]["narrowest_resonance"]
     assert info["points"] > 0 and info["wall_time_s"] > 0 and info["time_per_point_s"] > 0
     assert "train: nonlinear sweep up" in result.stderr  # --progress with GEARDYN_PROGRESS_AFTER=0
 
