@@ -15,8 +15,8 @@
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
-#include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
+#include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 #include "train_nonlinear_analysis.h"
@@ -372,8 +372,7 @@ TrainInputs loadTrainInputs(const std::filesystem::path& file,
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
   std::vector<std::string> warnings;
   // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
-  config::Config gearbox =
-      io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  config::Config gearbox = io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
   return {analysis, gearbox, file.string(), path.string(), warnings};
 }
 
