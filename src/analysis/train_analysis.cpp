@@ -1,5 +1,6 @@
 /// `train`: any gear train described once (a gearbox file or inline) and
-/// analysed: kinematics and phasing, statics, modes, Campbell, forced response, time response.
+/// analysed: kinematics and phasing, statics, modes, Campbell, forced response, time response,
+/// nonlinear steady state (train_nonlinear_analysis.cpp).
 
 #include "geardyn/config/train_analysis.h"
 
@@ -21,6 +22,7 @@
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
+#include "train_nonlinear_analysis.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -416,6 +418,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
       model.meshes().size(), model.dofCount(), toString(model.spec().dofs));
   writeKinematics(model, result, summary, text);
   int code = 0;
+  std::string status = "ok";
   for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
     if (analysis == "static") runStatic(model, result, summary, text);
     if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
@@ -423,8 +426,14 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
     if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
       code = std::max(code, runTime(model, loaded.analysis, result, summary, text));
+    if (analysis == "nonlinear") {
+      const std::string s =
+          detail::runTrainNonlinear(model, loaded.analysis, result, text, context);
+      if (s != "ok") status = s, code = std::max(code, 1);
+    }
   }
-  summary.status = code == 0 ? "ok" : "diverged";
+  if (status == "ok" && code != 0) status = "diverged";
+  summary.status = status;
   summary.results["wall_time_s"] = secondsSince(start);
   for (const auto& w : summary.warnings) context.warning(w);
   result.report = text;

@@ -29,6 +29,98 @@ void addSpeedRange(config::ConfigSchema& schema, const std::string& s, int point
       .doc("highest input speed (default: 1.5 × the operating speed)");
   schema.integer(s + ".points").min(2).max(100000).defaultValue(points).doc("speeds in the range");
 }
+/// [nonlinear]: the train harmonic balance (train_harmonic_balance.h) swept by continuation.
+void addNonlinearSection(config::ConfigSchema& schema) {
+  schema.section("nonlinear",
+                 "Nonlinear periodic steady state over a speed range: each mesh's contact law "
+                 "(contact / backlash keys of the gearbox: contact loss, back-flank impacts), "
+                 "harmonic balance condensed on the mesh deflections, pseudo-arclength "
+                 "continuation up and/or down in speed with folds, stability by the monodromy "
+                 "matrix, optional Newmark checks.");
+  schema.real("nonlinear.speed_min_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc(
+          "lowest input speed (> 0: at 0 rpm there is no mesh frequency; default: 0.5 × the "
+          "operating speed)");
+  schema.real("nonlinear.speed_max_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc("highest input speed (default: 1.5 × the operating speed)");
+  schema.string("nonlinear.direction")
+      .choices({"up", "down", "both"})
+      .defaultValue("both")
+      .doc("continuation up from speed_min_rpm, down from speed_max_rpm, or both");
+  schema.integer("nonlinear.harmonics")
+      .min(1)
+      .max(512)
+      .defaultValue(15)
+      .doc(
+          "H, harmonics of the base (common-period) frequency; every mesh needs >= its multiple "
+          "P_m of it (meshes.csv, summary)");
+  schema.integer("nonlinear.samples")
+      .min(3)
+      .max(1 << 16)
+      .defaultValue(256)
+      .doc(
+          "N, AFT samples per base period (> 2H, else harmonics alias; 8H or more for contact "
+          "loss)");
+  schema.real("nonlinear.tolerance")
+      .unit("-")
+      .positive()
+      .defaultValue(1e-10)
+      .doc("relative residual ‖R‖ / (‖δ‖ + ‖b₀‖) of the first point's Newton solve");
+  schema.integer("nonlinear.max_iterations").min(1).defaultValue(40).doc("Newton iterations");
+  schema.boolean("nonlinear.stability")
+      .defaultValue(true)
+      .doc("stability of every point (Floquet multipliers of the monodromy matrix)");
+  schema.real("nonlinear.max_step_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc(
+          "largest continuation step (along the scaled arc, in speed units); absent: derived "
+          "from the train, the smaller of range / 50 and ζ n_r, n_r the speed of the narrowest "
+          "resonance j f₀ = f_n (j <= H) in the range of a mode the meshes excite");
+  schema.real("nonlinear.initial_step_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc("first step; absent: a fifth of max_step_rpm");
+  schema.real("nonlinear.min_step_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc("smallest step before the sweep stops with a failure; absent: 1e-6 max_step_rpm");
+  schema.real("nonlinear.fold_tolerance_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc("how far the branch must turn back to confirm a fold; absent: 1e-3 of the range");
+  schema.integer("nonlinear.max_points")
+      .min(2)
+      .max(1000000)
+      .defaultValue(20000)
+      .doc("continuation points per sweep");
+  schema.realList("nonlinear.newmark_speeds_rpm")
+      .unit("rpm")
+      .min(0.0)
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc(
+          "input speeds at which every stable harmonic-balance solution is checked by nonlinear "
+          "Newmark integration started on it (newmark_checks.csv, overlaid on the plot)");
+  schema.integer("nonlinear.newmark_steps_per_mesh_period")
+      .min(16)
+      .defaultValue(256)
+      .doc("Newmark steps per period of the fastest mesh");
+  schema.integer("nonlinear.newmark_max_periods")
+      .min(3)
+      .defaultValue(2000)
+      .doc("common periods before a check that has not settled is reported");
+}
+
 }  // namespace
 
 config::ConfigSchema trainSchema(bool inline_gearbox) {
@@ -37,8 +129,10 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       "Any gear train (shafts, gears, meshes, bearings, couplings, planetary stages): kinematics "
       "and mesh phasing, static load sharing, modal analysis with Lin & Parker mode types, "
       "Campbell diagram with critical speeds of every shaft and mesh order, frequency-domain "
-      "forced response (linear harmonic balance over the common period) and Newmark time "
-      "response with the time-varying stiffness of every mesh.");
+      "forced response (linear harmonic balance over the common period), Newmark time "
+      "response with the time-varying stiffness of every mesh, and the nonlinear steady state "
+      "with contact loss and backlash at every mesh (harmonic balance condensed on the mesh "
+      "deflections, continuation with folds and stability).");
   if (inline_gearbox) {
     addGearboxSections(schema);
   } else {
@@ -62,7 +156,7 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
           "into <out>/load_case_<id>/");
   schema.section("analysis", "What to run.");
   schema.stringList("analysis.run")
-      .choices({"static", "modal", "campbell", "forced", "time"})
+      .choices({"static", "modal", "campbell", "forced", "time", "nonlinear"})
       .defaultValue(nlohmann::ordered_json::array({"static", "modal"}))
       .doc("analyses, in any combination");
   schema.section("modal", "Modes at one speed.");
@@ -116,6 +210,7 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(200)
       .defaultValue(20)
       .doc("harmonics of the frequency-domain steady state it is compared with");
+  addNonlinearSection(schema);
   config::addOutputSection(schema);
   return schema;
 }
@@ -147,6 +242,38 @@ TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis) {
   o.record_periods = static_cast<int>(analysis.integer("time.record_periods"));
   o.start_from_static = analysis.boolean("time.start_from_static");
   return o;
+}
+
+TrainHarmonicBalanceOptions trainHarmonicBalanceOptionsFromConfig(const config::Config& analysis) {
+  TrainHarmonicBalanceOptions o;
+  o.harmonics = static_cast<int>(analysis.integer("nonlinear.harmonics"));
+  o.samples = static_cast<int>(analysis.integer("nonlinear.samples"));
+  o.tolerance = analysis.real("nonlinear.tolerance");
+  o.max_iterations = static_cast<int>(analysis.integer("nonlinear.max_iterations"));
+  o.validate();
+  return o;
+}
+
+std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating) {
+  const double op = std::abs(operating);
+  for (const char* key : {"nonlinear.speed_min_rpm", "nonlinear.speed_max_rpm"}) {
+    if (!analysis.has(key) && op == 0.0) {
+      throw InputError(key, "",
+                       "required when the operating speed is 0 rpm (the default range is "
+                       "relative to it)");
+    }
+  }
+  const double lo = analysis.has("nonlinear.speed_min_rpm")
+                        ? analysis.real("nonlinear.speed_min_rpm") * kRpm
+                        : 0.5 * op;
+  const double hi = analysis.has("nonlinear.speed_max_rpm")
+                        ? analysis.real("nonlinear.speed_max_rpm") * kRpm
+                        : 1.5 * op;
+  if (!(hi > lo)) {
+    throw InputError("nonlinear.speed_max_rpm", fmt::format("{:g} rpm", hi / kRpm),
+                     fmt::format("more than nonlinear.speed_min_rpm = {:g} rpm", lo / kRpm));
+  }
+  return {lo, hi};
 }
 
 std::vector<double> speedRangeFromConfig(const config::Config& analysis, const std::string& s,

@@ -236,6 +236,7 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
   folds.start(first.omega);
 
   Eigen::VectorXd q(n), rhs(n + 1), dy(n + 1), predicted(n + 1), y(n + 1);
+  int cuts = 0;  // since the last accepted point
   while (static_cast<int>(out.points.size()) < options.max_points) {
     predicted = z + step * t;
     y = predicted;
@@ -261,6 +262,7 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
     }
     if (!converged) {
       ++out.failures;
+      ++cuts;
       step *= 0.5;
       if (step < min_step) {
         out.message = fmt::format(
@@ -285,7 +287,8 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
     const Eigen::VectorXd t_new = iterations > 0 ? tangentOfFactors() : tangentFrom(Jq, Jw, t);
     arclength += step;
     classify(point, true);
-    out.points.push_back({point, branch, arclength});
+    out.points.push_back({point, branch, arclength, cuts});
+    cuts = 0;
     std::size_t fold = 0;
     if (folds.update(out.points.size() - 1, point.omega, t_new[n], &fold)) {
       ++branch;
@@ -310,6 +313,29 @@ ContinuationResult continueInFrequency(ContinuationProblem& problem,
   out.message = fmt::format("stopped after the maximum of {} points", options.max_points);
   classifyStabilityChanges(out, fold_tolerance);
   return out;
+}
+
+std::vector<HarmonicBalancePoint> solutionsAtFrequency(
+    ContinuationProblem& problem, const std::vector<const ContinuationResult*>& sweeps,
+    double omega) {
+  std::vector<HarmonicBalancePoint> found;
+  for (const ContinuationResult* sweep : sweeps) {
+    for (std::size_t i = 1; i < sweep->points.size(); ++i) {
+      const auto& a = sweep->points[i - 1].solution;
+      const auto& b = sweep->points[i].solution;
+      if ((a.omega - omega) * (b.omega - omega) > 0.0 || a.omega == b.omega) continue;
+      HarmonicBalancePoint p;
+      p.omega = omega;
+      p.q = a.q + (omega - a.omega) / (b.omega - a.omega) * (b.q - a.q);
+      problem.solve(p);
+      if (!p.converged) continue;
+      const bool seen = std::any_of(found.begin(), found.end(), [&](const auto& f) {
+        return (f.q - p.q).norm() <= 1e-6 * p.q.norm();
+      });
+      if (!seen) found.push_back(p);
+    }
+  }
+  return found;
 }
 
 }  // namespace geardyn

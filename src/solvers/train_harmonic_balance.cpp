@@ -315,6 +315,13 @@ Eigen::MatrixXd TrainHarmonicBalance::meshDeflections(const Eigen::VectorXd& u) 
   return d;
 }
 
+Eigen::MatrixXd TrainHarmonicBalance::meshContactForces(const Eigen::VectorXd& u) {
+  meshForceSamples(u);  // f̃ = k g − k̄ δ
+  Eigen::MatrixXd f = force_;
+  for (int m = 0; m < r_; ++m) f.col(m) += model_.meshes()[m].mean_stiffness * delta_.col(m);
+  return f;
+}
+
 Eigen::MatrixXd TrainHarmonicBalance::displacementCoefficients(const HarmonicBalancePoint& point) {
   prepare(point.omega);
   meshForceSamples(point.q);
@@ -335,6 +342,17 @@ Eigen::MatrixXd TrainHarmonicBalance::displacementCoefficients(const HarmonicBal
     X.col(sinIndex(h)) = -x.imag();
   }
   return X;
+}
+
+std::pair<Eigen::VectorXd, Eigen::VectorXd> TrainHarmonicBalance::initialState(
+    const HarmonicBalancePoint& point) {
+  const Eigen::MatrixXd X = displacementCoefficients(point);
+  Eigen::VectorXd q = X.col(0), v = Eigen::VectorXd::Zero(X.rows());
+  for (int h = 1; h <= h_; ++h) {  // q = Σ (a_h cos hτ + b_h sin hτ), τ = ω₀ t
+    q += X.col(cosIndex(h));
+    v += h * point.omega * X.col(sinIndex(h));
+  }
+  return {q, v};
 }
 
 void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod,

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <utility>
 #include <vector>
 
 #include "geardyn/solvers/continuation.h"
@@ -18,18 +17,6 @@
 #include "system/nonlinear_sample_trains.h"
 
 namespace geardyn::testing::nonlinear {
-
-/// The state (q, q̇) at t = 0 of a periodic solution from its recovered coefficients.
-inline std::pair<Eigen::VectorXd, Eigen::VectorXd> initialState(TrainHarmonicBalance& hbm,
-                                                                const HarmonicBalancePoint& p) {
-  const Eigen::MatrixXd X = hbm.displacementCoefficients(p);
-  Eigen::VectorXd q = X.col(0), v = Eigen::VectorXd::Zero(X.rows());
-  for (int h = 1; h <= hbm.harmonics(); ++h) {
-    q += X.col(2 * h - 1);
-    v += h * p.omega * X.col(2 * h);
-  }
-  return {q, v};
-}
 
 struct NewmarkCheck {
   int stable = 0, unstable = 0, contact_loss = 0;
@@ -49,24 +36,11 @@ inline NewmarkCheck checkAgainstNewmark(const GearTrainModel& model, TrainHarmon
   newmark.steps_per_mesh_period = 256;
   newmark.steady_tolerance = 1e-7;
   for (double omega : omegas) {
-    std::vector<double> seen;
-    for (std::size_t i = 1; i < sweep.points.size(); ++i) {
-      const auto& a = sweep.points[i - 1].solution;
-      const auto& b = sweep.points[i].solution;
-      if ((a.omega - omega) * (b.omega - omega) > 0.0) continue;
-      HarmonicBalancePoint p;
-      p.omega = omega;
-      p.q = a.q + (omega - a.omega) / (b.omega - a.omega) * (b.q - a.q);
-      hbm.solve(p);
-      if (!p.converged) continue;
+    for (HarmonicBalancePoint p : solutionsAtFrequency(hbm, {&sweep}, omega)) {
       const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
       const double p2p0 = d.col(0).maxCoeff() - d.col(0).minCoeff();
-      bool duplicate = false;
-      for (double s : seen) duplicate = duplicate || std::abs(s - p2p0) < 1e-6 * p2p0;
-      if (duplicate) continue;
-      seen.push_back(p2p0);
       hbm.classify(p, StabilityMethod::kMonodromy, false);
-      auto [q0, v0] = initialState(hbm, p);
+      auto [q0, v0] = hbm.initialState(p);
       const Eigen::VectorXd v_mesh = model.meshVector(0);
       if (!p.stable) q0 += 1e-3 * p2p0 * v_mesh / v_mesh.squaredNorm();
       newmark.min_periods = p.stable ? 3 : 400;

@@ -1,13 +1,15 @@
 #pragma once
 /// \file
 /// The analysis file of `geardyn train`: which analyses to run on a gearbox (static, modal,
-/// campbell, forced, time) and their options. The gearbox is named by `[gearbox] file = "path"`
-/// (relative to the analysis file) or written inline in the same file.
+/// campbell, forced, time, nonlinear) and their options. The gearbox is named by `[gearbox] file =
+/// "path"` (relative to the analysis file) or written inline in the same file.
 
+#include <utility>
 #include <vector>
 
 #include "geardyn/config/config.h"
 #include "geardyn/config/config_schema.h"
+#include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
@@ -24,6 +26,13 @@ TrainModalOptions trainModalOptionsFromConfig(const config::Config& analysis,
                                               const std::string& section);
 TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis);
 TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis);
+/// [nonlinear] harmonics, samples, tolerance, max_iterations (validated: InputError naming the
+/// key, e.g. nonlinear.samples <= 2 × harmonics, which aliases).
+TrainHarmonicBalanceOptions trainHarmonicBalanceOptionsFromConfig(const config::Config& analysis);
+/// The nonlinear sweep's input speeds |Ω| [rad/s], (lowest, highest): [nonlinear]
+/// speed_min_rpm (default 0.5 × the operating speed) and speed_max_rpm (1.5 ×); InputError
+/// naming the key when the range is empty or the operating speed is 0 and no range is given.
+std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating);
 
 /// Ascending input speeds [rad/s] of a section with speed_min_rpm, speed_max_rpm (defaults: 0
 /// and 1.5 × the operating speed) and points; InputError naming the keys when the range is

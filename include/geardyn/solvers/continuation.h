@@ -69,6 +69,7 @@ struct SweepPoint {
   HarmonicBalancePoint solution;
   int branch = 0;  ///< increases at every confirmed fold
   double arclength = 0.0;
+  int step_cuts = 0;  ///< corrector failures (step halved) between the previous point and this
 };
 
 enum class BifurcationType {
@@ -125,5 +126,12 @@ struct ContinuationResult {
 /// Pseudo-arclength continuation from `start` to `stop` (either direction).
 ContinuationResult continueInFrequency(ContinuationProblem& problem,
                                        const ContinuationOptions& options);
+
+/// Every distinct periodic solution at ω [rad/s] on the given sweeps: Newton (problem.solve)
+/// from the linear interpolation of each pair of consecutive points that brackets ω. Unconverged
+/// ones are skipped, and so is a solution within 1e-6 (relative, in q) of one already found.
+std::vector<HarmonicBalancePoint> solutionsAtFrequency(
+    ContinuationProblem& problem, const std::vector<const ContinuationResult*>& sweeps,
+    double omega);
 
 }  // namespace geardyn

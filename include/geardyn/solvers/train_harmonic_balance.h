@@ -22,6 +22,7 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <utility>
 #include <vector>
 
 #include "geardyn/solvers/continuation.h"
@@ -69,8 +70,14 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   /// Every DOF: real Fourier coefficients over the base period, column 0 the mean, 2h − 1 and 2h
   /// the cosine and sine of harmonic h (rows: DOFs), q(τ) = Σ columns · (1, cos hτ, sin hτ).
   Eigen::MatrixXd displacementCoefficients(const HarmonicBalancePoint& point);
+  /// The state (q, q̇) at t = 0 of a periodic solution from its recovered coefficients [m, rad;
+  /// m/s, rad/s]: where a time integration started on the solution begins.
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> initialState(const HarmonicBalancePoint& point);
   /// δ_m at the N samples of one base period (rows: samples, cols: meshes) [m].
   Eigen::MatrixXd meshDeflections(const Eigen::VectorXd& u);
+  /// The contact force k_m(φ) g_m(δ_m − e_m) of every mesh at the N samples of one base period
+  /// (rows: samples, cols: meshes) [N]: 0 where the teeth are apart, < 0 on the back flank.
+  Eigen::MatrixXd meshContactForces(const Eigen::VectorXd& u);
 
  private:
   void prepare(double omega);  // the per-harmonic condensation at ω₀ (cached)

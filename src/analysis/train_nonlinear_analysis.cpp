@@ -1,0 +1,419 @@
+/// `train` analysis `nonlinear`: the periodic steady state of a gear train whose meshes lose
+/// contact or hit their back flanks (train_harmonic_balance.h), over a range of input speed by
+/// pseudo-arclength continuation up and/or down (continuation.h), with folds, bifurcations and
+/// stability, and optional Newmark checks (train_nonlinear_time.h) at given speeds.
+
+#include "train_nonlinear_analysis.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/config/train_analysis.h"
+#include "geardyn/error.h"
+#include "geardyn/solvers/continuation.h"
+#include "geardyn/solvers/train_harmonic_balance.h"
+#include "geardyn/solvers/train_modal.h"
+#include "geardyn/solvers/train_nonlinear_time.h"
+
+namespace geardyn::analysis::detail {
+namespace {
+
+constexpr double kRpm = std::numbers::pi / 30.0;  // rad/s per rpm
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+/// A mode whose mesh strain energy is below this fraction of its total has (almost) no mesh
+/// deflection v_mᵀφ for the mesh forces to work on (the fraction is Σ k̄_m (v_mᵀφ)² / φᵀKφ):
+/// the meshes do not excite it, and it does not set the continuation steps.
+constexpr double kExcitedMeshEnergy = 1e-3;
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// What one continuation point reports (per mesh: p2p of δ and of the contact force, the
+/// largest force, whether the teeth separate and whether they hit the back flank).
+struct Row {
+  std::string sweep;
+  int point = 0, branch = 0, iterations = 0, step_cuts = 0;
+  double omega = 0.0, residual = 0.0, multiplier = 0.0;
+  bool stable = true;
+  std::vector<double> p2p_deflection, p2p_force, max_force;
+  std::vector<int> loss, back;
+};
+
+Row rowOf(const GearTrainModel& model, TrainHarmonicBalance& hbm, const SweepPoint& sp,
+          const std::string& sweep, int index) {
+  const HarmonicBalancePoint& p = sp.solution;
+  Row row{sweep,        index,   sp.branch,  p.iterations,
+          sp.step_cuts, p.omega, p.residual, std::abs(p.critical_multiplier),
+          p.stable,     {},      {},         {},
+          {},           {}};
+  const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
+  const Eigen::MatrixXd f = hbm.meshContactForces(p.q);
+  for (int m = 0; m < hbm.meshCount(); ++m) {
+    row.p2p_deflection.push_back(d.col(m).maxCoeff() - d.col(m).minCoeff());
+    row.p2p_force.push_back(f.col(m).maxCoeff() - f.col(m).minCoeff());
+    row.max_force.push_back(f.col(m).maxCoeff());
+    // k > 0: the force is 0 exactly in the free play, < 0 on the back flank (or, for a linear
+    // mesh, where the teeth would pull: the linear law is invalid there).
+    row.loss.push_back(f.col(m).minCoeff() <= 0.0);
+    row.back.push_back(model.meshes()[m].contact.law == ContactLaw::kBacklash &&
+                       f.col(m).minCoeff() < 0.0);
+  }
+  return row;
+}
+
+Json perMesh(const GearTrainModel& model, const std::vector<double>& values) {
+  Json out = Json::object();
+  for (std::size_t m = 0; m < values.size(); ++m) out[model.meshes()[m].name] = values[m];
+  return out;
+}
+
+/// Continuation steps from the train (deriveContinuationSteps): of the modes the meshes excite,
+/// those with a resonance j ω₀ = ω_n (j <= H, the highest such j) inside the range; the narrowest,
+/// ζ ω_n / j (ζ floored at 1e-3 as there), bounds the largest step, itself at most 1/50 of the
+/// range. Steps the user gave are kept (and bound the derived ones). Returns that resonance
+/// (null when no excited mode has one in the range) and which bound applied.
+Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& modes, int H,
+                      double scale) {
+  const double lo = std::min(sweep.start, sweep.stop), hi = std::max(sweep.start, sweep.stop);
+  double narrowest = HUGE_VAL, wn = 0.0, zeta = 0.0;
+  Json resonance = nullptr;
+  for (const TrainMode& mode : modes) {
+    double energy = 0.0;
+    for (double e : mode.mesh_strain_energy) energy += e;
+    if (!(mode.frequency > 0.0) || energy < kExcitedMeshEnergy) continue;
+    const double w = kTwoPi * mode.frequency;
+    int order = 0;
+    for (int j = 1; j <= H; ++j) {
+      if (w / j >= lo && w / j <= hi) order = j;
+    }
+    if (order == 0) continue;
+    const double width = std::clamp(mode.damping_ratio, 1e-3, 0.5) * w / order;
+    if (width < narrowest) {
+      narrowest = width, wn = w, zeta = mode.damping_ratio;
+      resonance = {{"mode_frequency_Hz", mode.frequency},
+                   {"damping_ratio", mode.damping_ratio},
+                   {"harmonic", order},
+                   {"speed_rpm", w / order / scale},
+                   {"mesh_strain_energy", energy},
+                   {"half_width_rpm", width / scale}};
+    }
+  }
+  deriveContinuationSteps(sweep, wn, zeta, H);
+  return {{"narrowest_resonance", resonance},
+          {"limited_by", narrowest < (hi - lo) / 50.0 ? "narrowest_resonance" : "range / 50"}};
+}
+
+/// The steps the user gave must be ordered (the derived ones are by construction).
+void checkSteps(const ContinuationOptions& s, double scale) {
+  const auto shown = [&](double w) { return fmt::format("{:g} rpm", w / scale); };
+  if (s.max_step < s.min_step) {
+    throw InputError("nonlinear.max_step_rpm", shown(s.max_step),
+                     ">= nonlinear.min_step_rpm = " + shown(s.min_step));
+  }
+  if (s.initial_step < s.min_step || s.initial_step > s.max_step) {
+    throw InputError("nonlinear.initial_step_rpm", shown(s.initial_step),
+                     fmt::format("within [min_step_rpm, max_step_rpm] = [{}, {}]",
+                                 shown(s.min_step), shown(s.max_step)));
+  }
+}
+
+io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& rows, double scale,
+                        bool stability) {
+  std::vector<std::string> header{"point", "branch", "speed_rpm", "base_frequency_Hz"};
+  for (const TrainMesh& m : model.meshes()) {
+    for (const char* c :
+         {"p2p_deflection_m_", "p2p_force_N_", "max_force_N_", "contact_loss_", "back_flank_"})
+      header.push_back(c + m.name);
+  }
+  for (const char* c : {"contact_loss", "stable", "critical_multiplier_abs", "newton_iterations",
+                        "relative_residual", "step_cuts"})
+    header.emplace_back(c);
+  io::CsvTable table(header);
+  for (const Row& r : rows) {
+    std::vector<io::CsvCell> cells{static_cast<long long>(r.point),
+                                   static_cast<long long>(r.branch), r.omega / scale,
+                                   r.omega / kTwoPi};
+    long long any = 0;
+    for (std::size_t m = 0; m < r.loss.size(); ++m) {
+      cells.insert(cells.end(),
+                   {r.p2p_deflection[m], r.p2p_force[m], r.max_force[m],
+                    static_cast<long long>(r.loss[m]), static_cast<long long>(r.back[m])});
+      any = any || r.loss[m];
+    }
+    cells.push_back(any);
+    if (stability) {
+      cells.push_back(static_cast<long long>(r.stable));
+      cells.push_back(r.multiplier);
+    } else {
+      cells.insert(cells.end(), {std::string(), std::string()});
+    }
+    cells.insert(cells.end(), {static_cast<long long>(r.iterations), r.residual,
+                               static_cast<long long>(r.step_cuts)});
+    table.addRow(cells);
+  }
+  return table;
+}
+
+/// Nonlinear Newmark started on every stable solution at the check speeds (unstable ones are
+/// listed, not integrated: a time integration leaves them). A correct periodic solution is kept:
+/// p2p of every mesh deflection within the Newmark discretisation error.
+Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
+                   TrainHarmonicBalance& hbm,
+                   const std::vector<std::pair<std::string, ContinuationResult>>& runs,
+                   double scale, bool stability, AnalysisResult& result,
+                   const AnalysisContext& context) {
+  const auto speeds = analysis.realList("nonlinear.newmark_speeds_rpm");
+  Json checks = Json::array();
+  if (speeds.empty()) return checks;
+  TrainNonlinearTimeOptions options;
+  options.steps_per_mesh_period =
+      static_cast<int>(analysis.integer("nonlinear.newmark_steps_per_mesh_period"));
+  options.max_periods = static_cast<int>(analysis.integer("nonlinear.newmark_max_periods"));
+  options.steady_tolerance = 1e-7;  // p2p to 1e-7: far below the 1 % the check resolves
+  std::vector<std::string> header{"speed_rpm", "solution", "stable", "newmark_status",
+                                  "newmark_periods"};
+  for (const TrainMesh& m : model.meshes()) {
+    header.push_back("p2p_deflection_hbm_m_" + m.name);
+    header.push_back("p2p_deflection_newmark_m_" + m.name);
+  }
+  header.emplace_back("max_relative_difference");
+  io::CsvTable table(header);
+  const ProgressCallback progress =
+      context.progressFor("train: nonlinear Newmark checks", "speeds");
+  for (std::size_t k = 0; k < speeds.size(); ++k) {
+    if (progress) progress(static_cast<double>(k), static_cast<double>(speeds.size()));
+    const double omega = speeds[k] * scale;
+    std::vector<const ContinuationResult*> sweeps;
+    for (const auto& run : runs) sweeps.push_back(&run.second);
+    const auto solutions = solutionsAtFrequency(hbm, sweeps, omega);
+    if (solutions.empty()) {
+      result.summary.warnings.push_back(
+          fmt::format("nonlinear Newmark check at {:g} rpm: no harmonic-balance solution there "
+                      "(the sweep did not reach it)",
+                      speeds[k]));
+    }
+    for (std::size_t s = 0; s < solutions.size(); ++s) {
+      HarmonicBalancePoint p = solutions[s];
+      if (stability) hbm.classify(p, StabilityMethod::kMonodromy, false);
+      const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
+      std::vector<io::CsvCell> cells{
+          speeds[k], static_cast<long long>(s),
+          stability ? io::CsvCell(static_cast<long long>(p.stable)) : io::CsvCell(std::string())};
+      Json check = {{"speed_rpm", speeds[k]}, {"solution", s}, {"stable", p.stable}};
+      if (!p.stable) {
+        cells.insert(cells.end(), {std::string("not_integrated_unstable"), 0LL});
+        for (int m = 0; m < hbm.meshCount(); ++m) {
+          cells.insert(cells.end(), {d.col(m).maxCoeff() - d.col(m).minCoeff(), std::string()});
+        }
+        cells.emplace_back(std::string());
+        table.addRow(cells);
+        check["newmark_status"] = "not_integrated_unstable";
+        checks.push_back(check);
+        continue;
+      }
+      const auto [q0, v0] = hbm.initialState(p);
+      const TrainNonlinearTimeResponse r =
+          solveTrainNonlinearTime(model, hbm.inputSpeed(omega), options, q0, v0);
+      cells.insert(cells.end(), {r.status, static_cast<long long>(r.periods)});
+      double worst = 0.0;
+      Json hbm_p2p = Json::object(), newmark_p2p = Json::object();
+      for (int m = 0; m < hbm.meshCount(); ++m) {
+        const double a = d.col(m).maxCoeff() - d.col(m).minCoeff(), b = r.meshPeakToPeak(m);
+        cells.insert(cells.end(), {a, b});
+        worst = std::max(worst, std::abs(b / a - 1.0));
+        hbm_p2p[model.meshes()[m].name] = a;
+        newmark_p2p[model.meshes()[m].name] = b;
+      }
+      cells.emplace_back(worst);
+      table.addRow(cells);
+      check.update({{"newmark_status", r.status},
+                    {"newmark_periods", r.periods},
+                    {"p2p_deflection_hbm_m", hbm_p2p},
+                    {"p2p_deflection_newmark_m", newmark_p2p},
+                    {"max_relative_difference", worst}});
+      checks.push_back(check);
+      if (r.status != "steady_state") {
+        result.summary.warnings.push_back(
+            fmt::format("nonlinear Newmark check at {:g} rpm (solution {}): {} after {} common "
+                        "periods ({}); raise nonlinear.newmark_max_periods",
+                        speeds[k], s, r.status, r.periods, r.message));
+      }
+    }
+  }
+  result.addTable("newmark_checks.csv", table);
+  return checks;
+}
+
+}  // namespace
+
+std::string runTrainNonlinear(const GearTrainModel& model, const config::Config& analysis,
+                              AnalysisResult& result, std::string& text,
+                              const AnalysisContext& context) {
+  const auto start = Clock::now();
+  io::RunSummary& summary = result.summary;
+  if (std::none_of(model.meshes().begin(), model.meshes().end(),
+                   [](const TrainMesh& m) { return m.nonlinear(); })) {
+    summary.warnings.push_back(
+        "nonlinear: no mesh has a contact law (meshes.<name>.contact or backlash): the teeth "
+        "never separate and the response is the linear one");
+  }
+  const TrainHarmonicBalanceOptions options =
+      config::trainHarmonicBalanceOptionsFromConfig(analysis);
+  TrainHarmonicBalance hbm(model, options);  // InputError when H is below a mesh's multiple
+  const auto [lo, hi] = config::nonlinearSpeedRange(analysis, model.inputSpeed());
+  const double scale = hbm.baseFrequency(kRpm);  // ω₀ per rpm [rad/s]
+  for (double s : analysis.realList("nonlinear.newmark_speeds_rpm")) {
+    if (s * kRpm < lo * (1 - 1e-12) || s * kRpm > hi * (1 + 1e-12)) {
+      throw InputError("nonlinear.newmark_speeds_rpm", fmt::format("{:g} rpm", s),
+                       fmt::format("within the sweep, [{:g}, {:g}] rpm", lo / kRpm, hi / kRpm));
+    }
+  }
+
+  ContinuationOptions sweep;
+  const auto given = [&](const std::string& key) {
+    return analysis.has(key) ? analysis.real(key) * scale : 0.0;
+  };
+  sweep.initial_step = given("nonlinear.initial_step_rpm");
+  sweep.min_step = given("nonlinear.min_step_rpm");
+  sweep.max_step = given("nonlinear.max_step_rpm");
+  sweep.fold_tolerance = given("nonlinear.fold_tolerance_rpm");
+  if (sweep.fold_tolerance == 0.0) sweep.fold_tolerance = 1e-3 * (hi - lo) / kRpm * scale;
+  sweep.max_points = static_cast<int>(analysis.integer("nonlinear.max_points"));
+  sweep.stability = analysis.boolean("nonlinear.stability");
+  sweep.stability_method = StabilityMethod::kMonodromy;
+  sweep.display_scale = scale;
+  sweep.display_unit = "rpm";
+  sweep.start = hbm.baseFrequency(lo);
+  sweep.stop = hbm.baseFrequency(hi);
+  TrainModalOptions modal;
+  modal.keep_rigid = false;
+  const auto modes = trainModes(model, hbm.inputSpeed(0.5 * (sweep.start + sweep.stop)), modal);
+  const Json step_source = deriveTrainSteps(sweep, modes, options.harmonics, scale);
+  checkSteps(sweep, scale);
+  if (step_source["narrowest_resonance"].is_null()) {
+    summary.warnings.push_back(fmt::format(
+        "nonlinear: no mode the meshes excite has a resonance (f_n = j f₀, j <= H = {}) between "
+        "{:g} and {:g} rpm: the response there is quasi-static",
+        options.harmonics, lo / kRpm, hi / kRpm));
+  }
+
+  const std::string direction = analysis.string("nonlinear.direction");
+  std::vector<std::pair<std::string, ContinuationResult>> runs;
+  Json sweeps = Json::object(), folds = Json::array(), bifurcations = Json::array();
+  std::vector<Row> all;
+  int points = 0;
+  std::string status = "ok";
+  const auto sweep_start = Clock::now();
+  for (const std::string which : {"up", "down"}) {
+    if (direction != "both" && direction != which) continue;
+    const auto run_start = Clock::now();
+    ContinuationOptions o = sweep;
+    if (which == "down") std::swap(o.start, o.stop);
+    const ProgressCallback progress = context.progressFor("train: nonlinear sweep " + which, "rpm");
+    if (progress)
+      o.progress = [&](double done, double total) { progress(done / scale, total / scale); };
+    runs.emplace_back(which, continueInFrequency(hbm, o));
+    const ContinuationResult& run = runs.back().second;
+    std::vector<Row> rows;
+    for (std::size_t i = 0; i < run.points.size(); ++i)
+      rows.push_back(rowOf(model, hbm, run.points[i], which, static_cast<int>(i)));
+    const std::string file = "nonlinear_" + which + ".csv";
+    result.addTable(file, sweepTable(model, rows, scale, sweep.stability));
+    for (const Bifurcation& b : run.bifurcations) {
+      const Row& r = rows[b.index];
+      Json j = {{"sweep", which},
+                {"type", toString(b.type)},
+                {"speed_rpm", r.omega / scale},
+                {"base_frequency_Hz", r.omega / kTwoPi},
+                {"p2p_deflection_m", perMesh(model, r.p2p_deflection)}};
+      bifurcations.push_back(j);
+      if (b.type == BifurcationType::kFold) folds.push_back(j);
+    }
+    points += static_cast<int>(run.points.size());
+    sweeps[which] = {{"file", file},
+                     {"points", run.points.size()},
+                     {"completed", run.completed},
+                     {"folds", run.folds.size()},
+                     {"step_cuts", run.failures},
+                     {"message", run.message},
+                     {"wall_time_s", secondsSince(run_start)}};
+    if (!run.completed) {
+      result.errors.push_back("nonlinear sweep " + which + ": " + run.message);
+      status = "incomplete_sweep";
+    }
+    text += fmt::format("nonlinear sweep {}: {}\n", which, run.message);
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  const double sweep_seconds = secondsSince(sweep_start);
+  for (const Json& b : bifurcations) {
+    text += fmt::format("  {} ({} sweep) at {:.6g} rpm\n", b["type"].get<std::string>(),
+                        b["sweep"].get<std::string>(), b["speed_rpm"].get<double>());
+  }
+  Json peaks = Json::object();
+  for (int m = 0; m < hbm.meshCount(); ++m) {
+    const Row* best = nullptr;
+    for (const Row& r : all) {
+      if (!best || r.p2p_deflection[m] > best->p2p_deflection[m]) best = &r;
+    }
+    if (best) {
+      peaks[model.meshes()[m].name] = {{"p2p_deflection_m", best->p2p_deflection[m]},
+                                       {"p2p_force_N", best->p2p_force[m]},
+                                       {"speed_rpm", best->omega / scale},
+                                       {"sweep", best->sweep},
+                                       {"stable", best->stable}};
+    }
+  }
+  Json multiples = Json::object(), per_rpm = Json::object();
+  for (int m = 0; m < hbm.meshCount(); ++m) {
+    multiples[model.meshes()[m].name] = hbm.meshMultiples()[m];
+    per_rpm[model.meshes()[m].name] = hbm.meshMultiples()[m] * scale / kTwoPi;
+  }
+  summary.results["nonlinear"] = {{"harmonics", options.harmonics},
+                                  {"samples", options.samples},
+                                  {"mesh_multiples", multiples},
+                                  {"base_frequency_Hz_per_rpm", scale / kTwoPi},
+                                  {"mesh_frequency_Hz_per_rpm", per_rpm},
+                                  {"speed_min_rpm", lo / kRpm},
+                                  {"speed_max_rpm", hi / kRpm},
+                                  {"stability", sweep.stability},
+                                  {"continuation_steps",
+                                   {{"initial_step_rpm", sweep.initial_step / scale},
+                                    {"min_step_rpm", sweep.min_step / scale},
+                                    {"max_step_rpm", sweep.max_step / scale},
+                                    {"fold_tolerance_rpm", sweep.fold_tolerance / scale},
+                                    {"derived", !analysis.has("nonlinear.max_step_rpm")},
+                                    {"narrowest_resonance", step_source["narrowest_resonance"]},
+                                    {"limited_by", step_source["limited_by"]}}},
+                                  {"sweeps", sweeps},
+                                  {"points", points},
+                                  {"wall_time_s", sweep_seconds},
+                                  {"time_per_point_s", points > 0 ? sweep_seconds / points : 0.0},
+                                  {"folds", folds},
+                                  {"bifurcations", bifurcations},
+                                  {"peaks", peaks}};
+  const Json checks =
+      newmarkChecks(model, analysis, hbm, runs, scale, sweep.stability, result, context);
+  if (!checks.empty()) summary.results["nonlinear"]["newmark_checks"] = checks;
+  for (const Json& c : checks) {
+    if (c.contains("max_relative_difference")) {
+      text += fmt::format("  Newmark at {:g} rpm (solution {}): {}, p2p within {:.2g} %\n",
+                          c["speed_rpm"].get<double>(), c["solution"].get<std::size_t>(),
+                          c["newmark_status"].get<std::string>(),
+                          100 * c["max_relative_difference"].get<double>());
+    }
+  }
+  text += fmt::format("nonlinear: H = {}, N = {}, {} points in {:.2f} s ({:.2f} ms a point)\n",
+                      options.harmonics, options.samples, points, sweep_seconds,
+                      points > 0 ? 1e3 * sweep_seconds / points : 0.0);
+  summary.results["nonlinear"]["total_wall_time_s"] = secondsSince(start);
+  return status;
+}
+
+}  // namespace geardyn::analysis::detail

@@ -1,0 +1,101 @@
+// The `nonlinear` analysis of `geardyn train` (issue 17) against the library call it wraps: the
+// p2p mesh deflections it reports at each speed of examples/train_planetary_nonlinear.toml are
+// those of TrainHarmonicBalance solved on its own at that speed (from the linear starting
+// guess), and the continuation steps come from the train's modes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <variant>
+
+#include "geardyn/analysis/analyses.h"
+#include "geardyn/config/gearbox_config.h"
+#include "geardyn/error.h"
+#include "geardyn/solvers/train_harmonic_balance.h"
+
+namespace geardyn {
+namespace {
+
+const std::string kExample =
+    std::string(GEARDYN_SOURCE_DIR) + "/examples/train_planetary_nonlinear.toml";
+
+const std::vector<double>& reals(const analysis::ResultTable& t, const std::string& name) {
+  return std::get<std::vector<double>>(t.column(name));
+}
+
+/// Below the first fold of the up sweep the solution is unique, so Newton from the linear
+/// response must find the analysis's. Both solve to a relative residual of 1e-10 or better on
+/// the same samples: the p2p values agree to ~1e-9; 1e-7 leaves room for the different Newton
+/// paths across the contact kinks.
+TEST(TrainNonlinearAnalysis, ReportsTheLibraryHarmonicBalanceAtEachSpeed) {
+  const analysis::TrainInputs inputs = analysis::loadTrainInputs(
+      kExample, {"nonlinear.direction=\"up\"", "nonlinear.stability=false",
+                 "nonlinear.newmark_speeds_rpm=[]", "nonlinear.speed_max_rpm=16000.0"});
+  const analysis::AnalysisResult result = analysis::trainAnalysis(inputs, {});
+  ASSERT_EQ(result.summary.status, "ok") << result.report;
+  const auto& info = result.summary.results["nonlinear"];
+  // Steps from the modes the meshes excite: the narrowest resonance j f₀ = f_n in the range
+  // (here the mode near 11.7 kHz at j = 2: the loop near 15 000 rpm is its second
+  // superharmonic resonance) bounds the step, with range / 50.
+  const auto& steps = info["continuation_steps"];
+  ASSERT_FALSE(steps["narrowest_resonance"].is_null());
+  const auto& res = steps["narrowest_resonance"];
+  const double per_rpm = info["base_frequency_Hz_per_rpm"].get<double>();
+  const double at = res["mode_frequency_Hz"].get<double>() / res["harmonic"].get<int>() / per_rpm;
+  EXPECT_NEAR(res["speed_rpm"].get<double>(), at, 1e-9 * at);
+  EXPECT_GE(at, 13000.0);
+  EXPECT_LE(at, 16000.0);
+  const double half_width = res["damping_ratio"].get<double>() * at;
+  EXPECT_NEAR(steps["max_step_rpm"].get<double>(), std::min(half_width, 3000.0 / 50), 1e-9 * at);
+
+  std::vector<std::string> warnings;
+  const GearTrainModel model(config::gearTrainFromConfig(inputs.gearbox, warnings));
+  TrainHarmonicBalanceOptions options;  // the example's H = 15, N = 256 are the defaults
+  TrainHarmonicBalance hbm(model, options);
+  const analysis::ResultTable& table = result.table("nonlinear_up.csv");
+  const auto& speed = reals(table, "speed_rpm");
+  double first_fold = HUGE_VAL;
+  for (const auto& f : info["folds"])
+    first_fold = std::min(first_fold, f["speed_rpm"].get<double>());
+  int compared = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < table.rows(); i += 4) {
+    if (speed[i] >= first_fold) break;
+    HarmonicBalancePoint p;
+    p.omega = hbm.baseFrequency(speed[i] * std::numbers::pi / 30.0);
+    p.q = hbm.startingGuess(p.omega);
+    hbm.solve(p);
+    ASSERT_TRUE(p.converged) << speed[i] << " rpm";
+    const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
+    for (int m = 0; m < hbm.meshCount(); ++m) {
+      const double p2p = d.col(m).maxCoeff() - d.col(m).minCoeff();
+      const double reported = reals(table, "p2p_deflection_m_" + model.meshes()[m].name)[i];
+      worst = std::max(worst, std::abs(reported / p2p - 1.0));
+    }
+    ++compared;
+  }
+  EXPECT_GE(compared, 5);
+  EXPECT_LT(worst, 1e-7);
+  ::testing::Test::RecordProperty("worst_relative_difference", std::to_string(worst));
+  std::printf("compared %d speeds, worst relative p2p difference %.3g\n", compared, worst);
+}
+
+/// H below a mesh's multiple of the common frequency, and samples that alias, name their keys.
+TEST(TrainNonlinearAnalysis, BadHarmonicsAndSamplesNameTheKey) {
+  const auto fails = [](const std::string& set, const std::string& key) {
+    const analysis::TrainInputs inputs = analysis::loadTrainInputs(kExample, {set});
+    try {
+      analysis::trainAnalysis(inputs, {});
+      ADD_FAILURE() << set;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  fails("nonlinear.samples=30", "nonlinear.samples");
+  fails("nonlinear.initial_step_rpm=1000.0", "nonlinear.initial_step_rpm");
+  fails("nonlinear.newmark_speeds_rpm=[20000.0]", "nonlinear.newmark_speeds_rpm");
+}
+
+}  // namespace
+}  // namespace geardyn
