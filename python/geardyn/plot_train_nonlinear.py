@@ -46,7 +46,7 @@ def train_nonlinear_figure(result_dir, axes=None, max_meshes=8, title=None):
     styles = set()
     checks = results.get("newmark_checks", [])
     for ax, mesh in zip(axes, meshes):
-        column = "p2p_deflection_m_" + mesh
+        column = "p2p_deflection_" + mesh + "_m"
         for name, table in sweeps.items():
             style = dict(color=_SWEEP_COLOURS[name], lw=2.6 if both and name == "up" else 1.2,
                          alpha=0.45 if both and name == "up" else 1.0)

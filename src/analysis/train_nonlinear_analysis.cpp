@@ -126,11 +126,14 @@ void checkSteps(const ContinuationOptions& s, double scale) {
 
 io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& rows, double scale,
                         bool stability) {
-  std::vector<std::string> header{"point", "branch", "speed_rpm", "base_frequency_Hz"};
+  // Column names end in their unit, lower case (docs/cli.md); flags have none.
+  std::vector<std::string> header{"point", "branch", "speed_rpm", "base_frequency_hz"};
   for (const TrainMesh& m : model.meshes()) {
-    for (const char* c :
-         {"p2p_deflection_m_", "p2p_force_N_", "max_force_N_", "contact_loss_", "back_flank_"})
-      header.push_back(c + m.name);
+    header.push_back("p2p_deflection_" + m.name + "_m");
+    header.push_back("p2p_force_" + m.name + "_n");
+    header.push_back("max_force_" + m.name + "_n");
+    header.push_back("contact_loss_" + m.name);
+    header.push_back("back_flank_" + m.name);
   }
   for (const char* c : {"contact_loss", "stable", "critical_multiplier_abs", "newton_iterations",
                         "relative_residual", "step_cuts"})
@@ -180,8 +183,8 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
   std::vector<std::string> header{"speed_rpm", "solution", "stable", "newmark_status",
                                   "newmark_periods"};
   for (const TrainMesh& m : model.meshes()) {
-    header.push_back("p2p_deflection_hbm_m_" + m.name);
-    header.push_back("p2p_deflection_newmark_m_" + m.name);
+    header.push_back("p2p_deflection_hbm_" + m.name + "_m");
+    header.push_back("p2p_deflection_newmark_" + m.name + "_m");
   }
   header.emplace_back("max_relative_difference");
   io::CsvTable table(header);

@@ -70,7 +70,7 @@ TEST(TrainNonlinearAnalysis, ReportsTheLibraryHarmonicBalanceAtEachSpeed) {
     const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
     for (int m = 0; m < hbm.meshCount(); ++m) {
       const double p2p = d.col(m).maxCoeff() - d.col(m).minCoeff();
-      const double reported = reals(table, "p2p_deflection_m_" + model.meshes()[m].name)[i];
+      const double reported = reals(table, "p2p_deflection_" + model.meshes()[m].name + "_m")[i];
       worst = std::max(worst, std::abs(reported / p2p - 1.0));
     }
     ++compared;

@@ -60,10 +60,10 @@ def test_columns_carry_units_and_every_mesh(planetary):
     meshes = [m["mesh"] for m in rows(folder / "meshes.csv")]
     assert len(meshes) == 6
     for mesh in meshes:
-        for column in ("p2p_deflection_m_", "p2p_force_N_", "max_force_N_", "contact_loss_",
-                       "back_flank_"):
-            assert column + mesh in header
-    assert {"speed_rpm", "base_frequency_Hz", "stable", "critical_multiplier_abs", "step_cuts",
+        for column in (f"p2p_deflection_{mesh}_m", f"p2p_force_{mesh}_n", f"max_force_{mesh}_n",
+                       f"contact_loss_{mesh}", f"back_flank_{mesh}"):
+            assert column in header
+    assert {"speed_rpm", "base_frequency_hz", "stable", "critical_multiplier_abs", "step_cuts",
             "relative_residual"} <= set(header)
 
 
