@@ -14,6 +14,7 @@
 #include <set>
 #include <thread>
 
+#include "geardyn/detail/contiguous_ranges.h"
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/damped_modes.h"
 #include "geardyn/solvers/detail/mode_tracking.h"
@@ -365,37 +366,24 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
   std::exception_ptr failure;
   std::mutex failure_mutex;
   std::atomic<std::size_t> finished{0};
-  std::atomic<bool> stop{false};
-  const std::size_t threads =
-      std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), speeds.size());
-  // The calling thread alone reports progress; a callback that throws (an interrupted run)
-  // stops the workers before the exception leaves.
-  auto work = [&](std::size_t first, std::size_t last, bool report) {
-    Eigen::VectorXd krylov_start;
-    for (std::size_t i = first; i < last && !stop; ++i) {
-      try {
-        solved[i] = modesAt(model, speeds[i], candidates, sparse_train, &krylov_start);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        return;
-      }
-      const std::size_t done = ++finished;
-      if (report && progress)
-        progress(static_cast<double>(done), static_cast<double>(speeds.size()));
-    }
-  };
-  const auto first = [&](std::size_t t) { return speeds.size() * t / threads; };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, first(t), first(t + 1), false);
-  try {
-    work(0, first(1), true);
-  } catch (...) {
-    stop = true;
-    for (auto& thread : pool) thread.join();
-    throw;
-  }
-  for (auto& thread : pool) thread.join();
+  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  detail::runContiguousRanges(
+      speeds.size(), threads,
+      [&](std::size_t first, std::size_t last, bool on_caller, const std::atomic<bool>& stop) {
+        Eigen::VectorXd krylov_start;
+        for (std::size_t i = first; i < last && !stop; ++i) {
+          try {
+            solved[i] = modesAt(model, speeds[i], candidates, sparse_train, &krylov_start);
+          } catch (...) {
+            const std::lock_guard<std::mutex> lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+            return;
+          }
+          const std::size_t done = ++finished;
+          if (on_caller && progress)
+            progress(static_cast<double>(done), static_cast<double>(speeds.size()));
+        }
+      });
   if (failure) std::rethrow_exception(failure);
   if (progress) progress(static_cast<double>(speeds.size()), static_cast<double>(speeds.size()));
   for (std::size_t i = 0; i < speeds.size(); ++i) {

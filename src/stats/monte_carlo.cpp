@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
-#include <thread>
 
+#include "geardyn/detail/contiguous_ranges.h"
 #include "geardyn/error.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
@@ -82,42 +82,30 @@ std::vector<MonteCarloSample> runMeanExcitationMonteCarlo(const GearPairModel& m
   options.validate();
   std::vector<MonteCarloSample> samples(options.samples);
   std::atomic<long long> finished{0};
-  std::atomic<bool> stop{false};
-  const auto work = [&](int first, int last) {
-    std::vector<double> pitch(options.teeth), profile(options.teeth), kappa(options.teeth);
-    for (int i = first; i < last && !stop.load(std::memory_order_relaxed); ++i) {
-      std::mt19937_64 rng(streamSeed(options.seed, static_cast<std::uint64_t>(i)));
-      std::normal_distribution<double> normal(0.0, 1.0);
-      std::uniform_real_distribution<double> uniform(0.0, 1.0);
-      for (int j = 0; j < options.teeth; ++j) {
-        pitch[j] = options.pitch_error_std * normal(rng);
-        profile[j] = options.profile_error_std * normal(rng);
-        kappa[j] = 1.0 + options.stiffness_std * normal(rng);
-      }
-      const double phase = options.random_phase ? uniform(rng) : 0.0;
-      const MeanExcitation s =
-          meanExcitationOfRevolution(model, options.baseload, pitch, profile, kappa, phase);
-      samples[i] = {s.ratio, s.dynamic_mean_excitation, s.r_ke, s.d_k, s.d_e, s.delta_m1_ef, phase};
-      const long long done = ++finished;
-      if (first == 0 && options.progress) options.progress(done, options.samples);
-    }
-  };
-  const int threads = std::min(options.threads, options.samples);
-  // The first chunk runs on the calling thread, which alone reports progress: a callback that
-  // throws (an interrupted run) stops every worker before the exception leaves.
-  const auto chunk = [&](int t) {
-    return static_cast<int>(static_cast<long long>(options.samples) * t / std::max(threads, 1));
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, chunk(t), chunk(t + 1));
-  try {
-    work(0, chunk(1));
-  } catch (...) {
-    stop = true;
-    for (auto& thread : pool) thread.join();
-    throw;
-  }
-  for (auto& thread : pool) thread.join();
+  // Contiguous ranges, the first on the calling thread, which alone reports progress: a
+  // callback that throws (an interrupted run) stops every range before the exception leaves.
+  detail::runContiguousRanges(
+      static_cast<std::size_t>(options.samples), static_cast<std::size_t>(options.threads),
+      [&](std::size_t first, std::size_t last, bool on_caller, const std::atomic<bool>& stop) {
+        std::vector<double> pitch(options.teeth), profile(options.teeth), kappa(options.teeth);
+        for (std::size_t i = first; i < last && !stop.load(std::memory_order_relaxed); ++i) {
+          std::mt19937_64 rng(streamSeed(options.seed, static_cast<std::uint64_t>(i)));
+          std::normal_distribution<double> normal(0.0, 1.0);
+          std::uniform_real_distribution<double> uniform(0.0, 1.0);
+          for (int j = 0; j < options.teeth; ++j) {
+            pitch[j] = options.pitch_error_std * normal(rng);
+            profile[j] = options.profile_error_std * normal(rng);
+            kappa[j] = 1.0 + options.stiffness_std * normal(rng);
+          }
+          const double phase = options.random_phase ? uniform(rng) : 0.0;
+          const MeanExcitation s =
+              meanExcitationOfRevolution(model, options.baseload, pitch, profile, kappa, phase);
+          samples[i] = {s.ratio, s.dynamic_mean_excitation, s.r_ke, s.d_k, s.d_e, s.delta_m1_ef,
+                        phase};
+          const long long done = ++finished;
+          if (on_caller && options.progress) options.progress(done, options.samples);
+        }
+      });
   return samples;
 }
 
