@@ -10,7 +10,7 @@ import re
 
 # Name endings and their units, longest first (compared without case: "_Hz", "_N_per_m").
 _SUFFIXES = [
-    ("_nondim", ""), ("hz_per_rpm", "Hz/rpm"), ("_periods", "periods"), ("_m_per_s2", "m/s^2"),
+    ("_nondim", ""), ("hz_per_rpm", "Hz/rpm"), ("_1_per_s", "1/s"), ("_periods", "periods"), ("_m_per_s2", "m/s^2"),
     ("_m_per_s", "m/s"), ("_rad_per_s2", "rad/s^2"), ("_rad_per_s", "rad/s"), ("_n_s_per_m", "N s/m"), ("_n_per_m", "N/m"), ("_n_m", "N m"), ("_rad_s", "rad/s"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"),
     ("_kg_m2", "kg m^2"), ("_kg", "kg"), ("_mm", "mm"), ("_um", "µm"), ("_hz", "Hz"), ("_Hz", "Hz"),
     ("_rpm", "rpm"), ("_rad", "rad"), ("_deg", "deg"), ("_pa", "Pa"), ("_s", "s"), ("_m", "m"),
@@ -20,7 +20,7 @@ _SUFFIXES = [
 # Dimensionless by their meaning.
 _DIMENSIONLESS = re.compile(
     r"^(h\d+|.*ratio.*|.*fraction.*|.*relative.*|.*factor.*|share_pair_\d+|order|mode|index|case|"
-    r"count|teeth|undercut|steady|stable|harmonic|line|dof|sweep_point|point|phase_fraction|tau|sample|"
+    r"count|teeth|undercut|steady|stable|divergent|harmonic|line|dof|sweep_point|point|phase_fraction|tau|sample|"
     r"contact_loss|converged|branch|.*_index|.*_count|iterations|whirl_direction|"
     r"ratio_low|ratio_high|p_value|samples|teeth_.|multiplicity|strain_.*|seed|real|imag)$")
 

@@ -66,7 +66,10 @@ def _mode_shapes_along_shafts(folder, summary, title, modes, shapes, count):
             ax.plot(xs, uz, color=f"C{k}", lw=1.1, ls="--", marker="s" if len(xs) == 1 else None,
                     ms=3)
         ax.set_yticks([-k for k in range(len(order))], order, fontsize=6)
-        ax.set_title(f"mode {j + 1}: {modes['frequency_hz'][j]:.1f} Hz", fontsize=8)
+        divergent = "divergent" in modes and int(modes["divergent"][j])
+        label = (f"divergent, {modes['growth_rate_1_per_s'][j]:.3g} 1/s" if divergent
+                 else f"{modes['frequency_hz'][j]:.1f} Hz")
+        ax.set_title(f"mode {j + 1}: {label}", fontsize=8)
         ax.tick_params(labelsize=6)
         ax.set_xlabel("x along the shafts [mm]", fontsize=7)
     speed = summary["results"]["modal"]["speed_rpm"]
@@ -113,7 +116,10 @@ def _mode_shapes(folder, summary, title):
                            alpha=0.6, zorder=3)
         kind = modes["stage_type"][j] if "stage_type" in modes else ""
         kind = kind if isinstance(kind, str) else ""
-        ax.set_title(f"mode {j + 1}: {modes['frequency_hz'][j]:.1f} Hz"
+        divergent = "divergent" in modes and int(modes["divergent"][j])
+        label = (f"divergent, {modes['growth_rate_1_per_s'][j]:.3g} 1/s" if divergent
+                 else f"{modes['frequency_hz'][j]:.1f} Hz")
+        ax.set_title(f"mode {j + 1}: {label}"
                      + (f"\n{kind}" if kind else ""), fontsize=8,
                      color=_TYPE_COLOURS.get(kind.split('/')[0], "0.2"))
         ax.set_aspect("equal")
@@ -159,6 +165,11 @@ def _campbell(folder, summary, title, ax=None):
     if critical:
         ax.plot(critical["speed_rpm"], critical["frequency_hz"], "kx", ms=5,
                 label="critical speeds (order line crosses a mode)")
+    rates = table.get("divergence_rate_1_per_s", [])
+    unstable = [s for s, r in zip(speeds, rates) if r > 0]
+    if unstable:
+        ax.axvspan(min(unstable), max(unstable), color="tab:red", alpha=0.12,
+                   label=f"divergent mode (growth up to {max(rates):.3g} 1/s)")
     operating = summary["results"]["kinematics"]["input_speed_rpm"]
     if operating:
         ax.axvline(abs(operating), color="tab:red", lw=0.8, ls=":", label="operating speed")

@@ -131,8 +131,9 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
   const double speed = config::analysisSpeed(analysis, "modal", model.inputSpeed());
   const auto modes =
       trainModes(model, speed, config::trainModalOptionsFromConfig(analysis, "modal"));
-  std::vector<std::string> header{"mode",         "frequency_hz", "damping_ratio",
-                                  "multiplicity", "stage_type",   "translational_fraction"};
+  std::vector<std::string> header{"mode",       "frequency_hz",          "damping_ratio",
+                                  "divergent",  "growth_rate_1_per_s",   "multiplicity",
+                                  "stage_type", "translational_fraction"};
   for (const TrainMesh& m : model.meshes()) header.push_back("strain_" + m.name);
   for (const TrainElement& e : model.elements()) header.push_back("strain_" + e.name);
   io::CsvTable table(header);
@@ -140,9 +141,14 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
   Json list = Json::array();
   for (std::size_t j = 0; j < modes.size(); ++j) {
     const TrainMode& m = modes[j];
-    std::vector<io::CsvCell> row{std::to_string(j + 1), m.frequency,
-                                 m.damping_ratio,       std::to_string(m.multiplicity),
-                                 stageTypes(m),         m.translational_fraction};
+    std::vector<io::CsvCell> row{std::to_string(j + 1),
+                                 m.frequency,
+                                 m.damping_ratio,
+                                 static_cast<long long>(m.divergent),
+                                 std::max(m.eigenvalue.real(), 0.0),
+                                 std::to_string(m.multiplicity),
+                                 stageTypes(m),
+                                 m.translational_fraction};
     for (double e : m.mesh_strain_energy) row.push_back(e);
     for (double e : m.element_strain_energy) row.push_back(e);
     table.addRow(row);
@@ -152,8 +158,21 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
     }
     list.push_back({{"frequency_Hz", m.frequency},
                     {"damping_ratio", m.damping_ratio},
+                    {"divergent", m.divergent},
+                    {"growth_rate_1_per_s", std::max(m.eigenvalue.real(), 0.0)},
                     {"multiplicity", m.multiplicity},
                     {"stage_type", m.stage_type}});
+  }
+  const auto divergent =
+      std::count_if(modes.begin(), modes.end(), [](const TrainMode& m) { return m.divergent; });
+  if (divergent > 0) {
+    double rate = 0.0;
+    for (const TrainMode& m : modes) rate = std::max(rate, m.divergent ? m.eigenvalue.real() : 0.0);
+    summary.warnings.push_back(fmt::format(
+        "modal at {:.1f} rpm: {} divergent mode(s), growth rate up to {:.4g} 1/s: the train is "
+        "statically unstable at this speed (a negative stiffness, e.g. centripetal softening of a "
+        "member in a carrier frame beyond its support); a time response grows as e^(rate t)",
+        speed / kRpm, divergent, rate));
   }
   result.addTable("modes.csv", table);
   result.addTable("mode_shapes.csv", shapes);
@@ -161,7 +180,11 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
       {"speed_rpm", speed / kRpm}, {"modes", list}, {"wall_time_s", secondsSince(start)}};
   text += fmt::format("modal at {:.1f} rpm: {} modes", speed / kRpm, modes.size());
   for (std::size_t j = 0; j < modes.size() && j < 8; ++j) {
-    text += fmt::format("{} {:.1f} Hz", j ? "," : ":", modes[j].frequency);
+    if (modes[j].divergent) {
+      text += fmt::format("{} divergent ({:.4g} 1/s)", j ? "," : ":", modes[j].eigenvalue.real());
+    } else {
+      text += fmt::format("{} {:.1f} Hz", j ? "," : ":", modes[j].frequency);
+    }
   }
   text += modes.size() > 8 ? ", …\n" : "\n";
 }
@@ -181,11 +204,30 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
   std::vector<std::string> header{"speed_rpm"};
   for (std::size_t j = 0; j < d.modes.front().size(); ++j)
     header.push_back(fmt::format("mode_{}_hz", j + 1));
+  header.push_back("divergence_rate_1_per_s");
   io::CsvTable table(header);
+  std::size_t first_divergent = speeds.size(), last_divergent = 0;
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     std::vector<io::CsvCell> row{speeds[i] / kRpm};
     for (const auto& m : d.modes[i]) row.push_back(m.frequency);
+    row.push_back(d.divergence_rate[i]);
     table.addRow(row);
+    if (d.divergence_rate[i] > 0.0) {
+      first_divergent = std::min(first_divergent, i);
+      last_divergent = i;
+    }
+  }
+  Json divergence = nullptr;
+  if (first_divergent < speeds.size()) {
+    const double rate = *std::max_element(d.divergence_rate.begin(), d.divergence_rate.end());
+    divergence = {{"from_rpm", speeds[first_divergent] / kRpm},
+                  {"to_rpm", speeds[last_divergent] / kRpm},
+                  {"max_growth_rate_1_per_s", rate}};
+    summary.warnings.push_back(fmt::format(
+        "campbell: divergent modes (statically unstable train) between {:.1f} and {:.1f} rpm, "
+        "growth rate up to {:.4g} 1/s (campbell.csv divergence_rate_1_per_s); they are not "
+        "tracked as modes",
+        speeds[first_divergent] / kRpm, speeds[last_divergent] / kRpm, rate));
   }
   result.addTable("campbell.csv", table);
   io::CsvTable lt({"line", "hz_per_rpm"});
@@ -201,8 +243,10 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
                     {"frequency_Hz", c.frequency}});
   }
   result.addTable("critical_speeds.csv", ct);
-  summary.results["campbell"] = {
-      {"speeds", speeds.size()}, {"critical_speeds", crit}, {"wall_time_s", secondsSince(start)}};
+  summary.results["campbell"] = {{"speeds", speeds.size()},
+                                 {"critical_speeds", crit},
+                                 {"divergence", divergence},
+                                 {"wall_time_s", secondsSince(start)}};
   text += fmt::format("campbell: {} speeds, {} critical speeds\n", speeds.size(),
                       d.critical_speeds.size());
 }

@@ -93,7 +93,7 @@ std::vector<DampedMode> shiftInvertModes(const SparseMatrix& M, const SparseMatr
   }
   std::vector<DampedMode> modes;
   for (Eigen::Index j = 0; j < values.size(); ++j) {
-    if (!(values(j).imag() > 0.0)) continue;
+    if (!(values(j).imag() > 0.0 || isDivergent(values(j)))) continue;
     DampedMode mode;
     mode.eigenvalue = values(j);
     mode.shape = vectors.col(j).head(M.rows());

@@ -122,6 +122,7 @@ TrainMode fromDamped(detail::DampedMode&& found) {
   mode.frequency = found.eigenvalue.imag() / kTwoPi;
   mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
   mode.shape = std::move(found.shape);
+  mode.divergent = detail::isDivergent(found.eigenvalue);
   return mode;
 }
 
@@ -188,7 +189,7 @@ std::vector<TrainMode> fewModes(const SparseTrain& sparse, double speed,
              sparse.M, D, K, asked, -1e-3 * std::sqrt(softest), krylov_start)) {
       modes.push_back(fromDamped(std::move(found)));
       const TrainMode& mode = modes.back();
-      elastic += std::abs(mode.eigenvalue) / kTwoPi >= rigid &&
+      elastic += std::abs(mode.eigenvalue) / kTwoPi >= rigid && !mode.divergent &&
                  mode.damping_ratio <= options.max_damping_ratio;
     }
     if (elastic >= count || asked == most) return modes;
@@ -253,9 +254,12 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
       for (Eigen::Index j = 0; j < K.rows(); ++j) {
         TrainMode mode;
         const double w2 = solver.eigenvalues()(j);
-        const double w = std::sqrt(std::max(w2, 0.0));
-        mode.eigenvalue = {0.0, w};
-        mode.frequency = w / kTwoPi;
+        const double w = std::sqrt(std::abs(w2));
+        mode.divergent = w2 < 0.0;
+        mode.eigenvalue =
+            mode.divergent ? std::complex<double>(w, 0.0) : std::complex<double>(0.0, w);
+        mode.frequency = mode.divergent ? 0.0 : w / kTwoPi;
+        mode.damping_ratio = mode.divergent ? -1.0 : 0.0;
         mode.shape = solver.eigenvectors().col(j).cast<std::complex<double>>();
         Eigen::Index largest = 0;
         mode.shape.cwiseAbs().maxCoeff(&largest);
@@ -264,12 +268,7 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
       }
     } else {
       for (detail::DampedMode& found : detail::dampedModes(M, D, K)) {
-        TrainMode mode;
-        mode.eigenvalue = found.eigenvalue;
-        mode.frequency = found.eigenvalue.imag() / kTwoPi;
-        mode.damping_ratio = -found.eigenvalue.real() / std::abs(found.eigenvalue);
-        mode.shape = std::move(found.shape);
-        modes.push_back(std::move(mode));
+        modes.push_back(fromDamped(std::move(found)));
       }
     }
   }
@@ -279,7 +278,11 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
   // the low ones: 1e-6 of the stiffest uncoupled DOF's frequency instead).
   const double highest = std::max(sparse_highest, modes.empty() ? 0.0 : modes.back().frequency);
   const double rigid = rigidThreshold(options, highest);
+  // Divergent modes first (frequency 0), then the oscillating ones.
+  std::stable_partition(modes.begin(), modes.end(),
+                        [](const TrainMode& mode) { return mode.divergent; });
   std::vector<TrainMode> kept;
+  int divergent = 0;
   for (TrainMode& mode : modes) {
     if (mode.damping_ratio > options.max_damping_ratio) continue;
     const bool is_rigid = std::abs(mode.eigenvalue) / kTwoPi < rigid;
@@ -288,12 +291,16 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
       // only the symmetric path reports them, deterministically.
       if (!options.keep_rigid || !undamped) continue;
       mode.frequency = 0.0;
+      mode.damping_ratio = 0.0;
+      mode.divergent = false;  // a rigid-body mode whose w² round-off made negative
     }
+    divergent += mode.divergent;
     kept.push_back(std::move(mode));
   }
   for (std::size_t i = 0; i < kept.size(); ++i) {
     int count = 0;
     for (const TrainMode& other : kept) {
+      if (other.divergent != kept[i].divergent) continue;
       if (std::abs(other.frequency - kept[i].frequency) <=
           1e-6 * std::max(kept[i].frequency, rigid)) {
         ++count;
@@ -301,8 +308,8 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
     }
     kept[i].multiplicity = count;
   }
-  if (options.modes > 0 && static_cast<int>(kept.size()) > options.modes) {
-    kept.resize(options.modes);
+  if (options.modes > 0 && static_cast<int>(kept.size()) > divergent + options.modes) {
+    kept.resize(divergent + options.modes);
   }
   for (TrainMode& mode : kept) describe(model, mode, sparse ? &sparse->M : nullptr);
   return kept;
@@ -386,8 +393,18 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
       });
   if (failure) std::rethrow_exception(failure);
   if (progress) progress(static_cast<double>(speeds.size()), static_cast<double>(speeds.size()));
+  d.divergence_rate.assign(speeds.size(), 0.0);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     std::vector<TrainMode> found = std::move(solved[i]);
+    // Divergent modes (frequency 0, no oscillation) are reported per speed, not tracked.
+    for (const TrainMode& mode : found) {
+      if (mode.divergent) {
+        d.divergence_rate[i] = std::max(d.divergence_rate[i], mode.eigenvalue.real());
+      }
+    }
+    found.erase(std::remove_if(found.begin(), found.end(),
+                               [](const TrainMode& mode) { return mode.divergent; }),
+                found.end());
     if (i == 0) {
       if (static_cast<int>(found.size()) > wanted) found.resize(wanted);
       d.modes.push_back(std::move(found));

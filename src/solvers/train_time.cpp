@@ -63,14 +63,16 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
     Msp_ = model.mass().sparseView(1.0, 1e-14 * model.mass().cwiseAbs().maxCoeff());
     Cgsp_ = Cg_.sparseView(1.0, 1e-14 * std::max(Cg_.cwiseAbs().maxCoeff(), 1e-300));
     const Eigen::SparseMatrix<double> Asp = A.sparseView(1.0, 1e-14 * A.cwiseAbs().maxCoeff());
-    slu_.analyzePattern(Asp);
-    slu_.factorize(Asp);
-    if (slu_.info() != Eigen::Success) {
-      throw InputError(
-          "gearbox", "",
-          "a train whose Newmark matrix can be factorised: " + slu_.lastErrorMessage());
+    if (!slu_.factorize(Asp)) {
+      throw InputError("gearbox", "",
+                       "a train whose Newmark matrix can be factorised: " + slu_.message());
     }
-    Z_ = slu_.solve(V_);
+    Z_.resize(n, r);
+    Eigen::VectorXd column(n);
+    for (int m = 0; m < r; ++m) {
+      slu_.solve(V_.col(m), column);
+      Z_.col(m) = column;
+    }
   } else {
     lu_.compute(A);
     Z_ = lu_.solve(V_);
@@ -79,7 +81,7 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
   small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
   small_matrix_ = Eigen::MatrixXd::Zero(r, r);
   q_ = v_ = a_ = f_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
-  w_ = dk_ = ke_ = k_ = Eigen::VectorXd::Zero(r);
+  w_ = w_solved_ = dk_ = ke_ = k_ = Eigen::VectorXd::Zero(r);
 }
 
 void TrainNewmarkStepper::meshState(double t) {
@@ -120,7 +122,7 @@ void TrainNewmarkStepper::step() {
   y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
   if (sparse_) {
     rhs_.noalias() += Cgsp_ * y_;
-    y_ = slu_.solve(rhs_);
+    slu_.solve(rhs_, y_);
   } else {
     rhs_.noalias() += Cg_ * y_;
     y_ = lu_.solve(rhs_);
@@ -132,8 +134,9 @@ void TrainNewmarkStepper::step() {
     small_matrix_.noalias() = dk_.asDiagonal() * S_;
     small_matrix_.diagonal().array() += 1.0;
     small_.compute(small_matrix_);
-    w_ = small_.solve(w_);
-    y_.noalias() -= Z_ * w_;
+    // Into another vector: solving in place would permute w_ in place, which allocates a mask.
+    w_solved_ = small_.solve(w_);
+    y_.noalias() -= Z_ * w_solved_;
   }
   // y_ is q_{n+1}.
   rhs_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * a_;  // a_{n+1}

@@ -472,14 +472,34 @@ void GearTrainModel::assemble() {
       G_(y + 4, y + 5) += body.speed_ratio * body.polar_inertia;
       G_(y + 5, y + 4) -= body.speed_ratio * body.polar_inertia;
     }
-    if (rotatingFrame(static_cast<int>(b)) >= 0) {
+    const int frame = rotatingFrame(static_cast<int>(b));
+    if (frame >= 0) {
       // Carrier frame turning at Ω_c = r_c Ω: m(ü + 2Ω_c J u̇ − Ω_c² u), J = [[0, −1], [1, 0]]
       // (Lin & Parker 1999 eq. 1; Ω_c about +x, (y, z) the carrier's axes).
-      const double rc = detail::carrierSpeedRatio(*this, spec_, rotatingFrame(static_cast<int>(b)));
+      const double rc = detail::carrierSpeedRatio(*this, spec_, frame);
       G_(y, y + 1) -= 2.0 * body.mass * rc;
       G_(y + 1, y) += 2.0 * body.mass * rc;
-      Komega_(y, y) -= body.mass * rc * rc;
-      Komega_(y + 1, y + 1) -= body.mass * rc * rc;
+      if (body.kind != TrainBodyKind::kPlanet) {
+        Komega_(y, y) -= body.mass * rc * rc;
+        Komega_(y + 1, y + 1) -= body.mass * rc * rc;
+      } else {
+        // A planet's centrifugal load m Ω_c² R is carried by its pin and turns with the carrier,
+        // so the centripetal term acts on u_p − θ_c (J R): the planet's translation less the part
+        // the carrier's rotation θ_c gives its centre R. With Lin & Parker's −m Ω_c² u_p the
+        // stage's rolling motion (no mesh or pin deflects: u_p = θ_c J R) gets the stiffness
+        // −Σ m_p Ω_c² R² and diverges at speed; this form keeps it neutral at every speed, as the
+        // exact rotating system is, and differs from the expansion about the centrifugally
+        // loaded equilibrium by O(m_p Ω_c² / k_pin) (docs/theory/gear_trains.md).
+        const int carrier = detail::carrierBody(*this, frame);
+        const Eigen::Vector2d r = body.centre - bodies_[carrier].centre;
+        const int idx[3] = {y, y + 1, rotationDof(carrier)};
+        const Eigen::Matrix<double, 2, 3> jp =
+            (Eigen::Matrix<double, 2, 3>() << 1.0, 0.0, r.y(), 0.0, 1.0, -r.x()).finished();
+        const Eigen::Matrix3d k = -body.mass * rc * rc * (jp.transpose() * jp);
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) Komega_(idx[i], idx[j]) += k(i, j);
+        }
+      }
     }
   }
   assembleBeams();

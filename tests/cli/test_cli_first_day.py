@@ -396,7 +396,7 @@ UNIT_SUFFIX = re.compile(
 # statistics (k = K/K̄, e_f = E/x₀: a, m1_k, d_k, r_ke, ...), indices.
 DIMENSIONLESS = re.compile(
     r"^(.*ratio.*|.*fraction.*|.*relative.*|.*factor.*|share_pair_\d+|order|mode|case|count|"
-    r"teeth|teeth_[ab]|undercut|steady|stable|branch|newton_iterations|contact_loss|multiplicity|strain_.*|"
+    r"teeth|teeth_[ab]|undercut|steady|stable|divergent|branch|newton_iterations|contact_loss|multiplicity|strain_.*|"
     r"point|solution|step_cuts|critical_multiplier_abs|contact_loss_.*|back_flank_.*|"
     r"sample|seed|harmonic|identifiable|a|m1_k|m1_ef|d_k|d_e|r_ke|delta_m1_ef|variable_term_v|"
     r"dynamic_mean_excitation)$")

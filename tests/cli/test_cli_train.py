@@ -129,3 +129,31 @@ def test_a_train_too_fine_for_memory_is_refused_before_it_allocates(tmp_path):
     assert "shafts.input.max_element_length = 1e-06 m" in result.stderr, result.stderr
     assert "DOFs need" in result.stderr and "GEARDYN_MEMORY_LIMIT" in result.stderr
     assert not (tmp_path / "summary.json").exists()
+
+
+def test_a_divergent_mode_is_reported_not_dropped(tmp_path):
+    # Planets on soft radial pins in a carrier turning at 7500 rpm: the anisotropic support in
+    # the turning frame diverges (docs/theory/gear_trains.md). Before, the negative stiffness was
+    # clipped to a rigid-body mode and the modal table silently had one mode less.
+    result = run("train", LIN_PARKER, "--out", tmp_path, *quick(
+        "--set", "planetary.stage.pin_radial_stiffness=1e5",
+        "--set", "planetary.stage.sun_planet.stiffness_value=1e7",
+        "--set", "planetary.stage.ring_planet.stiffness_value=1e7",
+        "--set", "operating_point.speed_rpm=30000",
+        "--set", 'analysis.run=["modal", "campbell"]',
+        "--set", "campbell.speed_min_rpm=20000", "--set", "campbell.speed_max_rpm=40000",
+        "--set", "campbell.points=6"))
+    assert result.returncode == 0, result.stderr
+    assert "1 divergent mode(s), growth rate up to 144.7 1/s" in result.stderr
+    assert "divergent modes (statically unstable train) between 28000.0 and 40000.0 rpm" in \
+        result.stderr
+    first = rows(tmp_path / "modes.csv")[0]
+    assert first["divergent"] == "1"
+    assert float(first["frequency_hz"]) == 0.0 and float(first["damping_ratio"]) == -1.0
+    assert abs(float(first["growth_rate_1_per_s"]) - 144.69) < 0.01
+    rates = [float(r["divergence_rate_1_per_s"]) for r in rows(tmp_path / "campbell.csv")]
+    assert rates[:2] == [0.0, 0.0] and all(r > 0 for r in rates[2:])
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["results"]["campbell"]["divergence"]["from_rpm"] == 28000.0
+    assert summary["results"]["modal"]["modes"][0]["divergent"] is True
+    assert any("divergent" in w for w in summary["warnings"])

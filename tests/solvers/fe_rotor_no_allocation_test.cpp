@@ -1,48 +1,23 @@
 // The Newmark step of the FE geared rotor allocates nothing (issue #8: "no allocation in the
-// loop"). This executable interposes malloc to count the calls made while stepping; it is a
-// separate test binary so that no other test runs with the counting allocator.
+// loop"), counted by the interposed malloc of support/counting_malloc.h.
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <vector>
 
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
+#include "support/counting_malloc.h"
 #include "support/fe_rotor_cases.h"
-
-extern "C" void* __libc_malloc(std::size_t size);
-extern "C" void* __libc_calloc(std::size_t count, std::size_t size);
-extern "C" void* __libc_realloc(void* pointer, std::size_t size);
-
-namespace {
-bool counting = false;
-long allocations = 0;
-}  // namespace
-
-extern "C" void* malloc(std::size_t size) {
-  if (counting) ++allocations;
-  return __libc_malloc(size);
-}
-extern "C" void* calloc(std::size_t count, std::size_t size) {
-  if (counting) ++allocations;
-  return __libc_calloc(count, size);
-}
-extern "C" void* realloc(void* pointer, std::size_t size) {
-  if (counting) ++allocations;
-  return __libc_realloc(pointer, size);
-}
 
 namespace geardyn {
 namespace {
 
 TEST(FeRotorNewmarkAllocation, TheCounterSeesAllocations) {
-  allocations = 0;
-  counting = true;
+  testing::AllocationCounter counter;
   Eigen::VectorXd v(1000);      // Eigen's heap storage goes through malloc
   std::vector<double> w(1000);  // and so does operator new
-  counting = false;
-  EXPECT_GE(allocations, 2);
+  EXPECT_GE(counter.count(), 2);
   EXPECT_EQ(v.size() + w.size(), 2000u);
 }
 
@@ -61,11 +36,9 @@ TEST(FeRotorNewmarkAllocation, StepsAllocateNothingAtConstantSpeedOrAlongARunUp)
     stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
                   Eigen::VectorXd::Zero(model.dofCount()));
     stepper.step();  // warm-up
-    allocations = 0;
-    counting = true;
+    testing::AllocationCounter counter;
     for (int s = 0; s < 1000; ++s) stepper.step();  // 10 ms: the whole ramp when end > start
-    counting = false;
-    EXPECT_EQ(allocations, 0) << "end speed " << end << " rpm";
+    EXPECT_EQ(counter.count(), 0) << "end speed " << end << " rpm";
     if (end != 500.0) {
       EXPECT_GT(stepper.factorisations(), 50);  // refactorising is allocation-free too
     }

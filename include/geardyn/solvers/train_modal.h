@@ -32,6 +32,9 @@ struct TrainMode {
   /// 1999 §3), judged from the central members' kinetic energy; "" for trains without stages.
   std::vector<std::string> stage_type;
   int multiplicity = 1;  ///< modes within 1e-6 relative of this frequency (itself included)
+  /// A static divergence: λ real and > 0 (growth rate [1/s]), frequency 0, damping ratio −1.
+  /// Listed before the oscillating modes and not counted in TrainModalOptions::modes.
+  bool divergent = false;
 };
 
 struct TrainModalOptions {
@@ -78,6 +81,8 @@ struct TrainCampbell {
   std::vector<std::vector<TrainMode>> modes;  ///< modes[i][j]: tracked mode j at speed i
   std::vector<TrainOrderLine> lines;
   std::vector<TrainCriticalSpeed> critical_speeds;  ///< ascending in speed
+  /// Per speed, the largest growth rate λ of a divergent mode (not tracked) [1/s]; 0: none.
+  std::vector<double> divergence_rate;
 };
 
 /// Modes over ascending speeds, tracked by the MAC of neighbouring speeds' shapes. `progress`

@@ -11,10 +11,10 @@
 /// factorised once; the r meshes vary it by V D(t) Vᵀ with D = diag(k_m(t) − k̄_m), which the
 /// Woodbury identity solves with the precomputed Z = A⁻¹ V and one r × r system per step:
 ///   x = y − Z (I + D Vᵀ Z)⁻¹ D Vᵀ y,   y = A⁻¹ b.
-/// A step is one back-substitution, a few matrix–vector products and an r × r LU. Small
-/// trains use dense matrices and allocate nothing per step; from kSparseTrainDofs DOFs on
-/// (flexible shafts) M, C + ΩG₁ and A are sparse and A is factorised by Eigen's SparseLU,
-/// whose back-substitution allocates its n-vector workspace once per step.
+/// A step is one back-substitution, a few matrix–vector products and an r × r LU, and allocates
+/// nothing: small trains use dense matrices; from kSparseTrainDofs DOFs on (flexible shafts)
+/// M, C + ΩG₁ and A are sparse and A is factorised by Eigen's SparseLU, whose factors are
+/// solved with in a preallocated vector (detail::SparseLuFactors).
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/solvers/detail/sparse_lu_factors.h"
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/system/gear_train_model.h"
 
@@ -74,8 +75,8 @@ class TrainNewmarkStepper {
   Eigen::MatrixXd Cg_, K0_, V_, Z_, S_, small_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
   Eigen::SparseMatrix<double> Msp_, Cgsp_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> slu_;
-  Eigen::VectorXd q_, v_, a_, f_, rhs_, y_, w_, dk_, ke_, k_;
+  detail::SparseLuFactors slu_;
+  Eigen::VectorXd q_, v_, a_, f_, rhs_, y_, w_, w_solved_, dk_, ke_, k_;
 };
 
 TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,

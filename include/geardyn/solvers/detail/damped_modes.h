@@ -15,8 +15,9 @@
 namespace geardyn::detail {
 
 struct DampedMode {
-  std::complex<double> eigenvalue;  ///< λ, Im λ > 0 (one of each conjugate pair)
-  Eigen::VectorXcd shape;           ///< displacement part, largest entry 1
+  /// λ [1/s]: Im λ > 0 (one of each conjugate pair), or real and > 0 (a divergence).
+  std::complex<double> eigenvalue;
+  Eigen::VectorXcd shape;  ///< displacement part, largest entry 1
 };
 
 /// Scales a shape so that its largest entry is 1.
@@ -26,7 +27,14 @@ inline void normalizeToLargest(Eigen::VectorXcd& shape) {
   shape /= shape(largest);
 }
 
-/// Every eigenvalue with Im λ > 0 (overdamped real pairs are dropped), in solver order.
+/// A real eigenvalue λ > 0: a static divergence (a negative stiffness that neither damping nor
+/// gyroscopic coupling holds), growing as e^{λt} without oscillating.
+inline bool isDivergent(std::complex<double> lambda) {
+  return lambda.imag() == 0.0 && lambda.real() > 0.0;
+}
+
+/// Every eigenvalue with Im λ > 0, and every divergent one (real, > 0; K may be indefinite);
+/// overdamped real eigenvalues (< 0) are dropped. In solver order.
 /// Throws std::runtime_error when the eigenvalue solver fails.
 std::vector<DampedMode> dampedModes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& D,
                                     const Eigen::MatrixXd& K);

@@ -1,0 +1,71 @@
+// The Newmark step of a gear train allocates nothing, on the dense path (lumped trains) and on
+// the sparse one (FE gearboxes: detail::SparseLuFactors instead of SparseLU's solve, whose
+// supernodal sweep allocates an n-vector per call), counted by the interposed malloc of
+// support/counting_malloc.h.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Sparse>
+#include <memory>
+#include <vector>
+
+#include "geardyn/solvers/detail/sparse_lu_factors.h"
+#include "geardyn/solvers/train_time.h"
+#include "geardyn/stiffness/fourier_stiffness.h"
+#include "support/counting_malloc.h"
+#include "system/sample_trains.h"
+
+namespace geardyn {
+namespace {
+
+std::shared_ptr<const MeshStiffness> varying(double mean) {
+  return std::make_shared<FourierMeshStiffness>(mean, std::vector<double>{0.12, 0.05},
+                                                std::vector<double>{0.0, 0.3}, 1.6);
+}
+
+long allocationsOverSteps(const GearTrainModel& model, bool sparse) {
+  TrainNewmarkStepper stepper(model, model.inputSpeed(), 1e-5,
+                              NewmarkParameters::averageAcceleration(), sparse);
+  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                Eigen::VectorXd::Zero(model.dofCount()));
+  stepper.step();  // warm-up
+  testing::AllocationCounter counter;
+  for (int s = 0; s < 500; ++s) stepper.step();
+  const long count = counter.count();
+  EXPECT_TRUE(std::isfinite(stepper.displacement().norm()));
+  return count;
+}
+
+TEST(TrainNewmarkAllocation, DenseStepsAllocateNothing) {
+  const GearTrainModel model(testing::twoStageReducer(varying(4e8), varying(6e8)));
+  EXPECT_EQ(allocationsOverSteps(model, false), 0);
+}
+
+TEST(TrainNewmarkAllocation, SparseStepsAllocateNothing) {
+  // 4 helical stages on 5 flexible shafts, six DOFs per node, every mesh varying.
+  const GearTrainModel model(testing::flexibleChain(4, 0.03, varying(4e8)));
+  ASSERT_GE(model.dofCount(), kSparseTrainDofs);
+  EXPECT_EQ(allocationsOverSteps(model, true), 0);
+}
+
+TEST(SparseLuFactorsAllocation, SolvesAllocateNothing) {
+  Eigen::SparseMatrix<double> A(50, 50);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < 50; ++i) {
+    t.emplace_back(i, i, 4.0 + i);
+    t.emplace_back(i, (i + 7) % 50, 1.0);
+    t.emplace_back((i + 3) % 50, i, -0.5);
+  }
+  A.setFromTriplets(t.begin(), t.end());
+  detail::SparseLuFactors lu;
+  ASSERT_TRUE(lu.factorize(A));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(50, -1.0, 1.0);
+  Eigen::VectorXd x(50);
+  testing::AllocationCounter counter;
+  for (int k = 0; k < 10; ++k) lu.solve(b, x);
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_LT((A * x - b).norm(), 1e-13 * b.norm());
+}
+
+}  // namespace
+}  // namespace geardyn
