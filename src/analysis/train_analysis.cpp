@@ -141,14 +141,10 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
   Json list = Json::array();
   for (std::size_t j = 0; j < modes.size(); ++j) {
     const TrainMode& m = modes[j];
-    std::vector<io::CsvCell> row{std::to_string(j + 1),
-                                 m.frequency,
-                                 m.damping_ratio,
-                                 static_cast<long long>(m.divergent),
-                                 std::max(m.eigenvalue.real(), 0.0),
-                                 std::to_string(m.multiplicity),
-                                 stageTypes(m),
-                                 m.translational_fraction};
+    std::vector<io::CsvCell> row{std::to_string(j + 1), m.frequency,
+                                 m.damping_ratio,       static_cast<long long>(m.divergent),
+                                 m.growthRate(),        std::to_string(m.multiplicity),
+                                 stageTypes(m),         m.translational_fraction};
     for (double e : m.mesh_strain_energy) row.push_back(e);
     for (double e : m.element_strain_energy) row.push_back(e);
     table.addRow(row);
@@ -159,7 +155,7 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
     list.push_back({{"frequency_Hz", m.frequency},
                     {"damping_ratio", m.damping_ratio},
                     {"divergent", m.divergent},
-                    {"growth_rate_1_per_s", std::max(m.eigenvalue.real(), 0.0)},
+                    {"growth_rate_1_per_s", m.growthRate()},
                     {"multiplicity", m.multiplicity},
                     {"stage_type", m.stage_type}});
   }

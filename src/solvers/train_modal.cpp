@@ -28,7 +28,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 /// Energy fractions and the planetary mode type (Lin & Parker 1999: rotational modes move the
 /// central members without translating them, translational modes without rotating them,
-/// planet modes not at all).
+/// planet modes not at all). With six DOFs per body, modes of the stage's axial and tilting
+/// motion alone are "out_of_plane", and modes with both kinds of motion "mixed".
 void describe(const GearTrainModel& model, TrainMode& mode,
               const Eigen::SparseMatrix<double>* sparse_mass) {
   // Kinetic energy per DOF, Re(x̄_i (M x)_i) (M is not diagonal with beam elements); a body's
@@ -39,12 +40,15 @@ void describe(const GearTrainModel& model, TrainMode& mode,
   const Eigen::VectorXd kinetic = (mode.shape.conjugate().array() * Mx.array()).real();
   const int per = model.dofsPerBody();
   const auto& bodies = model.bodies();
+  // With six DOFs (y, z, θ_x, x, θ_y, θ_z) the axial and tilting part is also kept apart.
   std::vector<double> rot(bodies.size(), 0.0), trans(bodies.size(), 0.0);
+  std::vector<double> out_of_plane(bodies.size(), 0.0);
   double total = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const int r = model.rotationDof(static_cast<int>(b));
     for (int d = bodies[b].first_dof; d < bodies[b].first_dof + per; ++d) {
       (d == r ? rot[b] : trans[b]) += kinetic(d);
+      if (per == 6 && d - bodies[b].first_dof >= 3) out_of_plane[b] += kinetic(d);
     }
     total += rot[b] + trans[b];
   }
@@ -84,24 +88,34 @@ void describe(const GearTrainModel& model, TrainMode& mode,
   for (std::size_t s = 0; s < spec.stages.size(); ++s) {
     const auto& st = spec.stages[s];
     const std::string key = "planetary." + st.name;
-    double central_rot = 0.0, central_trans = 0.0;
+    // In-plane translation (Lin & Parker's) and the out-of-plane part, of the whole stage.
+    double central_rot = 0.0, central_trans = 0.0, stage_out = 0.0, stage_in = 0.0;
     for (const std::string& name :
          {st.carrier, spec.gears[detail::gearIndexOf(spec, st.sun, key)].shaft,
           spec.gears[detail::gearIndexOf(spec, st.ring, key)].shaft}) {
       const int b = model.bodyIndex(name);
       central_rot += rot[b] / total;
-      central_trans += trans[b] / total;
+      central_trans += (trans[b] - out_of_plane[b]) / total;
+      stage_out += out_of_plane[b] / total;
+      stage_in += (rot[b] + trans[b] - out_of_plane[b]) / total;
     }
     // Thresholds: the exact structure gives round-off (~1e-20 of the energy); 1e-8 leaves
     // room for the near-degenerate mixing of a solver without being fooled by real coupling.
     constexpr double kZero = 1e-8;
     double planets = 0.0;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (bodies[b].kind == TrainBodyKind::kPlanet && bodies[b].stage == static_cast<int>(s))
+      if (bodies[b].kind == TrainBodyKind::kPlanet && bodies[b].stage == static_cast<int>(s)) {
         planets += (rot[b] + trans[b]) / total;
+        stage_out += out_of_plane[b] / total;
+        stage_in += (rot[b] + trans[b] - out_of_plane[b]) / total;
+      }
     }
-    if (central_rot + central_trans + planets < kZero) {
+    if (stage_in + stage_out < kZero) {
       mode.stage_type.push_back("outside");  // a mode of the rest of the train
+    } else if (stage_in < kZero) {
+      mode.stage_type.push_back("out_of_plane");  // axial and tilting motion only (full DOFs)
+    } else if (stage_out >= kZero) {
+      mode.stage_type.push_back("mixed");  // in and out of plane (helical, or offset members)
     } else if (central_rot + central_trans < kZero) {
       mode.stage_type.push_back("planet");
     } else if (per == 1 || central_trans < kZero) {

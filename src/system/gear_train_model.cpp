@@ -101,12 +101,6 @@ bool GearTrainModel::hasNonlinearMeshes() const {
 
 GearTrainModel::GearTrainModel(GearTrainSpec spec, double memory_limit)
     : spec_(std::move(spec)), memory_limit_(memory_limit) {
-  if (spec_.dofs == TrainDofs::kFull && !spec_.stages.empty()) {
-    throw InputError("planetary." + spec_.stages[0].name, "",
-                     "gearbox.dofs = \"torsional\" or \"planar\": planetary stages are "
-                     "formulated in the transverse plane (Lin & Parker 1999); six DOFs per body "
-                     "are for parallel-axis trains");
-  }
   buildBodies();
   buildMeshes();
   buildElements();
@@ -241,6 +235,21 @@ void GearTrainModel::buildBodies() {
     requireNonNegative(st.planet_mass, key + ".planet_mass", "kg");
     requireNonNegative(st.planet_inertia, key + ".planet_inertia", "kg m^2");
     const GearBodyMass planet_body = gearBodyMass(st.planet);
+    // Full DOFs: the planets turn in the sun gear's mid-face plane; the lumped part is a disk
+    // of the face width b unless its diametral inertia is given.
+    double axial = 0.0, diametral = 0.0;
+    if (full) {
+      const int sun = detail::gearIndexOf(spec_, st.sun, key + ".sun");
+      const TrainGearSpec& g = spec_.gears[sun];
+      axial = spec_.shafts[detail::shaftIndexOf(spec_, g.shaft, "gears." + g.name + ".shaft")]
+                  .axial_offset +
+              g.position;
+      const double b = st.planet.face_width;
+      diametral = st.planet_diametral_inertia >= 0.0
+                      ? st.planet_diametral_inertia
+                      : 0.5 * st.planet_inertia + st.planet_mass * b * b / 12.0;
+      if (st.planet_body) diametral += planet_body.diametral_inertia;
+    }
     for (int n = 0; n < st.planets; ++n) {
       TrainBody body;
       body.name = fmt::format("{}.planet{}", st.name, n + 1);
@@ -249,7 +258,16 @@ void GearTrainModel::buildBodies() {
       body.planet = n;
       body.mass = st.planet_mass + (st.planet_body ? planet_body.mass : 0.0);
       body.polar_inertia = st.planet_inertia + (st.planet_body ? planet_body.polar_inertia : 0.0);
+      body.axial = axial;
+      body.diametral_inertia = diametral;
       bodies_.push_back(body);
+    }
+    if (full && st.carrier_frame_terms) {
+      warnings_.push_back(fmt::format(
+          "{}: with gearbox.dofs = \"full\" the stage is the fixed-frame lumped model (planets "
+          "held at their positions); the carrier-frame Coriolis and centripetal terms are "
+          "formulated for planar DOFs (set carrier_frame_terms = false to silence this)",
+          key));
     }
   }
   const int per = dofsPerBody();
@@ -271,9 +289,13 @@ void GearTrainModel::buildBodies() {
                        "0 kg", "planar and full DOFs need a mass > 0 on every body");
     }
     if (spec_.dofs == TrainDofs::kFull && !(bodies_[b].diametral_inertia > 0.0)) {
-      throw InputError("shafts." + bodies_[b].name + ".diametral_inertia", "0 kg m^2",
-                       "full DOFs need a diametral inertia > 0 on every rigid shaft (its own, "
-                       "its sections', gears' or disks')");
+      throw InputError(
+          bodies_[b].kind == TrainBodyKind::kPlanet
+              ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_diametral_inertia"
+              : "shafts." + bodies_[b].name + ".diametral_inertia",
+          "0 kg m^2",
+          "full DOFs need a diametral inertia > 0 on every rigid shaft (its own, "
+          "its sections', gears' or disks')");
     }
   }
   checkDenseFits(static_cast<double>(bodies_.size()) * per, "gearbox.dofs", toString(spec_.dofs));
@@ -422,8 +444,9 @@ void GearTrainModel::buildElements() {
     }
   }
   // Planet pins: the planet centre against the carrier's point at the planet's position,
-  // radial and tangential springs (Lin & Parker 1999: k_p both ways).
-  if (planar) {
+  // radial and tangential springs (Lin & Parker 1999: k_p both ways); with full DOFs also an
+  // axial and two tilting springs, the carrier's point in the planet's plane.
+  if (lateral) {
     for (std::size_t p = 0; p < bodies_.size(); ++p) {
       const TrainBody& planet = bodies_[p];
       if (planet.kind != TrainBodyKind::kPlanet) continue;
@@ -435,17 +458,35 @@ void GearTrainModel::buildElements() {
       if (!(st.pin_radial_stiffness > 0.0 && st.pin_tangential_stiffness > 0.0)) {
         throw InputError(key + ".pin_radial_stiffness",
                          fmt::format("{:g} N/m", st.pin_radial_stiffness),
-                         "pin stiffnesses > 0 radially and tangentially with planar DOFs");
+                         "pin stiffnesses > 0 radially and tangentially with planar or full "
+                         "DOFs");
       }
       const int carrier = detail::carrierBody(*this, planet.stage);
       const Eigen::Vector2d r = planet.centre - bodies_[carrier].centre;
       const Eigen::Vector2d er = r.normalized(), et(-er.y(), er.x());
       const Eigen::Matrix2d k = st.pin_radial_stiffness * er * er.transpose() +
                                 st.pin_tangential_stiffness * et * et.transpose();
+      const double dx = planet.axial - bodies_[carrier].axial;  // 0 unless full DOFs
       add(planet.name + ".pin", "pin",
           {detail::translationJacobian(*this, static_cast<int>(p), 1.0),
-           detail::pointJacobian(*this, carrier, planet.centre, -1.0)},
+           detail::pointJacobian(*this, carrier, planet.centre, -1.0, dx)},
           k, st.pin_damping * Eigen::Matrix2d::Identity());
+      if (!full) continue;
+      const double mean = 0.5 * (st.pin_radial_stiffness + st.pin_tangential_stiffness);
+      const double b = st.planet.face_width;
+      const double k_axial = st.pin_axial_stiffness >= 0.0 ? st.pin_axial_stiffness : mean;
+      const double k_tilt =
+          st.pin_tilt_stiffness >= 0.0 ? st.pin_tilt_stiffness : mean * b * b / 12.0;
+      requireNonNegative(k_axial, key + ".pin_axial_stiffness", "N/m");
+      requireNonNegative(k_tilt, key + ".pin_tilt_stiffness", "N m/rad");
+      // Axial: u_x,p − (u_x,c + θ_y,c r_z − θ_z,c r_y), the carrier's point at (dx, r_y, r_z).
+      const int pd = planet.first_dof, cd = bodies_[carrier].first_dof;
+      add_torsion(planet.name + ".pin_axial", "pin", {pd + 3, cd + 3, cd + 4, cd + 5},
+                  {1.0, -1.0, -r.y(), r.x()}, k_axial, st.pin_damping);
+      add_torsion(planet.name + ".pin_tilt_y", "pin", {pd + 4, cd + 4}, {1.0, -1.0}, k_tilt,
+                  st.pin_damping * b * b / 12.0);
+      add_torsion(planet.name + ".pin_tilt_z", "pin", {pd + 5, cd + 5}, {1.0, -1.0}, k_tilt,
+                  st.pin_damping * b * b / 12.0);
     }
   }
 }
@@ -483,22 +524,7 @@ void GearTrainModel::assemble() {
         Komega_(y, y) -= body.mass * rc * rc;
         Komega_(y + 1, y + 1) -= body.mass * rc * rc;
       } else {
-        // A planet's centrifugal load m Ω_c² R is carried by its pin and turns with the carrier,
-        // so the centripetal term acts on u_p − θ_c (J R): the planet's translation less the part
-        // the carrier's rotation θ_c gives its centre R. With Lin & Parker's −m Ω_c² u_p the
-        // stage's rolling motion (no mesh or pin deflects: u_p = θ_c J R) gets the stiffness
-        // −Σ m_p Ω_c² R² and diverges at speed; this form keeps it neutral at every speed, as the
-        // exact rotating system is, and differs from the expansion about the centrifugally
-        // loaded equilibrium by O(m_p Ω_c² / k_pin) (docs/theory/gear_trains.md).
-        const int carrier = detail::carrierBody(*this, frame);
-        const Eigen::Vector2d r = body.centre - bodies_[carrier].centre;
-        const int idx[3] = {y, y + 1, rotationDof(carrier)};
-        const Eigen::Matrix<double, 2, 3> jp =
-            (Eigen::Matrix<double, 2, 3>() << 1.0, 0.0, r.y(), 0.0, 1.0, -r.x()).finished();
-        const Eigen::Matrix3d k = -body.mass * rc * rc * (jp.transpose() * jp);
-        for (int i = 0; i < 3; ++i) {
-          for (int j = 0; j < 3; ++j) Komega_(idx[i], idx[j]) += k(i, j);
-        }
+        detail::addPlanetCentripetal(*this, static_cast<int>(b), rc, Komega_);
       }
     }
   }

@@ -190,8 +190,8 @@ void applyOperatingLoads(const GearTrainModel& model, const GearTrainSpec& spec,
       throw InputError(key, fmt::format("{} values", st.pin_position_errors.size()),
                        fmt::format("one error per planet ({})", st.planets));
     }
-    if (spec.dofs != TrainDofs::kPlanar) {
-      throw InputError(key, "", "planar DOFs (pins are rigid in the torsional model)");
+    if (spec.dofs == TrainDofs::kTorsional) {
+      throw InputError(key, "", "planar or full DOFs (pins are rigid in the torsional model)");
     }
     const int carrier = carrierBody(model, static_cast<int>(s));
     for (std::size_t b = 0; b < model.bodies().size(); ++b) {
@@ -205,12 +205,28 @@ void applyOperatingLoads(const GearTrainModel& model, const GearTrainSpec& spec,
                                 st.pin_tangential_stiffness * et * et.transpose();
       std::vector<int> dofs;
       Eigen::MatrixXd J;
+      const double dx = planet.axial - model.bodies()[carrier].axial;  // 0 unless full DOFs
       stackJacobians({translationJacobian(model, static_cast<int>(b), 1.0),
-                      pointJacobian(model, carrier, planet.centre, -1.0)},
+                      pointJacobian(model, carrier, planet.centre, -1.0, dx)},
                      dofs, J);
       const Eigen::VectorXd f = J.transpose() * (k * (e * et));
       for (std::size_t i = 0; i < dofs.size(); ++i) F0(dofs[i]) += f(static_cast<Eigen::Index>(i));
     }
+  }
+}
+
+void addPlanetCentripetal(const GearTrainModel& model, int planet, double rc,
+                          Eigen::MatrixXd& Komega) {
+  const TrainBody& body = model.bodies()[planet];
+  const int carrier = carrierBody(model, body.stage);
+  const Eigen::Vector2d r = body.centre - model.bodies()[carrier].centre;
+  const int idx[3] = {body.first_dof, body.first_dof + 1, model.rotationDof(carrier)};
+  // J_p over (u_y, u_z, θ_c): u_p − θ_c (−r_z, r_y).
+  const Eigen::Matrix<double, 2, 3> jp =
+      (Eigen::Matrix<double, 2, 3>() << 1.0, 0.0, r.y(), 0.0, 1.0, -r.x()).finished();
+  const Eigen::Matrix3d k = -body.mass * rc * rc * (jp.transpose() * jp);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) Komega(idx[i], idx[j]) += k(i, j);
   }
 }
 

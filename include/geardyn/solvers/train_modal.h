@@ -29,12 +29,17 @@ struct TrainMode {
   std::vector<double> element_strain_energy;  ///< fraction per element [-]
   double translational_fraction = 0.0;        ///< kinetic energy in translations [-]
   /// Per planetary stage: "rotational", "translational", "planet" or "mixed" (Lin & Parker
-  /// 1999 §3), judged from the central members' kinetic energy; "" for trains without stages.
+  /// 1999 §3), judged from the central members' kinetic energy; with full DOFs also
+  /// "out_of_plane" (axial and tilting motion only); "outside" for modes not in the stage.
   std::vector<std::string> stage_type;
   int multiplicity = 1;  ///< modes within 1e-6 relative of this frequency (itself included)
   /// A static divergence: λ real and > 0 (growth rate [1/s]), frequency 0, damping ratio −1.
   /// Listed before the oscillating modes and not counted in TrainModalOptions::modes.
   bool divergent = false;
+  /// Re λ when the mode grows (flutter or divergence) beyond round-off (1e-9 |λ|), else 0 [1/s].
+  double growthRate() const {
+    return eigenvalue.real() > 1e-9 * std::abs(eigenvalue) ? eigenvalue.real() : 0.0;
+  }
 };
 
 struct TrainModalOptions {

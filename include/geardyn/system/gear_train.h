@@ -149,6 +149,13 @@ struct PlanetaryStageSpec {
   bool planet_body = true;                         ///< add the planet gear body's mass and inertia
   double pin_radial_stiffness = 0.0, pin_tangential_stiffness = 0.0;  ///< [N/m]
   double pin_damping = 0.0;                                           ///< [N s/m]
+  /// Full DOFs: the planet's diametral inertia extra to the gear body [kg m²]; < 0: that of a
+  /// disk of the face width b carrying planet_mass and planet_inertia, I_p/2 + m b²/12.
+  double planet_diametral_inertia = -1.0;
+  /// Full DOFs: the pin's axial [N/m] and tilting [N m/rad] stiffness; < 0: derived, axially the
+  /// mean of the radial and tangential ones, in tilt that k̄ spread uniformly over the face
+  /// width, k̄ b²/12.
+  double pin_axial_stiffness = -1.0, pin_tilt_stiffness = -1.0;
   /// Tangential pin position errors e_n [m], one per planet (empty: none): planet load
   /// sharing.
   std::vector<double> pin_position_errors;

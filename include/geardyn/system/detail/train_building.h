@@ -78,4 +78,15 @@ double carrierSpeedRatio(const GearTrainModel& model, const GearTrainSpec& spec,
 void applyOperatingLoads(const GearTrainModel& model, const GearTrainSpec& spec,
                          Eigen::VectorXd& F0, double& output_torque);
 
+/// K_Ω (per Ω², [kg]) of planet body `planet` in its carrier frame turning at r_c Ω. A planet's
+/// centrifugal load m Ω_c² R is carried by its pin and turns with the carrier, so the
+/// centripetal term acts on u_p − θ_c (J R): the planet's translation less the part the
+/// carrier's rotation θ_c gives its centre R. With Lin & Parker's −m Ω_c² u_p the stage's
+/// rolling motion (no mesh or pin deflects: u_p = θ_c J R) gets the stiffness −Σ m_p Ω_c² R²
+/// and diverges at speed; this form keeps it neutral at every speed, as the exact rotating
+/// system is, and differs from the expansion about the centrifugally loaded equilibrium by
+/// O(m_p Ω_c² / k_pin) (docs/theory/gear_trains.md).
+void addPlanetCentripetal(const GearTrainModel& model, int planet, double rc,
+                          Eigen::MatrixXd& Komega);
+
 }  // namespace geardyn::detail

@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// The keys of a gearbox mesh's model — stiffness model, damping, transmission error, tooth
+/// contact — shared by the fixed-axis meshes ("meshes.*") and a planetary stage's sun and ring
+/// meshes ("planetary.*.sun_planet", "planetary.*.ring_planet"), and their readers.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geardyn/config/config.h"
+#include "geardyn/config/config_schema.h"
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/stiffness/mesh_stiffness.h"
+#include "geardyn/system/gear_train.h"
+
+namespace geardyn::config::detail {
+
+/// Mesh stiffness, damping and transmission error keys under `prefix` (ending in "."); `what`
+/// names the meshes in the documentation.
+void addMeshModelKeys(ConfigSchema& schema, const std::string& prefix, const std::string& what);
+
+/// The tooth contact of a mesh from its keys (see addMeshModelKeys).
+TrainMeshContact contactFromConfig(const Config& config, const std::string& prefix);
+
+/// The transmission error of a mesh (te_amplitudes [m], te_phases_deg).
+TransmissionError teFromConfig(const Config& config, const std::string& prefix);
+
+/// The stiffness model a mesh asks for. `pair` is null for ring meshes (no model needs more
+/// than the face width and helix angle there); the models' notes go to `warnings`.
+std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const Config& config,
+                                                         const std::string& prefix,
+                                                         const GearPair* pair, double face_width,
+                                                         double helix, double contact_ratio,
+                                                         std::vector<std::string>& warnings);
+
+}  // namespace geardyn::config::detail
