@@ -157,3 +157,27 @@ def test_a_divergent_mode_is_reported_not_dropped(tmp_path):
     assert summary["results"]["campbell"]["divergence"]["from_rpm"] == 28000.0
     assert summary["results"]["modal"]["modes"][0]["divergent"] is True
     assert any("divergent" in w for w in summary["warnings"])
+
+
+def test_a_planetary_stage_with_six_dofs_per_member(tmp_path):
+    full = ("--set", 'gearbox.dofs="full"')
+    refused = run("train", LIN_PARKER, "--out", tmp_path / "refused", *quick(*full))
+    assert refused.returncode == 2
+    assert "shafts.sun.diametral_inertia" in refused.stderr
+    inertias = []
+    for shaft in ("sun", "ring", "carrier"):
+        inertias += ["--set", f"shafts.{shaft}.diametral_inertia=1e-3"]
+    for bearing in ("sun_bearing", "ring_support", "carrier_bearing"):
+        inertias += ["--set", f"bearings.{bearing}.k_axial=2e8", "--set",
+                     f"bearings.{bearing}.k_tilt=3e5"]
+    result = run("train", LIN_PARKER, "--out", tmp_path / "ok", *quick(*full, *inertias))
+    assert result.returncode == 0, result.stderr
+    assert "fixed-frame lumped model" in result.stderr  # carrier_frame_terms noted, not applied
+    modes = rows(tmp_path / "ok" / "modes.csv")
+    assert len(modes) == 36
+    types = [m["stage_type"] for m in modes]
+    assert types.count("out_of_plane") == 18
+    # The in-plane modes are the planar ones: Lin & Parker's table.
+    found = {round(float(m["frequency_hz"]), 1) for m in modes}
+    for hz in (1475.7, 11775.3, 743.2, 9647.9):
+        assert hz in found
