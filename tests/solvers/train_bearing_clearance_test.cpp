@@ -219,6 +219,52 @@ TEST(BearingClearance, HarmonicBalanceAgreesWithNewmarkInAndOutOfContact) {
   std::printf("worst relative p2p difference HBM vs Newmark: %.2e\n", worst);
 }
 
+/// Stability with a clearance bearing (its 2 × 2 slope blocks in the monodromy matrix) against
+/// Newmark: below the period doubling at 1.94 kHz the monodromy gives a multiplier < −1 and
+/// Newmark started on the solution (perturbed by 1e-3 of the bearing's p2p along u_y) leaves it
+/// for a motion that no longer repeats every period (relative change between the last two of 400
+/// periods > 1e-3; a multiplier of −1.1 grows 1e16-fold in 400 periods); above, the stable
+/// solution persists (steady to 1e-7, p2p of |u| and δ within 1 %).
+TEST(BearingClearance, MonodromyStabilityAgreesWithNewmark) {
+  const GearTrainModel model(clearancePair(5e-6));
+  TrainHarmonicBalanceOptions options;
+  options.harmonics = 12;
+  options.samples = 256;
+  TrainHarmonicBalance hbm(model, options);
+  ContinuationOptions c;
+  c.start = kTwoPi * 1900.0;
+  c.stop = kTwoPi * 2000.0;
+  c.stability = false;
+  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
+  const ContinuationResult sweep = continueInFrequency(hbm, c);
+  ASSERT_TRUE(sweep.completed) << sweep.message;
+  TrainNonlinearTimeOptions newmark;
+  newmark.steps_per_mesh_period = 256;
+  newmark.steady_tolerance = 1e-7;
+  for (double f : {1915.0, 1980.0}) {
+    const std::vector<HarmonicBalancePoint> found = solutionsAtFrequency(hbm, {&sweep}, kTwoPi * f);
+    ASSERT_EQ(found.size(), 1u) << f;
+    HarmonicBalancePoint p = found.front();
+    hbm.classify(p, StabilityMethod::kMonodromy, false);
+    EXPECT_EQ(p.stable, f > 1941.0) << f << " Hz, multiplier " << p.critical_multiplier;
+    const Eigen::VectorXd rho = hbm.bearingDisplacements(p.q).rowwise().norm();
+    const double p2p = rho.maxCoeff() - rho.minCoeff();
+    auto [q0, v0] = hbm.initialState(p);
+    if (!p.stable) q0 += 1e-3 * p2p * model.nonlinearVectors().col(1).normalized();
+    newmark.min_periods = p.stable ? 3 : 400;  // unstable: exactly 400 periods
+    newmark.max_periods = p.stable ? 20000 : 400;
+    const TrainNonlinearTimeResponse r =
+        solveTrainNonlinearTime(model, hbm.inputSpeed(kTwoPi * f), newmark, q0, v0);
+    if (p.stable) {
+      EXPECT_EQ(r.status, "steady_state") << r.message;
+      EXPECT_LT(std::abs(r.bearingRadialPeakToPeak(0) / p2p - 1.0), 0.01);
+    } else {
+      EXPECT_EQ(r.status, "max_periods") << f;
+      EXPECT_GT(r.last_change, 1e-3) << f;
+    }
+  }
+}
+
 /// Bad input names the key: a negative clearance, a clearance on a torsional train (no radial
 /// DOFs), a clearance bearing with kyy ≠ kzz or cross terms.
 TEST(BearingClearance, BadInputNamesTheKey) {

@@ -4,7 +4,7 @@
 /// with radial clearance, condensed exactly onto the nonlinear coordinates: the mesh deflections
 /// and the bearings' radial displacements (docs/theory/nonlinear_gear_trains.md).
 ///
-/// Clearance bearings (bearing_clearance.h) add two coordinates each, u = (u_y, u_z) = Jᵀq: V
+/// Clearance bearings (bearing_clearance.h) add two coordinates each, u = (u_y, u_z) = J q: V
 /// below becomes W = [V, J_1ᵀ, …] (GearTrainModel::nonlinearVectors), f̃ gains the bearings'
 /// f(u) − k u (the linear bearing stays in K̄, so D(h) is regular when the journal floats), and
 /// the Jacobian their 2 × 2 blocks ∂f̃/∂u (u_y, u_z coupled), by the same AFT per pair.

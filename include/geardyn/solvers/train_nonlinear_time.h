@@ -2,7 +2,7 @@
 /// \file
 /// Newmark time integration of a gear train with nonlinear meshes (contact loss, backlash;
 /// TrainMeshContact) and bearings with radial clearance (bearing_clearance.h: their correction
-/// f(u) − k u on u = Jᵀq joins the meshes' f̃, V gains their columns, Newton runs on δ and every
+/// f(u) − k u on u = J q joins the meshes' f̃, V gains their columns, Newton runs on δ and every
 /// bearing's (u_y, u_z) with the coupled 2 × 2 Jacobian) to its periodic steady state — the
 /// reference for the train harmonic balance (train_harmonic_balance.h):
 ///
