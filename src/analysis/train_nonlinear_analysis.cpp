@@ -36,7 +36,8 @@ double secondsSince(Clock::time_point start) {
 }
 
 /// What one continuation point reports (per mesh: p2p of δ and of the contact force, the
-/// largest force, whether the teeth separate and whether they hit the back flank).
+/// largest force, whether the teeth separate and whether they hit the back flank; per clearance
+/// bearing: p2p and largest of the radial displacement |u|, whether the journal leaves contact).
 struct Row {
   std::string sweep;
   int point = 0, branch = 0, iterations = 0, step_cuts = 0;
@@ -44,6 +45,8 @@ struct Row {
   bool stable = true;
   std::vector<double> p2p_deflection, p2p_force, max_force;
   std::vector<int> loss, back;
+  std::vector<double> p2p_radial, max_radial;
+  std::vector<int> journal_loss;
 };
 
 Row rowOf(const GearTrainModel& model, TrainHarmonicBalance& hbm, const SweepPoint& sp,
@@ -64,6 +67,13 @@ Row rowOf(const GearTrainModel& model, TrainHarmonicBalance& hbm, const SweepPoi
     row.loss.push_back(f.col(m).minCoeff() <= 0.0);
     row.back.push_back(model.meshes()[m].contact.law == ContactLaw::kBacklash &&
                        f.col(m).minCoeff() < 0.0);
+  }
+  const Eigen::MatrixXd u = hbm.bearingDisplacements(p.q);
+  for (int b = 0; b < hbm.bearingCount(); ++b) {
+    const Eigen::VectorXd radius = u.middleCols(2 * b, 2).rowwise().norm();
+    row.p2p_radial.push_back(radius.maxCoeff() - radius.minCoeff());
+    row.max_radial.push_back(radius.maxCoeff());
+    row.journal_loss.push_back(radius.minCoeff() <= model.clearanceBearings()[b].clearance);
   }
   return row;
 }
@@ -135,6 +145,11 @@ io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& row
     header.push_back("contact_loss_" + m.name);
     header.push_back("back_flank_" + m.name);
   }
+  for (const TrainClearanceBearing& b : model.clearanceBearings()) {
+    header.push_back("p2p_radial_" + b.name + "_m");
+    header.push_back("max_radial_" + b.name + "_m");
+    header.push_back("contact_loss_" + b.name);
+  }
   for (const char* c : {"contact_loss", "stable", "critical_multiplier_abs", "newton_iterations",
                         "relative_residual", "step_cuts"})
     header.emplace_back(c);
@@ -149,6 +164,11 @@ io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& row
                    {r.p2p_deflection[m], r.p2p_force[m], r.max_force[m],
                     static_cast<long long>(r.loss[m]), static_cast<long long>(r.back[m])});
       any = any || r.loss[m];
+    }
+    for (std::size_t b = 0; b < r.journal_loss.size(); ++b) {
+      cells.insert(cells.end(),
+                   {r.p2p_radial[b], r.max_radial[b], static_cast<long long>(r.journal_loss[b])});
+      any = any || r.journal_loss[b];
     }
     cells.push_back(any);
     if (stability) {
@@ -166,7 +186,8 @@ io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& row
 
 /// Nonlinear Newmark started on every stable solution at the check speeds (unstable ones are
 /// listed, not integrated: a time integration leaves them). A correct periodic solution is kept:
-/// p2p of every mesh deflection within the Newmark discretisation error.
+/// p2p of every mesh deflection (and clearance bearing radial displacement) within the Newmark
+/// discretisation error.
 Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
                    TrainHarmonicBalance& hbm,
                    const std::vector<std::pair<std::string, ContinuationResult>>& runs,
@@ -185,6 +206,10 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
   for (const TrainMesh& m : model.meshes()) {
     header.push_back("p2p_deflection_hbm_" + m.name + "_m");
     header.push_back("p2p_deflection_newmark_" + m.name + "_m");
+  }
+  for (const TrainClearanceBearing& b : model.clearanceBearings()) {
+    header.push_back("p2p_radial_hbm_" + b.name + "_m");
+    header.push_back("p2p_radial_newmark_" + b.name + "_m");
   }
   header.emplace_back("max_relative_difference");
   io::CsvTable table(header);
@@ -206,6 +231,11 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
       HarmonicBalancePoint p = solutions[s];
       if (stability) hbm.classify(p, StabilityMethod::kMonodromy, false);
       const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
+      const Eigen::MatrixXd u = hbm.bearingDisplacements(p.q);
+      const auto radialP2p = [&](int b) {
+        const Eigen::VectorXd radius = u.middleCols(2 * b, 2).rowwise().norm();
+        return radius.maxCoeff() - radius.minCoeff();
+      };
       std::vector<io::CsvCell> cells{
           speeds[k], static_cast<long long>(s),
           stability ? io::CsvCell(static_cast<long long>(p.stable)) : io::CsvCell(std::string())};
@@ -214,6 +244,9 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
         cells.insert(cells.end(), {std::string("not_integrated_unstable"), 0LL});
         for (int m = 0; m < hbm.meshCount(); ++m) {
           cells.insert(cells.end(), {d.col(m).maxCoeff() - d.col(m).minCoeff(), std::string()});
+        }
+        for (int b = 0; b < hbm.bearingCount(); ++b) {
+          cells.insert(cells.end(), {radialP2p(b), std::string()});
         }
         cells.emplace_back(std::string());
         table.addRow(cells);
@@ -227,6 +260,7 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
       cells.insert(cells.end(), {r.status, static_cast<long long>(r.periods)});
       double worst = 0.0;
       Json hbm_p2p = Json::object(), newmark_p2p = Json::object();
+      Json hbm_radial = Json::object(), newmark_radial = Json::object();
       for (int m = 0; m < hbm.meshCount(); ++m) {
         const double a = d.col(m).maxCoeff() - d.col(m).minCoeff(), b = r.meshPeakToPeak(m);
         cells.insert(cells.end(), {a, b});
@@ -234,12 +268,21 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
         hbm_p2p[model.meshes()[m].name] = a;
         newmark_p2p[model.meshes()[m].name] = b;
       }
+      for (int b = 0; b < hbm.bearingCount(); ++b) {
+        const double a = radialP2p(b), c = r.bearingRadialPeakToPeak(b);
+        cells.insert(cells.end(), {a, c});
+        worst = std::max(worst, std::abs(c / a - 1.0));
+        hbm_radial[model.clearanceBearings()[b].name] = a;
+        newmark_radial[model.clearanceBearings()[b].name] = c;
+      }
       cells.emplace_back(worst);
       table.addRow(cells);
       check.update({{"newmark_status", r.status},
                     {"newmark_periods", r.periods},
                     {"p2p_deflection_hbm_m", hbm_p2p},
                     {"p2p_deflection_newmark_m", newmark_p2p},
+                    {"p2p_radial_hbm_m", hbm_radial},
+                    {"p2p_radial_newmark_m", newmark_radial},
                     {"max_relative_difference", worst}});
       checks.push_back(check);
       if (r.status != "steady_state") {
@@ -261,11 +304,11 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                               const AnalysisContext& context) {
   const auto start = Clock::now();
   io::RunSummary& summary = result.summary;
-  if (std::none_of(model.meshes().begin(), model.meshes().end(),
-                   [](const TrainMesh& m) { return m.nonlinear(); })) {
+  if (!model.hasNonlinearElements()) {
     summary.warnings.push_back(
-        "nonlinear: no mesh has a contact law (meshes.<name>.contact or backlash): the teeth "
-        "never separate and the response is the linear one");
+        "nonlinear: no mesh has a contact law (meshes.<name>.contact or backlash) and no bearing "
+        "a radial clearance (bearings.<name>.radial_clearance): the teeth never separate and the "
+        "response is the linear one");
   }
   const TrainHarmonicBalanceOptions options =
       config::trainHarmonicBalanceOptionsFromConfig(analysis);
@@ -336,6 +379,12 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                 {"speed_rpm", r.omega / scale},
                 {"base_frequency_Hz", r.omega / kTwoPi},
                 {"p2p_deflection_m", perMesh(model, r.p2p_deflection)}};
+      if (hbm.bearingCount() > 0) {
+        Json radial = Json::object();
+        for (int k = 0; k < hbm.bearingCount(); ++k)
+          radial[model.clearanceBearings()[k].name] = r.p2p_radial[k];
+        j["p2p_radial_m"] = radial;
+      }
       bifurcations.push_back(j);
       if (b.type == BifurcationType::kFold) folds.push_back(j);
     }
@@ -373,6 +422,24 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                                        {"stable", best->stable}};
     }
   }
+  Json journals = Json::object();  // per clearance bearing: its largest orbit, contact loss
+  for (int b = 0; b < hbm.bearingCount(); ++b) {
+    const Row* best = nullptr;
+    bool loss = false;
+    for (const Row& r : all) {
+      if (!best || r.max_radial[b] > best->max_radial[b]) best = &r;
+      loss = loss || r.journal_loss[b];
+    }
+    if (best) {
+      const TrainClearanceBearing& bearing = model.clearanceBearings()[b];
+      journals[bearing.name] = {{"radial_clearance_m", bearing.clearance},
+                                {"max_radial_m", best->max_radial[b]},
+                                {"p2p_radial_m", best->p2p_radial[b]},
+                                {"speed_rpm", best->omega / scale},
+                                {"sweep", best->sweep},
+                                {"contact_loss_somewhere", loss}};
+    }
+  }
   Json multiples = Json::object(), per_rpm = Json::object();
   for (int m = 0; m < hbm.meshCount(); ++m) {
     multiples[model.meshes()[m].name] = hbm.meshMultiples()[m];
@@ -400,7 +467,8 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                                   {"time_per_point_s", points > 0 ? sweep_seconds / points : 0.0},
                                   {"folds", folds},
                                   {"bifurcations", bifurcations},
-                                  {"peaks", peaks}};
+                                  {"peaks", peaks},
+                                  {"clearance_bearings", journals}};
   const Json checks =
       newmarkChecks(model, analysis, hbm, runs, scale, sweep.stability, result, context);
   if (!checks.empty()) summary.results["nonlinear"]["newmark_checks"] = checks;

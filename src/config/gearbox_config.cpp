@@ -151,8 +151,8 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .doc("mesh dashpot along the line of action (replaces damping_ratio)");
 
   schema.collection("bearings",
-                    "Linear bearings from a shaft to the housing or to another "
-                    "shaft; a torsional stiffness to the housing holds the shaft.");
+                    "Bearings from a shaft to the housing or to another shaft, linear or with a "
+                    "radial clearance; a torsional stiffness to the housing holds the shaft.");
   schema.section("bearings.*", "One bearing.");
   schema.string("bearings.*.shaft").required().doc("the shaft it carries");
   schema.string("bearings.*.other_shaft")
@@ -186,6 +186,14 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .unit("m")
       .defaultValue(0.0)
       .doc("position along `other_shaft`");
+  schema.real("bearings.*.radial_clearance")
+      .unit("m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc(
+          "radial clearance c: the radial stiffness (kyy = kzz, no cross terms) acts only "
+          "beyond it, f = k (|u| - c) u/|u|; damping stays linear; planar/full DOFs; only the "
+          "train nonlinear analysis uses it (0: linear bearing)");
 
   schema.collection("disks", "Rigid disks (inertias) on shafts: flywheels, motor rotors.");
   schema.section("disks.*", "One disk.");
@@ -427,6 +435,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     b.k_tilt = config.real(p + "k_tilt"), b.c_tilt = config.real(p + "c_tilt");
     b.position = config.real(p + "position");
     b.other_position = config.real(p + "other_position");
+    b.radial_clearance = config.real(p + "radial_clearance");
     spec.bearings.push_back(b);
   }
   for (const std::string& name : config.names("disks")) {

@@ -70,7 +70,9 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   h_ = options_.harmonics;
   n_ = 2 * h_ + 1;
   samples_ = options_.samples;
-  r_ = static_cast<int>(model.meshes().size());
+  meshes_ = static_cast<int>(model.meshes().size());
+  bearings_ = static_cast<int>(model.clearanceBearings().size());
+  r_ = meshes_ + 2 * bearings_;
   dofs_ = model.dofCount();
   const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1000000000);
   multiple_ = base.mesh_multiple;
@@ -85,8 +87,7 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   }
   base_ratio_ = kTwoPi * base.ratio;
   speed_sign_ = model.inputSpeed() < 0.0 ? -1.0 : 1.0;
-  V_.resize(dofs_, r_);
-  for (int m = 0; m < r_; ++m) V_.col(m) = model.meshVector(m);
+  V_ = model.nonlinearVectors();  // W = [V, bearing selections]: the condensation's columns
   // Rigid-body modes of the mean stiffness (rolling, which no mesh deflects): fixed at h = 0 by
   // their mass-weighted amplitude, as in TrainSteadySolver. Computed at the operating speed
   // (K_Ω acts on planet translations, held by their pins: it does not change them).
@@ -106,13 +107,14 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
         (qr.householderQ() * Eigen::MatrixXd::Identity(dofs_, dofs_)).rightCols(dofs_ - count);
   }
 
-  k_.resize(samples_, r_);
-  e_.resize(samples_, r_);
-  slope_.resize(samples_, r_);
+  k_.resize(samples_, meshes_);
+  e_.resize(samples_, meshes_);
+  slope_.resize(samples_, meshes_);
+  bearing_slope_.resize(samples_, 4 * bearings_);
   force_.resize(samples_, r_);
   delta_.resize(samples_, r_);
-  Eigen::MatrixXd rate(samples_, r_);
-  for (int m = 0; m < r_; ++m) {
+  Eigen::MatrixXd rate(samples_, meshes_);
+  for (int m = 0; m < meshes_; ++m) {
     const TrainMesh& mesh = model.meshes()[m];
     for (int i = 0; i < samples_; ++i) {
       const double phi = mesh.phase + multiple_[m] * static_cast<double>(i) / samples_;
@@ -125,8 +127,8 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   complex_buffer_ = fftw_alloc_complex(samples_ / 2 + 1);
   forward_plan_ = fftw_plan_dft_r2c_1d(samples_, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
   inverse_plan_ = fftw_plan_dft_c2r_1d(samples_, complex_buffer_, real_buffer_, FFTW_ESTIMATE);
-  rate_coefficients_.resize(n_, r_);
-  for (int m = 0; m < r_; ++m) forward(rate.col(m).data(), rate_coefficients_.col(m).data());
+  rate_coefficients_.resize(n_, meshes_);
+  for (int m = 0; m < meshes_; ++m) forward(rate.col(m).data(), rate_coefficients_.col(m).data());
   B_.resize(h_ + 1);
   dB_.resize(h_ + 1);
   lu_.resize(h_ + 1);
@@ -205,8 +207,8 @@ void TrainHarmonicBalance::prepare(double omega) {
 }
 
 void TrainHarmonicBalance::meshForceSamples(const Eigen::VectorXd& u) {
-  for (int m = 0; m < r_; ++m) {
-    inverse(u.data() + m * n_, delta_.col(m).data());
+  for (int c = 0; c < r_; ++c) inverse(u.data() + c * n_, delta_.col(c).data());
+  for (int m = 0; m < meshes_; ++m) {
     const TrainMesh& mesh = model_.meshes()[m];
     for (int i = 0; i < samples_; ++i) {
       double s = 1.0;
@@ -216,21 +218,33 @@ void TrainHarmonicBalance::meshForceSamples(const Eigen::VectorXd& u) {
       slope_(i, m) = k_(i, m) * s - mesh.mean_stiffness;
     }
   }
+  // Clearance bearings: f̃ = f(u) − k u and its 2 × 2 Jacobian (column-major in bearing_slope_);
+  // linearised: the linear bearing of K, f̃ = 0.
+  Eigen::Matrix2d J;
+  for (int b = 0; b < bearings_; ++b) {
+    const TrainClearanceBearing& bearing = model_.clearanceBearings()[b];
+    const int c = meshes_ + 2 * b;
+    for (int i = 0; i < samples_; ++i) {
+      const Eigen::Vector2d f = linearized_
+                                    ? Eigen::Vector2d::Zero()
+                                    : bearing.correctionForce({delta_(i, c), delta_(i, c + 1)}, &J);
+      if (linearized_) J.setZero();
+      force_(i, c) = f(0);
+      force_(i, c + 1) = f(1);
+      for (int k = 0; k < 4; ++k) bearing_slope_(i, 4 * b + k) = J(k % 2, k / 2);
+    }
+  }
 }
 
 void TrainHarmonicBalance::residual(const Eigen::VectorXd& u, double omega, Eigen::VectorXd& R,
                                     Eigen::MatrixXd* dr_du, Eigen::VectorXd* dr_domega) {
   prepare(omega);
   meshForceSamples(u);
-  // F̃ − d (real layout, per mesh): the nonlinear force less the dashpot forcing c ė.
-  Eigen::MatrixXd G(n_, r_);
-  for (int m = 0; m < r_; ++m) {
-    forward(force_.col(m).data(), G.col(m).data());
-    const double scale = model_.meshes()[m].damping * multiple_[m] * omega / kTwoPi;
-    G.col(m) -= scale * rate_coefficients_.col(m);
-  }
-  const auto dashpotRate = [&](int m, int j) {  // ∂(F̃ − d)/∂ω₀ = −d/ω₀
-    return -model_.meshes()[m].damping * multiple_[m] / kTwoPi * rate_coefficients_(j, m);
+  const Eigen::MatrixXd G = forceCoefficients(omega);
+  const auto dashpotRate = [&](int m, int j) {  // ∂(F̃ − d)/∂ω₀ = −d/ω₀ (meshes only)
+    return m >= meshes_
+               ? 0.0
+               : -model_.meshes()[m].damping * multiple_[m] / kTwoPi * rate_coefficients_(j, m);
   };
   R = u;
   if (dr_domega) dr_domega->setZero(size());
@@ -259,27 +273,46 @@ void TrainHarmonicBalance::residual(const Eigen::VectorXd& u, double omega, Eige
     }
   }
   if (!dr_du) return;
-  // ∂F̃_m/∂δ_m: D_k = (1/N) Σ f̃′ cos kτ, E_k = (1/N) Σ f̃′ sin kτ for k = −2H..2H.
+  // ∂F̃_i/∂u_j (i = j for a mesh; the four pairs of a clearance bearing's (u_y, u_z)):
+  // D_k = (1/N) Σ ∂f̃_i/∂u_j cos kτ, E_k = (1/N) Σ ∂f̃_i/∂u_j sin kτ for k = −2H..2H.
   Eigen::MatrixXd& J = *dr_du;
   J.setIdentity(size(), size());
   std::vector<double> Dt, Et;
   Eigen::MatrixXd JF(n_, n_);
-  for (int mc = 0; mc < r_; ++mc) {
-    std::copy(slope_.col(mc).data(), slope_.col(mc).data() + samples_, real_buffer_);
+  const auto add = [&](int i, int j, const double* slope) {
+    std::copy(slope, slope + samples_, real_buffer_);
     fftw_execute(forward_plan_);
     detail::aftSlopeTables(complex_buffer_, samples_, h_, Dt, Et);
     detail::aftJacobian(Dt, Et, h_, JF);
-    // Rows of mesh mr: per harmonic, the 2 × 2 real form of B(h)(mr, mc) times JF's rows.
+    // Rows of coordinate mr: per harmonic, the 2 × 2 real form of B(h)(mr, i) times JF's rows.
     for (int mr = 0; mr < r_; ++mr) {
-      auto block = J.block(mr * n_, mc * n_, n_, n_);
-      block.row(0) += B_[0](mr, mc).real() * JF.row(0);
+      auto block = J.block(mr * n_, j * n_, n_, n_);
+      block.row(0) += B_[0](mr, i).real() * JF.row(0);
       for (int h = 1; h <= h_; ++h) {
-        const double br = B_[h](mr, mc).real(), bi = B_[h](mr, mc).imag();
+        const double br = B_[h](mr, i).real(), bi = B_[h](mr, i).imag();
         block.row(cosIndex(h)) += br * JF.row(cosIndex(h)) + bi * JF.row(sinIndex(h));
         block.row(sinIndex(h)) += -bi * JF.row(cosIndex(h)) + br * JF.row(sinIndex(h));
       }
     }
+  };
+  for (int m = 0; m < meshes_; ++m) add(m, m, slope_.col(m).data());
+  for (int b = 0; b < bearings_; ++b) {
+    for (int k = 0; k < 4; ++k) {
+      add(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2, bearing_slope_.col(4 * b + k).data());
+    }
   }
+}
+
+Eigen::MatrixXd TrainHarmonicBalance::forceCoefficients(double omega) {
+  // F̃ − d (real layout, per coordinate): the nonlinear force less the mesh dashpot forcing c ė.
+  Eigen::MatrixXd G(n_, r_);
+  for (int c = 0; c < r_; ++c) {
+    forward(force_.col(c).data(), G.col(c).data());
+    if (c >= meshes_) continue;
+    G.col(c) -=
+        model_.meshes()[c].damping * multiple_[c] * omega / kTwoPi * rate_coefficients_.col(c);
+  }
+  return G;
 }
 
 double TrainHarmonicBalance::residualNorm(const Eigen::VectorXd& u, const Eigen::VectorXd& r,
@@ -310,27 +343,28 @@ void TrainHarmonicBalance::solve(HarmonicBalancePoint& point) {
 }
 
 Eigen::MatrixXd TrainHarmonicBalance::meshDeflections(const Eigen::VectorXd& u) {
-  Eigen::MatrixXd d(samples_, r_);
-  for (int m = 0; m < r_; ++m) inverse(u.data() + m * n_, d.col(m).data());
+  Eigen::MatrixXd d(samples_, meshes_);
+  for (int m = 0; m < meshes_; ++m) inverse(u.data() + m * n_, d.col(m).data());
+  return d;
+}
+
+Eigen::MatrixXd TrainHarmonicBalance::bearingDisplacements(const Eigen::VectorXd& u) {
+  Eigen::MatrixXd d(samples_, 2 * bearings_);
+  for (int c = 0; c < 2 * bearings_; ++c) inverse(u.data() + (meshes_ + c) * n_, d.col(c).data());
   return d;
 }
 
 Eigen::MatrixXd TrainHarmonicBalance::meshContactForces(const Eigen::VectorXd& u) {
   meshForceSamples(u);  // f̃ = k g − k̄ δ
-  Eigen::MatrixXd f = force_;
-  for (int m = 0; m < r_; ++m) f.col(m) += model_.meshes()[m].mean_stiffness * delta_.col(m);
+  Eigen::MatrixXd f = force_.leftCols(meshes_);
+  for (int m = 0; m < meshes_; ++m) f.col(m) += model_.meshes()[m].mean_stiffness * delta_.col(m);
   return f;
 }
 
 Eigen::MatrixXd TrainHarmonicBalance::displacementCoefficients(const HarmonicBalancePoint& point) {
   prepare(point.omega);
   meshForceSamples(point.q);
-  Eigen::MatrixXd G(n_, r_);
-  for (int m = 0; m < r_; ++m) {
-    forward(force_.col(m).data(), G.col(m).data());
-    G.col(m) -= model_.meshes()[m].damping * multiple_[m] * point.omega / kTwoPi *
-                rate_coefficients_.col(m);
-  }
+  const Eigen::MatrixXd G = forceCoefficients(point.omega);
   // X_h = D(h)⁻¹ (F₀ δ_h0 − V (F̃_h − d_h)).
   Eigen::MatrixXd X(dofs_, n_);
   X.col(0) = lu0_.solve(model_.staticLoad() - V_ * G.row(0).transpose());
@@ -378,26 +412,41 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
   x.leftCols(n).setIdentity();
   v.rightCols(n).setIdentity();
   const Eigen::LLT<Eigen::MatrixXd> mass(M);
-  a = -mass.solve(Kbar * x + V * (slope_.row(0).transpose().asDiagonal() * (V.transpose() * x)) +
-                  C * v);
+  // S(t): the meshes' slopes on the diagonal, 2 × 2 blocks ∂f̃/∂u of the clearance bearings.
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(r_, r_);
+  for (int m = 0; m < meshes_; ++m) S(m, m) = slope_(0, m);
+  for (int b = 0; b < bearings_; ++b) {
+    for (int k = 0; k < 4; ++k) {
+      S(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2) = bearing_slope_(0, 4 * b + k);
+    }
+  }
+  a = -mass.solve(Kbar * x + V * (S * (V.transpose() * x)) + C * v);
   Eigen::MatrixXd small(r_, r_), w(r_, 2 * n);
-  Eigen::VectorXd s(r_);
   for (int i = 1; i <= samples_; ++i) {
     // The slope over the interval (t_{i−1}, t_i): the contact law's slope averaged along the
     // straight line between the sampled tooth deformations (the fraction of the interval in
     // contact, so that a contact change inside it counts in proportion: second order in the
     // switching instant instead of first), times the mean of the end stiffnesses, less k̄.
-    for (int m = 0; m < r_; ++m) {
+    const int i0 = i - 1, i1 = i % samples_;
+    for (int m = 0; m < meshes_; ++m) {
       const TrainMesh& mesh = model_.meshes()[m];
-      const int i0 = i - 1, i1 = i % samples_;
       const double k = 0.5 * (k_(i0, m) + k_(i1, m));
-      s(m) = k * contactFraction(mesh, delta_(i0, m) - e_(i0, m), delta_(i1, m) - e_(i1, m)) -
-             mesh.mean_stiffness;
+      S(m, m) = k * contactFraction(mesh, delta_(i0, m) - e_(i0, m), delta_(i1, m) - e_(i1, m)) -
+                mesh.mean_stiffness;
+    }
+    // A clearance bearing: ∂f/∂u averaged along the straight segment between the samples (the
+    // same second-order treatment of a contact change inside the interval), less k I.
+    for (int b = 0; b < bearings_; ++b) {
+      const TrainClearanceBearing& bearing = model_.clearanceBearings()[b];
+      const int c = meshes_ + 2 * b;
+      S.block(c, c, 2, 2) = bearing.meanStiffness({delta_(i0, c), delta_(i0, c + 1)},
+                                                  {delta_(i1, c), delta_(i1, c + 1)}) -
+                            bearing.stiffness * Eigen::Matrix2d::Identity();
     }
     y.noalias() = P * (a0 * x + a2 * v + a * 1.0);  // a₃ = 1 (β = 1/4)
     y.noalias() += Q * (a1 * x + v);                // a₄ = 1, a₅ = 0 (γ = 1/2)
-    w.noalias() = s.asDiagonal() * (V.transpose() * y);
-    small = s.asDiagonal() * W;
+    w.noalias() = S * (V.transpose() * y);
+    small.noalias() = S * W;
     small.diagonal().array() += 1.0;
     y.noalias() -= Z * small.partialPivLu().solve(w);
     const Eigen::MatrixXd a_new = a0 * (y - x) - a2 * v - a;

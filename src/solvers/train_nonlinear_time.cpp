@@ -32,6 +32,11 @@ double TrainNonlinearTimeResponse::meshPeakToPeak(int mesh) const {
   return mesh_deflection.col(mesh).maxCoeff() - mesh_deflection.col(mesh).minCoeff();
 }
 
+double TrainNonlinearTimeResponse::bearingRadialPeakToPeak(int bearing) const {
+  const Eigen::VectorXd radius = bearing_displacement.middleCols(2 * bearing, 2).rowwise().norm();
+  return radius.maxCoeff() - radius.minCoeff();
+}
+
 TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double input_speed,
                                              double time_step, NewmarkParameters newmark)
     : model_(model), speed_(input_speed), dt_(time_step), gamma_(newmark.gamma) {
@@ -44,18 +49,20 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
   a4_ = gamma_ / beta - 1.0;
   a5_ = dt_ * (0.5 * gamma_ / beta - 1.0);
   const int n = model.dofCount();
-  const int r = static_cast<int>(model.meshes().size());
+  meshes_ = static_cast<int>(model.meshes().size());
+  const int r = meshes_ + 2 * static_cast<int>(model.clearanceBearings().size());
   Cg_ = model.dampingAt(speed_);
   K0_ = model.meanStiffnessAt(speed_);
-  V_.resize(n, r);
-  for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
+  V_ = model.nonlinearVectors();  // [V, bearing columns]: δ, then (u_y, u_z) per bearing
   lu_.compute(K0_ + a0_ * model.mass() + a1_ * Cg_);
   Z_ = lu_.solve(V_);
   W_ = V_.transpose() * Z_;
   small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
   J_.resize(r, r);
+  slope_ = Eigen::MatrixXd::Zero(r, r);
   q_ = v_ = a_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
-  delta_ = f_ = slope_ = res_ = dashpot_ = k_ = e_ = free_ = step_ = Eigen::VectorXd::Zero(r);
+  delta_ = f_ = res_ = dashpot_ = free_ = step_ = Eigen::VectorXd::Zero(r);
+  k_ = e_ = Eigen::VectorXd::Zero(meshes_);
 }
 
 void TrainNonlinearNewmark::meshState(double t) {
@@ -71,14 +78,22 @@ void TrainNonlinearNewmark::meshState(double t) {
   }
 }
 
-void TrainNonlinearNewmark::meshForces(const Eigen::VectorXd& delta, Eigen::VectorXd& f,
-                                       Eigen::VectorXd* slope) const {
+void TrainNonlinearNewmark::nonlinearForces(const Eigen::VectorXd& delta, Eigen::VectorXd& f,
+                                            Eigen::MatrixXd* slope) const {
   const auto& meshes = model_.meshes();
-  for (std::size_t m = 0; m < meshes.size(); ++m) {
+  for (int m = 0; m < meshes_; ++m) {
     double s = 1.0;
     const double g = meshes[m].contactDeflection(delta(m) - e_(m), &s);
     f(m) = k_(m) * g - meshes[m].mean_stiffness * delta(m);
-    if (slope) (*slope)(m) = k_(m) * s - meshes[m].mean_stiffness;
+    if (slope) (*slope)(m, m) = k_(m) * s - meshes[m].mean_stiffness;
+  }
+  // Clearance bearings: f̃ = f(u) − k u with its coupled 2 × 2 Jacobian (bearing_clearance.h).
+  Eigen::Matrix2d J;
+  const auto& bearings = model_.clearanceBearings();
+  for (std::size_t b = 0; b < bearings.size(); ++b) {
+    const int c = meshes_ + 2 * static_cast<int>(b);
+    f.segment<2>(c) = bearings[b].correctionForce(delta.segment<2>(c), &J);
+    if (slope) slope->block<2, 2>(c, c) = J;
   }
 }
 
@@ -88,7 +103,7 @@ void TrainNonlinearNewmark::reset(double t, const Eigen::VectorXd& q, const Eige
   v_ = qdot;
   delta_ = V_.transpose() * q_;
   meshState(t);
-  meshForces(delta_, f_, nullptr);
+  nonlinearForces(delta_, f_, nullptr);
   a_ = model_.mass().llt().solve(model_.staticLoad() + V_ * (dashpot_ - f_) - Cg_ * v_ - K0_ * q_);
 }
 
@@ -102,14 +117,14 @@ bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
   y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
   rhs_.noalias() += Cg_ * y_;
   y_ = lu_.solve(rhs_);
-  // Newton on δ − Vᵀy + W f̃(t1, δ) = 0 from the last step's deflections.
+  // Newton on δ − Vᵀy + W f̃(t1, δ) = 0 from the last step's deflections (and bearing u).
   free_.noalias() = V_.transpose() * y_;
   bool converged = false;
   for (int it = 0; it < max_iterations && !converged; ++it) {
-    meshForces(delta_, f_, &slope_);
+    nonlinearForces(delta_, f_, &slope_);
     res_ = delta_ - free_;
     res_.noalias() += W_ * f_;
-    J_.noalias() = W_ * slope_.asDiagonal();
+    J_.noalias() = W_ * slope_;
     J_.diagonal().array() += 1.0;
     small_.compute(J_);
     step_ = small_.solve(res_);
@@ -118,7 +133,7 @@ bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
     const double scale = std::max(delta_.cwiseAbs().maxCoeff(), 1e-300);
     converged = step_.cwiseAbs().maxCoeff() <= newton_tolerance * scale;
   }
-  meshForces(delta_, f_, nullptr);
+  nonlinearForces(delta_, f_, nullptr);
   y_.noalias() -= Z_ * f_;                       // q_{n+1}
   rhs_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * a_;  // a_{n+1}
   v_ += dt_ * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
@@ -147,9 +162,10 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
   TrainNonlinearNewmark stepper(model, input_speed, dt, options.newmark);
   const int n = model.dofCount();
   const int meshes = static_cast<int>(model.meshes().size());
+  const int coordinates = meshes + 2 * static_cast<int>(model.clearanceBearings().size());
   const Eigen::VectorXd q = q0.size() == n ? q0 : solveTrainStatic(model, input_speed).displacement;
   stepper.reset(0.0, q, v0.size() == n ? v0 : Eigen::VectorXd::Zero(n));
-  Eigen::MatrixXd previous(per_period, meshes), current(per_period, meshes);
+  Eigen::MatrixXd previous(per_period, coordinates), current(per_period, coordinates);
   r.t.resize(per_period);
   r.displacement.resize(per_period, n);
   for (int period = 1; period <= options.max_periods; ++period) {
@@ -159,7 +175,7 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
         r.message =
             fmt::format("Newton on the mesh deflections failed at t = {:.6g} s", stepper.time());
       }
-      current.row(k) = stepper.meshDeflections().transpose();
+      current.row(k) = stepper.coordinates().transpose();
       r.t(k) = stepper.time();
       r.displacement.row(k) = stepper.displacement().transpose();
     }
@@ -171,12 +187,23 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
       return r;
     }
     if (r.status == "newton_failure") return r;
-    const double scale = std::max(current.cwiseAbs().maxCoeff(), 1e-300);
-    r.last_change = period > 1 ? (current - previous).cwiseAbs().maxCoeff() / scale : HUGE_VAL;
+    // Relative to the meshes' largest |δ|, and to each clearance bearing's own largest |u| or
+    // its clearance when larger (a journal floating at the centre has |u| ~ round-off).
+    r.last_change = period > 1 ? 0.0 : HUGE_VAL;
+    for (int c = 0; c < coordinates && period > 1;) {
+      const int width = c < meshes ? meshes : 2;
+      const double floor =
+          c < meshes ? 1e-300 : model.clearanceBearings()[(c - meshes) / 2].clearance;
+      const double scale = std::max(current.middleCols(c, width).cwiseAbs().maxCoeff(), floor);
+      r.last_change = std::max(
+          r.last_change, (current - previous).middleCols(c, width).cwiseAbs().maxCoeff() / scale);
+      c += width;
+    }
     std::swap(previous, current);
     if (period >= options.min_periods && r.last_change <= options.steady_tolerance) break;
   }
-  r.mesh_deflection = previous;  // the last period (swapped)
+  r.mesh_deflection = previous.leftCols(meshes);  // the last period (swapped)
+  r.bearing_displacement = previous.rightCols(coordinates - meshes);
   r.mesh_force.resize(per_period, meshes);
   for (long long k = 0; k < per_period; ++k) {
     for (int m = 0; m < meshes; ++m) {

@@ -314,6 +314,28 @@ void GearTrainModel::checkDenseFits(double dofs, const std::string& key,
                   dofs, bytes / 1e9, kDenseMatrices, dofs, dofs, memory_limit_ / 1e9));
 }
 
+void GearTrainModel::checkClearance(const TrainBearingSpec& b, const std::string& key) const {
+  const std::string ckey = key + ".radial_clearance";
+  if (!(b.radial_clearance >= 0.0) || !std::isfinite(b.radial_clearance)) {
+    throw InputError(ckey, fmt::format("{:g} m", b.radial_clearance),
+                     "a finite radial clearance >= 0 m (0: a linear bearing)");
+  }
+  if (b.radial_clearance == 0.0) return;
+  if (spec_.dofs == TrainDofs::kTorsional) {
+    throw InputError(ckey, fmt::format("{:g} m", b.radial_clearance),
+                     "0 with gearbox.dofs = \"torsional\": a torsional train has no radial "
+                     "displacements (use \"planar\" or \"full\" DOFs for a clearance)");
+  }
+  if (!(b.kyy > 0.0) || b.kzz != b.kyy || b.kyz != 0.0 || b.kzy != 0.0) {
+    throw InputError(key + (b.kyy > 0.0 ? ".kzz" : ".kyy"),
+                     fmt::format("{:g} N/m", b.kyy > 0.0 ? b.kzz : b.kyy),
+                     fmt::format("kyy = kzz > 0 without cross terms (kyy {:g} N/m, kyz {:g}, kzy "
+                                 "{:g}): a bearing with radial_clearance {:g} m has one isotropic "
+                                 "radial stiffness acting beyond the clearance",
+                                 b.kyy, b.kyz, b.kzy, b.radial_clearance));
+  }
+}
+
 void GearTrainModel::buildElements() {
   const bool planar = spec_.dofs == TrainDofs::kPlanar;
   const bool full = spec_.dofs == TrainDofs::kFull;
@@ -387,6 +409,7 @@ void GearTrainModel::buildElements() {
                                    "carrier_frame_terms = false for the fixed-frame model)",
                                    b.kyy));
     }
+    checkClearance(b, key);
     if (lateral && (b.kyy > 0 || b.kzz > 0 || b.cyy > 0 || b.czz > 0 || b.kyz != 0 || b.kzy != 0)) {
       Eigen::Matrix2d k, c;
       k << b.kyy, b.kyz, b.kzy, b.kzz;
@@ -397,6 +420,10 @@ void GearTrainModel::buildElements() {
         parts.push_back(detail::translationJacobian(*this, other, -1.0, other_dx));
       }
       add(b.name, "bearing", parts, k, c);
+      if (b.radial_clearance > 0.0) {
+        clearance_bearings_.push_back(
+            {b.name, elements_.back().dofs, elements_.back().jacobian, b.kyy, b.radial_clearance});
+      }
     }
     // Axial spring on the axis, tilt springs about y and z (full DOFs).
     auto relative = [&](int offset) {
@@ -578,6 +605,19 @@ Eigen::VectorXd GearTrainModel::meshVector(int mesh) const {
   const TrainMesh& m = meshes_[mesh];
   for (std::size_t i = 0; i < m.dofs.size(); ++i) v(m.dofs[i]) += m.gradient[i];
   return v;
+}
+
+Eigen::MatrixXd GearTrainModel::nonlinearVectors() const {
+  const int r = static_cast<int>(meshes_.size());
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(dof_count_, r + 2 * clearance_bearings_.size());
+  for (int m = 0; m < r; ++m) W.col(m) = meshVector(m);
+  for (std::size_t b = 0; b < clearance_bearings_.size(); ++b) {
+    const TrainClearanceBearing& cb = clearance_bearings_[b];
+    for (std::size_t i = 0; i < cb.dofs.size(); ++i) {
+      W.block(cb.dofs[i], r + 2 * b, 1, 2) += cb.jacobian.col(i).transpose();
+    }
+  }
+  return W;
 }
 
 Eigen::MatrixXd GearTrainModel::meanStiffnessAt(double input_speed) const {

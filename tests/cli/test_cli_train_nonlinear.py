@@ -13,6 +13,7 @@ from cli_support import CLI, EXAMPLES, run
 
 PLANETARY = EXAMPLES / "train_planetary_nonlinear.toml"
 FVA = EXAMPLES / "train_fva_two_stage.toml"
+CLEARANCE = EXAMPLES / "train_bearing_clearance_nonlinear.toml"
 PLOTS = os.environ.get("GEARDYN_PLOTS", "1") == "1"
 
 
@@ -93,6 +94,13 @@ def test_the_cli_draws_the_nonlinear_response(planetary):
     (["nonlinear.speed_max_rpm=12000.0"], "nonlinear.speed_max_rpm", "more than"),
     (["nonlinear.newmark_speeds_rpm=[20000.0]"], "nonlinear.newmark_speeds_rpm", "within the sweep"),
     (["nonlinear.max_step_rpm=1.0", "nonlinear.min_step_rpm=2.0"], "nonlinear.max_step_rpm", ">="),
+    # Bearing radial clearance: negative, on a torsional train, with kyy != kzz.
+    (["bearings.sun_bearing.radial_clearance=-1e-6"], "bearings.sun_bearing.radial_clearance",
+     ">= 0"),
+    (["bearings.sun_bearing.radial_clearance=1e-6", 'gearbox.dofs="torsional"'],
+     "bearings.sun_bearing.radial_clearance", "torsional"),
+    (["bearings.sun_bearing.radial_clearance=1e-6", "bearings.sun_bearing.kzz=2e8"],
+     "bearings.sun_bearing.kzz", "kyy = kzz"),
 ])
 def test_bad_nonlinear_input_exits_2_naming_the_key(tmp_path, sets, key, words):
     args = [a for s in sets for a in ("--set", s)]
@@ -100,6 +108,30 @@ def test_bad_nonlinear_input_exits_2_naming_the_key(tmp_path, sets, key, words):
     assert result.returncode == 2, result.stdout + result.stderr
     assert key in result.stderr and words in result.stderr, result.stderr
     assert not (tmp_path / "summary.json").exists()
+
+
+def test_a_bearing_clearance_is_reported_and_checked_by_newmark(tmp_path):
+    """The clearance example (a spur pair, the pinion bearing with 5 µm of radial clearance):
+    the journal columns and summary, contact loss at some speeds and not at others, and the
+    Newmark checks of the bearing's p2p radial displacement within 1 %."""
+    result = run("train", CLEARANCE, "--out", tmp_path, *quick())
+    assert result.returncode == 0, result.stderr
+    table = rows(tmp_path / "nonlinear_up.csv")
+    for column in ("p2p_radial_pinion_bearing_m", "max_radial_pinion_bearing_m",
+                   "contact_loss_pinion_bearing"):
+        assert column in table[0], table[0].keys()
+    flags = {r["contact_loss_pinion_bearing"] for r in table}
+    assert flags == {"0", "1"}, flags
+    info = json.loads((tmp_path / "summary.json").read_text())["results"]["nonlinear"]
+    journal = info["clearance_bearings"]["pinion_bearing"]
+    assert journal["radial_clearance_m"] == 5e-6 and journal["contact_loss_somewhere"]
+    assert journal["max_radial_m"] > 5e-6
+    checks = rows(tmp_path / "newmark_checks.csv")
+    assert len(checks) == 3 and all(c["newmark_status"] == "steady_state" for c in checks)
+    for c in checks:
+        hbm, newmark = (float(c[f"p2p_radial_{w}_pinion_bearing_m"]) for w in ("hbm", "newmark"))
+        assert abs(newmark / hbm - 1) < 0.01, c
+        assert float(c["max_relative_difference"]) < 0.01
 
 
 def test_a_train_without_a_short_common_period_exits_2_naming_the_harmonics(tmp_path):

@@ -5,18 +5,64 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
+#include "geardyn/solvers/train_response.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "system/nonlinear_sample_trains.h"
 
 namespace geardyn::testing::nonlinear {
+
+/// ∂R/∂u and ∂R/∂ω₀ of the train harmonic balance at (u, ω₀) against central differences
+/// (steps 1e-12 in u, 1e-6 ω₀ in ω₀): every column within 1e-5 of its norm (or of 1). At states
+/// whose samples are off the contact kinks the differences are exact to round-off (piecewise
+/// linear meshes) or to O(h²) (the smooth clearance law beyond contact).
+inline void expectJacobianMatchesCentralDifferences(TrainHarmonicBalance& hbm,
+                                                    const Eigen::VectorXd& u, double omega,
+                                                    const std::string& label = "") {
+  Eigen::VectorXd r, dw, rp, rm;
+  Eigen::MatrixXd J;
+  hbm.residual(u, omega, r, &J, &dw);
+  const double step = 1e-12;
+  for (int c = 0; c < hbm.size(); ++c) {
+    Eigen::VectorXd up = u, um = u;
+    up[c] += step;
+    um[c] -= step;
+    hbm.residual(up, omega, rp, nullptr, nullptr);
+    hbm.residual(um, omega, rm, nullptr, nullptr);
+    const Eigen::VectorXd fd = (rp - rm) / (2 * step);
+    EXPECT_LT((J.col(c) - fd).norm(), 1e-5 * std::max(1.0, J.col(c).norm())) << label << c;
+  }
+  const double h = 1e-6 * omega;
+  hbm.residual(u, omega + h, rp, nullptr, nullptr);
+  hbm.residual(u, omega - h, rm, nullptr, nullptr);
+  EXPECT_LT((dw - (rp - rm) / (2 * h)).norm(), 1e-5 * dw.norm()) << label;
+}
+
+/// The largest difference between the real Fourier coefficients X of every DOF (column 0 the
+/// mean, 2h − 1 and 2h cos and sin) and TrainSteadySolver's complex ones, h = 0..H.
+inline double linearSteadyStateDifference(const Eigen::MatrixXd& X, const TrainSteadyState& linear,
+                                          int harmonics) {
+  double worst = 0.0;
+  for (int h = 0; h <= harmonics; ++h) {
+    // TrainSteadyState: q = Re[X₀ + 2 Σ X_h e^{ihτ}] → cos = 2 Re X_h, sin = −2 Im X_h.
+    const Eigen::VectorXd c = h == 0 ? linear.harmonic.col(0).real()
+                                     : Eigen::VectorXd(2.0 * linear.harmonic.col(h).real());
+    worst = std::max(worst, (X.col(h == 0 ? 0 : 2 * h - 1) - c).norm());
+    if (h > 0) {
+      worst = std::max(worst, (X.col(2 * h) + 2.0 * linear.harmonic.col(h).imag()).norm());
+    }
+  }
+  return worst;
+}
 
 struct NewmarkCheck {
   int stable = 0, unstable = 0, contact_loss = 0;

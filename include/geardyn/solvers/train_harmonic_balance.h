@@ -1,7 +1,13 @@
 #pragma once
 /// \file
-/// Harmonic balance of a gear train with nonlinear meshes (contact loss, backlash), condensed
-/// exactly onto the mesh deflections (docs/theory/nonlinear_gear_trains.md).
+/// Harmonic balance of a gear train with nonlinear meshes (contact loss, backlash) and bearings
+/// with radial clearance, condensed exactly onto the nonlinear coordinates: the mesh deflections
+/// and the bearings' radial displacements (docs/theory/nonlinear_gear_trains.md).
+///
+/// Clearance bearings (bearing_clearance.h) add two coordinates each, u = (u_y, u_z) = J q: V
+/// below becomes W = [V, J_1ᵀ, …] (GearTrainModel::nonlinearVectors), f̃ gains the bearings'
+/// f(u) − k u (the linear bearing stays in K̄, so D(h) is regular when the journal floats), and
+/// the Jacobian their 2 × 2 blocks ∂f̃/∂u (u_y, u_z coupled), by the same AFT per pair.
 ///
 /// With the mean meshes in K̄ = K + Ω²K_Ω + Σ k̄ v vᵀ, the train reads
 ///   M q̈ + (C + ΩG₁) q̇ + K̄ q + V f̃(t, Vᵀq) = F₀ + V c ė,  f̃_m = k_m g_m(δ_m − e_m) − k̄_m δ_m,
@@ -48,7 +54,11 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   TrainHarmonicBalance& operator=(const TrainHarmonicBalance&) = delete;
 
   int size() const override { return r_ * n_; }
-  int meshCount() const noexcept { return r_; }
+  int meshCount() const noexcept { return meshes_; }
+  /// Clearance bearings (model.clearanceBearings()); their (u_y, u_z) follow the meshes' δ in u.
+  int bearingCount() const noexcept { return bearings_; }
+  /// Nonlinear coordinates r = meshes + 2 × clearance bearings (u holds r blocks of 2H + 1).
+  int coordinateCount() const noexcept { return r_; }
   int harmonics() const noexcept { return h_; }
   int samples() const noexcept { return samples_; }
   /// ω₀ [rad/s] at input speed Ω [rad/s], and back (Ω takes the model's sign).
@@ -75,6 +85,9 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   std::pair<Eigen::VectorXd, Eigen::VectorXd> initialState(const HarmonicBalancePoint& point);
   /// δ_m at the N samples of one base period (rows: samples, cols: meshes) [m].
   Eigen::MatrixXd meshDeflections(const Eigen::VectorXd& u);
+  /// (u_y, u_z) of every clearance bearing at the N samples (rows: samples, cols: y then z of
+  /// bearing 0, 1, …) [m].
+  Eigen::MatrixXd bearingDisplacements(const Eigen::VectorXd& u);
   /// The contact force k_m(φ) g_m(δ_m − e_m) of every mesh at the N samples of one base period
   /// (rows: samples, cols: meshes) [N]: 0 where the teeth are apart, < 0 on the back flank.
   Eigen::MatrixXd meshContactForces(const Eigen::VectorXd& u);
@@ -84,15 +97,18 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   void forward(const double* samples, double* coefficients);
   void inverse(const double* coefficients, double* samples);
   void meshForceSamples(const Eigen::VectorXd& u);  // f̃ and df̃/dδ at the samples
+  Eigen::MatrixXd forceCoefficients(double omega);  // F̃ − d from the last samples [coef, coord]
 
   const GearTrainModel& model_;
   TrainHarmonicBalanceOptions options_;
-  int h_, n_, samples_, r_, dofs_;
+  int h_, n_, samples_, r_, dofs_, meshes_, bearings_;
   double base_ratio_, speed_sign_;
   std::vector<int> multiple_;
-  Eigen::MatrixXd V_, rigid_, elastic_;            // rigid_: M × rigid-body modes
-  Eigen::MatrixXd k_, e_, slope_, force_, delta_;  // [sample, mesh]
-  Eigen::MatrixXd rate_coefficients_;              // de/dφ per mesh, real layout [coef, mesh]
+  Eigen::MatrixXd V_, rigid_, elastic_;  // V_: W = [V, bearing columns]; rigid_: M × modes
+  Eigen::MatrixXd k_, e_, slope_;        // [sample, mesh]
+  Eigen::MatrixXd force_, delta_;        // f̃ and the coordinates [sample, coordinate]
+  Eigen::MatrixXd bearing_slope_;        // ∂f̃/∂u column-major [sample, 4 × bearing]
+  Eigen::MatrixXd rate_coefficients_;    // de/dφ per mesh, real layout [coef, mesh]
   bool linearized_ = false;
   // Condensation at the cached ω₀: B(h), dB/dω₀, D(h) factors, b₀ and its derivative.
   double cached_omega_ = -1.0;

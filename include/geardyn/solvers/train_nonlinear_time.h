@@ -1,8 +1,10 @@
 #pragma once
 /// \file
 /// Newmark time integration of a gear train with nonlinear meshes (contact loss, backlash;
-/// TrainMeshContact) to its periodic steady state — the reference for the train harmonic
-/// balance (train_harmonic_balance.h):
+/// TrainMeshContact) and bearings with radial clearance (bearing_clearance.h: their correction
+/// f(u) − k u on u = J q joins the meshes' f̃, V gains their columns, Newton runs on δ and every
+/// bearing's (u_y, u_z) with the coupled 2 × 2 Jacobian) to its periodic steady state — the
+/// reference for the train harmonic balance (train_harmonic_balance.h):
 ///
 ///   M q̈ + (C + Ω G₁) q̇ + K̄ q + Σ_m v_m f̃_m(t, δ_m) = F₀ + Σ_m c_m ė_m v_m,
 ///   f̃_m = k_m(φ_m) g_m(δ_m − e_m) − k̄_m δ_m,   δ_m = v_mᵀ q,
@@ -43,9 +45,11 @@ struct TrainNonlinearTimeResponse {
   Eigen::MatrixXd displacement;     ///< q at those times (rows: samples, cols: DOFs)
   Eigen::MatrixXd mesh_deflection;  ///< δ_m (rows: samples, cols: meshes) [m]
   Eigen::MatrixXd mesh_force;       ///< k g(δ − e) [N]
-  double period = 0.0;              ///< common period [s]
-  int periods = 0;                  ///< common periods integrated
-  double last_change = 0.0;         ///< relative change over the last period
+  /// (u_y, u_z) of every clearance bearing (cols: y then z of bearing 0, 1, …) [m].
+  Eigen::MatrixXd bearing_displacement;
+  double period = 0.0;       ///< common period [s]
+  int periods = 0;           ///< common periods integrated
+  double last_change = 0.0;  ///< relative change over the last period
   long long steps = 0;
   /// "steady_state", "max_periods" (still changing: quasi-periodic, chaotic or slow),
   /// "newton_failure" or "diverged".
@@ -53,6 +57,8 @@ struct TrainNonlinearTimeResponse {
   std::string message;
   /// Peak to peak of mesh m's deflection over the last period [m].
   double meshPeakToPeak(int mesh) const;
+  /// Peak to peak of clearance bearing b's radial displacement |u| over the last period [m].
+  double bearingRadialPeakToPeak(int bearing) const;
 };
 
 /// One step at a time (the building block, and for benchmarks).
@@ -65,18 +71,23 @@ class TrainNonlinearNewmark {
   bool step(double newton_tolerance, int max_iterations);
   double time() const noexcept { return t_; }
   const Eigen::VectorXd& displacement() const noexcept { return q_; }
-  const Eigen::VectorXd& meshDeflections() const noexcept { return delta_; }
-  /// f̃ = k g(δ − e) − k̄ δ of every mesh at the time of the last meshState, and df̃/dδ.
-  void meshForces(const Eigen::VectorXd& delta, Eigen::VectorXd& f, Eigen::VectorXd* slope) const;
+  /// The nonlinear coordinates: the mesh deflections δ, then (u_y, u_z) of every clearance
+  /// bearing [m].
+  const Eigen::VectorXd& coordinates() const noexcept { return delta_; }
+  /// f̃ = k g(δ − e) − k̄ δ of every mesh at the time of the last meshState, then f(u) − k u of
+  /// every clearance bearing; ∂f̃/∂(δ, u) (block diagonal; only its blocks written) in *slope.
+  void nonlinearForces(const Eigen::VectorXd& delta, Eigen::VectorXd& f,
+                       Eigen::MatrixXd* slope) const;
 
  private:
   void meshState(double t);  // k, e and c ė of every mesh at t
 
   const GearTrainModel& model_;
   double speed_, dt_, gamma_, a0_, a1_, a2_, a3_, a4_, a5_, t_ = 0.0;
-  Eigen::MatrixXd Cg_, K0_, V_, Z_, W_, J_;
+  int meshes_ = 0;
+  Eigen::MatrixXd Cg_, K0_, V_, Z_, W_, J_, slope_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
-  Eigen::VectorXd q_, v_, a_, rhs_, y_, delta_, f_, slope_, res_, dashpot_, k_, e_, free_, step_;
+  Eigen::VectorXd q_, v_, a_, rhs_, y_, delta_, f_, res_, dashpot_, k_, e_, free_, step_;
 };
 
 /// Integrates from (q0, v0) (empty: the mean static deflection at rest) until the mesh

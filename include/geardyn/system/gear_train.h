@@ -123,6 +123,11 @@ struct TrainBearingSpec {
   double k_axial = 0, c_axial = 0, k_tilt = 0, c_tilt = 0;
   /// Axial position along `shaft` and along `other_shaft` from their first section starts [m].
   double position = 0.0, other_position = 0.0;
+  /// Radial clearance c [m] (issue 17; planar and full DOFs): the radial stiffness acts only
+  /// beyond it, f = k (|u| − c) u/|u| for |u| > c, else 0, on the relative radial displacement
+  /// u = (u_y, u_z) (isotropic: needs kyy = kzz, no cross terms). The damping stays linear. Only
+  /// the nonlinear analyses see it; the linear ones take the bearing as linear. 0: linear.
+  double radial_clearance = 0.0;
 };
 
 /// A coupling between two coaxial shafts (motor to input, output to load): torsional and

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "geardyn/models/timoshenko_shaft_element.h"
+#include "geardyn/system/bearing_clearance.h"
 #include "geardyn/system/gear_train.h"
 #include "geardyn/system/train_kinematics.h"
 
@@ -128,6 +129,16 @@ class GearTrainModel {
   const std::vector<TrainMesh>& meshes() const noexcept { return meshes_; }
   /// Some mesh has contact loss or backlash (TrainMeshContact).
   bool hasNonlinearMeshes() const;
+  /// The bearings with a radial clearance > 0 (bearing_clearance.h), in the spec's order. Their
+  /// linear stiffness stays in K; the nonlinear solvers add their correction forces.
+  const std::vector<TrainClearanceBearing>& clearanceBearings() const noexcept {
+    return clearance_bearings_;
+  }
+  /// Some mesh is nonlinear or some bearing has a radial clearance.
+  bool hasNonlinearElements() const { return hasNonlinearMeshes() || !clearance_bearings_.empty(); }
+  /// W = [v_1 … v_r, J_1ᵀ … J_bᵀ] (n × (r + 2b)): the nonlinear coordinates Wᵀq are the mesh
+  /// deflections δ, then (u_y, u_z) of every clearance bearing [m].
+  Eigen::MatrixXd nonlinearVectors() const;
   const std::vector<TrainElement>& elements() const noexcept { return elements_; }
   int bodyIndex(const std::string& name) const;  ///< −1 when absent
   /// "input.y", "stage1.planet2.theta", … for DOF i.
@@ -194,6 +205,8 @@ class GearTrainModel {
   double rotatingInertia(int body) const;
   void buildMeshes();
   void buildElements();
+  /// InputError on a bad bearings.<name>.radial_clearance (< 0, torsional DOFs, anisotropic k).
+  void checkClearance(const TrainBearingSpec& bearing, const std::string& key) const;
   void assemble();
 
   GearTrainSpec spec_;
@@ -201,6 +214,7 @@ class GearTrainModel {
   std::vector<TrainBody> bodies_;
   std::vector<TrainMesh> meshes_;
   std::vector<TrainElement> elements_;
+  std::vector<TrainClearanceBearing> clearance_bearings_;
   std::vector<Eigen::MatrixXd> element_damping_;  // over each element's DOFs
   std::vector<int> shaft_body_;                   // spec shaft index → body index
   std::vector<std::vector<int>> shaft_nodes_;     // spec shaft index → its bodies by x
