@@ -230,4 +230,10 @@ void addPlanetCentripetal(const GearTrainModel& model, int planet, double rc,
   }
 }
 
+void requireNonNegative(double value, const std::string& key, const std::string& unit) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw InputError(key, fmt::format("{:g} {}", value, unit), "a finite number >= 0");
+  }
+}
+
 }  // namespace geardyn::detail

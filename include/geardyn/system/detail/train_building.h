@@ -89,4 +89,7 @@ void applyOperatingLoads(const GearTrainModel& model, const GearTrainSpec& spec,
 void addPlanetCentripetal(const GearTrainModel& model, int planet, double rc,
                           Eigen::MatrixXd& Komega);
 
+/// InputError unless `value` is finite and ≥ 0 (`unit` for the message).
+void requireNonNegative(double value, const std::string& key, const std::string& unit);
+
 }  // namespace geardyn::detail

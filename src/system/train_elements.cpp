@@ -1,0 +1,227 @@
+/// The elements of a gear train: bearings (with their radial clearance), couplings and planet
+/// pins, each a stiffness and damping on the relative displacement of its bodies
+/// (gear_train_model.h).
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "geardyn/error.h"
+#include "geardyn/system/detail/train_building.h"
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+namespace {
+
+using detail::PointJacobian;
+using detail::requireNonNegative;
+
+}  // namespace
+
+void GearTrainModel::checkClearance(const TrainBearingSpec& b, const std::string& key) const {
+  const std::string ckey = key + ".radial_clearance";
+  if (!(b.radial_clearance >= 0.0) || !std::isfinite(b.radial_clearance)) {
+    throw InputError(ckey, fmt::format("{:g} m", b.radial_clearance),
+                     "a finite radial clearance >= 0 m (0: a linear bearing)");
+  }
+  if (b.radial_clearance == 0.0) return;
+  if (spec_.dofs == TrainDofs::kTorsional) {
+    throw InputError(ckey, fmt::format("{:g} m", b.radial_clearance),
+                     "0 with gearbox.dofs = \"torsional\": a torsional train has no radial "
+                     "displacements (use \"planar\" or \"full\" DOFs for a clearance)");
+  }
+  if (!(b.kyy > 0.0) || b.kzz != b.kyy || b.kyz != 0.0 || b.kzy != 0.0) {
+    throw InputError(key + (b.kyy > 0.0 ? ".kzz" : ".kyy"),
+                     fmt::format("{:g} N/m", b.kyy > 0.0 ? b.kzz : b.kyy),
+                     fmt::format("kyy = kzz > 0 without cross terms (kyy {:g} N/m, kyz {:g}, kzy "
+                                 "{:g}): a bearing with radial_clearance {:g} m has one isotropic "
+                                 "radial stiffness acting beyond the clearance",
+                                 b.kyy, b.kyz, b.kzy, b.radial_clearance));
+  }
+}
+
+void GearTrainModel::buildElements() {
+  const bool planar = spec_.dofs == TrainDofs::kPlanar;
+  const bool full = spec_.dofs == TrainDofs::kFull;
+  const bool lateral = planar || full;
+  addBeamElements();
+  auto add = [&](std::string name, std::string kind, const std::vector<PointJacobian>& parts,
+                 const Eigen::Matrix2d& k2, const Eigen::Matrix2d& c2) {
+    // Relative displacement d = Σ J_i q: K = Jᵀ k J over the union of the DOFs.
+    TrainElement e{std::move(name), std::move(kind), {}, {}, {}, k2};
+    Eigen::MatrixXd J;
+    detail::stackJacobians(parts, e.dofs, J);
+    e.stiffness = J.transpose() * k2 * J;
+    e.jacobian = J;
+    const Eigen::MatrixXd c = J.transpose() * c2 * J;
+    elements_.push_back(e);
+    element_damping_.push_back(c);
+  };
+  auto add_torsion = [&](std::string name, std::string kind, std::vector<int> dofs,
+                         std::vector<double> signs, double k, double c) {
+    TrainElement e{std::move(name), std::move(kind), std::move(dofs), {}, {}, {}};
+    Eigen::VectorXd s = Eigen::Map<Eigen::VectorXd>(signs.data(), signs.size());
+    e.stiffness = k * s * s.transpose();
+    e.jacobian = s.transpose();
+    e.local_stiffness = Eigen::MatrixXd::Constant(1, 1, k);
+    elements_.push_back(e);
+    element_damping_.push_back(c * s * s.transpose());
+  };
+
+  for (const auto& b : spec_.bearings) {
+    const std::string key = "bearings." + b.name;
+    const int shaft = detail::shaftIndexOf(spec_, b.shaft, key + ".shaft");
+    const int body = bodyAt(shaft, b.position, key + ".position");
+    const int other_shaft = b.other_shaft.empty()
+                                ? -1
+                                : detail::shaftIndexOf(spec_, b.other_shaft, key + ".other_shaft");
+    const int other =
+        other_shaft < 0 ? -1 : bodyAt(other_shaft, b.other_position, key + ".other_position");
+    const double dx = axialOffsetOf(body, shaft, b.position);
+    const double other_dx = other < 0 ? 0.0 : axialOffsetOf(other, other_shaft, b.other_position);
+    if (other_shaft == shaft) {
+      throw InputError(key + ".other_shaft", "\"" + b.other_shaft + "\"",
+                       "another shaft than `shaft` (or empty for the housing)");
+    }
+    for (auto [v, n] : {std::pair{b.kyy, "kyy"},
+                        {b.kzz, "kzz"},
+                        {b.cyy, "cyy"},
+                        {b.czz, "czz"},
+                        {b.k_torsion, "k_torsion"},
+                        {b.c_torsion, "c_torsion"},
+                        {b.k_axial, "k_axial"},
+                        {b.c_axial, "c_axial"},
+                        {b.k_tilt, "k_tilt"},
+                        {b.c_tilt, "c_tilt"}}) {
+      requireNonNegative(v, key + "." + n, n[0] == 'k' ? "N/m" : "N s/m");
+    }
+    if (!full && (b.k_axial > 0 || b.c_axial > 0 || b.k_tilt > 0 || b.c_tilt > 0)) {
+      // One gearbox file, many analyses: a lumped model simply has no axial or tilt DOFs.
+      warnings_.push_back(
+          fmt::format("{}: the axial and tilt terms act only with gearbox.dofs = "
+                      "\"full\"; ignored with \"{}\"",
+                      key, toString(spec_.dofs)));
+    }
+    const bool isotropic =
+        b.kyy == b.kzz && b.kyz == 0 && b.kzy == 0 && b.cyy == b.czz && b.cyz == 0 && b.czy == 0;
+    if (planar && !isotropic &&
+        (bodies_[body].stage >= 0 || (other >= 0 && bodies_[other].stage >= 0))) {
+      throw InputError(key + ".kzz", fmt::format("{:g} N/m", b.kzz),
+                       fmt::format("equal to kyy ({:g} N/m) without cross terms: the bearing "
+                                   "holds a member formulated in a rotating carrier frame, where "
+                                   "an anisotropic support would vary in time (set the stage's "
+                                   "carrier_frame_terms = false for the fixed-frame model)",
+                                   b.kyy));
+    }
+    checkClearance(b, key);
+    if (lateral && (b.kyy > 0 || b.kzz > 0 || b.cyy > 0 || b.czz > 0 || b.kyz != 0 || b.kzy != 0)) {
+      Eigen::Matrix2d k, c;
+      k << b.kyy, b.kyz, b.kzy, b.kzz;
+      c << b.cyy, b.cyz, b.czy, b.czz;
+      std::vector<PointJacobian> parts{detail::translationJacobian(*this, body, 1.0, dx)};
+      if (other >= 0) {
+        detail::requireSameFrame(*this, body, other, key);
+        parts.push_back(detail::translationJacobian(*this, other, -1.0, other_dx));
+      }
+      add(b.name, "bearing", parts, k, c);
+      if (b.radial_clearance > 0.0) {
+        clearance_bearings_.push_back(
+            {b.name, elements_.back().dofs, elements_.back().jacobian, b.kyy, b.radial_clearance});
+      }
+    }
+    // Axial spring on the axis, tilt springs about y and z (full DOFs).
+    auto relative = [&](int offset) {
+      std::vector<int> dofs{bodies_[body].first_dof + offset};
+      if (other >= 0) dofs.push_back(bodies_[other].first_dof + offset);
+      return dofs;
+    };
+    const std::vector<double> signs =
+        other >= 0 ? std::vector<double>{1.0, -1.0} : std::vector<double>{1.0};
+    if (full && (b.k_axial > 0 || b.c_axial > 0)) {
+      add_torsion(b.name + ".axial", "bearing", relative(3), signs, b.k_axial, b.c_axial);
+    }
+    if (full && (b.k_tilt > 0 || b.c_tilt > 0)) {
+      add_torsion(b.name + ".tilt_y", "bearing", relative(4), signs, b.k_tilt, b.c_tilt);
+      add_torsion(b.name + ".tilt_z", "bearing", relative(5), signs, b.k_tilt, b.c_tilt);
+    }
+    if (b.k_torsion > 0 || b.c_torsion > 0) {
+      std::vector<int> dofs{rotationDof(body)};
+      std::vector<double> signs{1.0};
+      if (other >= 0) dofs.push_back(rotationDof(other)), signs.push_back(-1.0);
+      add_torsion(b.name + ".torsion", other >= 0 ? "coupling" : "support", dofs, signs,
+                  b.k_torsion, b.c_torsion);
+    }
+  }
+  for (const auto& c : spec_.couplings) {
+    const std::string key = "couplings." + c.name;
+    if (c.shaft_a == c.shaft_b) {
+      throw InputError(key + ".shafts", "\"" + c.shaft_a + "\"", "two different shafts");
+    }
+    const auto [a, b] = detail::couplingBodies(*this, c);
+    requireNonNegative(c.c_torsion, key + ".c_torsion", "N m s/rad");
+    requireNonNegative(c.k_lateral, key + ".k_lateral", "N/m");
+    requireNonNegative(c.c_lateral, key + ".c_lateral", "N s/m");
+    if (!(c.k_torsion > 0.0)) {
+      throw InputError(key + ".k_torsion", fmt::format("{:g} N m/rad", c.k_torsion),
+                       "a torsional stiffness > 0 (a coupling transmits torque)");
+    }
+    add_torsion(c.name, "coupling", {rotationDof(a), rotationDof(b)}, {1.0, -1.0}, c.k_torsion,
+                c.c_torsion);
+    if (lateral && (c.k_lateral > 0 || c.c_lateral > 0)) {
+      detail::requireSameFrame(*this, a, b, key);
+      add(c.name + ".lateral", "coupling",
+          {detail::translationJacobian(*this, a, 1.0), detail::translationJacobian(*this, b, -1.0)},
+          c.k_lateral * Eigen::Matrix2d::Identity(), c.c_lateral * Eigen::Matrix2d::Identity());
+    }
+  }
+  // Planet pins: the planet centre against the carrier's point at the planet's position,
+  // radial and tangential springs (Lin & Parker 1999: k_p both ways); with full DOFs also an
+  // axial and two tilting springs, the carrier's point in the planet's plane.
+  if (lateral) {
+    for (std::size_t p = 0; p < bodies_.size(); ++p) {
+      const TrainBody& planet = bodies_[p];
+      if (planet.kind != TrainBodyKind::kPlanet) continue;
+      const PlanetaryStageSpec& st = spec_.stages[planet.stage];
+      const std::string key = "planetary." + st.name;
+      requireNonNegative(st.pin_radial_stiffness, key + ".pin_radial_stiffness", "N/m");
+      requireNonNegative(st.pin_tangential_stiffness, key + ".pin_tangential_stiffness", "N/m");
+      requireNonNegative(st.pin_damping, key + ".pin_damping", "N s/m");
+      if (!(st.pin_radial_stiffness > 0.0 && st.pin_tangential_stiffness > 0.0)) {
+        throw InputError(key + ".pin_radial_stiffness",
+                         fmt::format("{:g} N/m", st.pin_radial_stiffness),
+                         "pin stiffnesses > 0 radially and tangentially with planar or full "
+                         "DOFs");
+      }
+      const int carrier = detail::carrierBody(*this, planet.stage);
+      const Eigen::Vector2d r = planet.centre - bodies_[carrier].centre;
+      const Eigen::Vector2d er = r.normalized(), et(-er.y(), er.x());
+      const Eigen::Matrix2d k = st.pin_radial_stiffness * er * er.transpose() +
+                                st.pin_tangential_stiffness * et * et.transpose();
+      const double dx = planet.axial - bodies_[carrier].axial;  // 0 unless full DOFs
+      add(planet.name + ".pin", "pin",
+          {detail::translationJacobian(*this, static_cast<int>(p), 1.0),
+           detail::pointJacobian(*this, carrier, planet.centre, -1.0, dx)},
+          k, st.pin_damping * Eigen::Matrix2d::Identity());
+      if (!full) continue;
+      const double mean = 0.5 * (st.pin_radial_stiffness + st.pin_tangential_stiffness);
+      const double b = st.planet.face_width;
+      const double k_axial = st.pin_axial_stiffness >= 0.0 ? st.pin_axial_stiffness : mean;
+      const double k_tilt =
+          st.pin_tilt_stiffness >= 0.0 ? st.pin_tilt_stiffness : mean * b * b / 12.0;
+      requireNonNegative(k_axial, key + ".pin_axial_stiffness", "N/m");
+      requireNonNegative(k_tilt, key + ".pin_tilt_stiffness", "N m/rad");
+      // Axial: u_x,p − (u_x,c + θ_y,c r_z − θ_z,c r_y), the carrier's point at (dx, r_y, r_z).
+      const int pd = planet.first_dof, cd = bodies_[carrier].first_dof;
+      add_torsion(planet.name + ".pin_axial", "pin", {pd + 3, cd + 3, cd + 4, cd + 5},
+                  {1.0, -1.0, -r.y(), r.x()}, k_axial, st.pin_damping);
+      add_torsion(planet.name + ".pin_tilt_y", "pin", {pd + 4, cd + 4}, {1.0, -1.0}, k_tilt,
+                  st.pin_damping * b * b / 12.0);
+      add_torsion(planet.name + ".pin_tilt_z", "pin", {pd + 5, cd + 5}, {1.0, -1.0}, k_tilt,
+                  st.pin_damping * b * b / 12.0);
+    }
+  }
+}
+
+}  // namespace geardyn
