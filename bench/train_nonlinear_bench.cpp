@@ -1,9 +1,12 @@
 // Nonlinear gear trains (issue 17): cost of one continuation point of the train harmonic
 // balance on the 3-planet stage with backlash at its 6 meshes (H = 15, N = 256; target <= 1 ms),
-// without and with the monodromy stability, and of one nonlinear Newmark step of that stage.
+// without and with the monodromy stability, of one nonlinear Newmark step of that stage, and a
+// whole HBM sweep against a stepped Newmark sweep over the same range (target: HBM >= 100x
+// faster).
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <numbers>
 
 #include "geardyn/solvers/continuation.h"
@@ -55,6 +58,67 @@ void BM_TrainNonlinearNewmarkStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_TrainNonlinearNewmarkStep);
+
+// The whole sweep, mesh frequency 4–13 kHz, both ways: the HBM continuation (no stability, as
+// a Newmark sweep has none) against a stepped Newmark sweep that resolves the curve as finely
+// — one steady state per HBM point, each started from the previous one (stepped sine, the
+// cheapest start), 512 steps a mesh period, steady to 1e-9 (the settings at which the two
+// agree within 4.4e-4 of p2p in TrainNonlinearLong). Newmark runs at `newmark_points` evenly
+// spaced frequencies and its cost per frequency is scaled to the HBM's point count: counter
+// `ratio` = Newmark sweep time / HBM sweep time.
+void BM_TrainSweepHbmAgainstNewmark(benchmark::State& state) {
+  const GearTrainModel model(testing::nonlinear::planetary(4e-6));
+  TrainHarmonicBalanceOptions options;
+  options.harmonics = 15;
+  options.samples = 256;
+  TrainHarmonicBalance hbm(model, options);
+  ContinuationOptions c;
+  c.start = 2 * std::numbers::pi * 4000;
+  c.stop = 2 * std::numbers::pi * 13000;
+  c.max_step = (c.stop - c.start) / 100;
+  c.stability = false;
+  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
+  const int newmark_points = static_cast<int>(state.range(0));
+  double hbm_seconds = 0.0, newmark_seconds = 0.0;
+  long long points = 0, periods = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const ContinuationResult r = continueInFrequency(hbm, c);
+    const auto t1 = std::chrono::steady_clock::now();
+    points = static_cast<long long>(r.points.size());
+    TrainNonlinearTimeOptions o;
+    Eigen::VectorXd q, v;
+    periods = 0;
+    for (int k = 0; k < newmark_points; ++k) {
+      const double omega = c.start + (c.stop - c.start) * k / (newmark_points - 1);
+      const TrainNonlinearTimeResponse n =
+          solveTrainNonlinearTime(model, hbm.inputSpeed(omega), o, q, v);
+      // The next frequency starts from this one's last state (velocity by a backward
+      // difference over the last step: any start close to the orbit serves).
+      const Eigen::Index last = n.displacement.rows() - 1;
+      q = n.displacement.row(last).transpose();
+      v = (n.displacement.row(last) - n.displacement.row(last - 1)).transpose() /
+          (n.t(last) - n.t(last - 1));
+      periods += n.periods;
+      benchmark::DoNotOptimize(n.mesh_deflection.data());
+    }
+    const auto t2 = std::chrono::steady_clock::now();
+    hbm_seconds = std::chrono::duration<double>(t1 - t0).count();
+    newmark_seconds = std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double newmark_sweep = newmark_seconds / newmark_points * static_cast<double>(points);
+  state.counters["hbm_points"] = static_cast<double>(points);
+  state.counters["hbm_sweep_s"] = hbm_seconds;
+  state.counters["newmark_per_frequency_s"] = newmark_seconds / newmark_points;
+  state.counters["newmark_periods_per_frequency"] = static_cast<double>(periods) / newmark_points;
+  state.counters["newmark_sweep_s"] = newmark_sweep;
+  state.counters["ratio"] = newmark_sweep / hbm_seconds;
+}
+BENCHMARK(BM_TrainSweepHbmAgainstNewmark)
+    ->Arg(8)
+    ->ArgName("newmark_points")
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace geardyn
