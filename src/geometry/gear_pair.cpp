@@ -220,20 +220,30 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
   // generating rack left standing: tip-root interference (error). With undercut the rack cut
   // beyond T and the fillet cuts the involute back down to r_Ff: a mate tip reaching below r_Ff
   // passes through the undercut, the involutes touch only from r_Ff (warning with the numbers;
-  // whether the tip clears the undercut fillet is not checked).
+  // whether the tip clears the undercut fillet is not checked), unless it reaches further
+  // beyond T than the rack's flank end did (error, as before).
   const auto check_interference = [&](const char* name, const char* mate, const GearSpec& mate_spec,
                                       double mate_tip_roll, double roll_form, double roll_ff,
                                       const MemberRadii& m) {
-    if (roll_form >= 0.0 && mate_tip_roll < roll_form - 1e-12 * m.r) {
-      throw InputError(
-          std::string(mate) + ".addendum_coefficient",
-          fmt::format("{:g}", mate_spec.addendum_coefficient),
-          fmt::format("tip interference: the {} tip reaches the {} flank at d = {}, below its "
-                      "involute form diameter d_Ff = {} (where the generating rack's straight "
-                      "flank ends), so it would hit the {} fillet; reduce the {} addendum or add "
-                      "{} profile shift",
-                      mate, name, mm(2.0 * std::hypot(m.rb, mate_tip_roll)),
-                      mm(2.0 * std::hypot(m.rb, roll_form)), name, mate, name));
+    if (mate_tip_roll < roll_form - 1e-12 * m.r) {
+      // Beyond T (undercut) the tip follows the line of action further than the rack's flank
+      // end: it sweeps deeper than the rack cut the undercut.
+      const std::string reach =
+          roll_form >= 0.0
+              ? fmt::format(
+                    "reaches the {} flank at d = {}, below its involute form diameter "
+                    "d_Ff = {} (where the generating rack's straight flank ends)",
+                    name, mm(2.0 * std::hypot(m.rb, mate_tip_roll)),
+                    mm(2.0 * std::hypot(m.rb, roll_form)))
+              : fmt::format(
+                    "reaches {} beyond the {} base-circle tangent point on the line of "
+                    "action, further than the generating rack's straight flank ({})",
+                    mm(-mate_tip_roll), name, mm(-roll_form));
+      throw InputError(std::string(mate) + ".addendum_coefficient",
+                       fmt::format("{:g}", mate_spec.addendum_coefficient),
+                       fmt::format("tip interference: the {} tip {}, so it would hit the {} "
+                                   "fillet; reduce the {} addendum or add {} profile shift",
+                                   mate, reach, name, mate, name));
     }
     return roll_form < 0.0 && mate_tip_roll < roll_ff;
   };
@@ -293,8 +303,14 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
         fmt::format("the total contact ratio must be at least 1 (transverse {:.6g}, overlap "
                     "{:.6g}): one tooth pair leaves contact before the next one enters, so the "
                     "pair cannot mesh continuously; raise the addendum, the number of teeth, the "
-                    "face width or the helix angle",
-                    eps_alpha_, eps_beta_));
+                    "face width or the helix angle{}",
+                    eps_alpha_, eps_beta_,
+                    into_undercut1 || into_undercut2
+                        ? fmt::format(" (the undercut, which starts the involute at the true "
+                                      "form circle, shortens the path of contact: ε_α would be "
+                                      "{:.6g} on the uncut involute; profile shift avoids it)",
+                                      uncut_length / p_bt_)
+                        : std::string()));
   }
   if (eps_alpha_ < 1.0) {
     warnings_.push_back(fmt::format(

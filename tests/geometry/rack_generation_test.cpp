@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/geometry/involute.h"
 #include "geardyn/geometry/tooth_profile.h"
@@ -175,6 +176,39 @@ TEST(RackGeneration, MateTipAboveTheUndercutFormCircleLeavesContactAtTheTip) {
   EXPECT_CLOSE(pair.pathOfContactStart(), gear_tip_from_t1, 1e-12);
   for (const auto& w : pair.warnings())
     EXPECT_EQ(w.find("the gear tip reaches"), std::string::npos) << w;
+}
+
+TEST(RackGeneration, MateTipBeyondTheRacksFlankEndIsTipInterference) {
+  // 10/60 with a 1.2 m_n gear addendum: beyond T1 the gear tip runs further along the line of
+  // action than the rack's flank end E did, into fillet the rack left standing.
+  GearPairSpec spec = pairOf(gearOf(10), 60);
+  spec.gear.addendum_coefficient = 1.2;
+  const double roll_e = generatingRack(spec.pinion).flank_end_roll;
+  try {
+    GearPair{spec};
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.key(), "gear.addendum_coefficient");
+    EXPECT_NE(
+        std::string(error.what()).find(fmt::format("straight flank ({:.6g} mm)", -1e3 * roll_e)),
+        std::string::npos)
+        << error.what();
+  }
+  spec.gear.addendum_coefficient = 1.0;  // the standard gear passes through the undercut
+  EXPECT_NO_THROW(GearPair{spec});
+}
+
+TEST(RackGeneration, UndercutCanLeaveTooShortAPathOfContact) {
+  // 8/40 standard spur teeth: from T1, as before, ε_α = 1.115; from the 8-tooth pinion's true
+  // form circle (r_Ff = 1.0128 r_b) only 0.913, and the pair is refused, saying why.
+  try {
+    GearPair{pairOf(gearOf(8), 40)};
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("transverse 0.9127"), std::string::npos) << message;
+    EXPECT_NE(message.find("would be 1.11"), std::string::npos) << message;
+  }
 }
 
 }  // namespace
