@@ -8,6 +8,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/geometry/involute.h"
+#include "geardyn/geometry/rack_generation.h"
 
 namespace geardyn {
 namespace {
@@ -205,39 +206,75 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
   const double rho_a2 = std::sqrt(m2.ra * m2.ra - m2.rb * m2.rb);  // T₂ → gear tip point
   const double roll_form1 = rackFormRoll(g1, m1, alpha_t_);
   const double roll_form2 = rackFormRoll(g2, m2, alpha_t_);
+  // Roll distance of the true form circle r_Ff (where the profile becomes involute): the end of
+  // the rack's straight flank, or, with undercut, where the fillet cuts the involute back
+  // (geometry/rack_generation.h). Contact on the involutes cannot begin below it.
+  const auto form_roll = [](const GearSpec& g, const MemberRadii& m) {
+    const double r_ff = trueFormRadius(generatingRack(g));
+    return std::sqrt(std::max(0.0, r_ff * r_ff - m.rb * m.rb));
+  };
+  const double roll_ff1 = form_roll(g1, m1);
+  const double roll_ff2 = form_roll(g2, m2);
   // The mate's tip meets the line of action at line_of_action − ρ_a(mate) from a member's T.
-  // Closer to T than the end of the rack-generated involute (the form point) the mate's tip
-  // would sweep material the generating rack left standing: tip-root interference. With
-  // undercut the form point lies beyond T (roll_form < 0): the mate's tip passes through the
-  // undercut without touching, and contact can only begin at T, on the base circle.
+  // Without undercut, closer to T than the form point the mate's tip would sweep material the
+  // generating rack left standing: tip-root interference (error). With undercut the rack cut
+  // beyond T and the fillet cuts the involute back down to r_Ff: a mate tip reaching below r_Ff
+  // passes through the undercut, the involutes touch only from r_Ff (warning with the numbers;
+  // whether the tip clears the undercut fillet is not checked), unless it reaches further
+  // beyond T than the rack's flank end did (error, as before).
   const auto check_interference = [&](const char* name, const char* mate, const GearSpec& mate_spec,
-                                      double mate_tip_roll, double roll_form,
+                                      double mate_tip_roll, double roll_form, double roll_ff,
                                       const MemberRadii& m) {
     if (mate_tip_roll < roll_form - 1e-12 * m.r) {
-      throw InputError(
-          std::string(mate) + ".addendum_coefficient",
-          fmt::format("{:g}", mate_spec.addendum_coefficient),
-          fmt::format("tip interference: the {} tip reaches the {} flank at d = {}, below its "
-                      "involute form diameter d_Ff = {} (where the generating rack's straight "
-                      "flank ends), so it would hit the {} fillet; reduce the {} addendum or add "
-                      "{} profile shift",
-                      mate, name, mm(2.0 * std::hypot(m.rb, mate_tip_roll)),
-                      mm(2.0 * std::hypot(m.rb, std::max(roll_form, 0.0))), name, mate, name));
+      // Beyond T (undercut) the tip follows the line of action further than the rack's flank
+      // end: it sweeps deeper than the rack cut the undercut.
+      const std::string reach =
+          roll_form >= 0.0
+              ? fmt::format(
+                    "reaches the {} flank at d = {}, below its involute form diameter "
+                    "d_Ff = {} (where the generating rack's straight flank ends)",
+                    name, mm(2.0 * std::hypot(m.rb, mate_tip_roll)),
+                    mm(2.0 * std::hypot(m.rb, roll_form)))
+              : fmt::format(
+                    "reaches {} beyond the {} base-circle tangent point on the line of "
+                    "action, further than the generating rack's straight flank ({})",
+                    mm(-mate_tip_roll), name, mm(-roll_form));
+      throw InputError(std::string(mate) + ".addendum_coefficient",
+                       fmt::format("{:g}", mate_spec.addendum_coefficient),
+                       fmt::format("tip interference: the {} tip {}, so it would hit the {} "
+                                   "fillet; reduce the {} addendum or add {} profile shift",
+                                   mate, reach, name, mate, name));
     }
-    if (mate_tip_roll < 0.0) {
-      warnings_.push_back(fmt::format(
-          "the {} tip passes {} beyond the {} base circle through its undercut: contact begins at "
-          "the base circle, which shortens the path of contact (and the undercut may shorten it "
-          "further)",
-          mate, mm(-mate_tip_roll), name));
-    }
+    return roll_form < 0.0 && mate_tip_roll < roll_ff;
   };
   const double gear_tip_from_t1 = line_of_action_ - rho_a2;
   const double pinion_tip_from_t2 = line_of_action_ - rho_a1;
-  check_interference("pinion", "gear", g2, gear_tip_from_t1, roll_form1, m1);
-  check_interference("gear", "pinion", g1, pinion_tip_from_t2, roll_form2, m2);
-  const double contact_begin = std::max(gear_tip_from_t1, 0.0);                    // from T₁
-  const double contact_end = line_of_action_ - std::max(pinion_tip_from_t2, 0.0);  // from T₁
+  const bool into_undercut1 =
+      check_interference("pinion", "gear", g2, gear_tip_from_t1, roll_form1, roll_ff1, m1);
+  const bool into_undercut2 =
+      check_interference("gear", "pinion", g1, pinion_tip_from_t2, roll_form2, roll_ff2, m2);
+  const double contact_begin = std::max(gear_tip_from_t1, roll_ff1);                    // from T₁
+  const double contact_end = line_of_action_ - std::max(pinion_tip_from_t2, roll_ff2);  // from T₁
+  // ε_α the uncut involutes would give (contact from the tips, or from T): for the warning.
+  const double uncut_length =
+      (line_of_action_ - std::max(pinion_tip_from_t2, 0.0)) - std::max(gear_tip_from_t1, 0.0);
+  const auto warn_undercut_contact = [&](const char* name, const char* mate, double mate_tip_roll,
+                                         double roll_ff, const MemberRadii& m) {
+    const std::string where =
+        mate_tip_roll >= 0.0
+            ? fmt::format("the {} flank at d = {}", name, mm(2.0 * std::hypot(m.rb, mate_tip_roll)))
+            : fmt::format("{} beyond the {} base-circle tangent point on the line of action",
+                          mm(-mate_tip_roll), name);
+    warnings_.push_back(fmt::format(
+        "the {} tip reaches {}, below the true form diameter d_Ff = {} of the {} undercut flank: "
+        "the involutes touch only from d_Ff, which shortens the path of contact (transverse "
+        "contact ratio {:.4f}, against {:.4f} on the uncut involute); the tip passes through the "
+        "undercut, its clearance to the fillet is not checked",
+        mate, where, mm(2.0 * std::hypot(m.rb, roll_ff)), name,
+        (contact_end - contact_begin) / p_bt_, uncut_length / p_bt_));
+  };
+  if (into_undercut1) warn_undercut_contact("pinion", "gear", gear_tip_from_t1, roll_ff1, m1);
+  if (into_undercut2) warn_undercut_contact("gear", "pinion", pinion_tip_from_t2, roll_ff2, m2);
   path_length_ = contact_end - contact_begin;
   if (spec.driver == Driver::kPinion) {
     path_start_ = contact_begin;  // a driving pinion meets the gear tip first
@@ -266,8 +303,14 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
         fmt::format("the total contact ratio must be at least 1 (transverse {:.6g}, overlap "
                     "{:.6g}): one tooth pair leaves contact before the next one enters, so the "
                     "pair cannot mesh continuously; raise the addendum, the number of teeth, the "
-                    "face width or the helix angle",
-                    eps_alpha_, eps_beta_));
+                    "face width or the helix angle{}",
+                    eps_alpha_, eps_beta_,
+                    into_undercut1 || into_undercut2
+                        ? fmt::format(" (the undercut, which starts the involute at the true "
+                                      "form circle, shortens the path of contact: ε_α would be "
+                                      "{:.6g} on the uncut involute; profile shift avoids it)",
+                                      uncut_length / p_bt_)
+                        : std::string()));
   }
   if (eps_alpha_ < 1.0) {
     warnings_.push_back(fmt::format(
@@ -278,7 +321,8 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
 
   // --- per member: radii, form circle, undercut, tip thickness, mass --------------------------
   const auto fill_member = [&](const char* name, const GearSpec& g, const MemberRadii& m,
-                               double r_w, double roll_sap, double roll_form, GearGeometry& out) {
+                               double r_w, double roll_sap, double roll_form, double roll_ff,
+                               GearGeometry& out) {
     out.transverse_module = m_t;
     out.pitch_radius = m.r;
     out.base_radius = m.rb;
@@ -288,14 +332,16 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
     // Start of active profile: where the path of contact begins on this member's flank.
     out.active_profile_start_radius = std::hypot(m.rb, roll_sap);
     out.undercut = roll_form < -1e-12 * m.r;
-    out.form_radius = std::hypot(m.rb, std::max(roll_form, 0.0));
+    out.form_radius = std::hypot(m.rb, roll_ff);
     if (out.undercut) {
       const double z_min = 2.0 * (g.rackStraightFlankDepth() / g.normal_module - g.profile_shift) *
                            std::cos(beta) / std::pow(std::sin(alpha_t_), 2);
       warnings_.push_back(fmt::format(
-          "{} is undercut ({} teeth < {:.2f}, the limit for x = {:g}): the involute near the base "
-          "circle is cut away and the start of active profile (d = {}) may lie in the undercut",
-          name, g.teeth, z_min, g.profile_shift, mm(2.0 * out.active_profile_start_radius)));
+          "{} is undercut ({} teeth < {:.2f}, the limit for x = {:g}): the involute is cut away "
+          "below the true form diameter d_Ff = {} (base circle d_b = {}); start of active "
+          "profile d_Nf = {}",
+          name, g.teeth, z_min, g.profile_shift, mm(2.0 * out.form_radius), mm(2.0 * m.rb),
+          mm(2.0 * out.active_profile_start_radius)));
     }
     out.tip_thickness_normal = m.s_an;
     if (out.tip_thickness_normal < kThinTipFraction * m_n) {
@@ -308,8 +354,8 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
     out.polar_inertia = body.polar_inertia;
     out.diametral_inertia = body.diametral_inertia;
   };
-  fill_member("pinion", g1, m1, r_w1, contact_begin, roll_form1, pinion_);
-  fill_member("gear", g2, m2, r_w2, line_of_action_ - contact_end, roll_form2, gear_);
+  fill_member("pinion", g1, m1, r_w1, contact_begin, roll_form1, roll_ff1, pinion_);
+  fill_member("gear", g2, m2, r_w2, line_of_action_ - contact_end, roll_form2, roll_ff2, gear_);
 
   if (spec.pinion_speed_rpm) {
     const double n1 = *spec.pinion_speed_rpm;

@@ -7,6 +7,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/geometry/involute.h"
+#include "geardyn/geometry/rack_generation.h"
 
 namespace geardyn {
 namespace {
@@ -32,80 +33,37 @@ Polar toPolar(const Eigen::Vector2d& p) {
   return {p.norm(), std::atan2(p.x(), p.y())};
 }
 
-/// Envelope of the generating rack's tip rounding in the gear frame (the trochoidal fillet).
-///
-/// Rack frame (transverse section, heights measured from the gear centre, as the rack stands
-/// when the tooth being cut is centred on +y): reference line y = r + x m_n; the right rack
-/// flank x_F(y) = π m_t / 4 + (r + x m_n − y) tan α_t (so that the tooth is s_t thick on the
-/// rolling line y = r); tip line y = r + x m_n − h_f* m_n; tip rounding of radius ρ = ρ_fP* m_n
-/// tangent to both, centre C. For a roll parameter φ the gear centre is at G = (−r φ, 0), the
-/// gear has turned by −φ, and the instantaneous centre of rotation is I = (−r φ, r). The
-/// envelope point on the rounding is where its normal passes through I (Litvin, Gear Geometry
-/// and Applied Theory, ch. 6): Q = C + ρ (C − I)/|C − I|; in the gear frame P = R(φ)(Q − G).
-/// φ runs from the rounding's tangent point with the flank (normal −(cos α_t, sin α_t)) to its
-/// tangent point with the tip line (normal (0, −1)), which lands on the root circle.
-///
-/// With undercut, the end E of the straight flank (the rounding's tangent point) passes beyond
-/// the interference point and its own path — a prolate trochoid — cuts the involute back; that
-/// path is returned in `flank_end_path` (φ over ±1.5 angular pitches about the generating
-/// position), and `undercut` says whether E generates beyond T.
+/// What the generating rack cuts (geometry/rack_generation.h): the envelope of its tip rounding
+/// (the trochoidal fillet) from the root circle up to the point E where the rounding meets the
+/// straight flank, and, with undercut, the path of E itself over ±1.5 angular pitches about its
+/// generating position (a prolate trochoid; it lies inside what the rounding sweeps, a check
+/// on the polyline rather than a cut of its own).
 struct RackCut {
   std::vector<Eigen::Vector2d> envelope;
   std::vector<Eigen::Vector2d> flank_end_path;
   bool undercut = false;
+  double form_radius = 0.0;  // true form radius r_Ff [m]
 };
 
-RackCut rackCut(const GearPair& pair, const MemberData& m, int points) {
-  const double r = m.geometry.pitch_radius;
-  const double m_n = m.spec.normal_module;
-  const double m_t = m.geometry.transverse_module;
-  const double alpha = pair.transversePressureAngle();
-  const double rho = m.spec.root_fillet_coefficient * m_n;
-  const double y_ref = r + m.spec.profile_shift * m_n;
-  const auto flank_x = [&](double y) { return 0.25 * kPi * m_t + (y_ref - y) * std::tan(alpha); };
-  const double y_c = y_ref - m.spec.dedendum_coefficient * m_n + rho;
-  const Eigen::Vector2d centre(flank_x(y_c) + rho / std::cos(alpha), y_c);
-
-  const double phi_bottom = -centre.x() / r;
-  const double t = (r - centre.y()) / std::sin(alpha);
-  const double phi_flank = -(centre.x() + t * std::cos(alpha)) / r;
-
-  // A rack point p at roll parameter φ, in the gear frame.
-  const auto in_gear_frame = [&](const Eigen::Vector2d& p, double phi) {
-    const Eigen::Vector2d relative = p - Eigen::Vector2d(-r * phi, 0.0);
-    const double c = std::cos(phi), s = std::sin(phi);
-    return Eigen::Vector2d(c * relative.x() - s * relative.y(),
-                           s * relative.x() + c * relative.y());
-  };
-
+RackCut rackCut(const GeneratingRack& rack, int teeth, int points) {
   RackCut cut;
   cut.envelope.reserve(points);
   for (int i = 0; i < points; ++i) {
-    const double phi = phi_bottom + (phi_flank - phi_bottom) * i / (points - 1.0);
-    const Eigen::Vector2d instant(-r * phi, r);
-    Eigen::Vector2d q = centre;
-    if (rho > 0.0) {
-      const Eigen::Vector2d away = centre - instant;
-      q += rho * away / away.norm();
-    }
-    cut.envelope.push_back(in_gear_frame(q, phi));
+    cut.envelope.push_back(generatedFilletPoint(rack, 1.0 - i / (points - 1.0)));
   }
-  // E: the rounding's tangent point with the flank. At φ_flank it lies on the line of action;
-  // beyond T (negative roll distance) the tooth is undercut.
-  const Eigen::Vector2d flank_end =
-      centre - rho * Eigen::Vector2d(std::cos(alpha), std::sin(alpha));
-  const double roll_from_t = r * std::sin(alpha) - (r - flank_end.y()) / std::sin(alpha);
-  cut.undercut = roll_from_t < 0.0;
+  cut.undercut = rack.flank_end_roll < 0.0;
+  cut.form_radius = trueFormRadius(rack);
   if (cut.undercut) {
-    const double span = 1.5 * 2.0 * kPi / m.spec.teeth;
+    const double phi_flank = flankEndRollParameter(rack);
+    const double span = 1.5 * 2.0 * kPi / teeth;
     const int path_points = 4 * points;
     cut.flank_end_path.reserve(path_points);
     for (int i = 0; i < path_points; ++i) {
       const double phi = phi_flank - span + 2.0 * span * i / (path_points - 1.0);
-      cut.flank_end_path.push_back(in_gear_frame(flank_end, phi));
+      cut.flank_end_path.push_back(rackPointInGearFrame(rack, rack.flank_end, phi));
     }
   }
-  return cut;  // envelope from the root circle (φ_bottom) up to the flank end (φ_flank)
+  return cut;  // envelope from the root circle up to the flank end
 }
 
 /// Smallest angle at `radius` over the segments of a polar polyline that span it; +inf if none.
@@ -145,16 +103,16 @@ ToothProfile computeToothProfile(const GearPair& pair, Member member, int points
   const int teeth = m.spec.teeth;
 
   ToothProfile profile;
-  const RackCut cut = rackCut(pair, m, 2 * points_per_segment);
+  const RackCut cut = rackCut(generatingRack(m.spec), teeth, 2 * points_per_segment);
   profile.fillet = cut.envelope;
   std::vector<Polar> fillet_polar, flank_end_polar;
   for (const auto& p : cut.envelope) fillet_polar.push_back(toPolar(p));
   for (const auto& p : cut.flank_end_path) flank_end_polar.push_back(toPolar(p));
 
   // The straight flank of the rack generates the involute down to its end, the top of the
-  // fillet envelope; with undercut that point lies beyond T and the involute is generated down
-  // to the base circle, where the path of the flank's end cuts it back.
-  const double involute_start = cut.undercut ? rb : fillet_polar.back().radius;
+  // fillet envelope; with undercut that point lies beyond T and the fillet cuts the involute
+  // back down to the true form radius r_Ff, solved exactly (rack_generation.h).
+  const double involute_start = cut.form_radius;
 
   // Radii: the fillet's own, then the involute's, evenly in roll distance (dense at the base).
   std::vector<double> radii;
@@ -174,7 +132,7 @@ ToothProfile computeToothProfile(const GearPair& pair, Member member, int points
 
   // The tooth keeps, at each radius, the smallest half-angle any cutting curve leaves.
   std::vector<Polar> flank;
-  profile.form_radius = ra;
+  profile.form_radius = involute_start;
   for (double radius : radii) {
     if (radius < rf || radius > ra) continue;
     double angle =
@@ -182,11 +140,9 @@ ToothProfile computeToothProfile(const GearPair& pair, Member member, int points
     const bool involute_here = radius >= involute_start * (1.0 - 1e-12);
     if (involute_here) {
       const double psi = involuteHalfAngle(pair, member, radius);
-      // Where fillet and involute meet they are tangent: a round-off tie goes to the involute.
-      if (psi <= angle + 1e-12) {
-        profile.form_radius = std::min(profile.form_radius, radius);
-        angle = psi;
-      }
+      // From r_Ff up the involute is the profile (the fillet's chords, tangent to it at r_Ff
+      // without undercut, may stray across it by their sag).
+      angle = psi;
     }
     if (std::isfinite(angle)) flank.push_back({radius, angle});
   }

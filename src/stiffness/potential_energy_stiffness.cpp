@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "geardyn/error.h"
@@ -59,12 +60,10 @@ PotentialEnergyMeshStiffness::PotentialEnergyMeshStiffness(const GearPair& pair,
   pair_slots_ = static_cast<int>(std::floor(contact_ratio_)) + 1;
   warnings_ = pinion_beam_.warnings();
   warnings_.insert(warnings_.end(), gear_beam_.warnings().begin(), gear_beam_.warnings().end());
-  if (s_begin_ / rb1_ < pinion_beam_.involuteStartRoll() - 1e-12 ||
-      (line_of_action_ - s_end_) / rb2_ < gear_beam_.involuteStartRoll() - 1e-12) {
-    warnings_.push_back(
-        "the path of contact reaches below the generated involute (undercut): the beam is loaded "
-        "at the involute's lower end there");
-  }
+  // GearPair starts the path of contact no lower than each member's true form radius (the end of
+  // the generated involute, undercut included), the radius the beams' involutes start from.
+  assert(s_begin_ / rb1_ >= pinion_beam_.involuteStartRoll() - 1e-9);
+  assert((line_of_action_ - s_end_) / rb2_ >= gear_beam_.involuteStartRoll() - 1e-9);
 
   // Table of k′(s) with fourth-order slopes and the exact running integral of its interpolant.
   const int n = options.table_points;

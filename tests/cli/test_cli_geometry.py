@@ -179,3 +179,80 @@ def test_a_rerun_removes_the_previous_runs_files_only(tmp_path):
     assert run("geometry", config, "--out", out, "--set", "output.plots=false").returncode == 0
     assert (out / "notes.txt").read_text() == "mine"
     assert (out / "gears.csv").read_text().startswith("member,")
+
+
+UNDERCUT_10_40 = """
+[pinion]
+teeth = 10
+module = 0.002
+face_width = 0.02
+bore_diameter = 0.008
+
+[gear]
+teeth = 40
+module = 0.002
+face_width = 0.02
+bore_diameter = 0.02
+"""
+
+
+def swept_form_radius(teeth, module):
+    """True form radius of a standard-rack (h_f* = 1.25, ρ_fP* = 0.38, α = 20°, x = 0) spur gear,
+    found without the library: sweep 4000 points of the rack's tip rounding through the rolling
+    motion, take the smallest angle any reaches at a radius (each path crosses r_y at
+    r φ = −p_x ± √(r_y² − p_y²)), and bisect for where that meets the involute."""
+    from math import acos, atan2, cos, pi, sin, sqrt, tan
+    alpha, m = pi / 9, module
+    r = teeth * m / 2
+    rb, rho = r * cos(alpha), 0.38 * m
+    yc = r - 1.25 * m + rho
+    xc = pi * m / 4 + (r - yc) * tan(alpha) + rho / cos(alpha)
+    inv = lambda a: tan(a) - a
+    psi = lambda ry: pi / (2 * teeth) + inv(alpha) - inv(acos(rb / ry))
+    arc = [(xc + rho * cos(t), yc + rho * sin(t))
+           for t in (pi + alpha + (pi / 2 - alpha) * i / 4000 for i in range(4001))]
+
+    def swept(ry):
+        best = 1e9
+        for px, py in arc:
+            h = sqrt(ry * ry - py * py)
+            for phi in ((-px + h) / r, (-px - h) / r):
+                x, y = px + r * phi, py
+                best = min(best, atan2(cos(phi) * x - sin(phi) * y, sin(phi) * x + cos(phi) * y))
+        return best
+    lo, hi = rb * (1 + 1e-9), rb * 1.1
+    for _ in range(45):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if swept(mid) < psi(mid) else (lo, mid)
+    return 0.5 * (lo + hi), rb
+
+
+def test_undercut_pinion_meshes_from_its_true_form_circle(tmp_path):
+    # 10/40 standard teeth: the gear tip passes through the pinion's undercut. The involute
+    # starts at the true form radius r_Ff above the base circle, so contact (SAP) starts there
+    # and the contact ratio is that of the path from r_Ff, not from T1 (1.264 on the uncut
+    # involute). Reference: the sweep above (its grid moves r_Ff by < 1e-9 r_b).
+    out = tmp_path / "uc"
+    result = run("geometry", write(tmp_path, UNDERCUT_10_40), "--out", out, "--set",
+                 "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    assert "below the true form diameter" in result.stderr
+    results = json.loads((out / "summary.json").read_text())["results"]
+    r_ff, rb = swept_form_radius(10, 0.002)
+    assert results["pinion"]["form_radius"] == pytest.approx(r_ff, rel=1e-8)
+    assert results["pinion"]["active_profile_start_radius"] == pytest.approx(r_ff, rel=1e-8)
+    from math import cos, pi, sqrt
+    p_bt = pi * 0.002 * cos(pi / 9)
+    rho_a1 = sqrt(0.012 ** 2 - rb ** 2)
+    eps = (rho_a1 - sqrt(r_ff ** 2 - rb ** 2)) / p_bt
+    assert results["contact_ratio_transverse"] == pytest.approx(eps, rel=1e-8)
+    assert rho_a1 / p_bt - eps > 0.15
+    assert f"{eps:.4f}" in result.stderr and f"{rho_a1 / p_bt:.4f}" in result.stderr
+    # The stiffness command's potential-energy model meshes over the same path of contact.
+    stiffness = run("stiffness", write(tmp_path, UNDERCUT_10_40), "--out", tmp_path / "k",
+                    "--set", "output.plots=false")
+    assert stiffness.returncode == 0, stiffness.stderr
+    model = json.loads((tmp_path / "k" / "summary.json").read_text())["results"]["mesh_stiffness"]
+    assert model["contact_ratio"] == pytest.approx(eps, rel=1e-8)
+    # The roll √(r_Ff² − r_b²) amplifies the sweep's 1e-10 on r_Ff ~90 times near the base circle.
+    assert model["contact_start"] == pytest.approx(sqrt(r_ff ** 2 - rb ** 2), rel=1e-6)

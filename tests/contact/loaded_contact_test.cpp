@@ -11,6 +11,7 @@
 
 #include "geardyn/contact/load_statistics.h"
 #include "geardyn/solvers/time_response.h"
+#include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "support/reference_pairs.h"
 
 namespace geardyn {
@@ -43,6 +44,38 @@ TEST(LoadedContact, UnmodifiedTeethReproduceThePotentialEnergyStiffness) {
       EXPECT_NEAR(total, 2000.0, 1e-9);
     }
   }
+}
+
+TEST(LoadedContact, SampledMeanStiffnessMissesThePeriodMeanByTheQuadratureErrorOfItsJumps) {
+  // `ltca` reports the mean tangent stiffness as the average of its N evenly spaced positions
+  // φ_i = i/N; `stiffness` integrates k(φ) over the period between its discontinuities. Without
+  // modifications both average the same k(φ) (previous test), so the gap is the rectangle
+  // rule's error on a curve with jumps J_j at φ_j: Σ_j J_j (t_j − 1/2) / N with t_j = frac(N φ_j)
+  // (a sample on a jump takes k(φ_j): k(φ_j) − (k(φ_j⁺) + k(φ_j⁻))/2 instead), plus O(1/N²).
+  // docs/theory/loaded_contact.md, "Mean stiffness: ltca and stiffness".
+  const auto k = peModel(0.0, 0);
+  const LoadedToothContact contact(k, {}, 1);
+  const double exact = summarizeMeshStiffness(*k, 0).mean;
+  constexpr double kSide = 1e-12;  // one-sided limits at a jump
+  std::vector<double> gaps;
+  for (int n : {200, 400, 800, 3200}) {
+    double mean = 0.0;
+    for (const auto& p : contact.sweep(3000.0, n)) mean += p.tangent / n;
+    double predicted = 0.0;
+    for (double a : k->discontinuities()) {
+      const double right = k->stiffness(a + kSide),
+                   left = k->stiffness(std::fmod(a - kSide + 1, 1));
+      const double t = n * a - std::floor(n * a);
+      predicted += (t < 1e-9 || t > 1 - 1e-9) ? (k->stiffness(a) - 0.5 * (right + left)) / n
+                                              : (right - left) * (t - 0.5) / n;
+    }
+    // Measured: the O(1/N²) remainder is 4e-7 of the mean at N = 200.
+    EXPECT_NEAR(mean - exact, predicted, 1e-6 * exact) << n << " positions";
+    gaps.push_back((mean - exact) / exact);
+  }
+  // The ltca default (200 positions) sits 0.114 % above the period mean; 3200 positions 0.011 %.
+  EXPECT_NEAR(gaps[0], 1.136e-3, 0.005e-3);
+  EXPECT_NEAR(gaps[3], 1.077e-4, 0.005e-4);
 }
 
 TEST(LoadedContact, LoadsBalanceAndRespectTheSeparations) {

@@ -204,19 +204,25 @@ TEST(GearPair, RejectsTipInterference) {
   EXPECT_NO_THROW(GearPair{spec});
 }
 
-TEST(GearPair, UndercutPinionAgainstALargeGearMeshesFromTheBaseCircle) {
-  // 14/40 standard teeth: the gear tip passes beyond T1, through the pinion's undercut (the
-  // generating rack reaches further still, so nothing collides). Contact starts at T1.
+TEST(GearPair, UndercutPinionAgainstALargeGearMeshesFromItsTrueFormCircle) {
+  // 14/40 standard teeth: the gear tip passes beyond T1, through the pinion's undercut. The
+  // fillet cuts the involute back to the true form radius r_Ff (rack_generation_test checks it
+  // against a sweep of the rack), above the base circle: contact starts there, not at T1.
   const GearPair pair(standardPair(14, 40));
   EXPECT_TRUE(pair.pinion().undercut);
-  EXPECT_EQ(pair.pathOfContactStart(), 0.0);
-  EXPECT_CLOSE(pair.pinion().active_profile_start_radius, pair.pinion().base_radius,
-               testing::kRoundOff);
-  const double rho_a1 = std::sqrt(std::pow(24e-3, 2) - std::pow(pair.pinion().base_radius, 2));
-  EXPECT_CLOSE(pair.contactRatioTransverse(), rho_a1 / pair.basePitchTransverse(), 1e-12);
+  const double rb1 = pair.pinion().base_radius, r_ff = pair.pinion().form_radius;
+  EXPECT_GT(r_ff, rb1 * 1.0005);
+  EXPECT_LT(r_ff, rb1 * 1.001);
+  const double roll_ff = std::sqrt(r_ff * r_ff - rb1 * rb1);
+  EXPECT_CLOSE(pair.pathOfContactStart(), roll_ff, 1e-12);
+  EXPECT_CLOSE(pair.pinion().active_profile_start_radius, r_ff, testing::kRoundOff);
+  const double rho_a1 = std::sqrt(std::pow(24e-3, 2) - std::pow(rb1, 2));
+  EXPECT_CLOSE(pair.contactRatioTransverse(), (rho_a1 - roll_ff) / pair.basePitchTransverse(),
+               1e-12);
   bool warned = false;
   for (const auto& w : pair.warnings())
-    warned |= w.find("beyond the pinion base circle") != std::string::npos;
+    warned |= w.find("the gear tip reaches") != std::string::npos &&
+              w.find("below the true form diameter") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 

@@ -34,13 +34,15 @@ struct GearPairSpec {
 
 /// Geometry of one member of a pair, derived in the operating condition. Radii in [m].
 struct GearGeometry {
-  double transverse_module = 0.0;            ///< m_t = m_n / cos β [m]
-  double pitch_radius = 0.0;                 ///< reference radius r = z m_t / 2 [m]
-  double base_radius = 0.0;                  ///< r_b = r cos α_t [m]
-  double tip_radius = 0.0;                   ///< r_a = r + (h_a* + x) m_n + Δr_a [m]
-  double root_radius = 0.0;                  ///< r_f = r − (h_f* − x) m_n [m]
-  double operating_pitch_radius = 0.0;       ///< r_w = r_b / cos α_wt [m]
-  double form_radius = 0.0;                  ///< start of the generated involute, r_Ff [m]
+  double transverse_module = 0.0;       ///< m_t = m_n / cos β [m]
+  double pitch_radius = 0.0;            ///< reference radius r = z m_t / 2 [m]
+  double base_radius = 0.0;             ///< r_b = r cos α_t [m]
+  double tip_radius = 0.0;              ///< r_a = r + (h_a* + x) m_n + Δr_a [m]
+  double root_radius = 0.0;             ///< r_f = r − (h_f* − x) m_n [m]
+  double operating_pitch_radius = 0.0;  ///< r_w = r_b / cos α_wt [m]
+  /// Start of the generated involute, r_Ff [m]; with undercut where the fillet cuts it back
+  /// (trueFormRadius, geometry/rack_generation.h). Contact starts no lower.
+  double form_radius = 0.0;
   double active_profile_start_radius = 0.0;  ///< start of active profile (SAP), r_Nf [m]
   double tip_thickness_normal = 0.0;         ///< normal tooth thickness at the tip circle s_an [m]
   double tip_clearance = 0.0;                ///< a_w − r_a − r_f(mate) [m]
