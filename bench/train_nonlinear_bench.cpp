@@ -21,16 +21,8 @@ namespace {
 
 void BM_TrainHbmContinuationPoint(benchmark::State& state) {
   const GearTrainModel model(testing::nonlinear::planetary(4e-6));
-  TrainHarmonicBalanceOptions options;
-  options.harmonics = 15;
-  options.samples = 256;
-  TrainHarmonicBalance hbm(model, options);
-  ContinuationOptions c;  // mesh frequency 4–13 kHz: two loops with contact loss, 4 folds
-  c.start = 2 * std::numbers::pi * 4000;
-  c.stop = 2 * std::numbers::pi * 13000;
-  c.max_step = (c.stop - c.start) / 100;
-  c.stability = state.range(0) > 0;
-  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
+  TrainHarmonicBalance hbm(model, testing::nonlinear::planetaryHbmOptions());
+  const ContinuationOptions c = testing::nonlinear::planetarySweep(state.range(0) > 0);
   long long points = 0;
   for (auto _ : state) {
     const ContinuationResult r = continueInFrequency(hbm, c);
@@ -70,16 +62,8 @@ BENCHMARK(BM_TrainNonlinearNewmarkStep);
 // `ratio` = Newmark sweep time / HBM sweep time.
 void BM_TrainSweepHbmAgainstNewmark(benchmark::State& state) {
   const GearTrainModel model(testing::nonlinear::planetary(4e-6));
-  TrainHarmonicBalanceOptions options;
-  options.harmonics = 15;
-  options.samples = 256;
-  TrainHarmonicBalance hbm(model, options);
-  ContinuationOptions c;
-  c.start = 2 * std::numbers::pi * 4000;
-  c.stop = 2 * std::numbers::pi * 13000;
-  c.max_step = (c.stop - c.start) / 100;
-  c.stability = false;
-  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
+  TrainHarmonicBalance hbm(model, testing::nonlinear::planetaryHbmOptions());
+  const ContinuationOptions c = testing::nonlinear::planetarySweep(false);
   const int newmark_points = static_cast<int>(state.range(0));
   double hbm_seconds = 0.0, newmark_seconds = 0.0;
   long long points = 0, periods = 0;

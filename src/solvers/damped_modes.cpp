@@ -32,8 +32,9 @@ std::vector<DampedMode> dampedModes(const Eigen::MatrixXd& M, const Eigen::Matri
   A.bottomRightCorner(n, n) = -Dh;
   // Eigen's default of 40 QR sweeps per row is not enough near a gyroscopic system's stability
   // boundary (an indefinite K held by Coriolis coupling, eigenvalues meeting at 0: the planets
-  // on soft pins of the CarrierFrame tests near 16 000 rpm): 400, and where the real QR still
-  // stagnates, the complex QR, whose real eigenvalues are then those with |Im λ| at round-off.
+  // on soft pins of TrainModes.SolveNearTheGyroscopicStabilityBoundary, 16 797 rpm): 400, and where
+  // the real QR still stagnates, the complex QR, whose real eigenvalues are then those with |Im λ|
+  // at round-off.
   Eigen::VectorXcd values;
   Eigen::MatrixXcd vectors;
   Eigen::EigenSolver<Eigen::MatrixXd> solver;

@@ -23,17 +23,8 @@ void report(const char* name, const NewmarkCheck& check) {
 /// 8.42/8.82 kHz) and back-flank impacts above; a period-doubling instability near 12.5 kHz.
 TEST(TrainNonlinearLong, PlanetaryStageAgreesWithNewmark) {
   const GearTrainModel model(planetary(4e-6));
-  TrainHarmonicBalanceOptions options;
-  options.harmonics = 15;
-  options.samples = 256;
-  TrainHarmonicBalance hbm(model, options);
-  ContinuationOptions c;
-  c.start = 2 * std::numbers::pi * 4000;
-  c.stop = 2 * std::numbers::pi * 13000;
-  c.stability = false;
-  c.max_step = (c.stop - c.start) / 100;
-  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
-  const ContinuationResult sweep = continueInFrequency(hbm, c);
+  TrainHarmonicBalance hbm(model, planetaryHbmOptions());
+  const ContinuationResult sweep = continueInFrequency(hbm, planetarySweep(false));
   ASSERT_TRUE(sweep.completed) << sweep.message;
   EXPECT_EQ(sweep.folds.size(), 4u);
   std::vector<double> omegas;
