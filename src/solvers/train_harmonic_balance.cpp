@@ -405,10 +405,15 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
   const Eigen::MatrixXd C = elastic_.transpose() * model_.dampingAt(speed) * elastic_;
   const Eigen::MatrixXd V = elastic_.transpose() * V_;
   const Eigen::PartialPivLU<Eigen::MatrixXd> A(Kbar + a0 * M + a1 * C);
-  const Eigen::MatrixXd P = A.solve(M), Q = A.solve(C), Z = A.solve(V);
-  const Eigen::MatrixXd W = V.transpose() * Z;
   const int n = static_cast<int>(elastic_.cols());
+  // y = A⁻¹ (M (a₀x + a₂v + a) + C (a₁x + v)) as one product [A⁻¹M, A⁻¹C] [·; ·] (a₃ = a₄ = 1,
+  // a₅ = 0: β = 1/4, γ = 1/2), then the Woodbury correction for the meshes' S.
+  Eigen::MatrixXd PQ(n, 2 * n);
+  PQ << A.solve(M), A.solve(C);
+  const Eigen::MatrixXd Z = A.solve(V), Vt = V.transpose();
+  const Eigen::MatrixXd W = Vt * Z;
   Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, 2 * n), v = x, a(n, 2 * n), y(n, 2 * n);
+  Eigen::MatrixXd rhs(2 * n, 2 * n);
   x.leftCols(n).setIdentity();
   v.rightCols(n).setIdentity();
   const Eigen::LLT<Eigen::MatrixXd> mass(M);
@@ -420,8 +425,14 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
       S(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2) = bearing_slope_(0, 4 * b + k);
     }
   }
-  a = -mass.solve(Kbar * x + V * (S * (V.transpose() * x)) + C * v);
-  Eigen::MatrixXd small(r_, r_), w(r_, 2 * n);
+  a = -mass.solve(Kbar * x + V * (S * (Vt * x)) + C * v);
+  Eigen::MatrixXd small(r_, r_), w(r_, 2 * n), sw(r_, 2 * n);
+  Eigen::PartialPivLU<Eigen::MatrixXd> small_lu(r_);
+  // The right-hand side carries the acceleration: with β = 1/4, γ = 1/2 a step gives
+  // v' = a₁(x' − x) − v and a' = a₀(x' − x) − a₂v − a, so a₀x' + a₂v' + a' = 2a₀x' + a₂v' − (a₀x +
+  // a₂v + a): a itself is never formed after the start.
+  rhs.topRows(n) = a0 * x + a2 * v + a;
+  rhs.bottomRows(n) = a1 * x + v;
   for (int i = 1; i <= samples_; ++i) {
     // The slope over the interval (t_{i−1}, t_i): the contact law's slope averaged along the
     // straight line between the sampled tooth deformations (the fraction of the interval in
@@ -443,16 +454,18 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
                                                   {delta_(i1, c), delta_(i1, c + 1)}) -
                             bearing.stiffness * Eigen::Matrix2d::Identity();
     }
-    y.noalias() = P * (a0 * x + a2 * v + a * 1.0);  // a₃ = 1 (β = 1/4)
-    y.noalias() += Q * (a1 * x + v);                // a₄ = 1, a₅ = 0 (γ = 1/2)
-    w.noalias() = S * (V.transpose() * y);
+    y.noalias() = PQ * rhs;
+    w.noalias() = Vt * y;
+    sw.noalias() = S * w;
     small.noalias() = S * W;
     small.diagonal().array() += 1.0;
-    y.noalias() -= Z * small.partialPivLu().solve(w);
-    const Eigen::MatrixXd a_new = a0 * (y - x) - a2 * v - a;
-    v += 0.5 * dt * (a + a_new);
-    a = a_new;
-    x = y;
+    small_lu.compute(small);
+    w = small_lu.solve(sw);
+    y.noalias() -= Z * w;
+    v = a1 * (y - x) - v;
+    rhs.topRows(n) = 2.0 * a0 * y + a2 * v - rhs.topRows(n);
+    rhs.bottomRows(n) = a1 * y + v;
+    x.swap(y);
   }
   Eigen::MatrixXd phi(2 * n, 2 * n);
   phi << x, v;

@@ -56,6 +56,11 @@ class ContinuationProblem {
   /// point.q (its AFT samples may be reused).
   virtual void classify(HarmonicBalancePoint& point, StabilityMethod method,
                         bool samples_current) = 0;
+  /// True when a residual at a new ω costs much more than one at the last ω (the gear train's
+  /// condensation refactorises D(h) for every harmonic). Continuation then corrects at the
+  /// predicted ω wherever the branch runs mostly in ω (locally parametrised continuation),
+  /// with the Jacobian of the first iteration held (chord Newton) while it contracts.
+  virtual bool frequencyChangeIsCostly() const { return false; }
 };
 
 /// Newton–Raphson at the fixed ω of `point` from the guess in point.q, with backtracking (the

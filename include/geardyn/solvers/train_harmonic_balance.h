@@ -76,6 +76,8 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   /// Stability from the monodromy matrix (both methods: Hill's full-DOF eigenproblem would be
   /// 2n (2H + 1) wide).
   void classify(HarmonicBalancePoint& point, StabilityMethod method, bool samples_current) override;
+  /// A new ω refactorises D(h) at every harmonic (prepare): continuation holds ω where it can.
+  bool frequencyChangeIsCostly() const override { return true; }
 
   /// Every DOF: real Fourier coefficients over the base period, column 0 the mean, 2h − 1 and 2h
   /// the cosine and sine of harmonic h (rows: DOFs), q(τ) = Σ columns · (1, cos hτ, sin hτ).
