@@ -175,6 +175,13 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
     : model_(model), options_(options) {
   options.validate();
   base_ = trainBaseFrequency(model, options.mesh_harmonics, options.max_base_harmonics);
+  // K̄(Ω) = K̄(0) + Ω²K_Ω: the modes of K̄(0) stay rigid at every speed when K_Ω R = 0 (the
+  // planets' centripetal term spares the rolling mode, docs/theory/gear_trains.md), and the
+  // dense generalized eigensolve (a fifth of a 270-DOF forced sweep) is not repeated per speed.
+  rigid_ = rigidModes(model.meanStiffnessAt(0.0), model.mass());
+  const Eigen::MatrixXd& Komega = model.centripetal();
+  rigid_at_every_speed_ = rigid_.cols() == 0 || Komega.size() == 0 ||
+                          (Komega * rigid_).norm() <= 1e-12 * Komega.norm() * rigid_.norm();
   const int L = options.mesh_harmonics;
   for (int p : base_.mesh_multiple) harmonics_ = std::max(harmonics_, p * L);
   // Fourier coefficients of every mesh's k and k·e over its own period, with its phase.
@@ -254,7 +261,8 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   const Eigen::MatrixXd Kbar = model.meanStiffnessAt(input_speed);
   const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
-  detail::HarmonicBlocks blocks_of(Kbar, M, C, rigidModes(Kbar, M), options_.sparse_dofs);
+  detail::HarmonicBlocks blocks_of(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
+                                   options_.sparse_dofs);
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
   // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.

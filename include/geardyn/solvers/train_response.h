@@ -99,8 +99,9 @@ struct TrainSteadyState {
 };
 
 /// The steady-state solver of one model: what does not depend on the speed (the base
-/// frequency, the Fourier coefficients of every mesh's k and k·e) is computed once, so a speed
-/// sweep pays one sparse LU per speed. Thread-safe for concurrent solve() calls.
+/// frequency, the Fourier coefficients of every mesh's k and k·e, the rigid-body modes when no
+/// centripetal term acts on them) is computed once, so a speed sweep pays one sparse LU per
+/// speed. Thread-safe for concurrent solve() calls.
 class TrainSteadySolver {
  public:
   TrainSteadySolver(const GearTrainModel& model, const TrainSteadyOptions& options = {});
@@ -114,6 +115,9 @@ class TrainSteadySolver {
   int harmonics_ = 0;
   // [mesh][L + l]: Fourier coefficient l of k_m and of k_m e_m, with the mesh phase applied.
   std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
+  // Rigid-body modes of (K̄(0), M), valid at every speed when K_Ω does not act on them.
+  Eigen::MatrixXd rigid_;
+  bool rigid_at_every_speed_ = false;
 };
 
 /// One speed: TrainSteadySolver(model, options).solve(input_speed).
