@@ -77,7 +77,8 @@ void addToothPairKeys(config::ConfigSchema& schema, const std::string& prefix) {
       .defaultValue(1)
       .doc(
           "contact = \"tooth_pairs\": face slices per tooth pair (helical gears and crowning "
-          "need several; spur without crowning: 1)");
+          "need several; spur without crowning: 1). In its [modifications] pinion is the mesh's "
+          "first gear (a sun), gear the second (a planet)");
   config::addModificationsSection(schema, prefix + "modifications");
 }
 

@@ -95,21 +95,11 @@ TEST(TrainToothPairs, SinglePairReducesToTheSdofContactElements) {
   spec.meshes[0].contact = toothPairs(k, force);
   const GearTrainModel train(spec);
   const TrainMesh& m = train.meshes()[0];
-  GearPairModelSpec sdof;
-  sdof.mass = m.equivalent_mass;
-  sdof.damping = m.damping;
-  sdof.mean_force = force;
-  sdof.stiffness = m.stiffness;
-  sdof.transmission_error = m.transmission_error;
+  GearPairModelSpec sdof = sdofOfSingleMesh(train, force);
   sdof.contact = ContactLaw::kOneSided;
   sdof.contact_elements = m.contact.tooth_pairs;
-  sdof.mesh_frequency = 1000.0;
   const GearPairModel pair(sdof);
-  HarmonicBalanceOptions pair_options;
-  pair_options.harmonics = 15;
-  pair_options.samples_per_period = 256;
-  pair_options.tolerance = 1e-12;
-  HarmonicBalance reference(pair, pair_options);
+  HarmonicBalance reference(pair, sdofReductionOptions());
   TrainHarmonicBalanceOptions options;
   options.tolerance = 1e-12;
   TrainHarmonicBalance hbm(train, options);
@@ -123,52 +113,26 @@ TEST(TrainToothPairs, SinglePairReducesToTheSdofContactElements) {
   deriveContinuationSteps(sweep, wn, m.damping_ratio, options.harmonics);
   const ContinuationResult result = continueInFrequency(hbm, sweep);
   ASSERT_TRUE(result.completed) << result.message;
-  int compared = 0, separated = 0;
-  double worst = 0.0, residual = 0.0;
-  ToothPairTable table;
+  ToothPairTable table;  // the elements at the balance's samples
   std::vector<double> phases(256);
   for (int i = 0; i < 256; ++i) phases[i] = m.phase + i / 256.0;
   table.tabulate(*m.contact.tooth_pairs, phases.data(), 256);
-  for (std::size_t i = 0; i < result.points.size(); i += 10) {
-    HarmonicBalancePoint point = result.points[i].solution;
-    hbm.solve(point);
-    ASSERT_TRUE(point.converged) << point.residual;
-    const Eigen::MatrixXd d = hbm.meshDeflections(point.q);
-    bool open = false;  // no element in contact at some sample
-    for (int s = 0; s < d.rows(); ++s) {
-      open = open || table.force(s, d(s, 0) - m.transmission_error.value(m.phase + s / 256.0),
-                                 nullptr) == 0.0;
-    }
-    separated += open;
-    const Eigen::VectorXd expected = point.q;
-    Eigen::VectorXd r;
-    reference.residual(expected, point.omega, r, nullptr, nullptr);
-    residual = std::max(residual, reference.residualNorm(expected, r, point.omega));
-    HarmonicBalancePoint same = point;
-    same.q += 1e-6 * expected.norm() * Eigen::VectorXd::Ones(expected.size()) /
-              std::sqrt(static_cast<double>(expected.size()));
-    reference.solve(same);
-    ASSERT_TRUE(same.converged);
-    worst = std::max(worst, (same.q - expected).norm() / expected.norm());
-    ++compared;
-  }
-  EXPECT_LT(worst, 1e-9);
-  EXPECT_LT(residual, 1e-11);
-  EXPECT_GT(compared, 100);  // measured 188, 176 of them losing contact
-  EXPECT_GT(separated, 100);
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", worst);
-  ::testing::Test::RecordProperty("worst_relative_difference", text);
-  std::snprintf(text, sizeof text, "%.3g", residual);
-  ::testing::Test::RecordProperty("worst_sdof_residual", text);
+  const ReductionCheck check =
+      compareWithSdof(hbm, reference, result, 10, 0.0, [&](const Eigen::MatrixXd& d) {
+        bool open = false;  // no element in contact at some sample
+        for (int s = 0; s < d.rows(); ++s) {
+          const double y = d(s, 0) - m.transmission_error.value(m.phase + s / 256.0);
+          open = open || table.force(s, y, nullptr) == 0.0;
+        }
+        return open;
+      });
+  EXPECT_LT(check.worst, 1e-9);
+  EXPECT_LT(check.residual, 1e-11);
+  EXPECT_GT(check.compared, 100);  // measured 188, 176 of them losing contact
+  EXPECT_GT(check.separated, 100);
   std::printf("reduction: %d points compared, %d with contact loss, worst %.3g, residual %.3g\n",
-              compared, separated, worst, residual);
+              check.compared, check.separated, check.worst, check.residual);
 }
-
-// Base frequencies [Hz] of the Newmark comparison (see TwoStageReducerAgreesWithNewmark).
-constexpr double kSweepStart = 300.0, kSweepStop = 3000.0;
-constexpr double kNewmarkFrequencies[] = {400.0,  800.0,  1200.0, 1500.0,
-                                          1800.0, 2100.0, 2500.0, 2900.0};
 
 /// The monodromy stability with tooth-pair slopes (per element: mean k_j times the fraction of
 /// the sample interval with y > g_j) against Newmark on the single pair: between each pair of
@@ -202,6 +166,11 @@ TEST(TrainToothPairs, MonodromyStabilityAgreesWithNewmarkAtFolds) {
   EXPECT_GE(check.unstable, 2);  // measured: 4 folds, 3 stable and 3 unstable, worst 5.9e-3
   EXPECT_GE(check.stable, 2);
 }
+
+// Base frequencies [Hz] of the Newmark comparison (see TwoStageReducerAgreesWithNewmark).
+constexpr double kSweepStart = 300.0, kSweepStop = 3000.0;
+constexpr double kNewmarkFrequencies[] = {400.0,  800.0,  1200.0, 1500.0,
+                                          1800.0, 2100.0, 2500.0, 2900.0};
 
 /// The two-stage reducer with tooth pairs (long tip reliefs for the mean loads) at both meshes.
 GearTrainSpec twoStageToothPairs() {
@@ -244,13 +213,8 @@ TEST(TrainToothPairs, TwoStageReducerAgreesWithNewmark) {
   options.harmonics = 30;
   options.samples = 512;
   TrainHarmonicBalance hbm(model, options);
-  ContinuationOptions c;
-  c.start = 2 * std::numbers::pi * kSweepStart;
-  c.stop = 2 * std::numbers::pi * kSweepStop;
-  c.stability = false;
-  c.max_step = (c.stop - c.start) / 100;
-  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
-  const ContinuationResult sweep = continueInFrequency(hbm, c);
+  const ContinuationResult sweep =
+      continueInFrequency(hbm, baseSweep(kSweepStart, kSweepStop, options.harmonics));
   ASSERT_TRUE(sweep.completed) << sweep.message;
   std::vector<double> omegas;
   for (double f : kNewmarkFrequencies) omegas.push_back(2 * std::numbers::pi * f);
