@@ -130,6 +130,19 @@ inline ReductionCheck compareWithSdof(
   return out;
 }
 
+/// A sweep of a single-mesh train from `from` to `to` times its mesh's natural frequency
+/// ω_n = √(k̄/m_e) [rad/s], steps derived from ω_n, its damping ratio and H.
+inline ContinuationOptions meshResonanceSweep(const TrainMesh& m, double from, double to,
+                                              int harmonics, bool stability) {
+  const double wn = std::sqrt(m.mean_stiffness / m.equivalent_mass);
+  ContinuationOptions sweep;
+  sweep.start = from * wn;
+  sweep.stop = to * wn;
+  sweep.stability = stability;
+  deriveContinuationSteps(sweep, wn, m.damping_ratio, harmonics);
+  return sweep;
+}
+
 /// Base-frequency sweep [Hz] with steps of at most 1/100 of the range, the rest derived
 /// (ζ = 0.05), without stability.
 inline ContinuationOptions baseSweep(double start_hz, double stop_hz, int harmonics) {

@@ -15,21 +15,30 @@
 
 namespace geardyn::testing::nonlinear {
 
-/// The potential-energy stiffness of the fixed-axis mesh `mesh` of `spec` (pinion: gear a).
-inline std::shared_ptr<const PotentialEnergyMeshStiffness> pairStiffness(
-    const GearTrainSpec& spec, const TrainMeshSpec& mesh) {
-  GearPairSpec pair;
-  for (const auto& g : spec.gears) {
-    if (g.name == mesh.gear_a) pair.pinion = g.gear;
-    if (g.name == mesh.gear_b) pair.gear = g.gear;
-  }
+/// The potential-energy stiffness of the external pair (pinion, gear) at its zero-backlash
+/// centre distance.
+inline std::shared_ptr<const PotentialEnergyMeshStiffness> pairStiffness(GearSpec pinion,
+                                                                         GearSpec gear) {
   // The fillet-foundation model needs a bore: 0.3 of the reference diameter where none is set
   // (this copy only; the train's gear bodies keep theirs).
-  for (GearSpec* g : {&pair.pinion, &pair.gear}) {
+  for (GearSpec* g : {&pinion, &gear}) {
     if (g->bore_diameter <= 0.0) g->bore_diameter = 0.3 * g->teeth * g->normal_module;
   }
-  pair.centre_distance = mesh.centre_distance;
+  GearPairSpec pair;
+  pair.pinion = pinion;
+  pair.gear = gear;
   return std::make_shared<const PotentialEnergyMeshStiffness>(GearPair(pair));
+}
+
+/// That of the fixed-axis mesh `mesh` of `spec` (pinion: gear a).
+inline std::shared_ptr<const PotentialEnergyMeshStiffness> pairStiffness(
+    const GearTrainSpec& spec, const TrainMeshSpec& mesh) {
+  GearSpec a, b;
+  for (const auto& g : spec.gears) {
+    if (g.name == mesh.gear_a) a = g.gear;
+    if (g.name == mesh.gear_b) b = g.gear;
+  }
+  return pairStiffness(a, b);
 }
 
 /// The tooth-pair contact of a pair: one element per tooth pair (spur: one slice), a long

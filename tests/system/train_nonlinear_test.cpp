@@ -65,13 +65,8 @@ TEST(TrainNonlinear, SinglePairReducesToTheSdofHarmonicBalance) {
   TrainHarmonicBalance hbm(train, options);
   ASSERT_EQ(hbm.size(), reference.size());
 
-  const double wn = std::sqrt(m.mean_stiffness / m.equivalent_mass);
-  ContinuationOptions sweep;
-  sweep.start = 0.35 * wn;
-  sweep.stop = 1.0 * wn;
-  sweep.stability = false;
-  deriveContinuationSteps(sweep, wn, m.damping_ratio, options.harmonics);
-  const ContinuationResult result = continueInFrequency(hbm, sweep);
+  const ContinuationResult result =
+      continueInFrequency(hbm, meshResonanceSweep(m, 0.35, 1.0, options.harmonics, false));
   ASSERT_TRUE(result.completed) << result.message;
   EXPECT_EQ(result.folds.size(), 6u);  // 3rd and 2nd superharmonic and primary loops
   const ReductionCheck check =
