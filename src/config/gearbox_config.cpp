@@ -144,6 +144,7 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .optional()
       .doc("mesh phase at t = 0 in mesh periods (default 0)");
   addMeshModelKeys(schema, "meshes.*.", "this mesh");
+  detail::addToothPairKeys(schema, "meshes.*.");
   schema.real("meshes.*.damping")
       .unit("N s/m")
       .min(0.0)
@@ -304,6 +305,7 @@ void addGearboxSections(config::ConfigSchema& schema) {
   config::addGearSection(schema, "planetary.*.planet", "planet gear", true);
   schema.section("planetary.*.sun_planet", "The sun–planet meshes.");
   addMeshModelKeys(schema, "planetary.*.sun_planet.", "the sun–planet meshes");
+  detail::addToothPairKeys(schema, "planetary.*.sun_planet.");
   schema.section("planetary.*.ring_planet", "The ring–planet meshes.");
   addMeshModelKeys(schema, "planetary.*.ring_planet.", "the ring–planet meshes");
 
@@ -398,7 +400,6 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     m.damping_ratio = config.real(p + "damping_ratio");
     m.damping = config.optionalReal(p + "damping");
     m.transmission_error = teFromConfig(config, p);
-    m.contact = contactFromConfig(config, p);
     const TrainGearSpec& a = gear_named(m.gear_a, p + "gears");
     const TrainGearSpec& b = gear_named(m.gear_b, p + "gears");
     const double width = std::min(a.gear.face_width, b.gear.face_width);
@@ -408,6 +409,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
       m.stiffness =
           stiffnessFromConfig(config, p, nullptr, width, a.gear.helix_angle,
                               pair.contactRatioTransverse() + pair.overlapRatio(), warnings);
+      m.contact = contactFromConfig(config, p, nullptr);
     } else {
       GearPairSpec pair_spec;
       pair_spec.pinion = a.gear;
@@ -417,6 +419,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
           makeGearPair(pair_spec, "gears." + a.name, "gears." + b.name, "meshes." + name);
       m.stiffness = stiffnessFromConfig(config, p, &pair, width, a.gear.helix_angle,
                                         pair.contactRatioTotal(), warnings);
+      m.contact = contactFromConfig(config, p, &pair);
     }
     spec.meshes.push_back(std::move(m));
   }
@@ -503,8 +506,8 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     st.ring_planet_damping_ratio = config.real(p + "ring_planet.damping_ratio");
     st.sun_planet_error = teFromConfig(config, p + "sun_planet.");
     st.ring_planet_error = teFromConfig(config, p + "ring_planet.");
-    st.sun_planet_contact = contactFromConfig(config, p + "sun_planet.");
-    st.ring_planet_contact = contactFromConfig(config, p + "ring_planet.");
+    st.sun_planet_contact = contactFromConfig(config, p + "sun_planet.", &sun_pair);
+    st.ring_planet_contact = contactFromConfig(config, p + "ring_planet.", nullptr);
     spec.stages.push_back(std::move(st));
   }
   spec.operating.input_shaft = config.string("operating_point.input");

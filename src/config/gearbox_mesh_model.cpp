@@ -6,7 +6,9 @@
 
 #include <numbers>
 
+#include "geardyn/config/ltca_config.h"
 #include "geardyn/config/stiffness_config.h"
+#include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
 #include "geardyn/stiffness/api_stiffness.h"
 
@@ -52,12 +54,15 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .defaultValue(Json::array())
       .doc("phases φ_r of the TE orders (one per amplitude; empty: 0)");
   schema.string(prefix + "contact")
-      .choices({"linear", "one_sided", "backlash"})
+      .choices({"linear", "one_sided", "backlash", "tooth_pairs"})
       .optional()
       .doc("tooth contact of " + what +
-           ": linear (never separates), one_sided (contact loss) or backlash (free play, then "
-           "the back flank); absent: backlash when the backlash key is given, else linear. "
-           "The nonlinear analysis uses it; the linear ones keep the teeth in contact");
+           ": linear (never separates), one_sided (contact loss), backlash (free play, then "
+           "the back flank) or tooth_pairs (external meshes: one one-sided contact element per "
+           "tooth pair and face slice of the loaded tooth contact, potential-energy stiffness, "
+           "the flank modifications as gaps); absent: backlash when the backlash key is given, "
+           "else linear. The nonlinear analysis uses it; the linear ones keep the teeth in "
+           "contact with the stiffness model's k(φ)");
   schema.real(prefix + "backlash")
       .unit("m")
       .positive()
@@ -65,12 +70,74 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .doc("normal backlash j along the line of action (contact = \"backlash\")");
 }
 
-TrainMeshContact contactFromConfig(const config::Config& config, const std::string& prefix) {
+void addToothPairKeys(config::ConfigSchema& schema, const std::string& prefix) {
+  schema.integer(prefix + "tooth_pair_slices")
+      .min(1)
+      .max(1000)
+      .defaultValue(1)
+      .doc(
+          "contact = \"tooth_pairs\": face slices per tooth pair (helical gears and crowning "
+          "need several; spur without crowning: 1). In its [modifications] pinion is the mesh's "
+          "first gear (a sun), gear the second (a planet)");
+  config::addModificationsSection(schema, prefix + "modifications");
+}
+
+namespace {
+
+/// Whether the modifications under `prefix` differ from none (their defaults).
+bool hasModifications(const config::Config& config, const std::string& prefix) {
+  const std::string p = prefix + "modifications.";
+  if (config.string(p + "relief") != "none" || config.has(p + "design_load")) return true;
+  for (const char* gear : {"pinion", "gear"}) {
+    for (const char* key : {"tip_relief", "tip_relief_length", "root_relief", "root_relief_length",
+                            "crowning", "slope_error"}) {
+      if (config.real(fmt::format("{}{}_{}", p, gear, key)) != 0.0) return true;
+    }
+    if (!config.realList(fmt::format("{}{}_pitch_errors", p, gear)).empty()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TrainMeshContact contactFromConfig(const config::Config& config, const std::string& prefix,
+                                   const GearPair* pair) {
   TrainMeshContact c;
   const bool has_backlash = config.has(prefix + "backlash");
   const std::string law = config.has(prefix + "contact") ? config.string(prefix + "contact")
                           : has_backlash                 ? "backlash"
                                                          : "linear";
+  // The tooth-pair keys exist for external-capable meshes only (not planetary ring meshes).
+  const nlohmann::ordered_json* node = &config.resolved();
+  for (std::size_t begin = 0, end; (end = prefix.find('.', begin)) != std::string::npos;
+       begin = end + 1) {
+    const std::string part = prefix.substr(begin, end - begin);
+    node = node->is_object() && node->contains(part) ? &(*node)[part] : nullptr;
+    if (!node) break;
+  }
+  const bool tooth_keys = node && node->is_object() && node->contains("tooth_pair_slices");
+  if (law == "tooth_pairs") {
+    if (!pair || !tooth_keys) {
+      throw InputError(prefix + "contact", "\"tooth_pairs\"",
+                       "linear, one_sided or backlash on a ring (internal) mesh: the loaded tooth "
+                       "contact is written for external pairs");
+    }
+    if (has_backlash) {
+      throw InputError(prefix + "backlash", fmt::format("{:g} m", config.real(prefix + "backlash")),
+                       "not with contact = \"tooth_pairs\": the tooth-pair elements are the "
+                       "loaded flank's (no back flank); contact = \"backlash\" for free play");
+    }
+    c.law = ContactLaw::kOneSided;
+    const auto contact = config::loadedContactFromConfig(
+        config, *pair, static_cast<int>(config.integer(prefix + "tooth_pair_slices")),
+        prefix + "modifications");
+    c.tooth_pairs = std::make_shared<LoadedContactElements>(contact);
+    return c;
+  }
+  if (tooth_keys && hasModifications(config, prefix)) {
+    throw InputError(prefix + "modifications", "(given)",
+                     fmt::format("only with contact = \"tooth_pairs\" (contact = \"{}\")", law));
+  }
   if (law == "backlash" && !has_backlash) {
     throw InputError(prefix + "backlash", "(absent)",
                      "the normal backlash along the line of action [m] when contact = "

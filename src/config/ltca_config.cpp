@@ -9,45 +9,45 @@
 
 namespace geardyn::config {
 
-void addModificationsSection(ConfigSchema& schema) {
-  schema.section("modifications",
+void addModificationsSection(ConfigSchema& schema, const std::string& prefix) {
+  schema.section(prefix,
                  "Flank modifications and errors (separations along the line of "
                  "action).");
-  schema.string("modifications.relief")
+  schema.string(prefix + ".relief")
       .choices({"none", "long", "short"})
       .defaultValue("none")
-      .doc(
-          "tip relief of both gears designed for modifications.design_load: long = over the "
-          "two-pair zone (eps - 1) p_b, short = half of it; amount = one pair's deflection");
-  schema.real("modifications.design_load")
+      .doc("tip relief of both gears designed for " + prefix +
+           ".design_load: long = over the "
+           "two-pair zone (eps - 1) p_b, short = half of it; amount = one pair's deflection");
+  schema.real(prefix + ".design_load")
       .unit("N")
       .positive()
       .optional()
       .doc("F0, the load the relief is designed for (also the baseload of the statistics)");
-  schema.string("modifications.shape").choices({"linear", "parabolic"}).defaultValue("linear");
+  schema.string(prefix + ".shape").choices({"linear", "parabolic"}).defaultValue("linear");
   for (const char* gear : {"pinion", "gear"}) {
     for (const char* end : {"tip", "root"}) {
-      schema.real(fmt::format("modifications.{}_{}_relief", gear, end))
+      schema.real(fmt::format("{}.{}_{}_relief", prefix, gear, end))
           .unit("m")
           .min(0.0)
           .defaultValue(0.0)
           .doc(fmt::format("{} {} relief amount (added to a preset)", gear, end));
-      schema.real(fmt::format("modifications.{}_{}_relief_length", gear, end))
+      schema.real(fmt::format("{}.{}_{}_relief_length", prefix, gear, end))
           .unit("m")
           .min(0.0)
           .defaultValue(0.0)
           .doc("its length along the line of action");
     }
-    schema.real(fmt::format("modifications.{}_crowning", gear))
+    schema.real(fmt::format("{}.{}_crowning", prefix, gear))
         .unit("m")
         .min(0.0)
         .defaultValue(0.0)
         .doc("lead crowning C_beta: separation C_beta (2z/b)^2");
-    schema.real(fmt::format("modifications.{}_slope_error", gear))
+    schema.real(fmt::format("{}.{}_slope_error", prefix, gear))
         .unit("m")
         .defaultValue(0.0)
         .doc("profile slope error f_Halpha over the active profile");
-    schema.realList(fmt::format("modifications.{}_pitch_errors", gear))
+    schema.realList(fmt::format("{}.{}_pitch_errors", prefix, gear))
         .unit("m")
         .defaultValue(nlohmann::ordered_json::array())
         .doc("pitch error of each tooth (cyclic)");
@@ -109,49 +109,48 @@ ConfigSchema ltcaSchema() {
 }
 
 std::shared_ptr<const LoadedToothContact> loadedContactFromConfig(const Config& config,
-                                                                  const GearPair& pair,
-                                                                  int slices) {
+                                                                  const GearPair& pair, int slices,
+                                                                  const std::string& prefix) {
   PotentialEnergyOptions pe;
   if (config.resolved().contains("mesh_stiffness")) pe = potentialEnergyOptionsFromConfig(config);
   if (pair.baseHelixAngle() > 0.0) pe.slices = slices;
   auto k = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
-  return std::make_shared<const LoadedToothContact>(k, pairModificationsFromConfig(config, *k),
-                                                    slices);
+  return std::make_shared<const LoadedToothContact>(
+      k, pairModificationsFromConfig(config, *k, prefix), slices);
 }
 
 PairModifications pairModificationsFromConfig(const Config& config,
-                                              const PotentialEnergyMeshStiffness& stiffness) {
-  const ReliefShape shape = config.string("modifications.shape") == "linear"
-                                ? ReliefShape::kLinear
-                                : ReliefShape::kParabolic;
+                                              const PotentialEnergyMeshStiffness& stiffness,
+                                              const std::string& prefix) {
+  const std::string p = prefix + ".";
+  const ReliefShape shape =
+      config.string(p + "shape") == "linear" ? ReliefShape::kLinear : ReliefShape::kParabolic;
   PairModifications m;
-  const std::string relief = config.string("modifications.relief");
+  const std::string relief = config.string(p + "relief");
   if (relief != "none") {
-    if (!config.has("modifications.design_load")) {
-      throw InputError("modifications.design_load", "(not set)",
-                       fmt::format("needed by modifications.relief = \"{}\"", relief));
+    if (!config.has(p + "design_load")) {
+      throw InputError(p + "design_load", "(not set)",
+                       fmt::format("needed by {}relief = \"{}\"", p, relief));
     }
-    m = designedTipRelief(stiffness, config.real("modifications.design_load"), relief == "long",
-                          shape);
+    m = designedTipRelief(stiffness, config.real(p + "design_load"), relief == "long", shape);
   }
   for (const char* gear : {"pinion", "gear"}) {
     ToothModification& t = std::string(gear) == "pinion" ? m.pinion : m.gear;
     for (const char* end : {"tip", "root"}) {
-      const double amount = config.real(fmt::format("modifications.{}_{}_relief", gear, end));
-      const double length =
-          config.real(fmt::format("modifications.{}_{}_relief_length", gear, end));
+      const double amount = config.real(fmt::format("{}{}_{}_relief", p, gear, end));
+      const double length = config.real(fmt::format("{}{}_{}_relief_length", p, gear, end));
       if (amount == 0.0 && length == 0.0) continue;
       Relief& r = std::string(end) == "tip" ? t.tip : t.root;
       if (r.amount > 0.0) {
-        throw InputError(fmt::format("modifications.{}_{}_relief", gear, end),
-                         fmt::format("{:g}", amount), "conflicts with modifications.relief");
+        throw InputError(fmt::format("{}{}_{}_relief", p, gear, end), fmt::format("{:g}", amount),
+                         "conflicts with " + p + "relief");
       }
       r = {amount, length, shape};
-      r.validate(fmt::format("modifications.{}_{}_relief", gear, end).c_str());
+      r.validate(fmt::format("{}{}_{}_relief", p, gear, end).c_str());
     }
-    t.crowning = config.real(fmt::format("modifications.{}_crowning", gear));
-    t.profile_slope_error = config.real(fmt::format("modifications.{}_slope_error", gear));
-    t.pitch_errors = config.realList(fmt::format("modifications.{}_pitch_errors", gear));
+    t.crowning = config.real(fmt::format("{}{}_crowning", p, gear));
+    t.profile_slope_error = config.real(fmt::format("{}{}_slope_error", p, gear));
+    t.pitch_errors = config.realList(fmt::format("{}{}_pitch_errors", p, gear));
   }
   return m;
 }

@@ -114,14 +114,19 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   force_.resize(samples_, r_);
   delta_.resize(samples_, r_);
   Eigen::MatrixXd rate(samples_, meshes_);
+  tooth_pairs_.resize(meshes_);
+  std::vector<double> phases(samples_);
   for (int m = 0; m < meshes_; ++m) {
     const TrainMesh& mesh = model.meshes()[m];
     for (int i = 0; i < samples_; ++i) {
       const double phi = mesh.phase + multiple_[m] * static_cast<double>(i) / samples_;
+      phases[i] = phi;
       k_(i, m) = mesh.stiffness->stiffness(phi);
       e_(i, m) = mesh.transmission_error.value(phi);
       rate(i, m) = mesh.transmission_error.derivative(phi);
     }
+    if (mesh.toothPairs())
+      tooth_pairs_[m].tabulate(*mesh.contact.tooth_pairs, phases.data(), samples_);
   }
   real_buffer_ = fftw_alloc_real(samples_);
   complex_buffer_ = fftw_alloc_complex(samples_ / 2 + 1);
@@ -210,12 +215,18 @@ void TrainHarmonicBalance::meshForceSamples(const Eigen::VectorXd& u) {
   for (int c = 0; c < r_; ++c) inverse(u.data() + c * n_, delta_.col(c).data());
   for (int m = 0; m < meshes_; ++m) {
     const TrainMesh& mesh = model_.meshes()[m];
+    const ToothPairTable& pairs = tooth_pairs_[m];
     for (int i = 0; i < samples_; ++i) {
-      double s = 1.0;
       const double y = delta_(i, m) - e_(i, m);
-      const double g = linearized_ ? y : mesh.contactDeflection(y, &s);
-      force_(i, m) = k_(i, m) * g - mesh.mean_stiffness * delta_(i, m);
-      slope_(i, m) = k_(i, m) * s - mesh.mean_stiffness;
+      double f = 0.0, s = 1.0;
+      if (pairs.elementCount() > 0) {  // Σ_j k_j max(0, y − g_j) (linearised: all in window)
+        f = linearized_ ? pairs.linearForce(i, y, &s) : pairs.force(i, y, &s);
+      } else {
+        f = k_(i, m) * (linearized_ ? y : mesh.contactDeflection(y, &s));
+        s *= k_(i, m);
+      }
+      force_(i, m) = f - mesh.mean_stiffness * delta_(i, m);
+      slope_(i, m) = s - mesh.mean_stiffness;
     }
   }
   // Clearance bearings: f̃ = f(u) − k u and its 2 × 2 Jacobian (column-major in bearing_slope_);
@@ -439,10 +450,14 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
     // contact, so that a contact change inside it counts in proportion: second order in the
     // switching instant instead of first), times the mean of the end stiffnesses, less k̄.
     const int i0 = i - 1, i1 = i % samples_;
+    // Tooth pairs: the same per element, ½ (k_j(t_{i−1}) + k_j(t_i)) times the fraction of the
+    // interval with y > g_j (y and g_j linear between the samples).
     for (int m = 0; m < meshes_; ++m) {
       const TrainMesh& mesh = model_.meshes()[m];
+      const double y0 = delta_(i0, m) - e_(i0, m), y1 = delta_(i1, m) - e_(i1, m);
       const double k = 0.5 * (k_(i0, m) + k_(i1, m));
-      S(m, m) = k * contactFraction(mesh, delta_(i0, m) - e_(i0, m), delta_(i1, m) - e_(i1, m)) -
+      S(m, m) = (tooth_pairs_[m].elementCount() > 0 ? tooth_pairs_[m].meanSlope(i0, y0, i1, y1)
+                                                    : k * contactFraction(mesh, y0, y1)) -
                 mesh.mean_stiffness;
     }
     // A clearance bearing: ∂f/∂u averaged along the straight segment between the samples (the

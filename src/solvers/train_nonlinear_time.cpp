@@ -63,6 +63,8 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
   q_ = v_ = a_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
   delta_ = f_ = res_ = dashpot_ = free_ = step_ = Eigen::VectorXd::Zero(r);
   k_ = e_ = Eigen::VectorXd::Zero(meshes_);
+  tooth_pairs_.resize(meshes_);
+  meshState(0.0);  // sizes the tooth-pair tables once: steps refill them without allocating
 }
 
 void TrainNonlinearNewmark::meshState(double t) {
@@ -72,6 +74,7 @@ void TrainNonlinearNewmark::meshState(double t) {
     const double phi = mesh.phaseAt(t, speed_);
     k_(m) = mesh.stiffness->stiffness(phi);
     e_(m) = mesh.transmission_error.value(phi);
+    if (mesh.toothPairs()) tooth_pairs_[m].tabulate(*mesh.contact.tooth_pairs, &phi, 1);
     // c ė, ė = de/dφ f_m.
     dashpot_(m) = mesh.damping * mesh.transmission_error.derivative(phi) * mesh.frequency_ratio *
                   std::abs(speed_);
@@ -82,10 +85,16 @@ void TrainNonlinearNewmark::nonlinearForces(const Eigen::VectorXd& delta, Eigen:
                                             Eigen::MatrixXd* slope) const {
   const auto& meshes = model_.meshes();
   for (int m = 0; m < meshes_; ++m) {
-    double s = 1.0;
-    const double g = meshes[m].contactDeflection(delta(m) - e_(m), &s);
-    f(m) = k_(m) * g - meshes[m].mean_stiffness * delta(m);
-    if (slope) (*slope)(m, m) = k_(m) * s - meshes[m].mean_stiffness;
+    const double y = delta(m) - e_(m);
+    double s = 1.0, force = 0.0;
+    if (tooth_pairs_[m].elementCount() > 0) {
+      force = tooth_pairs_[m].force(0, y, &s);  // Σ_j k_j max(0, y − g_j)
+    } else {
+      force = k_(m) * meshes[m].contactDeflection(y, &s);
+      s *= k_(m);
+    }
+    f(m) = force - meshes[m].mean_stiffness * delta(m);
+    if (slope) (*slope)(m, m) = s - meshes[m].mean_stiffness;
   }
   // Clearance bearings: f̃ = f(u) − k u with its coupled 2 × 2 Jacobian (bearing_clearance.h).
   Eigen::Matrix2d J;
@@ -207,8 +216,10 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
   r.mesh_force.resize(per_period, meshes);
   for (long long k = 0; k < per_period; ++k) {
     for (int m = 0; m < meshes; ++m) {
+      const TrainMesh& mesh = model.meshes()[m];
+      const double phi = mesh.phaseAt(r.t(k), input_speed);
       r.mesh_force(k, m) =
-          model.meshes()[m].force(r.t(k), input_speed, r.displacement.row(k).transpose());
+          mesh.nonlinearForce(phi, r.mesh_deflection(k, m) - mesh.transmission_error.value(phi));
     }
   }
   if (r.last_change > options.steady_tolerance) {

@@ -13,6 +13,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/system/detail/train_building.h"
+#include "geardyn/system/train_tooth_pairs.h"
 
 namespace geardyn {
 namespace {
@@ -87,6 +88,18 @@ double TrainMesh::contactDeflection(double y, double* slope) const {
   }
   if (slope) *slope = s;
   return g;
+}
+
+double TrainMesh::nonlinearForce(double phase, double y, double* slope) const {
+  if (!contact.tooth_pairs) {
+    double s = 1.0;
+    const double k = stiffness->stiffness(phase), g = contactDeflection(y, &s);
+    if (slope) *slope = k * s;
+    return k * g;
+  }
+  ToothPairTable table;  // Σ_j k_j max(0, y − g_j) at this one phase
+  table.tabulate(*contact.tooth_pairs, &phase, 1);
+  return table.force(0, y, slope);
 }
 
 bool GearTrainModel::hasNonlinearMeshes() const {

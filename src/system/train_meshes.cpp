@@ -356,6 +356,17 @@ void GearTrainModel::buildMeshes() {
                            ? "a backlash > 0 m (contact = \"backlash\")"
                            : "a backlash >= 0 m");
     }
+    if (contact.tooth_pairs) {
+      if (internal) {
+        throw InputError(key + ".contact", "\"tooth_pairs\"",
+                         "linear, one_sided or backlash on a ring (internal) mesh: the loaded "
+                         "tooth contact is written for external pairs");
+      }
+      if (contact.law != ContactLaw::kOneSided || contact.tooth_pairs->count() < 1) {
+        throw InputError(key + ".contact", "\"tooth_pairs\"",
+                         "at least one one-sided contact element and no backlash");
+      }
+    }
     m.contact = contact;
     return m;
   };

@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "geardyn/solvers/detail/sparse_lu_factors.h"
+#include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "support/counting_malloc.h"
 #include "system/sample_trains.h"
+#include "system/tooth_pair_trains.h"
 
 namespace geardyn {
 namespace {
@@ -46,6 +48,23 @@ TEST(TrainNewmarkAllocation, SparseStepsAllocateNothing) {
   const GearTrainModel model(testing::flexibleChain(4, 0.03, varying(4e8)));
   ASSERT_GE(model.dofCount(), kSparseTrainDofs);
   EXPECT_EQ(allocationsOverSteps(model, true), 0);
+}
+
+// The nonlinear Newmark step with tooth-pair meshes: the elements are refilled per step into the
+// tables sized at construction (train_tooth_pairs.h), Newton works in preallocated storage.
+TEST(TrainNonlinearNewmarkAllocation, ToothPairStepsAllocateNothing) {
+  GearTrainSpec spec = testing::nonlinear::withToothPairs(
+      testing::twoStageReducer(varying(4e8), varying(6e8)), {6000.0, 12000.0});
+  const GearTrainModel model(spec);
+  TrainNonlinearNewmark stepper(model, model.inputSpeed(), 1e-6,
+                                NewmarkParameters::averageAcceleration());
+  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                Eigen::VectorXd::Zero(model.dofCount()));
+  stepper.step(1e-13, 50);  // warm-up
+  testing::AllocationCounter counter;
+  for (int s = 0; s < 500; ++s) stepper.step(1e-13, 50);
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_TRUE(std::isfinite(stepper.displacement().norm()));
 }
 
 TEST(SparseLuFactorsAllocation, SolvesAllocateNothing) {

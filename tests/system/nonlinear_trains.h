@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "geardyn/solvers/continuation.h"
+#include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_response.h"
@@ -62,6 +64,95 @@ inline double linearSteadyStateDifference(const Eigen::MatrixXd& X, const TrainS
     }
   }
   return worst;
+}
+
+/// The 1-DOF gear pair of a single-mesh torsional train: its mesh's m_e, c, k(φ) and e(φ), the
+/// mean force `mean_force` [N]; the contact law (or elements) is the caller's.
+inline GearPairModelSpec sdofOfSingleMesh(const GearTrainModel& train, double mean_force) {
+  const TrainMesh& m = train.meshes()[0];
+  GearPairModelSpec sdof;
+  sdof.mass = m.equivalent_mass;
+  sdof.damping = m.damping;
+  sdof.mean_force = mean_force;
+  sdof.stiffness = m.stiffness;
+  sdof.transmission_error = m.transmission_error;
+  sdof.mesh_frequency = 1000.0;  // the balance works in ω; any f_m
+  return sdof;
+}
+
+/// The 1-DOF balance of the reduction tests: H = 15, N = 256 (the train's defaults), 1e-12.
+inline HarmonicBalanceOptions sdofReductionOptions() {
+  HarmonicBalanceOptions o;
+  o.harmonics = 15;
+  o.samples_per_period = 256;
+  o.tolerance = 1e-12;
+  return o;
+}
+
+struct ReductionCheck {
+  int compared = 0, separated = 0;
+  double worst = 0.0;     ///< largest ‖q_1DOF − q_train‖ / ‖q_train‖
+  double residual = 0.0;  ///< largest relative 1-DOF residual at the train's solutions
+};
+
+/// Every `stride`th point of a single-mesh train's sweep refined by the train balance: the
+/// 1-DOF residual at its solution (the mean shifted by `shift` [m]: the 1-DOF deflection's
+/// origin), and the 1-DOF Newton started 1e-6 (relative) away from it; `separated(d)` says
+/// whether the sampled mesh deflections d lose contact somewhere.
+inline ReductionCheck compareWithSdof(
+    TrainHarmonicBalance& hbm, HarmonicBalance& reference, const ContinuationResult& sweep,
+    std::size_t stride, double shift,
+    const std::function<bool(const Eigen::MatrixXd&)>& separated) {
+  ReductionCheck out;
+  for (std::size_t i = 0; i < sweep.points.size(); i += stride) {
+    HarmonicBalancePoint point = sweep.points[i].solution;
+    hbm.solve(point);
+    EXPECT_TRUE(point.converged) << point.residual;
+    out.separated += separated(hbm.meshDeflections(point.q));
+    HarmonicBalancePoint same = point;
+    same.q[0] += shift;
+    const Eigen::VectorXd expected = same.q;
+    Eigen::VectorXd r;
+    reference.residual(expected, point.omega, r, nullptr, nullptr);
+    out.residual = std::max(out.residual, reference.residualNorm(expected, r, point.omega));
+    same.q += 1e-6 * expected.norm() * Eigen::VectorXd::Ones(expected.size()) /
+              std::sqrt(static_cast<double>(expected.size()));
+    reference.solve(same);
+    EXPECT_TRUE(same.converged);
+    out.worst = std::max(out.worst, (same.q - expected).norm() / expected.norm());
+    ++out.compared;
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", out.worst);
+  ::testing::Test::RecordProperty("worst_relative_difference", text);
+  std::snprintf(text, sizeof text, "%.3g", out.residual);
+  ::testing::Test::RecordProperty("worst_sdof_residual", text);
+  return out;
+}
+
+/// A sweep of a single-mesh train from `from` to `to` times its mesh's natural frequency
+/// ω_n = √(k̄/m_e) [rad/s], steps derived from ω_n, its damping ratio and H.
+inline ContinuationOptions meshResonanceSweep(const TrainMesh& m, double from, double to,
+                                              int harmonics, bool stability) {
+  const double wn = std::sqrt(m.mean_stiffness / m.equivalent_mass);
+  ContinuationOptions sweep;
+  sweep.start = from * wn;
+  sweep.stop = to * wn;
+  sweep.stability = stability;
+  deriveContinuationSteps(sweep, wn, m.damping_ratio, harmonics);
+  return sweep;
+}
+
+/// Base-frequency sweep [Hz] with steps of at most 1/100 of the range, the rest derived
+/// (ζ = 0.05), without stability.
+inline ContinuationOptions baseSweep(double start_hz, double stop_hz, int harmonics) {
+  ContinuationOptions c;
+  c.start = 2 * std::numbers::pi * start_hz;
+  c.stop = 2 * std::numbers::pi * stop_hz;
+  c.stability = false;
+  c.max_step = (c.stop - c.start) / 100;
+  deriveContinuationSteps(c, 0.0, 0.05, harmonics);
+  return c;
 }
 
 struct NewmarkCheck {

@@ -53,13 +53,8 @@ TEST(TrainNonlinearLong, TwoStageReducerAgreesWithNewmark) {
   options.harmonics = 30;
   options.samples = 512;
   TrainHarmonicBalance hbm(model, options);
-  ContinuationOptions c;
-  c.start = 2 * std::numbers::pi * 100;
-  c.stop = 2 * std::numbers::pi * 3000;
-  c.stability = false;
-  c.max_step = (c.stop - c.start) / 100;
-  deriveContinuationSteps(c, 0.0, 0.05, options.harmonics);
-  const ContinuationResult sweep = continueInFrequency(hbm, c);
+  const ContinuationResult sweep =
+      continueInFrequency(hbm, baseSweep(100, 3000, options.harmonics));
   ASSERT_TRUE(sweep.completed) << sweep.message;
   std::vector<double> omegas;
   for (double f :

@@ -54,70 +54,33 @@ TEST(TrainNonlinear, SinglePairReducesToTheSdofHarmonicBalance) {
   const double j = 2e-5;
   const GearTrainModel train(singlePair(j));
   const TrainMesh& m = train.meshes()[0];
-  GearPairModelSpec sdof;
-  sdof.mass = m.equivalent_mass;
-  sdof.damping = m.damping;
-  sdof.mean_force = train.spec().operating.input_torque / m.base_radius_a;
-  sdof.stiffness = m.stiffness;
-  sdof.transmission_error = m.transmission_error;
+  GearPairModelSpec sdof =
+      sdofOfSingleMesh(train, train.spec().operating.input_torque / m.base_radius_a);
   sdof.contact = ContactLaw::kBacklash;
   sdof.backlash = 0.5 * j;
-  sdof.mesh_frequency = 1000.0;
   const GearPairModel pair(sdof);
-  HarmonicBalanceOptions pair_options;
-  pair_options.harmonics = 15;
-  pair_options.samples_per_period = 256;
-  pair_options.tolerance = 1e-12;
-  HarmonicBalance reference(pair, pair_options);
+  HarmonicBalance reference(pair, sdofReductionOptions());
   TrainHarmonicBalanceOptions options;
   options.tolerance = 1e-12;
   TrainHarmonicBalance hbm(train, options);
   ASSERT_EQ(hbm.size(), reference.size());
 
-  const double wn = std::sqrt(m.mean_stiffness / m.equivalent_mass);
-  ContinuationOptions sweep;
-  sweep.start = 0.35 * wn;
-  sweep.stop = 1.0 * wn;
-  sweep.stability = false;
-  deriveContinuationSteps(sweep, wn, m.damping_ratio, options.harmonics);
-  const ContinuationResult result = continueInFrequency(hbm, sweep);
+  const ContinuationResult result =
+      continueInFrequency(hbm, meshResonanceSweep(m, 0.35, 1.0, options.harmonics, false));
   ASSERT_TRUE(result.completed) << result.message;
   EXPECT_EQ(result.folds.size(), 6u);  // 3rd and 2nd superharmonic and primary loops
-  int compared = 0, separated = 0;
-  double worst = 0.0, residual = 0.0;
-  for (std::size_t i = 0; i < result.points.size(); i += 15) {
-    HarmonicBalancePoint point = result.points[i].solution;
-    hbm.solve(point);
-    ASSERT_TRUE(point.converged) << point.residual;
-    const Eigen::MatrixXd d = hbm.meshDeflections(point.q);
-    bool open = false;
-    for (int k = 0; k < d.rows(); ++k) {
-      open = open || d(k, 0) - m.transmission_error.value(m.phase + k / 256.0) < 0.0;
-    }
-    separated += open;
-    HarmonicBalancePoint same = point;
-    same.q[0] += 0.5 * j;
-    const Eigen::VectorXd expected = same.q;
-    // The 1-DOF residual at the train's solution, and Newton from a start 1e-6 away from it.
-    Eigen::VectorXd r;
-    reference.residual(expected, point.omega, r, nullptr, nullptr);
-    residual = std::max(residual, reference.residualNorm(expected, r, point.omega));
-    same.q += 1e-6 * expected.norm() * Eigen::VectorXd::Ones(expected.size()) /
-              std::sqrt(static_cast<double>(expected.size()));
-    reference.solve(same);
-    ASSERT_TRUE(same.converged);
-    worst = std::max(worst, (same.q - expected).norm() / expected.norm());
-    ++compared;
-  }
-  EXPECT_LT(worst, 1e-9);
-  EXPECT_LT(residual, 1e-11);
-  EXPECT_GT(compared, 40);
-  EXPECT_GT(separated, 20);  // most compared points lose contact
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", worst);
-  ::testing::Test::RecordProperty("worst_relative_difference", text);
-  std::snprintf(text, sizeof text, "%.3g", residual);
-  ::testing::Test::RecordProperty("worst_sdof_residual", text);
+  const ReductionCheck check =
+      compareWithSdof(hbm, reference, result, 15, 0.5 * j, [&](const Eigen::MatrixXd& d) {
+        bool open = false;
+        for (int k = 0; k < d.rows(); ++k) {
+          open = open || d(k, 0) - m.transmission_error.value(m.phase + k / 256.0) < 0.0;
+        }
+        return open;
+      });
+  EXPECT_LT(check.worst, 1e-9);
+  EXPECT_LT(check.residual, 1e-11);
+  EXPECT_GT(check.compared, 40);
+  EXPECT_GT(check.separated, 20);  // most compared points lose contact
 }
 
 /// ∂R/∂δ and ∂R/∂ω₀ against central differences on the planetary stage (18 DOFs, 6 meshes with

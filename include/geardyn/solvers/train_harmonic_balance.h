@@ -33,6 +33,7 @@
 
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/train_tooth_pairs.h"
 
 namespace geardyn {
 
@@ -111,6 +112,8 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   Eigen::MatrixXd force_, delta_;        // f̃ and the coordinates [sample, coordinate]
   Eigen::MatrixXd bearing_slope_;        // ∂f̃/∂u column-major [sample, 4 × bearing]
   Eigen::MatrixXd rate_coefficients_;    // de/dφ per mesh, real layout [coef, mesh]
+  // Tooth-pair elements per mesh at the samples (no elements: k g).
+  std::vector<ToothPairTable> tooth_pairs_;
   bool linearized_ = false;
   // Condensation at the cached ω₀: B(h), dB/dω₀, D(h) factors, b₀ and its derivative.
   double cached_omega_ = -1.0;

@@ -24,6 +24,7 @@
 
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/train_tooth_pairs.h"
 
 namespace geardyn {
 
@@ -44,7 +45,7 @@ struct TrainNonlinearTimeResponse {
   Eigen::VectorXd t;                ///< the last common period's step times [s]
   Eigen::MatrixXd displacement;     ///< q at those times (rows: samples, cols: DOFs)
   Eigen::MatrixXd mesh_deflection;  ///< δ_m (rows: samples, cols: meshes) [m]
-  Eigen::MatrixXd mesh_force;       ///< k g(δ − e) [N]
+  Eigen::MatrixXd mesh_force;  ///< k g(δ − e); tooth pairs: Σ_j k_j max(0, δ − e − g_j) [N]
   /// (u_y, u_z) of every clearance bearing (cols: y then z of bearing 0, 1, …) [m].
   Eigen::MatrixXd bearing_displacement;
   double period = 0.0;       ///< common period [s]
@@ -88,6 +89,7 @@ class TrainNonlinearNewmark {
   Eigen::MatrixXd Cg_, K0_, V_, Z_, W_, J_, slope_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
   Eigen::VectorXd q_, v_, a_, rhs_, y_, delta_, f_, res_, dashpot_, k_, e_, free_, step_;
+  std::vector<ToothPairTable> tooth_pairs_;  // per mesh at the last meshState (one sample)
 };
 
 /// Integrates from (q0, v0) (empty: the mean static deflection at rest) until the mesh

@@ -82,9 +82,16 @@ struct TrainGearSpec {
 /// analyses), kOneSided (contact lost when the tooth deformation δ − e falls below 0) or
 /// kBacklash (free play −j ≤ δ − e ≤ 0, then contact on the back flank). δ − e = 0 is contact
 /// onset on the loaded flank, so a mesh that stays in contact gives the linear results.
+///
+/// Tooth pairs (`tooth_pairs` given, law kOneSided): the nonlinear analyses take the mesh force
+/// as the sum of its tooth-pair contact elements (models/mesh_contact_elements.h), e.g. the
+/// slices of the pair's loaded tooth contact with its flank modifications as gaps,
+///     f = Σ_j k_j(φ) max(0, δ − e(φ) − g_j(φ)),
+/// at the mesh's own phase φ; the mesh's k(φ) stays for the linear analyses and k̄.
 struct TrainMeshContact {
   ContactLaw law = ContactLaw::kLinear;
   double backlash = 0.0;  ///< j: normal backlash along the line of action [m] (kBacklash)
+  std::shared_ptr<const MeshContactElements> tooth_pairs;  ///< null: k(φ) g(δ − e)
 };
 
 /// A mesh between two gears on two shafts with fixed axes (a parallel-axis stage, an idler).

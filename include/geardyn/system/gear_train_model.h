@@ -85,6 +85,12 @@ struct TrainMesh {
   /// (gear_train.h, TrainMeshContact; 1 and y for a linear mesh).
   double contactDeflection(double y, double* slope = nullptr) const;
   bool nonlinear() const noexcept { return contact.law != ContactLaw::kLinear; }
+  /// The mesh force comes from tooth-pair contact elements (TrainMeshContact::tooth_pairs).
+  bool toothPairs() const noexcept { return contact.tooth_pairs != nullptr; }
+  /// The nonlinear analyses' mesh force at phase φ [mesh periods] for the tooth deformation
+  /// y = δ − e [m]: Σ_j k_j(φ) max(0, y − g_j(φ)) for tooth pairs, else k(φ) g(y) [N]; dF/dy
+  /// [N/m] in *slope (virtual calls: for reports, not inner loops).
+  double nonlinearForce(double phase, double y, double* slope = nullptr) const;
   /// Mesh phase at time t for the input speed Ω [rad/s].
   double phaseAt(double t, double input_speed) const;
   /// The mesh deflection vᵀq [m] of a state q (all the model's DOFs).

@@ -20,8 +20,17 @@ namespace geardyn::config::detail {
 /// names the meshes in the documentation.
 void addMeshModelKeys(ConfigSchema& schema, const std::string& prefix, const std::string& what);
 
-/// The tooth contact of a mesh from its keys (see addMeshModelKeys).
-TrainMeshContact contactFromConfig(const Config& config, const std::string& prefix);
+/// The tooth-pair keys of an external mesh under `prefix` (ending in "."): the face slices per
+/// pair and the flank modifications (`prefix`modifications.*, the keys of the hbm and ltca
+/// commands' [modifications]) of contact = "tooth_pairs".
+void addToothPairKeys(ConfigSchema& schema, const std::string& prefix);
+
+/// The tooth contact of a mesh from its keys (see addMeshModelKeys). contact = "tooth_pairs"
+/// builds the elements of the loaded tooth contact of `pair` with the mesh's modifications
+/// (addToothPairKeys); `pair` is null for ring (internal) meshes, which refuse it (InputError
+/// naming `prefix`contact).
+TrainMeshContact contactFromConfig(const Config& config, const std::string& prefix,
+                                   const GearPair* pair);
 
 /// The transmission error of a mesh (te_amplitudes [m], te_phases_deg).
 TransmissionError teFromConfig(const Config& config, const std::string& prefix);
