@@ -10,7 +10,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <numbers>
+#include <thread>
 
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
@@ -52,10 +55,16 @@ struct Row {
 Row rowOf(const GearTrainModel& model, TrainHarmonicBalance& hbm, const SweepPoint& sp,
           const std::string& sweep, int index) {
   const HarmonicBalancePoint& p = sp.solution;
-  Row row{sweep,        index,   sp.branch,  p.iterations,
-          sp.step_cuts, p.omega, p.residual, std::abs(p.critical_multiplier),
-          p.stable,     {},      {},         {},
-          {},           {}};
+  Row row;
+  row.sweep = sweep;
+  row.point = index;
+  row.branch = sp.branch;
+  row.iterations = p.iterations;
+  row.step_cuts = sp.step_cuts;
+  row.omega = p.omega;
+  row.residual = p.residual;
+  row.multiplier = std::abs(p.critical_multiplier);
+  row.stable = p.stable;
   const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
   const Eigen::MatrixXd f = hbm.meshContactForces(p.q);
   for (int m = 0; m < hbm.meshCount(); ++m) {
@@ -299,6 +308,81 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
 
 }  // namespace
 
+/// One continuation sweep with its table rows (computed by the balance that ran it).
+struct SweepRun {
+  std::string which;  ///< "up" or "down"
+  ContinuationResult run;
+  std::vector<Row> rows;
+  double seconds = 0.0;   ///< wall time [s]
+  bool parallel = false;  ///< ran beside the other direction's sweep
+};
+
+/// The sweeps `direction` asks for. Up and down are independent: with two or more worker
+/// threads the down sweep runs beside the up one, on a balance of its own (FFTW plans are made
+/// on this thread), and one progress line counts both.
+std::vector<SweepRun> runSweeps(const GearTrainModel& model, TrainHarmonicBalance& hbm,
+                                const TrainHarmonicBalanceOptions& options,
+                                const ContinuationOptions& sweep, const std::string& direction,
+                                double scale, const AnalysisContext& context) {
+  std::vector<SweepRun> done;
+  for (const std::string which : {"up", "down"}) {
+    if (direction == "both" || direction == which) done.push_back({which, {}, {}, 0.0, false});
+  }
+  const unsigned threads =
+      context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
+  const bool parallel = done.size() == 2 && threads >= 2;
+  std::unique_ptr<TrainHarmonicBalance> second;
+  if (parallel) second = std::make_unique<TrainHarmonicBalance>(model, options);
+  for (SweepRun& d : done) d.parallel = parallel;
+  std::mutex progress_lock;
+  std::vector<double> progress_done(done.size(), 0.0);
+  const ProgressCallback both =
+      parallel ? context.progressFor("train: nonlinear sweep up and down", "rpm") : nullptr;
+  const auto run = [&](std::size_t k, TrainHarmonicBalance& balance) {
+    const auto start = Clock::now();
+    ContinuationOptions o = sweep;
+    if (done[k].which == "down") std::swap(o.start, o.stop);
+    const ProgressCallback progress =
+        parallel ? both : context.progressFor("train: nonlinear sweep " + done[k].which, "rpm");
+    if (progress && parallel) {
+      o.progress = [&, k](double value, double total) {
+        const std::lock_guard<std::mutex> guard(progress_lock);
+        progress_done[k] = value;
+        progress((progress_done[0] + progress_done[1]) / scale, 2.0 * total / scale);
+      };
+    } else if (progress) {
+      o.progress = [&](double value, double total) { progress(value / scale, total / scale); };
+    }
+    done[k].run = continueInFrequency(balance, o);
+    for (std::size_t i = 0; i < done[k].run.points.size(); ++i) {
+      done[k].rows.push_back(
+          rowOf(model, balance, done[k].run.points[i], done[k].which, static_cast<int>(i)));
+    }
+    done[k].seconds = secondsSince(start);
+  };
+  if (!parallel) {
+    for (std::size_t k = 0; k < done.size(); ++k) run(k, hbm);
+    return done;
+  }
+  std::exception_ptr failure;
+  std::thread down([&] {
+    try {
+      run(1, *second);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  });
+  try {
+    run(0, hbm);
+  } catch (...) {
+    down.join();
+    throw;
+  }
+  down.join();
+  if (failure) std::rethrow_exception(failure);
+  return done;
+}
+
 std::string runTrainNonlinear(const GearTrainModel& model, const config::Config& analysis,
                               AnalysisResult& result, std::string& text,
                               const AnalysisContext& context) {
@@ -357,19 +441,12 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
   int points = 0;
   std::string status = "ok";
   const auto sweep_start = Clock::now();
-  for (const std::string which : {"up", "down"}) {
-    if (direction != "both" && direction != which) continue;
-    const auto run_start = Clock::now();
-    ContinuationOptions o = sweep;
-    if (which == "down") std::swap(o.start, o.stop);
-    const ProgressCallback progress = context.progressFor("train: nonlinear sweep " + which, "rpm");
-    if (progress)
-      o.progress = [&](double done, double total) { progress(done / scale, total / scale); };
-    runs.emplace_back(which, continueInFrequency(hbm, o));
+  std::vector<SweepRun> done = runSweeps(model, hbm, options, sweep, direction, scale, context);
+  for (SweepRun& sweep_run : done) {
+    const std::string which = sweep_run.which;
+    runs.emplace_back(which, std::move(sweep_run.run));
     const ContinuationResult& run = runs.back().second;
-    std::vector<Row> rows;
-    for (std::size_t i = 0; i < run.points.size(); ++i)
-      rows.push_back(rowOf(model, hbm, run.points[i], which, static_cast<int>(i)));
+    const std::vector<Row>& rows = sweep_run.rows;
     const std::string file = "nonlinear_" + which + ".csv";
     result.addTable(file, sweepTable(model, rows, scale, sweep.stability));
     for (const Bifurcation& b : run.bifurcations) {
@@ -395,7 +472,8 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                      {"folds", run.folds.size()},
                      {"step_cuts", run.failures},
                      {"message", run.message},
-                     {"wall_time_s", secondsSince(run_start)}};
+                     {"wall_time_s", sweep_run.seconds},
+                     {"parallel", sweep_run.parallel}};
     if (!run.completed) {
       result.errors.push_back("nonlinear sweep " + which + ": " + run.message);
       status = "incomplete_sweep";

@@ -55,6 +55,23 @@ def test_sweeps_have_two_folds_each_an_unstable_middle_branch_and_contact_loss(p
     assert "train: nonlinear sweep up" in result.stderr  # --progress with GEARDYN_PROGRESS_AFTER=0
 
 
+def test_sweeps_side_by_side_give_the_sequential_results(planetary, tmp_path):
+    """With two or more cores the fixture's up and down sweeps ran side by side; -j 1 runs them
+    one after the other: the same points, bit for bit (the sweeps are independent)."""
+    folder, result = planetary
+    assert result.returncode == 0, result.stderr
+    sequential = run("train", PLANETARY, "--out", tmp_path, "-j", "1",
+                     *quick("--set", "nonlinear.newmark_speeds_rpm=[]"))
+    assert sequential.returncode == 0, sequential.stderr
+    info = json.loads((folder / "summary.json").read_text())["results"]["nonlinear"]["sweeps"]
+    alone = json.loads((tmp_path / "summary.json").read_text())["results"]["nonlinear"]["sweeps"]
+    assert info["up"]["parallel"] == (os.cpu_count() >= 2)
+    assert not alone["up"]["parallel"] and not alone["down"]["parallel"]
+    for sweep in ("up", "down"):
+        assert (folder / f"nonlinear_{sweep}.csv").read_text() == \
+            (tmp_path / f"nonlinear_{sweep}.csv").read_text()
+
+
 def test_columns_carry_units_and_every_mesh(planetary):
     folder, _ = planetary
     header = rows(folder / "nonlinear_up.csv")[0].keys()
