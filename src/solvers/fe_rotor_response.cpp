@@ -31,17 +31,10 @@ std::string toString(FeTimeStatus status) {
 FeNewmarkStepper::FeNewmarkStepper(const FeGearedRotor& model, const FeTimeOptions& options)
     : model_(model),
       dt_(options.time_step),
-      beta_(options.newmark.beta),
       gamma_(options.newmark.gamma),
-      gyro_tolerance_(options.gyro_speed_tolerance) {
+      gyro_tolerance_(options.gyro_speed_tolerance),
+      nm_(options.newmark, options.time_step) {
   options.validate();
-  const double dt = dt_;
-  a0_ = 1.0 / (beta_ * dt * dt);
-  a1_ = gamma_ / (beta_ * dt);
-  a2_ = 1.0 / (beta_ * dt);
-  a3_ = 1.0 / (2.0 * beta_) - 1.0;
-  a4_ = gamma_ / beta_ - 1.0;
-  a5_ = dt / 2.0 * (gamma_ / beta_ - 2.0);
   const int n = model.dofCount();
   k_ref_ = model.meanMeshStiffness();
   A_.resize(n, n);
@@ -54,7 +47,7 @@ FeNewmarkStepper::FeNewmarkStepper(const FeGearedRotor& model, const FeTimeOptio
 void FeNewmarkStepper::factorise(double speed) {
   const FeGearedRotor& m = model_;
   Cg_ = m.damping() + speed * m.gyroscopic();
-  A_ = K0_ + a0_ * m.mass() + a1_ * Cg_;  // coefficient-wise: no temporary
+  A_ = K0_ + nm_.a0 * m.mass() + nm_.a1 * Cg_;  // coefficient-wise: no temporary
   lu_.compute(A_);
   z_ = lu_.solve(m.meshVector());
   s_ = m.meshVector().dot(z_);
@@ -98,8 +91,8 @@ void FeNewmarkStepper::step() {
   }
   force(t1, f_);
   // rhs = f + M (a0 q + a2 v + a3 a) + Cg (a1 q + a4 v + a5 a)
-  p_ = a0_ * q_ + a2_ * v_ + a3_ * a_;
-  c_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
+  p_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
+  c_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
   rhs_ = f_;
   rhs_.noalias() += model_.mass() * p_;
   rhs_.noalias() += Cg_ * c_;
@@ -110,7 +103,7 @@ void FeNewmarkStepper::step() {
   y_.noalias() -= scale * z_;
   // New acceleration and velocity; p_ is reused for the old acceleration.
   p_ = a_;
-  a_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * p_;
+  a_ = nm_.a0 * (y_ - q_) - nm_.a2 * v_ - nm_.a3 * p_;
   v_ += dt_ * ((1.0 - gamma_) * p_ + gamma_ * a_);
   q_.swap(y_);
   t_ = t1;

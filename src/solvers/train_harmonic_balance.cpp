@@ -12,6 +12,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/newmark.h"
 #include "geardyn/solvers/train_response.h"
 
 namespace geardyn {
@@ -410,7 +411,8 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
   // support or damper acts on them) would add multipliers 1 that hide a fold's.
   const double speed = inputSpeed(point.omega);
   const double T = kTwoPi / point.omega, dt = T / samples_;
-  const double a0 = 4.0 / (dt * dt), a1 = 2.0 / dt, a2 = 4.0 / dt;
+  const NewmarkCoefficients nm(NewmarkParameters::averageAcceleration(), dt);
+  const double a0 = nm.a0, a1 = nm.a1, a2 = nm.a2;
   const Eigen::MatrixXd M = elastic_.transpose() * model_.mass() * elastic_;
   const Eigen::MatrixXd Kbar = elastic_.transpose() * model_.meanStiffnessAt(speed) * elastic_;
   const Eigen::MatrixXd C = elastic_.transpose() * model_.dampingAt(speed) * elastic_;

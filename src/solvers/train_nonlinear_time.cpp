@@ -39,22 +39,19 @@ double TrainNonlinearTimeResponse::bearingRadialPeakToPeak(int bearing) const {
 
 TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double input_speed,
                                              double time_step, NewmarkParameters newmark)
-    : model_(model), speed_(input_speed), dt_(time_step), gamma_(newmark.gamma) {
+    : model_(model),
+      speed_(input_speed),
+      dt_(time_step),
+      gamma_(newmark.gamma),
+      nm_(newmark, time_step) {
   newmark.validate();
-  const double beta = newmark.beta;
-  a0_ = 1.0 / (beta * dt_ * dt_);
-  a1_ = gamma_ / (beta * dt_);
-  a2_ = 1.0 / (beta * dt_);
-  a3_ = 0.5 / beta - 1.0;
-  a4_ = gamma_ / beta - 1.0;
-  a5_ = dt_ * (0.5 * gamma_ / beta - 1.0);
   const int n = model.dofCount();
   meshes_ = static_cast<int>(model.meshes().size());
   const int r = meshes_ + 2 * static_cast<int>(model.clearanceBearings().size());
   Cg_ = model.dampingAt(speed_);
   K0_ = model.meanStiffnessAt(speed_);
   V_ = model.nonlinearVectors();  // [V, bearing columns]: δ, then (u_y, u_z) per bearing
-  lu_.compute(K0_ + a0_ * model.mass() + a1_ * Cg_);
+  lu_.compute(K0_ + nm_.a0 * model.mass() + nm_.a1 * Cg_);
   Z_ = lu_.solve(V_);
   W_ = V_.transpose() * Z_;
   small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
@@ -121,9 +118,9 @@ bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
   meshState(t1);
   rhs_.noalias() = model_.staticLoad();
   rhs_.noalias() += V_ * dashpot_;
-  y_ = a0_ * q_ + a2_ * v_ + a3_ * a_;
+  y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
   rhs_.noalias() += model_.mass() * y_;
-  y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
+  y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
   rhs_.noalias() += Cg_ * y_;
   y_ = lu_.solve(rhs_);
   // Newton on δ − Vᵀy + W f̃(t1, δ) = 0 from the last step's deflections (and bearing u).
@@ -143,8 +140,8 @@ bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
     converged = step_.cwiseAbs().maxCoeff() <= newton_tolerance * scale;
   }
   nonlinearForces(delta_, f_, nullptr);
-  y_.noalias() -= Z_ * f_;                       // q_{n+1}
-  rhs_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * a_;  // a_{n+1}
+  y_.noalias() -= Z_ * f_;                                // q_{n+1}
+  rhs_ = nm_.a0 * (y_ - q_) - nm_.a2 * v_ - nm_.a3 * a_;  // a_{n+1}
   v_ += dt_ * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
   a_ = rhs_;
   q_.swap(y_);

@@ -41,22 +41,16 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
     : model_(model),
       speed_(input_speed),
       dt_(time_step),
-      beta_(newmark.beta),
-      gamma_(newmark.gamma) {
+      gamma_(newmark.gamma),
+      nm_(newmark, time_step) {
   newmark.validate();
-  a0_ = 1.0 / (beta_ * dt_ * dt_);
-  a1_ = gamma_ / (beta_ * dt_);
-  a2_ = 1.0 / (beta_ * dt_);
-  a3_ = 0.5 / beta_ - 1.0;
-  a4_ = gamma_ / beta_ - 1.0;
-  a5_ = dt_ * (0.5 * gamma_ / beta_ - 1.0);
   const int n = model.dofCount();
   const int r = static_cast<int>(model.meshes().size());
   Cg_ = model.dampingAt(speed_);
   K0_ = model.meanStiffnessAt(speed_);
   V_.resize(n, r);
   for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
-  const Eigen::MatrixXd A = K0_ + a0_ * model.mass() + a1_ * Cg_;
+  const Eigen::MatrixXd A = K0_ + nm_.a0 * model.mass() + nm_.a1 * Cg_;
   sparse_ = sparse.value_or(n >= kSparseTrainDofs);
   if (sparse_) {
     // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
@@ -113,13 +107,13 @@ void TrainNewmarkStepper::step() {
   meshState(t1);
   rhs_.noalias() = model_.staticLoad();
   rhs_.noalias() += V_ * ke_;
-  y_ = a0_ * q_ + a2_ * v_ + a3_ * a_;
+  y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
   if (sparse_) {
     rhs_.noalias() += Msp_ * y_;
   } else {
     rhs_.noalias() += model_.mass() * y_;
   }
-  y_ = a1_ * q_ + a4_ * v_ + a5_ * a_;
+  y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
   if (sparse_) {
     rhs_.noalias() += Cgsp_ * y_;
     slu_.solve(rhs_, y_);
@@ -139,7 +133,7 @@ void TrainNewmarkStepper::step() {
     y_.noalias() -= Z_ * w_solved_;
   }
   // y_ is q_{n+1}.
-  rhs_ = a0_ * (y_ - q_) - a2_ * v_ - a3_ * a_;  // a_{n+1}
+  rhs_ = nm_.a0 * (y_ - q_) - nm_.a2 * v_ - nm_.a3 * a_;  // a_{n+1}
   v_ += dt_ * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
   a_ = rhs_;
   q_ = y_;

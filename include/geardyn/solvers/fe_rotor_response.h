@@ -76,8 +76,8 @@ class FeNewmarkStepper {
   void force(double t, Eigen::VectorXd& f);
 
   const FeGearedRotor& model_;
-  double dt_, beta_, gamma_, gyro_tolerance_;
-  double a0_, a1_, a2_, a3_, a4_, a5_;
+  double dt_, gamma_, gyro_tolerance_;
+  NewmarkCoefficients nm_;
   double t_ = 0.0, k_ = 0.0, e_ = 0.0, speed_factorised_ = 0.0, k_ref_ = 0.0, s_ = 0.0;
   int factorisations_ = 0;
   Eigen::MatrixXd A_, Cg_, K0_;  // effective, C + ΩG₁, K + k̄ v vᵀ

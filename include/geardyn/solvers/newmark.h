@@ -29,6 +29,22 @@ struct NewmarkParameters {
   void validate() const;
 };
 
+/// The coefficients of Newmark's scheme in effective-stiffness form for a step h [s] (Bathe,
+/// Finite Element Procedures, 2014, Table 9.3): A = K + a₀M + a₁C;
+/// a_{n+1} = a₀(x_{n+1} − x_n) − a₂v_n − a₃a_n, v_{n+1} = v_n + h((1 − γ)a_n + γa_{n+1}), and
+/// the right-hand side M(a₀x + a₂v + a₃a) + C(a₁x + a₄v + a₅a).
+struct NewmarkCoefficients {
+  double a0 = 0, a1 = 0, a2 = 0, a3 = 0, a4 = 0, a5 = 0;
+  NewmarkCoefficients() = default;
+  NewmarkCoefficients(const NewmarkParameters& p, double h)
+      : a0(1.0 / (p.beta * h * h)),
+        a1(p.gamma / (p.beta * h)),
+        a2(1.0 / (p.beta * h)),
+        a3(0.5 / p.beta - 1.0),
+        a4(p.gamma / p.beta - 1.0),
+        a5(0.5 * h * (p.gamma / p.beta - 2.0)) {}
+};
+
 /// What a step of the Newmark scheme needs from a model (GearPairModel satisfies it):
 ///   double mass() const; double damping() const;
 ///   double stiffness(double t) const; double error(double t) const;

@@ -84,7 +84,8 @@ class TrainNonlinearNewmark {
   void meshState(double t);  // k, e and c ė of every mesh at t
 
   const GearTrainModel& model_;
-  double speed_, dt_, gamma_, a0_, a1_, a2_, a3_, a4_, a5_, t_ = 0.0;
+  double speed_, dt_, gamma_, t_ = 0.0;
+  NewmarkCoefficients nm_;
   int meshes_ = 0;
   Eigen::MatrixXd Cg_, K0_, V_, Z_, W_, J_, slope_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;

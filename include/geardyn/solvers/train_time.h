@@ -70,7 +70,8 @@ class TrainNewmarkStepper {
   void meshState(double t);  // fills dk_ (k − k̄) and ke_ (k e + c ė) of every mesh at t
 
   const GearTrainModel& model_;
-  double speed_, dt_, beta_, gamma_, a0_, a1_, a2_, a3_, a4_, a5_, t_ = 0.0;
+  double speed_, dt_, gamma_, t_ = 0.0;
+  NewmarkCoefficients nm_;
   bool sparse_ = false;
   Eigen::MatrixXd Cg_, K0_, V_, Z_, S_, small_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
