@@ -17,13 +17,14 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/solvers/rotor_modal.h"
+#include "geardyn/units.h"
 
 namespace py = pybind11;
 
 namespace geardyn::python {
 namespace {
 
-constexpr double kRpm = std::numbers::pi / 30.0;
+using geardyn::units::kRpm;
 
 /// A column-major Eigen matrix handed to numpy without a copy; `owner` keeps it alive.
 py::array matrixView(const Eigen::MatrixXd& m, py::handle owner) {

@@ -9,13 +9,14 @@
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/io/geometry_results.h"
+#include "geardyn/units.h"
 
 namespace py = pybind11;
 
 namespace geardyn::python {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 py::object jsonToPython(const nlohmann::ordered_json& json) {
   return py::module_::import("json").attr("loads")(json.dump());

@@ -14,13 +14,14 @@
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/units.h"
 
 namespace py = pybind11;
 
 namespace geardyn::python {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 template <typename Enum>
 Enum choose(const std::string& value, const std::string& key,

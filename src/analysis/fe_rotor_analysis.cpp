@@ -16,13 +16,14 @@
 #include "geardyn/error.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "geardyn/units.h"
 
 namespace geardyn::analysis {
 namespace {
 
 constexpr int kOk = 0, kFailed = 1;  // what each analysis type returns
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kRpm = std::numbers::pi / 30.0;
+using geardyn::units::kRpm;
 
 /// The steady-state window of a constant-speed response: harmonics at the mesh orders and the
 /// amplitude spectra of every channel (displacement and acceleration).

@@ -22,12 +22,13 @@
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/units.h"
 #include "train_nonlinear_analysis.h"
 
 namespace geardyn::analysis {
 namespace {
 
-constexpr double kRpm = std::numbers::pi / 30.0;
+using geardyn::units::kRpm;
 using Json = nlohmann::ordered_json;
 using Clock = std::chrono::steady_clock;
 

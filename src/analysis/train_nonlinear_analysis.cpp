@@ -21,11 +21,12 @@
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
+#include "geardyn/units.h"
 
 namespace geardyn::analysis::detail {
 namespace {
 
-constexpr double kRpm = std::numbers::pi / 30.0;  // rad/s per rpm
+using geardyn::units::kRpm;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// A mode whose mesh strain energy is below this fraction of its total has (almost) no mesh
 /// deflection v_mᵀφ for the mesh forces to work on (the fraction is Σ k̄_m (v_mᵀφ)² / φᵀKφ):

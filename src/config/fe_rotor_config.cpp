@@ -14,12 +14,13 @@
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/units.h"
 
 namespace geardyn::config {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kRpm = std::numbers::pi / 30.0;
+constexpr double kDeg = geardyn::units::kDegree;
+using geardyn::units::kRpm;
 constexpr std::array<const char*, 2> kShafts = {"pinion_shaft", "gear_shaft"};
 
 void addShaftSections(ConfigSchema& schema, const std::string& s, const std::string& member) {

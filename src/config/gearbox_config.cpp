@@ -14,6 +14,7 @@
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/geometry/internal_gear_pair.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/units.h"
 
 namespace geardyn::config {
 namespace {
@@ -23,8 +24,8 @@ using detail::contactFromConfig;
 using detail::stiffnessFromConfig;
 using detail::teFromConfig;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kRpm = std::numbers::pi / 30.0;
+constexpr double kDeg = geardyn::units::kDegree;
+using geardyn::units::kRpm;
 using Json = nlohmann::ordered_json;
 
 }  // namespace

@@ -11,11 +11,12 @@
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/units.h"
 
 namespace geardyn::config::detail {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = geardyn::units::kDegree;
 using Json = nlohmann::ordered_json;
 
 }  // namespace

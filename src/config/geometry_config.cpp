@@ -5,11 +5,12 @@
 #include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/tooth_profile.h"
+#include "geardyn/units.h"
 
 namespace geardyn::config {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 }  // namespace
 

@@ -13,11 +13,12 @@
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/units.h"
 
 namespace geardyn::config {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 /// Everything the models of one configuration share, built on first use.
 class ModelFactory {

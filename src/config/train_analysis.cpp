@@ -10,10 +10,11 @@
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
+#include "geardyn/units.h"
 
 namespace geardyn::config {
 namespace {
-constexpr double kRpm = std::numbers::pi / 30.0;
+using geardyn::units::kRpm;
 
 void addSpeedRange(config::ConfigSchema& schema, const std::string& s, int points,
                    const std::string& default_min) {

@@ -7,11 +7,12 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/units.h"
 
 namespace geardyn {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 void requireFinite(const std::string& key, double value) {
   if (!std::isfinite(value)) throw InputError(key, fmt::format("{}", value), "must be finite");

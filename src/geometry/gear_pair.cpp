@@ -9,12 +9,13 @@
 #include "geardyn/error.h"
 #include "geardyn/geometry/involute.h"
 #include "geardyn/geometry/rack_generation.h"
+#include "geardyn/units.h"
 
 namespace geardyn {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
+using geardyn::units::kDegree;
 /// Relative tolerance for "equal" design data of the two members (module, pressure angle, helix).
 constexpr double kSameDesignTolerance = 1e-9;
 /// Normal tip thickness below which ISO practice (and every gear handbook) warns of a weak,

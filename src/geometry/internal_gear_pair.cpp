@@ -9,10 +9,11 @@
 
 #include "geardyn/error.h"
 #include "geardyn/geometry/involute.h"
+#include "geardyn/units.h"
 
 namespace geardyn {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kDeg = geardyn::units::kDegree;
 }
 
 InternalGearPair::InternalGearPair(const GearSpec& pinion, const GearSpec& ring,

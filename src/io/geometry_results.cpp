@@ -6,11 +6,12 @@
 #include "geardyn/config/output_section.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/tooth_profile.h"
+#include "geardyn/units.h"
 
 namespace geardyn::io {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 nlohmann::ordered_json memberJson(const GearGeometry& g, int teeth) {
   nlohmann::ordered_json json;

@@ -14,11 +14,12 @@
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/units.h"
 
 namespace geardyn::io {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using geardyn::units::kDegree;
 
 nlohmann::ordered_json summaryJson(const MeshStiffness& k, int order) {
   const MeshStiffnessSummary s = summarizeMeshStiffness(k, order);

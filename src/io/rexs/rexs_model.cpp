@@ -10,6 +10,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/units.h"
 #include "rexs_mapping.h"
 
 namespace geardyn::io::rexs::detail {
@@ -227,7 +228,7 @@ double Model::capped(double value, bool rotational, const Component& c, const st
 
 GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& s) {
   GearSpec spec;
-  constexpr double kDeg = std::numbers::pi / 180;
+  constexpr double kDeg = geardyn::units::kDegree;
   auto& read = model.read;
   const auto teeth = read.integer(gear, "number_of_teeth");
   if (!teeth || *teeth < 3)
