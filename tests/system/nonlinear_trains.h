@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
@@ -20,6 +21,23 @@
 #include "system/nonlinear_sample_trains.h"
 
 namespace geardyn::testing::nonlinear {
+
+/// The 1-DOF gear pair that one pair with torsional DOFs and backlash j reduces to (issue 17):
+/// half clearance b = j/2 (its deflection x = δ + b), mass m_e, mean force T/r_b1, the same c, k
+/// and e.
+inline GearPairModelSpec reducedPair(const GearTrainModel& train, double j) {
+  const TrainMesh& m = train.meshes()[0];
+  GearPairModelSpec sdof;
+  sdof.mass = m.equivalent_mass;
+  sdof.damping = m.damping;
+  sdof.mean_force = train.spec().operating.input_torque / m.base_radius_a;
+  sdof.stiffness = m.stiffness;
+  sdof.transmission_error = m.transmission_error;
+  sdof.contact = ContactLaw::kBacklash;
+  sdof.backlash = 0.5 * j;
+  sdof.mesh_frequency = 1000.0;
+  return sdof;
+}
 
 /// ∂R/∂u and ∂R/∂ω₀ of the train harmonic balance at (u, ω₀) against central differences
 /// (steps 1e-12 in u, 1e-6 ω₀ in ω₀): every column within 1e-5 of its norm (or of 1). At states

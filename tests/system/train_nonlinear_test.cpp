@@ -54,16 +54,7 @@ TEST(TrainNonlinear, SinglePairReducesToTheSdofHarmonicBalance) {
   const double j = 2e-5;
   const GearTrainModel train(singlePair(j));
   const TrainMesh& m = train.meshes()[0];
-  GearPairModelSpec sdof;
-  sdof.mass = m.equivalent_mass;
-  sdof.damping = m.damping;
-  sdof.mean_force = train.spec().operating.input_torque / m.base_radius_a;
-  sdof.stiffness = m.stiffness;
-  sdof.transmission_error = m.transmission_error;
-  sdof.contact = ContactLaw::kBacklash;
-  sdof.backlash = 0.5 * j;
-  sdof.mesh_frequency = 1000.0;
-  const GearPairModel pair(sdof);
+  const GearPairModel pair(reducedPair(train, j));
   HarmonicBalanceOptions pair_options;
   pair_options.harmonics = 15;
   pair_options.samples_per_period = 256;
