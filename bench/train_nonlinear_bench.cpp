@@ -2,7 +2,8 @@
 // balance on the 3-planet stage with backlash at its 6 meshes (H = 15, N = 256; target <= 1 ms),
 // without and with the monodromy stability, of one nonlinear Newmark step of that stage, and a
 // whole HBM sweep against a stepped Newmark sweep over the same range (target: HBM >= 100x
-// faster).
+// faster), and the cost of the stability (monodromy, Hill's method) against the Newton solve of
+// a point.
 
 #include <benchmark/benchmark.h>
 
@@ -109,6 +110,53 @@ BENCHMARK(BM_TrainSweepHbmAgainstNewmark)
     ->ArgNames({"newmark_points", "steady_tolerance_exp"})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+
+// Stability cost per point against the point's Newton solve (issue 17: stability at most 2x the
+// Newton solve), on the 3-planet stage at H = 15, N = 256: at every 8th point of the 4–13 kHz
+// sweep, Newton at the point's frequency from the previous point's solution (as a corrector
+// starts from a predictor; includes the condensation at the new ω), then the monodromy and
+// Hill's method on the converged point. Counters: mean times per point [ms] and the ratios.
+void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
+  const GearTrainModel model(testing::nonlinear::planetary(4e-6));
+  TrainHarmonicBalance hbm(model, testing::nonlinear::planetaryHbmOptions());
+  const ContinuationResult sweep =
+      continueInFrequency(hbm, testing::nonlinear::planetarySweep(false));
+  using Clock = std::chrono::steady_clock;
+  double newton = 0.0, monodromy = 0.0, hill = 0.0;
+  int points = 0, iterations = 0;
+  for (auto _ : state) {
+    newton = monodromy = hill = 0.0;
+    points = iterations = 0;
+    for (std::size_t i = 8; i < sweep.points.size(); i += 8) {
+      HarmonicBalancePoint p;
+      p.omega = sweep.points[i].solution.omega;
+      p.q = sweep.points[i - 1].solution.q;
+      const auto t0 = Clock::now();
+      hbm.solve(p);
+      const auto t1 = Clock::now();
+      if (!p.converged) continue;
+      HarmonicBalancePoint h = p;
+      hbm.classify(p, StabilityMethod::kMonodromy, true);
+      const auto t2 = Clock::now();
+      hbm.classify(h, StabilityMethod::kHill, false);
+      const auto t3 = Clock::now();
+      benchmark::DoNotOptimize(h.max_floquet_real + p.max_floquet_real);
+      newton += std::chrono::duration<double>(t1 - t0).count();
+      monodromy += std::chrono::duration<double>(t2 - t1).count();
+      hill += std::chrono::duration<double>(t3 - t2).count();
+      iterations += p.iterations;
+      ++points;
+    }
+  }
+  state.counters["points"] = points;
+  state.counters["newton_iterations"] = static_cast<double>(iterations) / points;
+  state.counters["newton_ms"] = 1e3 * newton / points;
+  state.counters["monodromy_ms"] = 1e3 * monodromy / points;
+  state.counters["hill_ms"] = 1e3 * hill / points;
+  state.counters["monodromy_over_newton"] = monodromy / newton;
+  state.counters["hill_over_newton"] = hill / newton;
+}
+BENCHMARK(BM_TrainStabilityCostPerPoint)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace geardyn

@@ -194,6 +194,12 @@ io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& row
   return table;
 }
 
+/// nonlinear.stability_method: "monodromy" (the default) or "hill".
+StabilityMethod stabilityMethod(const config::Config& analysis) {
+  return analysis.string("nonlinear.stability_method") == "hill" ? StabilityMethod::kHill
+                                                                 : StabilityMethod::kMonodromy;
+}
+
 /// Nonlinear Newmark started on every stable solution at the check speeds (unstable ones are
 /// listed, not integrated: a time integration leaves them). A correct periodic solution is kept:
 /// p2p of every mesh deflection (and clearance bearing radial displacement) within the Newmark
@@ -239,7 +245,7 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
     }
     for (std::size_t s = 0; s < solutions.size(); ++s) {
       HarmonicBalancePoint p = solutions[s];
-      if (stability) hbm.classify(p, StabilityMethod::kMonodromy, false);
+      if (stability) hbm.classify(p, stabilityMethod(analysis), false);
       const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
       const Eigen::MatrixXd u = hbm.bearingDisplacements(p.q);
       const auto radialP2p = [&](int b) {
@@ -418,7 +424,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
   if (sweep.fold_tolerance == 0.0) sweep.fold_tolerance = 1e-3 * (hi - lo) / kRpm * scale;
   sweep.max_points = static_cast<int>(analysis.integer("nonlinear.max_points"));
   sweep.stability = analysis.boolean("nonlinear.stability");
-  sweep.stability_method = StabilityMethod::kMonodromy;
+  sweep.stability_method = stabilityMethod(analysis);
   sweep.display_scale = scale;
   sweep.display_unit = "rpm";
   sweep.start = hbm.baseFrequency(lo);
@@ -548,6 +554,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                                   {"bifurcations", bifurcations},
                                   {"peaks", peaks},
                                   {"clearance_bearings", journals}};
+  summary.results["nonlinear"]["stability_method"] = analysis.string("nonlinear.stability_method");
   const Json checks =
       newmarkChecks(model, analysis, hbm, runs, scale, sweep.stability, result, context);
   if (!checks.empty()) summary.results["nonlinear"]["newmark_checks"] = checks;

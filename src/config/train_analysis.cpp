@@ -76,7 +76,17 @@ void addNonlinearSection(config::ConfigSchema& schema) {
   schema.integer("nonlinear.max_iterations").min(1).defaultValue(40).doc("Newton iterations");
   schema.boolean("nonlinear.stability")
       .defaultValue(true)
-      .doc("stability of every point (Floquet multipliers of the monodromy matrix)");
+      .doc(
+          "stability of every point (Floquet multipliers or exponents, "
+          "nonlinear.stability_method)");
+  schema.string("nonlinear.stability_method")
+      .choices({"monodromy", "hill"})
+      .defaultValue("monodromy")
+      .doc(
+          "the monodromy matrix of the variational equation by Newmark over the N samples (the "
+          "default), or Hill's method (Floquet exponents from the Hill eigenproblem on the "
+          "elastic subspace, its low-rank periodic part by Woodbury in shift-invert Arnoldi; "
+          "docs/theory/nonlinear_gear_trains.md)");
   schema.real("nonlinear.max_step_rpm")
       .unit("rpm")
       .positive()

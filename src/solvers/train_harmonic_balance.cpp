@@ -401,8 +401,9 @@ std::pair<Eigen::VectorXd, Eigen::VectorXd> TrainHarmonicBalance::initialState(
   return {q, v};
 }
 
-void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod,
+void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod method,
                                     bool samples_current) {
+  if (method == StabilityMethod::kHill) return classifyHill(point, samples_current);
   if (!samples_current) meshForceSamples(point.q);
   // Variational equation M x″ + C x′ + (K̄ + V S(t) Vᵀ) x = 0, S = diag(df̃/dδ) held over each
   // sample interval, by average-acceleration Newmark on the 2n columns of the state

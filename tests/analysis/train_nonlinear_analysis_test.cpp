@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
 #include <variant>
@@ -81,12 +82,39 @@ TEST(TrainNonlinearAnalysis, ReportsTheLibraryHarmonicBalanceAtEachSpeed) {
   std::printf("compared %d speeds, worst relative p2p difference %.3g\n", compared, worst);
 }
 
+/// nonlinear.stability_method = "hill" reaches the sweep and is recorded in summary.json: on
+/// the example's lower branch (13 000–13 400 rpm, before the loop: a short run) every point's
+/// verdict and the largest multiplier's modulus |e^{λT}| are the default monodromy's (within
+/// 1e-3 of the multiplier: the cross-check's tolerance, tests/system/train_hill_test.cpp).
+TEST(TrainNonlinearAnalysis, HillStabilityMethodIsSelectableAndRecorded) {
+  std::vector<analysis::AnalysisResult> results;
+  for (const char* method : {"\"monodromy\"", "\"hill\""}) {
+    const analysis::TrainInputs inputs = analysis::loadTrainInputs(
+        kExample,
+        {"nonlinear.direction=\"up\"", "nonlinear.newmark_speeds_rpm=[]",
+         "nonlinear.speed_min_rpm=13000.0", "nonlinear.speed_max_rpm=13400.0",
+         "nonlinear.max_step_rpm=20.0", std::string("nonlinear.stability_method=") + method});
+    results.push_back(analysis::trainAnalysis(inputs, {}));
+    ASSERT_EQ(results.back().summary.status, "ok") << results.back().report;
+  }
+  EXPECT_EQ(results[0].summary.results["nonlinear"]["stability_method"], "monodromy");
+  EXPECT_EQ(results[1].summary.results["nonlinear"]["stability_method"], "hill");
+  const analysis::ResultTable& a = results[0].table("nonlinear_up.csv");
+  const analysis::ResultTable& b = results[1].table("nonlinear_up.csv");
+  ASSERT_EQ(a.rows(), b.rows());
+  EXPECT_GT(a.rows(), 10u);
+  EXPECT_EQ(std::get<std::vector<std::int64_t>>(a.column("stable")),
+            std::get<std::vector<std::int64_t>>(b.column("stable")));
+  const auto& ma = reals(a, "critical_multiplier_abs");
+  const auto& mb = reals(b, "critical_multiplier_abs");
+  for (std::size_t i = 0; i < a.rows(); ++i) EXPECT_NEAR(ma[i], mb[i], 1e-3) << i;
+}
+
 /// H below a mesh's multiple of the common frequency, and samples that alias, name their keys.
 TEST(TrainNonlinearAnalysis, BadHarmonicsAndSamplesNameTheKey) {
   const auto fails = [](const std::string& set, const std::string& key) {
-    const analysis::TrainInputs inputs = analysis::loadTrainInputs(kExample, {set});
     try {
-      analysis::trainAnalysis(inputs, {});
+      analysis::trainAnalysis(analysis::loadTrainInputs(kExample, {set}), {});
       ADD_FAILURE() << set;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
@@ -95,6 +123,7 @@ TEST(TrainNonlinearAnalysis, BadHarmonicsAndSamplesNameTheKey) {
   fails("nonlinear.samples=30", "nonlinear.samples");
   fails("nonlinear.initial_step_rpm=1000.0", "nonlinear.initial_step_rpm");
   fails("nonlinear.newmark_speeds_rpm=[20000.0]", "nonlinear.newmark_speeds_rpm");
+  fails("nonlinear.stability_method=\"floquet\"", "nonlinear.stability_method");
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
@@ -77,6 +78,18 @@ inline GearPairModelSpec sdofOfSingleMesh(const GearTrainModel& train, double me
   sdof.stiffness = m.stiffness;
   sdof.transmission_error = m.transmission_error;
   sdof.mesh_frequency = 1000.0;  // the balance works in ω; any f_m
+  return sdof;
+}
+
+/// The 1-DOF gear pair that one pair with torsional DOFs and backlash j reduces to (issue 17):
+/// half clearance b = j/2 (its deflection x = δ + b), mass m_e, mean force T/r_b1, the same c, k
+/// and e.
+inline GearPairModelSpec reducedPair(const GearTrainModel& train, double j) {
+  const TrainMesh& m = train.meshes()[0];
+  GearPairModelSpec sdof =
+      sdofOfSingleMesh(train, train.spec().operating.input_torque / m.base_radius_a);
+  sdof.contact = ContactLaw::kBacklash;
+  sdof.backlash = 0.5 * j;
   return sdof;
 }
 

@@ -54,11 +54,7 @@ TEST(TrainNonlinear, SinglePairReducesToTheSdofHarmonicBalance) {
   const double j = 2e-5;
   const GearTrainModel train(singlePair(j));
   const TrainMesh& m = train.meshes()[0];
-  GearPairModelSpec sdof =
-      sdofOfSingleMesh(train, train.spec().operating.input_torque / m.base_radius_a);
-  sdof.contact = ContactLaw::kBacklash;
-  sdof.backlash = 0.5 * j;
-  const GearPairModel pair(sdof);
+  const GearPairModel pair(reducedPair(train, j));
   HarmonicBalance reference(pair, sdofReductionOptions());
   TrainHarmonicBalanceOptions options;
   options.tolerance = 1e-12;

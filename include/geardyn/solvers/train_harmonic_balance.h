@@ -22,7 +22,8 @@
 /// and ∂R/∂ω₀ too (through dD/dω₀, including the speed dependence of K_Ω and G₁). Every DOF is
 /// recovered after convergence. Stability: the monodromy matrix of the variational equation
 /// along the solution, by Newmark (average acceleration) with the condensed mesh slopes held over
-/// each of the N sample intervals (Woodbury on the r meshes).
+/// each of the N sample intervals (Woodbury on the r meshes), or Hill's method
+/// (detail/train_hill.h).
 
 #include <fftw3.h>
 
@@ -36,6 +37,9 @@
 #include "geardyn/system/train_tooth_pairs.h"
 
 namespace geardyn {
+namespace detail {
+struct TrainHillProblem;
+}
 
 struct TrainHarmonicBalanceOptions {
   int harmonics = 15;        ///< H: harmonics of the base (common) frequency
@@ -74,11 +78,14 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   /// The response with every mesh held in contact (g(y) = y): the linear time-varying solution.
   Eigen::VectorXd startingGuess(double omega) override;
   void solve(HarmonicBalancePoint& point) override;
-  /// Stability from the monodromy matrix (both methods: Hill's full-DOF eigenproblem would be
-  /// 2n (2H + 1) wide).
+  /// Stability: the monodromy matrix (kMonodromy), or Hill's method (kHill, train_hill.cpp:
+  /// the Floquet exponents from the Hill eigenproblem, its low-rank periodic part by Woodbury).
   void classify(HarmonicBalancePoint& point, StabilityMethod method, bool samples_current) override;
   /// A new ω refactorises D(h) at every harmonic (prepare): continuation holds ω where it can.
   bool frequencyChangeIsCostly() const override { return true; }
+  /// The variational equation at a solution on the elastic subspace, for Hill's method
+  /// (detail/train_hill.h): M, C, K̄, V and the Galerkin matrices of the slopes at the samples.
+  detail::TrainHillProblem hillProblem(const HarmonicBalancePoint& point, bool samples_current);
 
   /// Every DOF: real Fourier coefficients over the base period, column 0 the mean, 2h − 1 and 2h
   /// the cosine and sine of harmonic h (rows: DOFs), q(τ) = Σ columns · (1, cos hτ, sin hτ).
@@ -97,6 +104,7 @@ class TrainHarmonicBalance final : public ContinuationProblem {
 
  private:
   void prepare(double omega);  // the per-harmonic condensation at ω₀ (cached)
+  void classifyHill(HarmonicBalancePoint& point, bool samples_current);  // train_hill.cpp
   void forward(const double* samples, double* coefficients);
   void inverse(const double* coefficients, double* samples);
   void meshForceSamples(const Eigen::VectorXd& u);  // f̃ and df̃/dδ at the samples

@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// Hill's method for the variational equation of a gear train whose periodic part is low rank
+/// (docs/theory/nonlinear_gear_trains.md, "Stability: Hill's method"):
+///
+///   M x″ + C x′ + (K̄ + V S(t) Vᵀ) x = 0,   x ∈ ℝⁿ (the elastic subspace), V n × r,
+///
+/// S(t) the r × r slopes of the nonlinear coordinates (a mesh's df̃/dδ, a clearance bearing's
+/// 2 × 2 ∂f̃/∂u), T-periodic, ω = 2π/T. With the state y = (x, x′) and y = e^{λt} p(t), p
+/// T-periodic and truncated to H harmonics in the real basis (1, cos hωt, sin hωt), the
+/// first-order Hill eigenproblem is (Lazarus & Thomas 2010, C. R. Mécanique 338, eq. 12)
+///
+///   𝓗 p = λ p,   𝓗 = 𝓐₀ − 𝓓ₜ + 𝓑 𝓢 𝓒ᵀ,
+///
+/// 𝓐₀ = I ⊗ [0 I; −M⁻¹K̄ −M⁻¹C], 𝓓ₜ the derivative (a_h, b_h) → hω (b_h, −a_h), 𝓢 the
+/// Galerkin (AFT) matrix of the multiplication by S(t) on the r coordinates (the blocks of the
+/// harmonic balance Jacobian), 𝓑 z = (0, −M⁻¹V z), 𝓒ᵀ y = Vᵀx. 𝓗 is 2n(2H + 1) wide but its
+/// periodic part has rank r(2H + 1): (𝓗 − σ)⁻¹ is applied by Woodbury with one n × n complex LU
+/// of D(s) = s²M + sC + K̄ per harmonic (s = σ + ihω) and one r(2H + 1) real LU of the
+/// capacitance I + 𝓖 𝓢, 𝓖 = blockdiag(Vᵀ D(s_h)⁻¹ V) (at σ = 0: the harmonic balance Jacobian
+/// I + B ∂F̃/∂δ itself), inside shift-invert Arnoldi (Spectra).
+
+#include <Eigen/Dense>
+#include <complex>
+#include <vector>
+
+namespace geardyn::detail {
+
+struct TrainHillProblem {
+  Eigen::MatrixXd M, C, K;  ///< n × n on the elastic subspace [kg, N s/m, N/m (and rad forms)]
+  Eigen::MatrixXd V;        ///< n × r: the nonlinear coordinates' vectors
+  /// The Galerkin matrices of S_ij(t) on (1, cos, sin, …) ((2H + 1)², aftJacobian), with
+  /// their coordinate pair (i, j): 𝓢's nonzero blocks.
+  struct Block {
+    int i = 0, j = 0;
+    Eigen::MatrixXd galerkin;
+  };
+  std::vector<Block> slopes;
+  double omega = 0.0;  ///< ω [rad/s]: the base angular frequency
+  int harmonics = 0;   ///< H
+};
+
+struct TrainHillResult {
+  /// The selected Floquet exponents λ [1/s], largest real part first: floquetStrip of the Hill
+  /// eigenvalues computed (the `computed` nearest 0).
+  std::vector<std::complex<double>> exponents;
+  int computed = 0;     ///< Hill eigenvalues computed (nearest σ = 0)
+  double radius = 0.0;  ///< |λ| of the farthest computed: every eigenvalue nearer was found
+  int operations = 0;   ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
+};
+
+/// The Floquet exponents among eigenvalues of a Hill matrix (2n states, base frequency ω
+/// [rad/s]), largest real part first: those of the strip |Im λ| <= ω/2 (widened by 1e-3 ω: the
+/// truncation moves the exponents of real negative multipliers, on its edge, a little off it;
+/// there a + iω/2 is kept and its copy a − iω/2 dropped), at most the 2n with the smallest
+/// |Im λ| (Lazarus & Thomas 2010).
+std::vector<std::complex<double>> floquetStrip(const Eigen::VectorXcd& values, double omega, int n);
+
+/// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0 on the
+/// 4n eigenvalues nearest 0 (every exponent whose central copy has |λ| < ω/√2, in particular
+/// every one with Re λ >= −ω/2, is among them: a disc of radius < ω holds at most two copies of
+/// each of the 2n exponents). std::runtime_error when Arnoldi does not converge.
+TrainHillResult trainHillExponents(const TrainHillProblem& problem);
+
+/// The dense real Hill matrix (2n(2H + 1) square; coefficient-major) for tests, similar to 𝓗
+/// (the same eigenvalues) in the balanced state (W z, z′) of the mass-normalised undamped modes
+/// x = Φz: its full eigendecomposition is the reference for trainHillExponents.
+Eigen::MatrixXd trainHillMatrix(const TrainHillProblem& problem);
+
+}  // namespace geardyn::detail

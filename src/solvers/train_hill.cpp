@@ -1,0 +1,280 @@
+/// Hill's method for gear trains (detail/train_hill.h) and TrainHarmonicBalance's use of it:
+/// the Floquet exponents of the variational equation from the Hill eigenproblem, its low-rank
+/// periodic part inverted by Woodbury inside shift-invert Arnoldi.
+
+#include "geardyn/solvers/detail/train_hill.h"
+
+#include <Spectra/GenEigsRealShiftSolver.h>
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/train_harmonic_balance.h"
+
+namespace geardyn::detail {
+namespace {
+
+using Complex = std::complex<double>;
+
+/// y = (𝓗 − σI)⁻¹ x in Spectra's operator interface (train_hill.h): per harmonic h the block
+/// A₀ − s_h (s_h = σ + ihω) through D(s_h) = s²M + sC + K̄, the periodic part by Woodbury:
+/// (𝓓 + 𝓑𝓢𝓒ᵀ)⁻¹ = 𝓓⁻¹ − 𝓓⁻¹𝓑𝓢 (I + 𝓒ᵀ𝓓⁻¹𝓑𝓢)⁻¹ 𝓒ᵀ𝓓⁻¹, 𝓒ᵀ𝓓⁻¹𝓑 = blockdiag(Vᵀ D(s_h)⁻¹ V).
+/// Real vectors: coefficient-major (0, cos 1, sin 1, …), the state (x, x′) within; a
+/// coefficient pair (a_h, b_h) is the complex a_h − i b_h of Re[(a − ib) e^{ihωt}].
+class HillShiftSolve {
+ public:
+  using Scalar = double;
+
+  explicit HillShiftSolve(const TrainHillProblem& p)
+      : p_(p),
+        n_(static_cast<int>(p.M.rows())),
+        r_(static_cast<int>(p.V.cols())),
+        h_(p.harmonics),
+        nc_(2 * p.harmonics + 1),
+        lu_(p.harmonics + 1),
+        Z_(p.harmonics + 1),
+        s_(p.harmonics + 1),
+        g_(p.harmonics + 1) {}
+
+  Eigen::Index rows() const { return 2 * n_ * nc_; }
+  Eigen::Index cols() const { return rows(); }
+
+  void set_shift(double sigma) {
+    const Eigen::MatrixXcd Vc = p_.V.cast<Complex>();
+    std::vector<Eigen::MatrixXcd> G(h_ + 1);
+    for (int h = 0; h <= h_; ++h) {
+      const Complex s(sigma, h * p_.omega);
+      s_[h] = s;
+      lu_[h].compute(s * s * p_.M.cast<Complex>() + s * p_.C.cast<Complex>() +
+                     p_.K.cast<Complex>());
+      Z_[h] = lu_[h].solve(Vc);
+      G[h] = Vc.transpose() * Z_[h];
+    }
+    // Capacitance I + 𝓖𝓢 (coordinate-major, 2H + 1 coefficients each): G(h) acts per harmonic
+    // as the 2 × 2 real form of a complex number on the rows of 𝓢's blocks.
+    const int rho = r_ * nc_;
+    Eigen::MatrixXd K = Eigen::MatrixXd::Identity(rho, rho);
+    for (const TrainHillProblem::Block& b : p_.slopes) {
+      const Eigen::MatrixXd& JF = b.galerkin;
+      for (int mr = 0; mr < r_; ++mr) {
+        auto block = K.block(mr * nc_, b.j * nc_, nc_, nc_);
+        block.row(0) += G[0](mr, b.i).real() * JF.row(0);
+        for (int h = 1; h <= h_; ++h) {
+          const double gr = G[h](mr, b.i).real(), gi = G[h](mr, b.i).imag();
+          block.row(2 * h - 1) += gr * JF.row(2 * h - 1) + gi * JF.row(2 * h);
+          block.row(2 * h) += -gi * JF.row(2 * h - 1) + gr * JF.row(2 * h);
+        }
+      }
+    }
+    capacitance_.compute(K);
+  }
+
+  void perform_op(const double* x_in, double* y_out) const {
+    const int n2 = 2 * n_;
+    // g = 𝓓⁻¹ f: (A₀ − s)(a, b) = (f_x, f_v) ⇔ a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa.
+    for (int h = 0; h <= h_; ++h) {
+      Eigen::VectorXcd f(n2);
+      for (int i = 0; i < n2; ++i) {
+        f(i) =
+            h == 0 ? Complex(x_in[i]) : Complex(x_in[(2 * h - 1) * n2 + i], -x_in[2 * h * n2 + i]);
+      }
+      const Complex s = s_[h];
+      const Eigen::VectorXcd a = -lu_[h].solve(
+          p_.M * f.tail(n_) + (p_.C.cast<Complex>() + s * p_.M.cast<Complex>()) * f.head(n_));
+      g_[h].resize(n2);
+      g_[h] << a, f.head(n_) + s * a;
+    }
+    // w = (I + 𝓖𝓢)⁻¹ 𝓒ᵀ g, z = 𝓢 w.
+    Eigen::VectorXd e(r_ * nc_);
+    for (int h = 0; h <= h_; ++h) {
+      const Eigen::VectorXcd d = p_.V.transpose() * g_[h].head(n_);
+      for (int m = 0; m < r_; ++m) {
+        if (h == 0) {
+          e(m * nc_) = d(m).real();
+        } else {
+          e(m * nc_ + 2 * h - 1) = d(m).real();
+          e(m * nc_ + 2 * h) = -d(m).imag();
+        }
+      }
+    }
+    const Eigen::VectorXd w = capacitance_.solve(e);
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(r_ * nc_);
+    for (const TrainHillProblem::Block& b : p_.slopes) {
+      z.segment(b.i * nc_, nc_).noalias() += b.galerkin * w.segment(b.j * nc_, nc_);
+    }
+    // y = g − 𝓓⁻¹𝓑 z: 𝓑 z = (0, −M⁻¹V z) gives a = D(s)⁻¹ V z, b = s a.
+    for (int h = 0; h <= h_; ++h) {
+      Eigen::VectorXcd zc(r_);
+      for (int m = 0; m < r_; ++m) {
+        zc(m) = h == 0 ? Complex(z(m * nc_)) : Complex(z(m * nc_ + 2 * h - 1), -z(m * nc_ + 2 * h));
+      }
+      const Eigen::VectorXcd a = Z_[h] * zc;
+      g_[h].head(n_) -= a;
+      g_[h].tail(n_) -= s_[h] * a;
+      for (int i = 0; i < n2; ++i) {
+        if (h == 0) {
+          y_out[i] = g_[h](i).real();
+        } else {
+          y_out[(2 * h - 1) * n2 + i] = g_[h](i).real();
+          y_out[2 * h * n2 + i] = -g_[h](i).imag();
+        }
+      }
+    }
+  }
+
+ private:
+  const TrainHillProblem& p_;
+  int n_, r_, h_, nc_;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> lu_;
+  std::vector<Eigen::MatrixXcd> Z_;  // D(s_h)⁻¹ V
+  std::vector<Complex> s_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
+  mutable std::vector<Eigen::VectorXcd> g_;
+};
+
+}  // namespace
+
+std::vector<std::complex<double>> floquetStrip(const Eigen::VectorXcd& values, double omega,
+                                               int n) {
+  std::vector<Complex> strip;
+  const double tolerance = 1e-3 * omega;
+  for (const Complex& v : values) {
+    const double edge = std::abs(v.imag()) - 0.5 * omega;
+    if (edge > tolerance) continue;
+    if (std::abs(edge) <= tolerance && v.imag() < 0.0) continue;  // a + iω/2's copy a − iω/2
+    strip.push_back(v);
+  }
+  // Lazarus & Thomas (2010): the Floquet exponents are the 2n with the smallest |Im λ|.
+  std::sort(strip.begin(), strip.end(), [](const Complex& a, const Complex& b) {
+    return std::abs(a.imag()) < std::abs(b.imag());
+  });
+  if (static_cast<int>(strip.size()) > 2 * n) strip.resize(2 * n);
+  std::sort(strip.begin(), strip.end(),
+            [](const Complex& a, const Complex& b) { return a.real() > b.real(); });
+  return strip;
+}
+
+TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
+  HillShiftSolve op(problem);
+  const Eigen::Index n = problem.M.rows(), N = op.rows();
+  // 4n nearest 0: every copy λ + ikω inside |λ| < ω/√2 (at most two per exponent) is found.
+  const Eigen::Index nev = std::min<Eigen::Index>(4 * n, N - 3);
+  const Eigen::Index ncv = std::min<Eigen::Index>(N, std::max<Eigen::Index>(2 * nev + 1, 20));
+  Spectra::GenEigsRealShiftSolver<HillShiftSolve> solver(op, nev, ncv, 0.0);
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
+  if (solver.info() != Spectra::CompInfo::Successful) {
+    throw std::runtime_error(fmt::format(
+        "Hill's method: shift-invert Arnoldi did not converge at ω = {:g} rad/s ({} of {} "
+        "eigenvalues)",
+        problem.omega, solver.num_iterations(), nev));
+  }
+  TrainHillResult out;
+  out.computed = static_cast<int>(nev);
+  out.operations = static_cast<int>(solver.num_operations());
+  const Eigen::VectorXcd values = solver.eigenvalues();
+  for (const Complex& v : values) out.radius = std::max(out.radius, std::abs(v));
+  std::vector<Complex> strip = floquetStrip(values, problem.omega, static_cast<int>(n));
+  out.exponents = std::move(strip);
+  return out;
+}
+
+Eigen::MatrixXd trainHillMatrix(const TrainHillProblem& p) {
+  // The balanced state (W z, z′) of the mass-normalised undamped modes x = Φz (ΦᵀMΦ = I,
+  // ΦᵀK̄Φ = W², as in damped_modes.h): every entry a frequency, where the textbook
+  // [0 I; −M⁻¹K̄ −M⁻¹C] mixes 1 with ‖M⁻¹K̄‖ and loses the low exponents to round-off.
+  const int n = static_cast<int>(p.M.rows()), nc = 2 * p.harmonics + 1, n2 = 2 * n;
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(
+      0.5 * (p.K + p.K.transpose()), p.M);
+  const Eigen::MatrixXd& Phi = modes.eigenvectors();
+  const Eigen::VectorXd w = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::MatrixXd Vm = Phi.transpose() * p.V;
+  Eigen::MatrixXd A0 = Eigen::MatrixXd::Zero(n2, n2);
+  A0.topRightCorner(n, n) = w.asDiagonal();
+  A0.bottomLeftCorner(n, n) = -Eigen::MatrixXd(w.asDiagonal());
+  A0.bottomRightCorner(n, n) = -Phi.transpose() * p.C * Phi;
+  Eigen::MatrixXd Hm = Eigen::MatrixXd::Zero(n2 * nc, n2 * nc);
+  for (int c = 0; c < nc; ++c) Hm.block(c * n2, c * n2, n2, n2) = A0;
+  for (int h = 1; h <= p.harmonics; ++h) {  // −𝓓ₜ: (a_h, b_h) → −hω (b_h, −a_h)
+    const double f = h * p.omega;
+    Hm.block((2 * h - 1) * n2, 2 * h * n2, n2, n2).diagonal().array() -= f;
+    Hm.block(2 * h * n2, (2 * h - 1) * n2, n2, n2).diagonal().array() += f;
+  }
+  const Eigen::VectorXd winv = w.cwiseInverse();
+  for (const TrainHillProblem::Block& b : p.slopes) {  // 𝓑𝓢𝓒ᵀ: z″ rows, (W z) columns
+    const Eigen::MatrixXd outer = -Vm.col(b.i) * Vm.col(b.j).cwiseProduct(winv).transpose();
+    for (int c = 0; c < nc; ++c) {
+      for (int d = 0; d < nc; ++d) {
+        if (b.galerkin(c, d) == 0.0) continue;
+        Hm.block(c * n2 + n, d * n2, n, n) += b.galerkin(c, d) * outer;
+      }
+    }
+  }
+  return Hm;
+}
+
+}  // namespace geardyn::detail
+
+namespace geardyn {
+
+detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalancePoint& point,
+                                                           bool samples_current) {
+  if (!samples_current) meshForceSamples(point.q);
+  detail::TrainHillProblem p;
+  const double speed = inputSpeed(point.omega);
+  p.M = elastic_.transpose() * model_.mass() * elastic_;
+  p.K = elastic_.transpose() * model_.meanStiffnessAt(speed) * elastic_;
+  p.C = elastic_.transpose() * model_.dampingAt(speed) * elastic_;
+  p.V = elastic_.transpose() * V_;
+  p.omega = point.omega;
+  p.harmonics = h_;
+  std::vector<double> Dt, Et;
+  const auto add = [&](int i, int j, const double* slope) {
+    std::copy(slope, slope + samples_, real_buffer_);
+    fftw_execute(forward_plan_);
+    detail::aftSlopeTables(complex_buffer_, samples_, h_, Dt, Et);
+    detail::TrainHillProblem::Block block{i, j, Eigen::MatrixXd(n_, n_)};
+    detail::aftJacobian(Dt, Et, h_, block.galerkin);
+    p.slopes.push_back(std::move(block));
+  };
+  for (int m = 0; m < meshes_; ++m) add(m, m, slope_.col(m).data());
+  for (int b = 0; b < bearings_; ++b) {
+    for (int k = 0; k < 4; ++k) {
+      add(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2, bearing_slope_.col(4 * b + k).data());
+    }
+  }
+  return p;
+}
+
+void TrainHarmonicBalance::classifyHill(HarmonicBalancePoint& point, bool samples_current) {
+  const detail::TrainHillResult hill =
+      detail::trainHillExponents(hillProblem(point, samples_current));
+  if (hill.exponents.empty()) {  // cannot be (the strip's central copies are nearest 0)
+    throw std::runtime_error(
+        fmt::format("Hill's method: no Floquet exponent in the strip |Im| <= ω/2 at ω = {:g} rad/s",
+                    point.omega));
+  }
+  std::complex<double> critical = hill.exponents.front();
+  // The bifurcation type from the critical exponent's place in the strip |Im λ| <= ω/2: a
+  // truncated Hill matrix puts a real multiplier's exponent only near Im = 0 or ±ω/2 (its
+  // periodicity in iω is broken by the truncation), so those within 1e-4 ω are snapped there.
+  const double half = 0.5 * point.omega;
+  if (std::abs(std::abs(critical.imag()) - half) <= 1e-4 * point.omega) {
+    critical = {critical.real(), half};
+  } else if (std::abs(critical.imag()) <= 1e-4 * point.omega) {
+    critical = {critical.real(), 0.0};
+  }
+  const double T = 2.0 * std::numbers::pi / point.omega;
+  point.max_floquet_real = critical.real();
+  point.critical_multiplier = std::exp(critical * T);
+  if (critical.imag() == half) point.critical_multiplier = -std::exp(critical.real() * T);
+  // The monodromy's threshold |μ| < 1 + 1e-9, as an exponent.
+  point.stable = point.max_floquet_real < 1e-9 / T;
+}
+
+}  // namespace geardyn
