@@ -215,7 +215,12 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
   TrainNonlinearTimeOptions options;
   options.steps_per_mesh_period =
       static_cast<int>(analysis.integer("nonlinear.newmark_steps_per_mesh_period"));
+  options.event_refinement =
+      static_cast<int>(analysis.integer("nonlinear.newmark_event_refinement"));
+  options.contact_refinement =
+      static_cast<int>(analysis.integer("nonlinear.newmark_contact_refinement"));
   options.max_periods = static_cast<int>(analysis.integer("nonlinear.newmark_max_periods"));
+  options.validate();               // steps × 2^refinement, before any sweep runs
   options.steady_tolerance = 1e-7;  // p2p to 1e-7: far below the 1 % the check resolves
   std::vector<std::string> header{"speed_rpm", "solution", "stable", "newmark_status",
                                   "newmark_periods"};
@@ -295,6 +300,7 @@ Json newmarkChecks(const GearTrainModel& model, const config::Config& analysis,
       table.addRow(cells);
       check.update({{"newmark_status", r.status},
                     {"newmark_periods", r.periods},
+                    {"newmark_refined_steps", r.refined_steps},
                     {"p2p_deflection_hbm_m", hbm_p2p},
                     {"p2p_deflection_newmark_m", newmark_p2p},
                     {"p2p_radial_hbm_m", hbm_radial},

@@ -126,6 +126,21 @@ void addNonlinearSection(config::ConfigSchema& schema) {
       .min(16)
       .defaultValue(256)
       .doc("Newmark steps per period of the fastest mesh");
+  schema.integer("nonlinear.newmark_event_refinement")
+      .min(0)
+      .max(TrainNonlinearTimeOptions::kMaxEventRefinement)
+      .defaultValue(6)
+      .doc(
+          "halvings of a Newmark step in which the force jumps: a mesh stiffness jumps, a tooth "
+          "pair in contact enters or leaves the path of contact (0: fixed steps, first order "
+          "there; steps_per_mesh_period x 2^refinement <= 2^19)");
+  schema.integer("nonlinear.newmark_contact_refinement")
+      .min(0)
+      .max(TrainNonlinearTimeOptions::kMaxEventRefinement)
+      .defaultValue(2)
+      .doc(
+          "halvings of a Newmark step in which a contact changes state (only the force's slope "
+          "jumps: fixed steps stay second order; same bound)");
   schema.integer("nonlinear.newmark_max_periods")
       .min(3)
       .defaultValue(2000)

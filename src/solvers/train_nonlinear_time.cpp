@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geardyn/error.h"
@@ -22,6 +23,23 @@ void TrainNonlinearTimeOptions::validate() const {
     throw InputError("nonlinear.max_periods", std::to_string(max_periods),
                      fmt::format("an integer >= min_periods = {} >= 1", min_periods));
   }
+  // The finest step: below ~2^-19 of a mesh period the acceleration update a₀(q' − q) − a₂v − a
+  // loses the digits the steady-state test needs (round-off ~ ε |q| a₀; measured: 2^-21 of a
+  // mesh period stalls the test at 1e-7 where 2^-19 reaches 1e-10).
+  const int finest =
+      kMaxFinestStepsLog2 -
+      static_cast<int>(std::floor(std::log2(static_cast<double>(steps_per_mesh_period))));
+  const int most = std::max(0, std::min(kMaxEventRefinement, finest));
+  const auto check = [&](const char* key, int value) {
+    if (value < 0 || value > most) {
+      throw InputError(key, std::to_string(value),
+                       fmt::format("an integer in [0, {}] (steps_per_mesh_period {} x "
+                                   "2^refinement <= 2^{})",
+                                   most, steps_per_mesh_period, kMaxFinestStepsLog2));
+    }
+  };
+  check("nonlinear.newmark_event_refinement", event_refinement);
+  check("nonlinear.newmark_contact_refinement", contact_refinement);
   if (!(steady_tolerance > 0.0) || !(newton_tolerance > 0.0) || max_newton_iterations < 1) {
     throw InputError("nonlinear.steady_tolerance", fmt::format("{:g}", steady_tolerance),
                      "tolerances > 0 and max_newton_iterations >= 1");
@@ -38,22 +56,39 @@ double TrainNonlinearTimeResponse::bearingRadialPeakToPeak(int bearing) const {
 }
 
 TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double input_speed,
-                                             double time_step, NewmarkParameters newmark)
+                                             double time_step, NewmarkParameters newmark,
+                                             int event_refinement, int contact_refinement)
     : model_(model),
       speed_(input_speed),
       dt_(time_step),
       gamma_(newmark.gamma),
-      nm_(newmark, time_step) {
+      jump_levels_(event_refinement),
+      contact_levels_(contact_refinement) {
   newmark.validate();
+  for (int levels : {event_refinement, contact_refinement}) {
+    if (levels < 0 || levels > TrainNonlinearTimeOptions::kMaxEventRefinement) {
+      throw InputError(
+          "nonlinear.newmark_event_refinement", std::to_string(levels),
+          fmt::format("an integer in [0, {}]", TrainNonlinearTimeOptions::kMaxEventRefinement));
+    }
+  }
+  const int finest = std::max(event_refinement, contact_refinement);
   const int n = model.dofCount();
   meshes_ = static_cast<int>(model.meshes().size());
-  const int r = meshes_ + 2 * static_cast<int>(model.clearanceBearings().size());
+  const int bearings = static_cast<int>(model.clearanceBearings().size());
+  const int r = meshes_ + 2 * bearings;
   Cg_ = model.dampingAt(speed_);
   K0_ = model.meanStiffnessAt(speed_);
   V_ = model.nonlinearVectors();  // [V, bearing columns]: δ, then (u_y, u_z) per bearing
-  lu_.compute(K0_ + nm_.a0 * model.mass() + nm_.a1 * Cg_);
-  Z_ = lu_.solve(V_);
-  W_ = V_.transpose() * Z_;
+  levels_.resize(finest + 1);
+  for (int l = 0; l <= finest; ++l) {
+    Level& level = levels_[l];
+    level.dt = std::ldexp(time_step, -l);
+    level.nm = NewmarkCoefficients(newmark, level.dt);
+    level.lu.compute(K0_ + level.nm.a0 * model.mass() + level.nm.a1 * Cg_);
+    level.Z = level.lu.solve(V_);
+    level.W = V_.transpose() * level.Z;
+  }
   small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
   J_.resize(r, r);
   slope_ = Eigen::MatrixXd::Zero(r, r);
@@ -61,6 +96,14 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
   delta_ = f_ = res_ = dashpot_ = free_ = step_ = Eigen::VectorXd::Zero(r);
   k_ = e_ = Eigen::VectorXd::Zero(meshes_);
   tooth_pairs_.resize(meshes_);
+  for (const TrainMesh& mesh : model.meshes()) breaks_.push_back(mesh.stiffness->discontinuities());
+  events_.assign(2 * meshes_ + bearings, 0);
+  saved_.resize(finest);
+  for (Saved& s : saved_) {
+    s.q = s.v = s.a = q_;
+    s.delta = delta_;
+    s.events = events_;
+  }
   meshState(0.0);  // sizes the tooth-pair tables once: steps refill them without allocating
 }
 
@@ -103,6 +146,60 @@ void TrainNonlinearNewmark::nonlinearForces(const Eigen::VectorXd& delta, Eigen:
   }
 }
 
+void TrainNonlinearNewmark::eventState(std::vector<long long>& out) const {
+  const auto& meshes = model_.meshes();
+  for (int m = 0; m < meshes_; ++m) {
+    const TrainMesh& mesh = meshes[m];
+    const double y = delta_(m) - e_(m);
+    long long contact = 0, segment = 0;
+    if (const ToothPairTable& table = tooth_pairs_[m]; table.elementCount() > 0) {
+      // Bit j % 64: the contact set {j: k_j > 0, y > g_j} and the engaged set {j: k_j > 0} (a
+      // pair on the path of contact).
+      for (int j = 0; j < table.elementCount(); ++j) {
+        if (!(table.stiffness(0, j) > 0.0)) continue;
+        const long long bit = 1LL << (j % 64);
+        segment |= bit;
+        if (y > table.gap(0, j)) contact |= bit;
+      }
+    } else {
+      if (mesh.nonlinear()) {
+        double s = 0.0;
+        mesh.contactDeflection(y, &s);
+        contact = s == 0.0 ? 0 : (y > 0.0 ? 1 : -1);  // free play, loaded or back flank
+      }
+      // The stiffness segment: jumps of k(φ) passed since φ = 0 (none for a continuous k).
+      if (const std::vector<double>& breaks = breaks_[m]; !breaks.empty()) {
+        const double phi = mesh.phaseAt(t_, speed_), whole = std::floor(phi);
+        segment = static_cast<long long>(whole) * static_cast<long long>(breaks.size()) +
+                  (std::upper_bound(breaks.begin(), breaks.end(), phi - whole) - breaks.begin());
+      }
+    }
+    out[2 * m] = contact;
+    out[2 * m + 1] = segment;
+  }
+  const auto& bearings = model_.clearanceBearings();
+  for (std::size_t b = 0; b < bearings.size(); ++b) {
+    const int c = meshes_ + 2 * static_cast<int>(b);
+    out[2 * meshes_ + b] = delta_.segment<2>(c).norm() > bearings[b].clearance;
+  }
+}
+
+int TrainNonlinearNewmark::refinementBetween(const std::vector<long long>& before,
+                                             const std::vector<long long>& after) const {
+  bool contact = false, jump = false;
+  for (int m = 0; m < meshes_; ++m) {
+    const long long c0 = before[2 * m], c1 = after[2 * m];
+    const long long s0 = before[2 * m + 1], s1 = after[2 * m + 1];
+    contact = contact || c0 != c1;
+    // A tooth pair engaging or released while in contact makes the force jump; a plain mesh's
+    // k(φ) jumps where its segment changes.
+    jump = jump || (tooth_pairs_[m].elementCount() > 0 ? ((s0 ^ s1) & (c0 | c1)) != 0 : s0 != s1);
+  }
+  for (std::size_t i = 2 * meshes_; i < before.size(); ++i)
+    contact = contact || before[i] != after[i];
+  return std::max(jump ? jump_levels_ : 0, contact ? contact_levels_ : 0);
+}
+
 void TrainNonlinearNewmark::reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
   t_ = t;
   q_ = q;
@@ -111,26 +208,60 @@ void TrainNonlinearNewmark::reset(double t, const Eigen::VectorXd& q, const Eige
   meshState(t);
   nonlinearForces(delta_, f_, nullptr);
   a_ = model_.mass().llt().solve(model_.staticLoad() + V_ * (dashpot_ - f_) - Cg_ * v_ - K0_ * q_);
+  eventState(events_);
 }
 
 bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
-  const double t1 = t_ + dt_;
+  return advance(0, newton_tolerance, max_iterations);
+}
+
+bool TrainNonlinearNewmark::advance(int level, double newton_tolerance, int max_iterations) {
+  if (level + 1 == static_cast<int>(levels_.size())) {
+    return trial(levels_[level], newton_tolerance, max_iterations);
+  }
+  Saved& saved = saved_[level];  // same sizes: copies without allocating
+  saved.t = t_;
+  saved.q = q_;
+  saved.v = v_;
+  saved.a = a_;
+  saved.delta = delta_;
+  saved.events = events_;
+  const bool converged = trial(levels_[level], newton_tolerance, max_iterations);
+  // Keep the step unless an event inside it (or Newton's failure) asks for finer ones.
+  const int depth =
+      converged ? refinementBetween(saved.events, events_) : static_cast<int>(levels_.size()) - 1;
+  if (level >= depth) return converged;
+  t_ = saved.t;
+  q_ = saved.q;
+  v_ = saved.v;
+  a_ = saved.a;
+  delta_ = saved.delta;
+  events_ = saved.events;
+  ++refined_;
+  const bool first = advance(level + 1, newton_tolerance, max_iterations);
+  const bool second = advance(level + 1, newton_tolerance, max_iterations);
+  return first && second;
+}
+
+bool TrainNonlinearNewmark::trial(const Level& level, double newton_tolerance, int max_iterations) {
+  const NewmarkCoefficients& nm = level.nm;
+  const double t1 = t_ + level.dt;
   meshState(t1);
   rhs_.noalias() = model_.staticLoad();
   rhs_.noalias() += V_ * dashpot_;
-  y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
+  y_ = nm.a0 * q_ + nm.a2 * v_ + nm.a3 * a_;
   rhs_.noalias() += model_.mass() * y_;
-  y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
+  y_ = nm.a1 * q_ + nm.a4 * v_ + nm.a5 * a_;
   rhs_.noalias() += Cg_ * y_;
-  y_ = lu_.solve(rhs_);
+  y_ = level.lu.solve(rhs_);
   // Newton on δ − Vᵀy + W f̃(t1, δ) = 0 from the last step's deflections (and bearing u).
   free_.noalias() = V_.transpose() * y_;
   bool converged = false;
   for (int it = 0; it < max_iterations && !converged; ++it) {
     nonlinearForces(delta_, f_, &slope_);
     res_ = delta_ - free_;
-    res_.noalias() += W_ * f_;
-    J_.noalias() = W_ * slope_;
+    res_.noalias() += level.W * f_;
+    J_.noalias() = level.W * slope_;
     J_.diagonal().array() += 1.0;
     small_.compute(J_);
     step_ = small_.solve(res_);
@@ -140,12 +271,13 @@ bool TrainNonlinearNewmark::step(double newton_tolerance, int max_iterations) {
     converged = step_.cwiseAbs().maxCoeff() <= newton_tolerance * scale;
   }
   nonlinearForces(delta_, f_, nullptr);
-  y_.noalias() -= Z_ * f_;                                // q_{n+1}
-  rhs_ = nm_.a0 * (y_ - q_) - nm_.a2 * v_ - nm_.a3 * a_;  // a_{n+1}
-  v_ += dt_ * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
+  y_.noalias() -= level.Z * f_;                        // q_{n+1}
+  rhs_ = nm.a0 * (y_ - q_) - nm.a2 * v_ - nm.a3 * a_;  // a_{n+1}
+  v_ += level.dt * ((1.0 - gamma_) * a_ + gamma_ * rhs_);
   a_ = rhs_;
   q_.swap(y_);
   t_ = t1;
+  if (levels_.size() > 1) eventState(events_);
   return converged;
 }
 
@@ -165,7 +297,8 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
   TrainNonlinearTimeResponse r;
   r.period = 1.0 / (base.ratio * std::abs(input_speed));
   const double dt = r.period / static_cast<double>(per_period);
-  TrainNonlinearNewmark stepper(model, input_speed, dt, options.newmark);
+  TrainNonlinearNewmark stepper(model, input_speed, dt, options.newmark, options.event_refinement,
+                                options.contact_refinement);
   const int n = model.dofCount();
   const int meshes = static_cast<int>(model.meshes().size());
   const int coordinates = meshes + 2 * static_cast<int>(model.clearanceBearings().size());
@@ -187,6 +320,7 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
     }
     r.periods = period;
     r.steps += per_period;
+    r.refined_steps = stepper.refinedSteps();
     if (!current.allFinite()) {
       r.status = "diverged";
       r.message = fmt::format("diverged at t = {:.6g} s", stepper.time());

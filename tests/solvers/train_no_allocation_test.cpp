@@ -51,19 +51,23 @@ TEST(TrainNewmarkAllocation, SparseStepsAllocateNothing) {
 }
 
 // The nonlinear Newmark step with tooth-pair meshes: the elements are refilled per step into the
-// tables sized at construction (train_tooth_pairs.h), Newton works in preallocated storage.
+// tables sized at construction (train_tooth_pairs.h), Newton works in preallocated storage, and
+// steps taken again in halves at events reuse the factorisations and saved states built at
+// construction (some must happen in the counted steps: pairs enter and leave contact).
 TEST(TrainNonlinearNewmarkAllocation, ToothPairStepsAllocateNothing) {
   GearTrainSpec spec = testing::nonlinear::withToothPairs(
       testing::twoStageReducer(varying(4e8), varying(6e8)), {6000.0, 12000.0});
   const GearTrainModel model(spec);
   TrainNonlinearNewmark stepper(model, model.inputSpeed(), 1e-6,
-                                NewmarkParameters::averageAcceleration());
+                                NewmarkParameters::averageAcceleration(), 6, 2);
   stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
                 Eigen::VectorXd::Zero(model.dofCount()));
   stepper.step(1e-13, 50);  // warm-up
+  const long long refined = stepper.refinedSteps();
   testing::AllocationCounter counter;
   for (int s = 0; s < 500; ++s) stepper.step(1e-13, 50);
   EXPECT_EQ(counter.count(), 0);
+  EXPECT_GT(stepper.refinedSteps(), refined);  // measured: 8 halvings
   EXPECT_TRUE(std::isfinite(stepper.displacement().norm()));
 }
 

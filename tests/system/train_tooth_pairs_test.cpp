@@ -156,7 +156,11 @@ TEST(TrainToothPairs, MonodromyStabilityAgreesWithNewmarkAtFolds) {
   const NewmarkCheck check = checkAgainstNewmark(train, hbm, result, omegas);
   std::printf("single pair folds %zu: %d stable, %d unstable, worst %.3g\n", result.folds.size(),
               check.stable, check.unstable, check.worst);
-  EXPECT_GE(check.unstable, 2);  // measured: 4 folds, 3 stable and 3 unstable, worst 3.1e-4
+  // Measured: 4 folds, 3 stable and 3 unstable, worst 3.0e-3: the H = 15 balance's truncation
+  // at the pairs' stiffness jumps (H = 60 gives 3.5e-4 there); Newmark with its event refinement
+  // is within 3e-4 of its own 4096-step run. (Without refinement its first-order error at the
+  // jumps happened to cancel the truncation: 3.1e-4.)
+  EXPECT_GE(check.unstable, 2);
   EXPECT_GE(check.stable, 2);
 }
 
@@ -199,10 +203,11 @@ TEST(TrainToothPairs, JacobianMatchesFiniteDifferences) {
 }
 
 /// The harmonic balance against nonlinear Newmark started on its solutions (issue 17: p2p of
-/// every mesh deflection within 1 %: H = 30 truncation and Newmark's first-order error at the
-/// contact events, 256 steps a mesh period, each well below it) on the two-stage reducer with
-/// tooth pairs at both meshes, swept over base frequencies (a third of the stage-1 mesh
-/// frequency) 300–3000 Hz; 8 frequencies, 3 of them with contact loss (measured worst 3.5e-3).
+/// every mesh deflection within 1 %: the H = 30 truncation at the pairs' stiffness jumps and
+/// Newmark's error, 256 steps a mesh period refined at events, each well below it) on the
+/// two-stage reducer with tooth pairs at both meshes, swept over base frequencies (a third of
+/// the stage-1 mesh frequency) 300–3000 Hz; 8 frequencies, 3 of them with contact loss
+/// (measured worst 4.1e-3).
 TEST(TrainToothPairs, TwoStageReducerAgreesWithNewmark) {
   const GearTrainModel model(twoStageToothPairs());
   TrainHarmonicBalanceOptions options;
@@ -264,7 +269,7 @@ TEST(TrainToothPairs, PlanetarySunMeshesAgreeWithNewmark) {
       "planetary sun tooth pairs: %d stable (%d with loss), %d unstable, worst %.3g, "
       "folds %zu\n",
       check.stable, check.contact_loss, check.unstable, check.worst, sweep.folds.size());
-  // Measured: 6 folds; 2 stable solutions losing contact kept within 4.7e-4, 2 unstable ones
+  // Measured: 6 folds; 2 stable solutions losing contact kept within 3.3e-3, 2 unstable ones
   // left (frequencies with only unstable solutions: Newmark settles elsewhere).
   EXPECT_GE(check.stable, 2);
   EXPECT_GE(check.unstable, 2);

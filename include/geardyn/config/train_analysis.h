@@ -11,6 +11,7 @@
 #include "geardyn/config/config_schema.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_modal.h"
+#include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
 

@@ -16,8 +16,20 @@
 /// factorised once: q = y − Z f̃(δ), y = A⁻¹ b, Z = A⁻¹ V, so Newton runs on the r mesh
 /// deflections only, δ − Vᵀ y + W f̃(t, δ) = 0 with W = Vᵀ Z (r × r, exact condensation). The
 /// contact law is piecewise linear: once the contact state of every mesh is right Newton ends
-/// in one step. Contact events are not located within a step: the error is first order in the
-/// step at an event, so the step is fine (512 a mesh period by default).
+/// in one step.
+///
+/// Events. Where the force jumps in time inside a step (a mesh stiffness k(φ) with jumps:
+/// MeshStiffness::discontinuities; a tooth pair in contact entering or leaving the path of
+/// contact) the trapezoidal rule's local error is O(Δt) and fixed steps are first order. Where a
+/// contact changes state (a mesh's tooth deformation crosses 0 or −j, a tooth-pair element's
+/// y − g_j crosses 0, a journal reaches its clearance) only the force's slope jumps: the local
+/// error is O(Δt²) times the jump at a bounded number of steps a period, and fixed steps stay
+/// second order. A step with such an event is taken again as two half steps, recursively, down
+/// to Δt / 2^event_refinement (jumps) or Δt / 2^contact_refinement (contact changes): bisection
+/// brackets the event (Dieci & Lopez 2012 survey this and the alternatives for discontinuous
+/// right-hand sides), so its error falls by 2^levels (jumps) or 4^levels (kinks). Every step
+/// size's factorisation (A, Z, W) is built once: a refined step allocates and factorises
+/// nothing. Measured in docs/theory/nonlinear_gear_trains.md.
 
 #include <Eigen/Dense>
 #include <string>
@@ -38,6 +50,15 @@ struct TrainNonlinearTimeOptions {
   double steady_tolerance = 1e-9;
   double newton_tolerance = 1e-13;  ///< |Δδ| / max |δ| ending Newton [-]
   int max_newton_iterations = 50;
+  /// Halvings of a step in which the force jumps: a mesh stiffness k(φ) jumps, a tooth pair in
+  /// contact enters or leaves the path of contact (0: fixed steps; at most kMaxEventRefinement,
+  /// and steps_per_mesh_period × 2^refinement at most 2^kMaxFinestStepsLog2).
+  int event_refinement = 6;
+  /// Halvings of a step in which a contact changes state (only the force's slope jumps: fixed
+  /// steps stay second order; see the header).
+  int contact_refinement = 2;
+  static constexpr int kMaxEventRefinement = 8;
+  static constexpr int kMaxFinestStepsLog2 = 19;
   void validate() const;
 };
 
@@ -52,6 +73,7 @@ struct TrainNonlinearTimeResponse {
   int periods = 0;           ///< common periods integrated
   double last_change = 0.0;  ///< relative change over the last period
   long long steps = 0;
+  long long refined_steps = 0;  ///< steps taken again in halves at events (all levels)
   /// "steady_state", "max_periods" (still changing: quasi-periodic, chaotic or slow),
   /// "newton_failure" or "diverged".
   std::string status = "steady_state";
@@ -65,12 +87,18 @@ struct TrainNonlinearTimeResponse {
 /// One step at a time (the building block, and for benchmarks).
 class TrainNonlinearNewmark {
  public:
+  /// `event_refinement`, `contact_refinement`: halvings of a step at a jump of the force and at
+  /// a contact change (TrainNonlinearTimeOptions).
   TrainNonlinearNewmark(const GearTrainModel& model, double input_speed, double time_step,
-                        NewmarkParameters newmark);
+                        NewmarkParameters newmark, int event_refinement = 0,
+                        int contact_refinement = 0);
   void reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot);
-  /// One step; false when Newton on the mesh deflections failed.
+  /// One step of time_step (in halves where an event falls); false when Newton on the mesh
+  /// deflections failed.
   bool step(double newton_tolerance, int max_iterations);
   double time() const noexcept { return t_; }
+  /// Steps taken again in halves since construction (all levels).
+  long long refinedSteps() const noexcept { return refined_; }
   const Eigen::VectorXd& displacement() const noexcept { return q_; }
   /// The nonlinear coordinates: the mesh deflections δ, then (u_y, u_z) of every clearance
   /// bearing [m].
@@ -81,14 +109,41 @@ class TrainNonlinearNewmark {
                        Eigen::MatrixXd* slope) const;
 
  private:
+  /// A step size's Newmark coefficients and factorisation: A = K̄ + a₀M + a₁(C + ΩG₁),
+  /// Z = A⁻¹V, W = VᵀZ.
+  struct Level {
+    double dt = 0.0;
+    NewmarkCoefficients nm;
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    Eigen::MatrixXd Z, W;
+  };
+  /// The state before a step at some level, to take it again in halves.
+  struct Saved {
+    double t = 0.0;
+    Eigen::VectorXd q, v, a, delta;
+    std::vector<long long> events;
+  };
   void meshState(double t);  // k, e and c ė of every mesh at t
+  bool advance(int level, double newton_tolerance, int max_iterations);
+  bool trial(const Level& level, double newton_tolerance, int max_iterations);
+  // The discrete state whose change marks an event, at (t_, δ) after meshState(t_): per mesh
+  // its contact region and its stiffness segment (tooth pairs: the contact and engaged sets),
+  // per clearance bearing whether the journal touches.
+  void eventState(std::vector<long long>& out) const;
+  // The levels a step from `before` to `after` must be refined to (0: none).
+  int refinementBetween(const std::vector<long long>& before,
+                        const std::vector<long long>& after) const;
 
   const GearTrainModel& model_;
   double speed_, dt_, gamma_, t_ = 0.0;
-  NewmarkCoefficients nm_;
-  int meshes_ = 0;
-  Eigen::MatrixXd Cg_, K0_, V_, Z_, W_, J_, slope_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
+  int meshes_ = 0, jump_levels_ = 0, contact_levels_ = 0;
+  long long refined_ = 0;
+  std::vector<Level> levels_;                // dt_ / 2^l
+  std::vector<Saved> saved_;                 // per level but the finest
+  std::vector<std::vector<double>> breaks_;  // per mesh: stiffness jumps in [0, 1)
+  std::vector<long long> events_;
+  Eigen::MatrixXd Cg_, K0_, V_, J_, slope_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> small_;
   Eigen::VectorXd q_, v_, a_, rhs_, y_, delta_, f_, res_, dashpot_, k_, e_, free_, step_;
   std::vector<ToothPairTable> tooth_pairs_;  // per mesh at the last meshState (one sample)
 };
