@@ -156,6 +156,28 @@ inline ContinuationOptions meshResonanceSweep(const TrainMesh& m, double from, d
   return sweep;
 }
 
+/// A single-mesh train, the 1-DOF pair it reduces to (`sdof`), both balances (the 1-DOF one with
+/// sdofReductionOptions(), the train's with its defaults H = 15, N = 256 at tolerance 1e-12)
+/// and the train's sweep without stability from `from` to `to` times its mesh's natural
+/// frequency (meshResonanceSweep).
+struct ReductionPair {
+  GearPairModel pair;
+  HarmonicBalance reference;
+  TrainHarmonicBalance hbm;
+  ContinuationResult sweep;
+  ReductionPair(const GearTrainModel& train, const GearPairModelSpec& sdof, double from, double to)
+      : pair(sdof),
+        reference(pair, sdofReductionOptions()),
+        hbm(train, trainReductionOptions()),
+        sweep(continueInFrequency(
+            hbm, meshResonanceSweep(train.meshes()[0], from, to, hbm.harmonics(), false))) {}
+  static TrainHarmonicBalanceOptions trainReductionOptions() {
+    TrainHarmonicBalanceOptions options;
+    options.tolerance = 1e-12;
+    return options;
+  }
+};
+
 /// Base-frequency sweep [Hz] with steps of at most 1/100 of the range, the rest derived
 /// (ζ = 0.05), without stability.
 inline ContinuationOptions baseSweep(double start_hz, double stop_hz, int harmonics) {

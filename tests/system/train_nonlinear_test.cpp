@@ -54,19 +54,12 @@ TEST(TrainNonlinear, SinglePairReducesToTheSdofHarmonicBalance) {
   const double j = 2e-5;
   const GearTrainModel train(singlePair(j));
   const TrainMesh& m = train.meshes()[0];
-  const GearPairModel pair(reducedPair(train, j));
-  HarmonicBalance reference(pair, sdofReductionOptions());
-  TrainHarmonicBalanceOptions options;
-  options.tolerance = 1e-12;
-  TrainHarmonicBalance hbm(train, options);
-  ASSERT_EQ(hbm.size(), reference.size());
-
-  const ContinuationResult result =
-      continueInFrequency(hbm, meshResonanceSweep(m, 0.35, 1.0, options.harmonics, false));
-  ASSERT_TRUE(result.completed) << result.message;
-  EXPECT_EQ(result.folds.size(), 6u);  // 3rd and 2nd superharmonic and primary loops
+  ReductionPair r(train, reducedPair(train, j), 0.35, 1.0);
+  ASSERT_EQ(r.hbm.size(), r.reference.size());
+  ASSERT_TRUE(r.sweep.completed) << r.sweep.message;
+  EXPECT_EQ(r.sweep.folds.size(), 6u);  // 3rd and 2nd superharmonic and primary loops
   const ReductionCheck check =
-      compareWithSdof(hbm, reference, result, 15, 0.5 * j, [&](const Eigen::MatrixXd& d) {
+      compareWithSdof(r.hbm, r.reference, r.sweep, 15, 0.5 * j, [&](const Eigen::MatrixXd& d) {
         bool open = false;
         for (int k = 0; k < d.rows(); ++k) {
           open = open || d(k, 0) - m.transmission_error.value(m.phase + k / 256.0) < 0.0;

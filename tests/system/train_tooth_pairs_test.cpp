@@ -104,22 +104,15 @@ TEST(TrainToothPairs, SinglePairReducesToTheSdofContactElements) {
   GearPairModelSpec sdof = sdofOfSingleMesh(train, force);
   sdof.contact = ContactLaw::kOneSided;
   sdof.contact_elements = m.contact.tooth_pairs;
-  const GearPairModel pair(sdof);
-  HarmonicBalance reference(pair, sdofReductionOptions());
-  TrainHarmonicBalanceOptions options;
-  options.tolerance = 1e-12;
-  TrainHarmonicBalance hbm(train, options);
-  ASSERT_EQ(hbm.size(), reference.size());
-
-  const ContinuationResult result =
-      continueInFrequency(hbm, meshResonanceSweep(m, 0.2, 1.1, options.harmonics, false));
-  ASSERT_TRUE(result.completed) << result.message;
+  ReductionPair r(train, sdof, 0.2, 1.1);
+  ASSERT_EQ(r.hbm.size(), r.reference.size());
+  ASSERT_TRUE(r.sweep.completed) << r.sweep.message;
   ToothPairTable table;  // the elements at the balance's samples
   std::vector<double> phases(256);
   for (int i = 0; i < 256; ++i) phases[i] = m.phase + i / 256.0;
   table.tabulate(*m.contact.tooth_pairs, phases.data(), 256);
   const ReductionCheck check =
-      compareWithSdof(hbm, reference, result, 10, 0.0, [&](const Eigen::MatrixXd& d) {
+      compareWithSdof(r.hbm, r.reference, r.sweep, 10, 0.0, [&](const Eigen::MatrixXd& d) {
         bool open = false;  // no element in contact at some sample
         for (int s = 0; s < d.rows(); ++s) {
           const double y = d(s, 0) - m.transmission_error.value(m.phase + s / 256.0);
