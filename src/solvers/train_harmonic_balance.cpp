@@ -347,6 +347,14 @@ Eigen::VectorXd TrainHarmonicBalance::startingGuess(double omega) {
     u += step;
   }
   linearized_ = false;
+  for (int b = 0; b < bearings_; ++b) {  // the journal onto the bearing surface (header)
+    const int c = meshes_ + 2 * b;
+    const double radius = std::hypot(u(c * n_), u((c + 1) * n_));
+    if (!(radius > 0.0)) continue;  // unloaded: no direction to move along
+    const double scale = 1.0 + model_.clearanceBearings()[b].clearance / radius;
+    u(c * n_) *= scale;
+    u((c + 1) * n_) *= scale;
+  }
   return u;
 }
 

@@ -75,7 +75,12 @@ class TrainHarmonicBalance final : public ContinuationProblem {
                 Eigen::VectorXd* dr_domega) override;
   double residualNorm(const Eigen::VectorXd& u, const Eigen::VectorXd& r,
                       double omega) const override;
-  /// The response with every mesh held in contact (g(y) = y): the linear time-varying solution.
+  /// The response with every mesh held in contact (g(y) = y) and every clearance bearing linear:
+  /// the linear time-varying solution. Then each clearance bearing's mean displacement ū is
+  /// moved by its clearance c along itself, ū (1 + c/|ū|): the static equilibrium of the
+  /// isotropic law f = k (|u| − c) u/|u| under the load k ū that the linear bearing carries, so
+  /// Newton starts with the journal on the bearing surface. (Left inside the clearance, a
+  /// journal whose shaft no other support holds makes the Jacobian singular there.)
   Eigen::VectorXd startingGuess(double omega) override;
   void solve(HarmonicBalancePoint& point) override;
   /// Stability: the monodromy matrix (kMonodromy), or Hill's method (kHill, train_hill.cpp:
