@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/detail/floquet_strip.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {
@@ -254,13 +256,18 @@ void HarmonicBalance::stability(HarmonicBalancePoint& point) {
   A.bottomLeftCorner(n_, n_) = -J / m;
   A.bottomRightCorner(n_, n_) = -(c * Eigen::MatrixXd::Identity(n_, n_) + 2.0 * m * D) / m;
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(A, false);
-  std::vector<std::complex<double>> values(eig.eigenvalues().begin(), eig.eigenvalues().end());
-  std::sort(values.begin(), values.end(),
-            [](const auto& a, const auto& b) { return std::abs(a.imag()) < std::abs(b.imag()); });
-  // One DOF: the two exponents closest to the real axis are the Floquet exponents.
-  const std::complex<double> critical = values[0].real() > values[1].real() ? values[0] : values[1];
+  // One DOF: the two exponents of the strip |Im λ| <= ω/2, one copy each on its edge (where a
+  // real negative multiplier puts them: "the two closest to the real axis" could take both
+  // copies a ± iω/2 of the stable one there, as round-off had it).
+  const std::vector<std::complex<double>> strip =
+      detail::floquetStrip(eig.eigenvalues(), point.omega, 1);
+  if (strip.empty()) {
+    throw std::runtime_error(
+        fmt::format("Hill's method: no Floquet exponent in the strip at ω = {:g}", point.omega));
+  }
+  const std::complex<double> critical = strip.front();
   point.max_floquet_real = critical.real();
-  point.critical_multiplier = std::exp(critical * (kTwoPi / point.omega));
+  point.critical_multiplier = detail::floquetMultiplier(critical, point.omega);
   point.stable = point.max_floquet_real < 1e-9 * point.omega;
 }
 

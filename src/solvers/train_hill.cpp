@@ -139,26 +139,6 @@ class HillShiftSolve {
 
 }  // namespace
 
-std::vector<std::complex<double>> floquetStrip(const Eigen::VectorXcd& values, double omega,
-                                               int n) {
-  std::vector<Complex> strip;
-  const double tolerance = 1e-3 * omega;
-  for (const Complex& v : values) {
-    const double edge = std::abs(v.imag()) - 0.5 * omega;
-    if (edge > tolerance) continue;
-    if (std::abs(edge) <= tolerance && v.imag() < 0.0) continue;  // a + iω/2's copy a − iω/2
-    strip.push_back(v);
-  }
-  // Lazarus & Thomas (2010): the Floquet exponents are the 2n with the smallest |Im λ|.
-  std::sort(strip.begin(), strip.end(), [](const Complex& a, const Complex& b) {
-    return std::abs(a.imag()) < std::abs(b.imag());
-  });
-  if (static_cast<int>(strip.size()) > 2 * n) strip.resize(2 * n);
-  std::sort(strip.begin(), strip.end(),
-            [](const Complex& a, const Complex& b) { return a.real() > b.real(); });
-  return strip;
-}
-
 TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
   HillShiftSolve op(problem);
   const Eigen::Index n = problem.M.rows(), N = op.rows();
@@ -259,20 +239,10 @@ void TrainHarmonicBalance::classifyHill(HarmonicBalancePoint& point, bool sample
         fmt::format("Hill's method: no Floquet exponent in the strip |Im| <= ω/2 at ω = {:g} rad/s",
                     point.omega));
   }
-  std::complex<double> critical = hill.exponents.front();
-  // The bifurcation type from the critical exponent's place in the strip |Im λ| <= ω/2: a
-  // truncated Hill matrix puts a real multiplier's exponent only near Im = 0 or ±ω/2 (its
-  // periodicity in iω is broken by the truncation), so those within 1e-4 ω are snapped there.
-  const double half = 0.5 * point.omega;
-  if (std::abs(std::abs(critical.imag()) - half) <= 1e-4 * point.omega) {
-    critical = {critical.real(), half};
-  } else if (std::abs(critical.imag()) <= 1e-4 * point.omega) {
-    critical = {critical.real(), 0.0};
-  }
+  const std::complex<double> critical = hill.exponents.front();
   const double T = 2.0 * std::numbers::pi / point.omega;
   point.max_floquet_real = critical.real();
-  point.critical_multiplier = std::exp(critical * T);
-  if (critical.imag() == half) point.critical_multiplier = -std::exp(critical.real() * T);
+  point.critical_multiplier = detail::floquetMultiplier(critical, point.omega);
   // The monodromy's threshold |μ| < 1 + 1e-9, as an exponent.
   point.stable = point.max_floquet_real < 1e-9 / T;
 }

@@ -171,10 +171,14 @@ TEST(HarmonicBalance, HillStabilityAgreesWithFloquetMultipliers) {
     EXPECT_NEAR(point.max_floquet_real, floquet, 1e-6) << omega;
     EXPECT_EQ(point.stable, floquet < 0.0) << omega;
     // The sampled monodromy (k held over each of the N = 128 intervals): first order in 1/N.
+    // Its verdict must agree where the exponent is farther from 0 than that error bound (at
+    // 1.98, next to the parametric resonance, it is not: the sign there is round-off's).
     HarmonicBalancePoint sampled = point;
     hbm.stabilityMonodromy(sampled);
     EXPECT_NEAR(sampled.max_floquet_real, floquet, 2e-3) << omega;
-    EXPECT_EQ(sampled.stable, point.stable) << omega;
+    std::printf("omega %.2f: Floquet exponent %.3e (Hill %.3e, sampled %.3e)\n", omega, floquet,
+                point.max_floquet_real, sampled.max_floquet_real);
+    if (std::abs(floquet) > 2e-3) EXPECT_EQ(sampled.stable, point.stable) << omega;
   }
 }
 

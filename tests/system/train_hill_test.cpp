@@ -149,7 +149,8 @@ TEST(TrainHill, LinearTrainExponentsAreTheDampedEigenvalues) {
 /// DOF) is the 1-DOF gear pair, whose Hill's method (harmonic_balance.cpp, second-order
 /// companion form of the same Galerkin Jacobian) is an independent implementation of the same
 /// eigenproblem: along a sweep through contact loss and six folds the largest real part of the
-/// exponents agrees to 1e-6 of ω at every 5th point (measured 2.2e-7), with the same verdict.
+/// exponents agrees to 1e-6 of ω at every 5th point (measured 7.1e-7 where the critical
+/// exponent is on the strip's edge, 3.9e-7 elsewhere), with the same verdict.
 TEST(TrainHill, SinglePairMatchesTheSdofHillMethod) {
   const double j = 2e-5;
   const GearTrainModel train(singlePair(j));
@@ -176,23 +177,21 @@ TEST(TrainHill, SinglePairMatchesTheSdofHillMethod) {
     hbm.classify(p, StabilityMethod::kHill, false);
     reference.classify(q, StabilityMethod::kHill, false);
     // Critical exponent on the strip's edge (a real negative multiplier): four eigenvalues at
-    // |Im| = ω/2 (a ± iω/2 of two exponents), and the 1-DOF selection "the two closest to the
-    // real axis" may take the wrong pair there; the train's floquetStrip keeps one copy each.
-    if (p.critical_multiplier.real() < 0.0 && p.critical_multiplier.imag() == 0.0) {
-      ++edge;
-      continue;
-    }
+    // |Im| = ω/2 (a ± iω/2 of two exponents); both selections keep one copy of each
+    // (detail::floquetStrip; the 1-DOF one took "the two closest to the real axis" before,
+    // which could be both copies of the stable exponent).
+    edge += p.critical_multiplier.real() < 0.0 && p.critical_multiplier.imag() == 0.0;
     worst = std::max(worst, std::abs(p.max_floquet_real - q.max_floquet_real) / p.omega);
     EXPECT_EQ(p.stable, q.stable) << p.omega;
     unstable += !p.stable;
     ++compared;
   }
-  EXPECT_LT(worst, 1e-6);  // measured 2.2e-7: two dense eigensolvers of differently scaled forms
+  EXPECT_LT(worst, 1e-6);  // two dense eigensolvers of differently scaled forms
   EXPECT_GT(unstable, 5);  // the middle branches of the loops
-  EXPECT_GT(compared, 3 * edge);
+  EXPECT_GT(edge, 0);      // measured 26 of 291: the edge case is exercised
   std::printf(
-      "single pair: %d points (%d unstable) compared, %d on the strip's edge skipped, "
-      "worst |Δ max Re λ| / ω = %.3g\n",
+      "single pair: %d points (%d unstable, %d with the critical exponent on the strip's edge) "
+      "compared, worst |Δ max Re λ| / ω = %.3g\n",
       compared, unstable, edge, worst);
 }
 

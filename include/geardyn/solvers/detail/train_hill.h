@@ -24,6 +24,8 @@
 #include <complex>
 #include <vector>
 
+#include "geardyn/solvers/detail/floquet_strip.h"
+
 namespace geardyn::detail {
 
 struct TrainHillProblem {
@@ -48,13 +50,6 @@ struct TrainHillResult {
   double radius = 0.0;  ///< |λ| of the farthest computed: every eigenvalue nearer was found
   int operations = 0;   ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
 };
-
-/// The Floquet exponents among eigenvalues of a Hill matrix (2n states, base frequency ω
-/// [rad/s]), largest real part first: those of the strip |Im λ| <= ω/2 (widened by 1e-3 ω: the
-/// truncation moves the exponents of real negative multipliers, on its edge, a little off it;
-/// there a + iω/2 is kept and its copy a − iω/2 dropped), at most the 2n with the smallest
-/// |Im λ| (Lazarus & Thomas 2010).
-std::vector<std::complex<double>> floquetStrip(const Eigen::VectorXcd& values, double omega, int n);
 
 /// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0 on the
 /// 4n eigenvalues nearest 0 (every exponent whose central copy has |λ| < ω/√2, in particular
