@@ -137,10 +137,10 @@ void addNonlinearSection(config::ConfigSchema& schema) {
   schema.integer("nonlinear.newmark_contact_refinement")
       .min(0)
       .max(TrainNonlinearTimeOptions::kMaxEventRefinement)
-      .defaultValue(2)
+      .defaultValue(0)
       .doc(
           "halvings of a Newmark step in which a contact changes state (only the force's slope "
-          "jumps: fixed steps stay second order; same bound)");
+          "jumps: fixed steps stay second order, refining measured no gain; same bound)");
   schema.integer("nonlinear.newmark_max_periods")
       .min(3)
       .defaultValue(2000)

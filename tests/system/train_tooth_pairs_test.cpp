@@ -262,7 +262,7 @@ TEST(TrainToothPairs, PlanetarySunMeshesAgreeWithNewmark) {
       "planetary sun tooth pairs: %d stable (%d with loss), %d unstable, worst %.3g, "
       "folds %zu\n",
       check.stable, check.contact_loss, check.unstable, check.worst, sweep.folds.size());
-  // Measured: 6 folds; 2 stable solutions losing contact kept within 3.3e-3, 2 unstable ones
+  // Measured: 6 folds; 2 stable solutions losing contact kept within 3.6e-3, 2 unstable ones
   // left (frequencies with only unstable solutions: Newmark settles elsewhere).
   EXPECT_GE(check.stable, 2);
   EXPECT_GE(check.unstable, 2);
