@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_response.h"
@@ -65,14 +66,22 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
       jump_levels_(event_refinement),
       contact_levels_(contact_refinement) {
   newmark.validate();
-  for (int levels : {event_refinement, contact_refinement}) {
+  for (auto [key, levels] :
+       {std::pair{"nonlinear.newmark_event_refinement", event_refinement},
+        std::pair{"nonlinear.newmark_contact_refinement", contact_refinement}}) {
     if (levels < 0 || levels > TrainNonlinearTimeOptions::kMaxEventRefinement) {
       throw InputError(
-          "nonlinear.newmark_event_refinement", std::to_string(levels),
+          key, std::to_string(levels),
           fmt::format("an integer in [0, {}]", TrainNonlinearTimeOptions::kMaxEventRefinement));
     }
   }
-  const int finest = std::max(event_refinement, contact_refinement);
+  // The force can jump only where a k(φ) jumps or tooth pairs engage: elsewhere no level for it
+  // (every level holds an n × n factorisation).
+  const bool jumps = std::any_of(model.meshes().begin(), model.meshes().end(), [](const auto& m) {
+    return m.toothPairs() || !m.stiffness->discontinuities().empty();
+  });
+  if (!jumps) jump_levels_ = 0;
+  const int finest = std::max(jump_levels_, contact_levels_);
   const int n = model.dofCount();
   meshes_ = static_cast<int>(model.meshes().size());
   const int bearings = static_cast<int>(model.clearanceBearings().size());

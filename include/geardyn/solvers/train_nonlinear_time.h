@@ -28,8 +28,9 @@
 /// to Δt / 2^event_refinement (jumps) or Δt / 2^contact_refinement (contact changes): bisection
 /// brackets the event (Dieci & Lopez 2012 survey this and the alternatives for discontinuous
 /// right-hand sides), so its error falls by 2^levels (jumps) or 4^levels (kinks). Every step
-/// size's factorisation (A, Z, W) is built once: a refined step allocates and factorises
-/// nothing. Measured in docs/theory/nonlinear_gear_trains.md.
+/// size's factorisation (A, Z, W) is built once (for jumps only if some mesh's k(φ) jumps or
+/// has tooth pairs): a refined step allocates and factorises nothing. Measured in
+/// docs/theory/nonlinear_gear_trains.md.
 
 #include <Eigen/Dense>
 #include <string>
