@@ -150,7 +150,7 @@ TEST(TrainToothPairs, MonodromyStabilityAgreesWithNewmarkAtFolds) {
   std::printf("single pair folds %zu: %d stable, %d unstable, worst %.3g\n", result.folds.size(),
               check.stable, check.unstable, check.worst);
   // Measured: 4 folds, 3 stable and 3 unstable, worst 3.0e-3: the H = 15 balance's truncation
-  // at the pairs' stiffness jumps (H = 60 gives 3.5e-4 there); Newmark with its event refinement
+  // at the pairs' stiffness jumps (H = 60 gives 3.4e-4 there); Newmark with its event refinement
   // is within 3e-4 of its own 4096-step run. (Without refinement its first-order error at the
   // jumps happened to cancel the truncation: 3.1e-4.)
   EXPECT_GE(check.unstable, 2);
