@@ -61,7 +61,6 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
                                              int event_refinement, int contact_refinement)
     : model_(model),
       speed_(input_speed),
-      dt_(time_step),
       gamma_(newmark.gamma),
       jump_levels_(event_refinement),
       contact_levels_(contact_refinement) {

@@ -137,10 +137,10 @@ class TrainNonlinearNewmark {
                         const std::vector<long long>& after) const;
 
   const GearTrainModel& model_;
-  double speed_, dt_, gamma_, t_ = 0.0;
+  double speed_, gamma_, t_ = 0.0;
   int meshes_ = 0, jump_levels_ = 0, contact_levels_ = 0;
   long long refined_ = 0;
-  std::vector<Level> levels_;                // dt_ / 2^l
+  std::vector<Level> levels_;                // time_step / 2^l
   std::vector<Saved> saved_;                 // per level but the finest
   std::vector<std::vector<double>> breaks_;  // per mesh: stiffness jumps in [0, 1)
   std::vector<long long> events_;
