@@ -76,9 +76,11 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
   }
   // The force can jump only where a k(φ) jumps or tooth pairs engage: elsewhere no level for it
   // (every level holds an n × n factorisation).
-  const bool jumps = std::any_of(model.meshes().begin(), model.meshes().end(), [](const auto& m) {
-    return m.toothPairs() || !m.stiffness->discontinuities().empty();
-  });
+  bool jumps = false;
+  for (const TrainMesh& mesh : model.meshes()) {
+    breaks_.push_back(mesh.stiffness->discontinuities());
+    jumps = jumps || mesh.toothPairs() || !breaks_.back().empty();
+  }
   if (!jumps) jump_levels_ = 0;
   const int finest = std::max(jump_levels_, contact_levels_);
   const int n = model.dofCount();
@@ -104,7 +106,6 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
   delta_ = f_ = res_ = dashpot_ = free_ = step_ = Eigen::VectorXd::Zero(r);
   k_ = e_ = Eigen::VectorXd::Zero(meshes_);
   tooth_pairs_.resize(meshes_);
-  for (const TrainMesh& mesh : model.meshes()) breaks_.push_back(mesh.stiffness->discontinuities());
   events_.assign(2 * meshes_ + bearings, 0);
   saved_.resize(finest);
   for (Saved& s : saved_) {
