@@ -14,6 +14,7 @@ cd "$here"
 # One list, so that the README, CI and developers agree on what geardyn needs.
 packages=(
   build-essential cmake ninja-build pkg-config git
+  ccache  # recompiles only what changed, across clones side by side (base_dir below)
   libeigen3-dev libspectra-dev libfftw3-dev libboost-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libfmt-dev libhdf5-dev
   libpugixml-dev libminizip-dev zlib1g-dev  # REXS import: XML, zipped .rexsz
@@ -66,6 +67,13 @@ build_type="${BUILD_TYPE:-Release}"
 generator=()
 [ -f "$build_dir/CMakeCache.txt" ] || generator=(-G Ninja)
 # Debian's interpreter is pinned: the first python3 on PATH may lack numpy/pytest.
-cmake -S . -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE="$build_type" \
+# ccache with base_dir = the clone's parent folder: a second clone beside this one (the packaging
+# test's, a developer's worktree) finds this build's objects under its own paths.
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  launcher=("-DCMAKE_CXX_COMPILER_LAUNCHER=/usr/bin/env;CCACHE_BASEDIR=$(dirname "$here");ccache"
+            "-DCMAKE_C_COMPILER_LAUNCHER=/usr/bin/env;CCACHE_BASEDIR=$(dirname "$here");ccache")
+fi
+cmake -S . -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE="$build_type" "${launcher[@]}" \
   -DPython3_EXECUTABLE=/usr/bin/python3 ${GEARDYN_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build_dir" -j "$(nproc)"
