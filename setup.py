@@ -3,7 +3,11 @@
 The extension `geardyn._geardyn`, the optional HDF5 module it loads on demand and the `geardyn`
 executable (for `geardyn.sweep` and `train`) are built by the project's CMake build (Release,
 ccache when installed, no tests) in the setuptools build folder and copied into the package.
-Environment: GEARDYN_CMAKE_BUILD_DIR reuses a build folder; GEARDYN_BUILD_JOBS sets -j (2).
+Environment: GEARDYN_CMAKE_BUILD_DIR reuses a build folder; GEARDYN_BUILD_JOBS sets -j (2);
+GEARDYN_PREBUILT_DIR names a CMake build folder of this same version whose `_geardyn` and
+`geardyn_cli` targets are built already: they are packaged as they are, with no compilation (the
+packaging test in the default suite packages the project's own build this way instead of
+compiling everything a second time).
 """
 
 import os
@@ -25,8 +29,24 @@ def version():
     return re.search(r"project\(geardyn VERSION ([0-9.]+)", text).group(1)
 
 
+def prebuilt_folder(folder):
+    """A finished build folder of this version, or SystemExit saying what is missing."""
+    build = pathlib.Path(folder).resolve()
+    cache = build / "CMakeCache.txt"
+    if not cache.exists():
+        raise SystemExit(f"GEARDYN_PREBUILT_DIR={folder}: no CMakeCache.txt there (not a build folder)")
+    built = re.search(r"^CMAKE_PROJECT_VERSION:STATIC=([0-9.]+)$", cache.read_text(), re.M)
+    if not built or built.group(1) != version():
+        raise SystemExit(f"GEARDYN_PREBUILT_DIR={folder}: built version "
+                         f"{built.group(1) if built else '?'}, the source is {version()}")
+    return build
+
+
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
+        if os.environ.get("GEARDYN_PREBUILT_DIR"):
+            self.package(prebuilt_folder(os.environ["GEARDYN_PREBUILT_DIR"]), ext)
+            return
         build = pathlib.Path(os.environ.get("GEARDYN_CMAKE_BUILD_DIR") or
                              pathlib.Path(self.build_temp).resolve() / "cmake")
         build.mkdir(parents=True, exist_ok=True)
@@ -41,14 +61,23 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("GEARDYN_BUILD_JOBS", "2")
         subprocess.run(["cmake", "--build", str(build), "-j", jobs, "--target", "_geardyn",
                        "geardyn_cli"], check=True)
+        self.package(build, ext)
+
+    def package(self, build, ext):
+        """Copies the extension, its on-demand modules and the executable out of `build`."""
+        suffix = sysconfig.get_config_var("EXT_SUFFIX")
+        extension = build / "python" / "geardyn" / f"_geardyn{suffix}"
+        executable = build / "bin" / "geardyn"
+        for needed in (extension, executable):
+            if not needed.exists():
+                raise SystemExit(f"{needed} is missing: build the _geardyn and geardyn_cli targets")
         target = pathlib.Path(self.get_ext_fullpath(ext.name)).resolve()
         target.parent.mkdir(parents=True, exist_ok=True)
-        suffix = sysconfig.get_config_var("EXT_SUFFIX")
-        shutil.copy2(build / "python" / "geardyn" / f"_geardyn{suffix}", target)
+        shutil.copy2(extension, target)
         # Beside the extension: the modules it loads on demand and the executable.
         for module in (build / "lib").glob("libgeardyn_*.so"):
             shutil.copy2(module, target.parent / module.name)
-        shutil.copy2(build / "bin" / "geardyn", target.parent / "geardyn-cli")
+        shutil.copy2(executable, target.parent / "geardyn-cli")
 
 
 setup(
