@@ -45,7 +45,7 @@ def prebuilt_folder(folder):
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
         if os.environ.get("GEARDYN_PREBUILT_DIR"):
-            self.package(prebuilt_folder(os.environ["GEARDYN_PREBUILT_DIR"]), ext)
+            self.copy_artefacts(prebuilt_folder(os.environ["GEARDYN_PREBUILT_DIR"]), ext)
             return
         build = pathlib.Path(os.environ.get("GEARDYN_CMAKE_BUILD_DIR") or
                              pathlib.Path(self.build_temp).resolve() / "cmake")
@@ -61,9 +61,9 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("GEARDYN_BUILD_JOBS", "2")
         subprocess.run(["cmake", "--build", str(build), "-j", jobs, "--target", "_geardyn",
                        "geardyn_cli"], check=True)
-        self.package(build, ext)
+        self.copy_artefacts(build, ext)
 
-    def package(self, build, ext):
+    def copy_artefacts(self, build, ext):
         """Copies the extension, its on-demand modules and the executable out of `build`."""
         suffix = sysconfig.get_config_var("EXT_SUFFIX")
         extension = build / "python" / "geardyn" / f"_geardyn{suffix}"
