@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <numbers>
@@ -123,13 +124,20 @@ ToothBeam::ToothBeam(const GearPair& pair, Member member, ToothRoot root, Founda
       const double* c = kSainsot[x];
       lmpq_[x] = c[0] / (t * t) + c[1] * h * h + c[2] * h / t + c[3] / t + c[4] * h + c[5];
       if (lmpq_[x] < kSainsotRange[x][0] || lmpq_[x] > kSainsotRange[x][1]) {
-        warnings_.push_back(fmt::format(
-            "{}: fillet-foundation coefficient {} = {:.4g} lies outside the range of Sainsot's fit "
-            "[{}, {}] (θ_f = {:.4g} rad, r_f/r_int = {:.4g})",
-            name, kNames[x], lmpq_[x], kSainsotRange[x][0], kSainsotRange[x][1], t, h));
+        extrapolated_ +=
+            fmt::format("{}{} = {:.4g} (data {} to {})", extrapolated_.empty() ? "" : ", ",
+                        kNames[x], lmpq_[x], kSainsotRange[x][0], kSainsotRange[x][1]);
       }
     }
   }
+}
+
+ToothBeam ToothBeam::withFoundationFitClamped() const {
+  ToothBeam clamped = *this;
+  for (int x = 0; x < 4; ++x)
+    clamped.lmpq_[x] = std::clamp(lmpq_[x], kSainsotRange[x][0], kSainsotRange[x][1]);
+  clamped.extrapolated_.clear();
+  return clamped;
 }
 
 ToothCompliance ToothBeam::compliance(double roll) const {

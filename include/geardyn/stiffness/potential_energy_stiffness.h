@@ -73,7 +73,19 @@ class PotentialEnergyMeshStiffness final : public MeshStiffness {
   /// Position along the line of action (from T₁) of the z = 0 face section of pair j at mesh
   /// phase φ, and whether that pair is within its contact window.
   bool pairSection(double phase, int pair, double& s_pair) const;
+  /// Sentences about the model used outside its data: one per mesh when Sainsot's fillet-
+  /// foundation fit is extrapolated (tooth_beam.h) so far that the mean mesh stiffness moves by
+  /// more than kFoundationFitWarning when the fit is held at its data range.
   const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+  /// Which members' foundation fits are extrapolated ("pinion: M* = 1.078 (data 1.08 to
+  /// 3.29)"; empty when none), and the relative change of the mean mesh stiffness when their
+  /// coefficients are held at the fit's data range (0 when none): the size of the uncertainty
+  /// the extrapolation adds to k̄.
+  const std::string& foundationFitNote() const noexcept { return foundation_fit_note_; }
+  double foundationFitEffect() const noexcept { return foundation_fit_effect_; }
+  /// 0.5 %: below it the extrapolation is noted, not warned about — the potential-energy model
+  /// itself differs from finite elements by several per cent (docs/theory/mesh_stiffness.md).
+  static constexpr double kFoundationFitWarning = 5e-3;
 
  private:
   double interpolate(double s) const;      // k′(s), 0 outside the path
@@ -95,6 +107,9 @@ class PotentialEnergyMeshStiffness final : public MeshStiffness {
   std::vector<double> values_, slopes_, cumulative_;
   std::vector<double> breaks_;
   std::vector<std::string> warnings_;
+  std::string foundation_fit_note_;
+  double foundation_fit_effect_ = 0.0;
+  void assessFoundationFit();  // fills the three above
 };
 
 }  // namespace geardyn

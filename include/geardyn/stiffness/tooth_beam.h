@@ -58,8 +58,12 @@ class ToothBeam {
   /// Half-angle of the tooth root θ_f [rad] and the foundation fit's L*, M*, P*, Q*.
   double rootHalfAngle() const noexcept { return theta_f_; }
   const std::array<double, 4>& foundationCoefficients() const noexcept { return lmpq_; }
-  /// Sentences about fits used outside their range (Sainsot's polynomial).
-  const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+  /// The foundation fit's coefficients that lie outside the range of Sainsot's (2004) data, as
+  /// "M* = 1.078 (data 1.08 to 3.29)" joined by ", "; empty when the fit is interpolated.
+  const std::string& foundationFitExtrapolation() const noexcept { return extrapolated_; }
+  /// This beam with L*, M*, P*, Q* held at the nearest end of the fit's data range: the
+  /// sensitivity of a result to the extrapolation (PotentialEnergyMeshStiffness).
+  ToothBeam withFoundationFitClamped() const;
 
  private:
   double rb_, rf_, alpha2_, youngs_, poisson_;
@@ -77,7 +81,7 @@ class ToothBeam {
   double theta_f_ = 0.0;  // root half-angle
   double root_y_ = 0.0;   // height of the root section on the centreline, r_f cos θ_f
   std::array<double, 4> lmpq_{};
-  std::vector<std::string> warnings_;
+  std::string extrapolated_;
 };
 
 /// Hertzian contact stiffness of a tooth pair per unit face width,
