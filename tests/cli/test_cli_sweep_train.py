@@ -81,6 +81,18 @@ def test_analysis_keys_are_swept(tmp_path):
     assert [(float(r["speeds"]), float(r["h"])) for r in table] == [(12.0, 4.0), (20.0, 6.0)]
 
 
+def test_nonlinear_keys_are_swept(tmp_path):
+    fixed = ['analysis.run=[\\"nonlinear\\"]', "nonlinear.speed_min_rpm=1400.0",
+             "nonlinear.speed_max_rpm=1600.0", "nonlinear.stability=false"]
+    path = study(tmp_path, REDUCER, '"nonlinear.harmonics" = [4, 6]\n"nonlinear.samples" = [48, 64]',
+                 '["h=/nonlinear/harmonics", "n=/nonlinear/samples", '
+                 '"p2p=/nonlinear/peaks/stage1/p2p_force_N"]', design="zip",
+                 extra="set = [" + ", ".join(f'"{s}"' for s in fixed) + "]")
+    table = swept(path, tmp_path / "out", 2)
+    assert [(float(r["h"]), float(r["n"])) for r in table] == [(4.0, 48.0), (6.0, 64.0)]
+    assert all(float(r["p2p"]) > 0 for r in table)
+
+
 def test_a_case_gives_the_numbers_of_the_same_train_run(tmp_path):
     sets = ["operating_point.torque=350.0", "meshes.stage1.damping_ratio=0.03",
             'analysis.run=["static", "modal", "forced"]', "forced.points=15"]
