@@ -335,8 +335,11 @@ int runSweep(const CommandOptions& options) {
                        "sweep");
       refuseToDiscardJournal(folder / "sweep_journal.jsonl", options);
       fs::create_directories(cases_dir);
-      journal = std::make_unique<io::SweepJournal>(folder / "sweep_journal.jsonl",
-                                                   study.fingerprint(), options.resume);
+      // A command that reads other files than its base (train's gearbox) has them in the
+      // fingerprint too: editing the gearbox file invalidates the journal.
+      journal = std::make_unique<io::SweepJournal>(
+          folder / "sweep_journal.jsonl",
+          study.fingerprint(command.load_file ? base.resolved().dump() : ""), options.resume);
     } catch (...) {
       setup_error = std::current_exception();
     }

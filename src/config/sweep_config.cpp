@@ -217,8 +217,8 @@ std::vector<std::string> SweepDefinition::overridesOf(const StudyCase& c) const 
   return o;
 }
 
-std::string SweepDefinition::fingerprint() const {
-  return fnv1a(resolved.dump() + "\n" + readText(base));
+std::string SweepDefinition::fingerprint(const std::string& base_inputs) const {
+  return fnv1a(resolved.dump() + "\n" + readText(base) + base_inputs);
 }
 
 SweepDefinition loadSweepDefinition(const fs::path& file,

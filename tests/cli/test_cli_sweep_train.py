@@ -169,3 +169,18 @@ def test_rexs_load_cases_and_gearbox_keys_are_swept(tmp_path):
     bad = study(tmp_path, analysis, '"gearbox.load_case" = [1, 9]', '["/static/status"]')
     result = run("sweep", bad, "--out", tmp_path / "bad")
     assert result.returncode == 2 and "study.parameters.gearbox.load_case[1] = 9" in result.stderr
+
+
+def test_an_edited_gearbox_file_is_not_resumed(tmp_path):
+    # The journal's fingerprint holds the gearbox the analysis file names, not only the base.
+    shutil.copy(REDUCER, tmp_path / "analysis.toml")
+    (tmp_path / "gearboxes").mkdir()
+    gearbox = tmp_path / "gearboxes" / GEARBOX.name
+    shutil.copy(GEARBOX, gearbox)
+    path = study(tmp_path, tmp_path / "analysis.toml", '"operating_point.torque" = [100.0, 200.0]',
+                 '["f1=/static/mesh_force_N/stage1"]', extra=f'set = ["{STATIC}"]')
+    swept(path, tmp_path / "out", 2)
+    assert run("sweep", path, "--out", tmp_path / "out", "--quiet", "--resume").returncode == 0
+    gearbox.write_text(gearbox.read_text().replace("damping_ratio = 0.05", "damping_ratio = 0.06", 1))
+    again = run("sweep", path, "--out", tmp_path / "out", "--quiet", "--resume")
+    assert again.returncode == 2 and "changed since" in again.stderr, again.stderr
