@@ -406,6 +406,37 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
   return 0;
 }
 
+/// The gearbox file an analysis file names: its gearbox.file, or the last --set of it (a sweep
+/// over gearbox files); "" when the gearbox is inline.
+std::string gearboxFileOf(std::string_view text, const std::string& source,
+                          const std::vector<std::string>& overrides) {
+  std::string ref;
+  try {
+    const toml::table table = toml::parse(text, source);
+    if (auto node = table.at_path("gearbox.file"); node && node.is_string())
+      ref = *node.value<std::string>();
+  } catch (const std::exception&) {
+    // parseConfig reports a syntax error with its location.
+  }
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    std::string key = o.substr(0, eq);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    key.erase(0, key.find_first_not_of(" \t"));
+    if (key != "gearbox.file" || eq == std::string::npos) continue;
+    std::string value = o.substr(eq + 1);
+    value.erase(value.find_last_not_of(" \t") + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    try {  // TOML ("x.toml"), or a bare word taken as a string, as config::parseConfig does
+      const toml::table parsed = toml::parse("v = " + value);
+      if (auto v = parsed["v"].value<std::string>()) value = *v;
+    } catch (const toml::parse_error&) {
+    }
+    ref = value;
+  }
+  return ref;
+}
+
 }  // namespace
 
 TrainInputs loadTrainInputs(const std::filesystem::path& file,
@@ -417,14 +448,7 @@ TrainInputs loadTrainInputs(const std::filesystem::path& file,
 TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
                              const std::filesystem::path& base_dir,
                              const std::vector<std::string>& overrides) {
-  std::string ref;
-  try {
-    const toml::table table = toml::parse(text, source);
-    if (auto node = table.at_path("gearbox.file"); node && node.is_string())
-      ref = *node.value<std::string>();
-  } catch (const std::exception&) {
-    // parseConfig below reports a syntax error with its location.
-  }
+  const std::string ref = gearboxFileOf(text, source, overrides);
   if (ref.empty()) {
     config::Config both = config::parseConfig(text, source, config::trainSchema(true), overrides);
     if (both.has("gearbox.load_case"))

@@ -184,3 +184,17 @@ def test_an_edited_gearbox_file_is_not_resumed(tmp_path):
     gearbox.write_text(gearbox.read_text().replace("damping_ratio = 0.05", "damping_ratio = 0.06", 1))
     again = run("sweep", path, "--out", tmp_path / "out", "--quiet", "--resume")
     assert again.returncode == 2 and "changed since" in again.stderr, again.stderr
+
+
+def test_gearbox_files_are_swept(tmp_path):
+    # A --set of gearbox.file chooses the gearbox read (it named the file but read the original).
+    heavy = tmp_path / "heavy.toml"
+    heavy.write_text(GEARBOX.read_text().replace("torque = 200.0", "torque = 400.0", 1))
+    path = study(tmp_path, REDUCER, f'"gearbox.file" = ["{GEARBOX}", "{heavy}"]',
+                 '["f1=/static/mesh_force_N/stage1"]', extra=f'set = ["{STATIC}"]')
+    f1 = [float(r["f1"]) for r in swept(path, tmp_path / "out", 2)]
+    assert f1[1] == pytest.approx(2 * f1[0], rel=1e-9)
+    direct = run("train", REDUCER, "--out", tmp_path / "direct", "--quiet", "--set",
+                 'analysis.run=["static"]', "--set", f"gearbox.file={heavy}")
+    assert direct.returncode == 0, direct.stderr
+    assert summary(tmp_path / "direct")["results"]["static"]["mesh_force_N"]["stage1"] == f1[1]
