@@ -3,7 +3,7 @@
 /// timed in C++ over `repeat` runs after one warm-up: the fastest run (the least disturbed by
 /// other processes on a shared machine) and the median, as one JSON line.
 ///
-/// Usage: geardyn_analysis_bench COMMAND FILE REPEAT
+/// Usage: geardyn_analysis_bench COMMAND FILE REPEAT (COMMAND: any of analysisNames(), train too)
 
 #include <algorithm>
 #include <chrono>
@@ -45,7 +45,9 @@ int main(int argc, char** argv) {
     const auto schema = geardyn::analysis::analysisSchema(
         command, geardyn::config::peekConfigString(file, "model.type"));
     const auto t1 = std::chrono::steady_clock::now();
-    const auto config = geardyn::config::loadConfigFile(file, schema);
+    // `train` reads its analysis file and the gearbox file it names (one configuration).
+    const auto config = command == "train" ? geardyn::analysis::loadAnalysisConfig(command, file)
+                                           : geardyn::config::loadConfigFile(file, schema);
     const auto t2 = std::chrono::steady_clock::now();
     const auto result = geardyn::analysis::runAnalysis(command, config, {});
     const auto t3 = std::chrono::steady_clock::now();

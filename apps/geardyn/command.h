@@ -53,8 +53,14 @@ struct Command {
   /// When set, the schema depends on the configuration file (e.g. `rotor` with [model] type =
   /// "fe_geared_rotor"); `schema` stays the default one.
   std::function<config::ConfigSchema(const std::filesystem::path&)> schema_for_file;
-  /// When set, the command reads its file itself (no schema validation by the caller): `sweep`.
+  /// When set, the command reads its file itself (no schema validation by the caller): `sweep`,
+  /// `train` (an analysis file and the gearbox file it names).
   std::function<int(const CommandOptions&)> run_file;
+  /// With run_file, for `sweep`: reads `file` with `overrides` as one run_file run into one
+  /// folder would (InputError naming a bad key, a did-you-mean for an unknown one) and returns
+  /// its configuration; `schema_for_file` then gives every key the file and --set take.
+  std::function<config::Config(const std::filesystem::path&, const std::vector<std::string>&)>
+      load_file;
   /// Further schemas `geardyn schema COMMAND` prints after the default one.
   std::vector<std::function<config::ConfigSchema()>> variant_schemas;
 };

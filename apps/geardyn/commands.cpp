@@ -2,6 +2,7 @@
 
 #include "analysis_command.h"
 #include "command.h"
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/geometry_config.h"
@@ -64,6 +65,12 @@ std::vector<Command> allCommands() {
                 "Campbell, frequency-domain forced response and Newmark time response",
                 [] { return config::trainSchema(false); }, nullptr};
   train.run_file = runTrain;
+  // A sweep's parameters may name any key of the analysis file or of its gearbox.
+  train.schema_for_file = [](const std::filesystem::path&) { return config::trainSchema(true); };
+  train.load_file = [](const std::filesystem::path& file,
+                       const std::vector<std::string>& overrides) {
+    return analysis::loadAnalysisConfig("train", file, overrides);
+  };
   train.variant_schemas = {config::gearboxSchema};
   return {
       {"geometry", "involute gear-pair geometry: radii, contact ratios, checks, mass properties",

@@ -42,10 +42,31 @@ const Command& findCommand(const std::vector<Command>& commands, const std::stri
                    fmt::format("an analysis command: {}", fmt::join(names, ", ")));
 }
 
+/// The base file of a study as its command reads it: the schema parameter keys are looked up
+/// in, the file loaded with overrides (InputError naming a bad key) and one case's run. A
+/// command that reads its file itself (`train`: an analysis file and its gearbox) brings its
+/// own loader; the others are validated against their schema.
+struct BaseFile {
+  BaseFile(const Command& command_, const fs::path& file_)
+      : command(command_), file(file_), schema(commandSchema(command_, file_)) {}
+
+  config::Config load(const std::vector<std::string>& overrides) const {
+    return command.load_file ? command.load_file(file, overrides)
+                             : config::loadConfigFile(file, schema, overrides);
+  }
+  int run(const CommandOptions& options) const {
+    return command.run_file ? command.run_file(options)
+                            : command.run(load(options.overrides), options);
+  }
+
+  const Command& command;
+  fs::path file;
+  config::ConfigSchema schema;
+};
+
 /// Runs one case in-process into its own folder and reads its summary.
-io::SweepCaseRecord runCase(const Command& command, const config::ConfigSchema& schema,
-                            const config::SweepDefinition& study, long long index,
-                            const fs::path& cases_dir) {
+io::SweepCaseRecord runCase(const BaseFile& base, const config::SweepDefinition& study,
+                            long long index, const fs::path& cases_dir) {
   const StudyCase c = study.caseAt(index);
   io::SweepCaseRecord r;
   r.index = index;
@@ -60,8 +81,7 @@ io::SweepCaseRecord runCase(const Command& command, const config::ConfigSchema& 
   o.threads = 1;  // the sweep owns the cores
   o.quiet = true;
   try {
-    const auto config = config::loadConfigFile(o.config_file, schema, o.overrides);
-    const int code = command.run(config, o);
+    const int code = base.run(o);
     const auto summary = nlohmann::json::parse(std::ifstream(o.out_dir / "summary.json"));
     // Success is the command's exit code 0; otherwise its own status ("max_periods", …).
     const std::string status = summary.value("status", std::string("failed"));
@@ -133,16 +153,47 @@ nlohmann::ordered_json outputStatistics(const config::SweepDefinition& study,
   return stats;
 }
 
+/// A key inside a named table ("meshes.stage1.damping_ratio") must name a table the base
+/// configuration has: a --set would otherwise start a new, incomplete one, reported under
+/// another key.
+void checkNamedTable(const std::string& key, const std::string& where,
+                     const config::ConfigSchema& schema, const config::Config& base) {
+  for (const std::string& collection : schema.collections()) {
+    const auto dot = key.find('.', collection.size() + 1);
+    if (key.rfind(collection + ".", 0) != 0 || dot == std::string::npos) continue;
+    const std::string name = key.substr(collection.size() + 1, dot - collection.size() - 1);
+    const auto tables = base.resolved().find(collection);
+    std::vector<std::string> names, keys;
+    if (tables != base.resolved().end() && tables->is_object()) {
+      for (const auto& [n, value] : tables->items()) {
+        if (n == name) return;
+        names.push_back(n);
+        keys.push_back(collection + "." + n + key.substr(dot));
+      }
+    }
+    const auto match = config::closestMatch(key, keys);
+    throw InputError(
+        where, "",
+        fmt::format("a key of a table of the base configuration: it has no [{}.{}] "
+                    "(its [{}.*] are: {}){}",
+                    collection, name, collection,
+                    names.empty() ? "(none)" : fmt::format("{}", fmt::join(names, ", ")),
+                    match ? fmt::format("; did you mean '{}'?", *match) : ""));
+  }
+}
+
 /// Every value a parameter lists (or the bounds of its range) loaded into the base
 /// configuration: a bad value is an error before any case runs, named by its place in the study.
-void checkStudyValues(const config::SweepDefinition& study, const config::ConfigSchema& schema,
-                      const fs::path& file) {
+void checkStudyValues(const config::SweepDefinition& study, const BaseFile& base,
+                      const config::Config& base_config, const fs::path& file) {
+  const config::ConfigSchema& schema = base.schema;
   for (const auto& p : study.parameters) {
     const std::string where = "study.parameters." + p.key;
     if (!schema.findKey(p.key)) {
-      config::loadConfigFile(study.base, schema, {p.key + "=0"});  // throws with did-you-mean
+      base.load({p.key + "=0"});  // throws with did-you-mean
       throw InputError(where, "", "a key of the base configuration");
     }
+    checkNamedTable(p.key, where, schema, base_config);
     std::vector<std::pair<std::string, nlohmann::json>> probes;
     if (p.linspace_num > 0) {
       probes = {{where + ".min", p.valueAt(0)}, {where + ".max", p.valueAt(p.linspace_num - 1)}};
@@ -158,7 +209,7 @@ void checkStudyValues(const config::SweepDefinition& study, const config::Config
       std::vector<std::string> overrides = study.set;
       overrides.push_back(p.key + "=" + config::tomlLiteral(value));
       try {
-        config::loadConfigFile(study.base, schema, overrides);
+        base.load(overrides);
       } catch (const InputError& e) {
         if (e.key() != p.key) throw;
         std::string why = e.allowed();
@@ -240,8 +291,9 @@ int runSweep(const CommandOptions& options) {
   const Command& command = findCommand(commands, study.command);
   // The base configuration with the study's fixed overrides must load: a typo in a key fails here,
   // before any case runs (each case's own values are checked by the case).
-  const auto base_schema = commandSchema(command, study.base);
-  const config::Config base = config::loadConfigFile(study.base, base_schema, study.set);
+  const BaseFile base_file(command, study.base);
+  const config::ConfigSchema& base_schema = base_file.schema;
+  const config::Config base = base_file.load(study.set);
   for (const auto& note : base.notes()) warn(note);
   for (std::string* key : {&study.seed_key}) {
     if (const std::string* renamed = base_schema.aliasTarget(*key)) {
@@ -256,7 +308,7 @@ int runSweep(const CommandOptions& options) {
     }
   }
   rejectSweptOverrides(study, options);
-  checkStudyValues(study, base_schema, options.config_file);
+  checkStudyValues(study, base_file, base, options.config_file);
   if (!study.seed_key.empty() && !base_schema.findKey(study.seed_key))
     throw InputError("study.seed_key", "\"" + study.seed_key + "\"",
                      "a key of the base configuration");
@@ -283,8 +335,11 @@ int runSweep(const CommandOptions& options) {
                        "sweep");
       refuseToDiscardJournal(folder / "sweep_journal.jsonl", options);
       fs::create_directories(cases_dir);
-      journal = std::make_unique<io::SweepJournal>(folder / "sweep_journal.jsonl",
-                                                   study.fingerprint(), options.resume);
+      // A command that reads other files than its base (train's gearbox) has them in the
+      // fingerprint too: editing the gearbox file invalidates the journal.
+      journal = std::make_unique<io::SweepJournal>(
+          folder / "sweep_journal.jsonl",
+          study.fingerprint(command.load_file ? base.resolved().dump() : ""), options.resume);
     } catch (...) {
       setup_error = std::current_exception();
     }
@@ -316,7 +371,7 @@ int runSweep(const CommandOptions& options) {
         mpi ? fmt::format("{} MPI ranks", mpi->size()) : fmt::format("{} threads", threads));
   }
   const CaseFunction run_case = [&](long long index) {
-    return runCase(command, base_schema, study, index, cases_dir);
+    return runCase(base_file, study, index, cases_dir);
   };
   const DoneFunction done = [&](const io::SweepCaseRecord& r) {
     journal->append(r);

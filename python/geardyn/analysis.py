@@ -32,8 +32,9 @@ from .results import Result
 
 __all__ = ["run", "sweep", "COMMANDS"]
 
-#: Commands ``run`` knows: the in-process analyses and train, then the executable's sweep.
-COMMANDS = tuple(_geardyn.analysis_names()) + ("train", "sweep")
+#: Commands ``run`` knows: the in-process analyses (train among them), then the executable's
+#: sweep.
+COMMANDS = tuple(_geardyn.analysis_names()) + ("sweep",)
 
 # Keys of a [pinion] / [gear] section, read from a geardyn.Gear given as a keyword argument.
 _GEAR_KEYS = ("teeth", "module", "face_width", "pressure_angle_deg", "helix_angle_deg",

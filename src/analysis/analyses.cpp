@@ -14,6 +14,7 @@
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/config/stats_config.h"
 #include "geardyn/config/stiffness_config.h"
+#include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
 #include "geardyn/io/geometry_results.h"
 #include "geardyn/io/hbm_results.h"
@@ -32,6 +33,11 @@ struct Entry {
   config::ConfigSchema (*schema)();
 };
 
+/// `train` with its gearbox inline (a file that names one: loadAnalysisConfig).
+config::ConfigSchema trainSchema() {
+  return config::trainSchema(true);
+}
+
 /// Each analysis's own schema; `rotor` has the finite-element variant too.
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> table = {
@@ -39,7 +45,7 @@ const std::vector<Entry>& entries() {
       {"simulate", config::simulateSchema}, {"stats", config::statsSchema},
       {"hbm", config::hbmSchema},           {"rotor", config::rotorSchema},
       {"spectrum", config::spectrumSchema}, {"identify", config::identifySchema},
-      {"ltca", config::ltcaSchema}};
+      {"ltca", config::ltcaSchema},         {"train", trainSchema}};
   return table;
 }
 
@@ -70,12 +76,27 @@ config::ConfigSchema analysisSchema(const std::string& name, const std::string& 
   const Entry& own = entry(name);
   config::ConfigSchema schema =
       name == "rotor" && model_type == "fe_geared_rotor" ? config::feRotorSchema() : own.schema();
+  if (name == "train") return schema;
   for (const auto& other : entries()) {
-    if (other.name == name) continue;
+    if (other.name == name || std::string(other.name) == "train") continue;
     schema.addForeignSchema(other.schema());
     if (std::string(other.name) == "rotor") schema.addForeignSchema(config::feRotorSchema());
   }
   return schema;
+}
+
+config::Config loadAnalysisConfig(const std::string& name, const std::filesystem::path& file,
+                                  const std::vector<std::string>& overrides) {
+  if (name != "train") {
+    return config::loadConfigFile(
+        file, analysisSchema(name, config::peekConfigString(file, "model.type")), overrides);
+  }
+  const TrainInputs inputs = loadTrainInputs(file, overrides);
+  if (inputs.analysis.boolean("gearbox.all_load_cases"))
+    throw InputError("gearbox.all_load_cases", "true",
+                     "false for one run (one load case): make gearbox.load_case a sweep "
+                     "parameter, or run `geardyn train` for every load case");
+  return inputs.combined();
 }
 
 AnalysisResult runAnalysis(const std::string& name, const config::Config& config,
@@ -92,9 +113,12 @@ AnalysisResult runAnalysis(const std::string& name, const config::Config& config
   if (name == "spectrum") function = spectrumAnalysis;
   if (name == "identify") function = identifyAnalysis;
   if (name == "ltca") function = ltcaAnalysis;
-  if (!function) entry(name);  // throws the InputError with the names
+  if (name != "train" && !function) entry(name);  // throws the InputError with the names
   const auto start = std::chrono::steady_clock::now();
-  AnalysisResult result = function(config, context);
+  AnalysisResult result =
+      name == "train"
+          ? trainAnalysis({config, config, config.source(), config.source(), {}}, context)
+          : function(config, context);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -173,8 +173,19 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
   }
   result.addTable("modes.csv", table);
   result.addTable("mode_shapes.csv", shapes);
-  summary.results["modal"] = {
-      {"speed_rpm", speed / kRpm}, {"modes", list}, {"wall_time_s", secondsSince(start)}};
+  // The lowest elastic natural frequency: neither a rigid-body mode (below 1e-6 × the highest
+  // frequency, TrainModalOptions::rigid_frequency's default) nor a divergence; null if none.
+  Json lowest = nullptr;
+  const double highest = modes.empty() ? 0.0 : modes.back().frequency;
+  for (const TrainMode& m : modes) {
+    if (m.divergent || m.frequency <= 1e-6 * highest) continue;
+    lowest = m.frequency;
+    break;
+  }
+  summary.results["modal"] = {{"speed_rpm", speed / kRpm},
+                              {"lowest_frequency_Hz", lowest},
+                              {"modes", list},
+                              {"wall_time_s", secondsSince(start)}};
   text += fmt::format("modal at {:.1f} rpm: {} modes", speed / kRpm, modes.size());
   for (std::size_t j = 0; j < modes.size() && j < 8; ++j) {
     if (modes[j].divergent) {
@@ -264,7 +275,10 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
         fmt::format("dynamic_{}_{}", e.name, e.local_stiffness.rows() == 1 ? "n_m" : "n"));
   }
   io::CsvTable table(header);
+  // Per mesh: the largest dynamic factor and the largest peak-to-peak mesh force over the
+  // speeds, each with its speed (the headline numbers a sweep over `train` names).
   std::vector<double> worst(model.meshes().size(), 0.0), worst_speed(model.meshes().size(), 0.0);
+  std::vector<double> p2p(model.meshes().size(), 0.0), p2p_speed(model.meshes().size(), 0.0);
   const TrainSteadySolver solver(model, steady);
   const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -274,10 +288,12 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
     std::vector<io::CsvCell> row{speeds[i] / kRpm};
     for (std::size_t m = 0; m < model.meshes().size(); ++m) {
       row.push_back(s.dynamic_factor[m]);
-      row.push_back(s.mesh_force_max[m] - s.mesh_force_min[m]);
+      const double force_p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
+      row.push_back(force_p2p);
       row.push_back(s.mesh_force_harmonics[m][0]);
       if (s.dynamic_factor[m] > worst[m])
         worst[m] = s.dynamic_factor[m], worst_speed[m] = speeds[i];
+      if (force_p2p > p2p[m]) p2p[m] = force_p2p, p2p_speed[m] = speeds[i];
     }
     for (double f : s.element_dynamic_force) row.push_back(f);
     table.addRow(row);
@@ -286,7 +302,9 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
   Json peaks = Json::object();
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
     peaks[model.meshes()[m].name] = {{"max_dynamic_factor", worst[m]},
-                                     {"at_speed_rpm", worst_speed[m] / kRpm}};
+                                     {"at_speed_rpm", worst_speed[m] / kRpm},
+                                     {"max_p2p_force_N", p2p[m]},
+                                     {"max_p2p_force_at_speed_rpm", p2p_speed[m] / kRpm}};
     text += fmt::format("  {}: max dynamic factor {:.3f} [-] at {:.0f} rpm\n",
                         model.meshes()[m].name, worst[m], worst_speed[m] / kRpm);
   }
@@ -388,6 +406,37 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
   return 0;
 }
 
+/// The gearbox file an analysis file names: its gearbox.file, or the last --set of it (a sweep
+/// over gearbox files); "" when the gearbox is inline.
+std::string gearboxFileOf(std::string_view text, const std::string& source,
+                          const std::vector<std::string>& overrides) {
+  std::string ref;
+  try {
+    const toml::table table = toml::parse(text, source);
+    if (auto node = table.at_path("gearbox.file"); node && node.is_string())
+      ref = *node.value<std::string>();
+  } catch (const std::exception&) {
+    // parseConfig reports a syntax error with its location.
+  }
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    std::string key = o.substr(0, eq);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    key.erase(0, key.find_first_not_of(" \t"));
+    if (key != "gearbox.file" || eq == std::string::npos) continue;
+    std::string value = o.substr(eq + 1);
+    value.erase(value.find_last_not_of(" \t") + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    try {  // TOML ("x.toml"), or a bare word taken as a string, as config::parseConfig does
+      const toml::table parsed = toml::parse("v = " + value);
+      if (auto v = parsed["v"].value<std::string>()) value = *v;
+    } catch (const toml::parse_error&) {
+    }
+    ref = value;
+  }
+  return ref;
+}
+
 }  // namespace
 
 TrainInputs loadTrainInputs(const std::filesystem::path& file,
@@ -399,14 +448,7 @@ TrainInputs loadTrainInputs(const std::filesystem::path& file,
 TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
                              const std::filesystem::path& base_dir,
                              const std::vector<std::string>& overrides) {
-  std::string ref;
-  try {
-    const toml::table table = toml::parse(text, source);
-    if (auto node = table.at_path("gearbox.file"); node && node.is_string())
-      ref = *node.value<std::string>();
-  } catch (const std::exception&) {
-    // parseConfig below reports a syntax error with its location.
-  }
+  const std::string ref = gearboxFileOf(text, source, overrides);
   if (ref.empty()) {
     config::Config both = config::parseConfig(text, source, config::trainSchema(true), overrides);
     if (both.has("gearbox.load_case"))
@@ -414,6 +456,9 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
                        "only with a REXS gearbox file named by gearbox.file");
     return {both, both, source, source, {}};
   }
+  // Every override names a key of the analysis file or of the gearbox (before they are split,
+  // so that neither file's schema alone answers "unknown key; the keys in [...] are: (none)").
+  config::checkOverrideKeys(config::trainSchema(true), overrides);
   std::vector<std::string> analysis_overrides, gearbox_overrides;
   const auto& sections = config::gearboxSectionNames();
   for (const auto& o : overrides) {
@@ -438,6 +483,19 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
   config::Config gearbox =
       io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
   return {analysis, gearbox, source, path.string(), warnings};
+}
+
+config::Config TrainInputs::combined() const {
+  if (gearbox_source == analysis_source) return analysis;
+  nlohmann::ordered_json both = gearbox.resolved();
+  for (const auto& [section, value] : analysis.resolved().items()) {
+    if (both.contains(section) && both[section].is_object() && value.is_object()) {
+      both[section].update(value);
+    } else {
+      both[section] = value;
+    }
+  }
+  return config::Config(std::move(both), analysis_source);
 }
 
 AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& context) {

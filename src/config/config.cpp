@@ -515,6 +515,12 @@ Config parseConfig(std::string_view toml_text, const std::string& source_name,
   return config;
 }
 
+void checkOverrideKeys(const ConfigSchema& schema, const std::vector<std::string>& overrides) {
+  Resolver resolver(schema, "--set");
+  toml::table scratch;
+  for (const auto& assignment : overrides) resolver.applyOverride(scratch, assignment);
+}
+
 std::string readConfigFile(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {

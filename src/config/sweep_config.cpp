@@ -167,7 +167,10 @@ ConfigSchema sweepSchema() {
       "= \"uniform\", min, max}, {distribution = \"normal\", mean, std} or {distribution = "
       "\"truncated_normal\", mean, std, min, max} (a list is then drawn from uniformly). Every "
       "case draws from its own stream seeded by (seed, case index): the same values whatever the "
-      "threads or ranks.");
+      "threads or ranks. Over `train`, a parameter is any key of the analysis file or of its "
+      "gearbox (named by [gearbox] file — TOML or REXS, whose load cases are the values of "
+      "gearbox.load_case — or inline); a key inside a named table ([meshes.stage1]) must name "
+      "one of the base's.");
   schema.string("title").defaultValue("").doc("free text copied into the summary");
   schema.section("study", "The study.");
   schema.string("study.command").required().doc("the analysis command run for every case");
@@ -214,8 +217,8 @@ std::vector<std::string> SweepDefinition::overridesOf(const StudyCase& c) const 
   return o;
 }
 
-std::string SweepDefinition::fingerprint() const {
-  return fnv1a(resolved.dump() + "\n" + readText(base));
+std::string SweepDefinition::fingerprint(const std::string& base_inputs) const {
+  return fnv1a(resolved.dump() + "\n" + readText(base) + base_inputs);
 }
 
 SweepDefinition loadSweepDefinition(const fs::path& file,

@@ -111,6 +111,18 @@ TEST(Config, MisspeltSectionSuggestsTheRightOne) {
   EXPECT_HAS(errorOf(replaced(kValid, "[pinion]", "[pinon]")), "did you mean [pinion]?");
 }
 
+// For overrides that go to several files (train): keys only, against every key they may take.
+TEST(Config, CheckOverrideKeysNamesAnUnknownKeyOnly) {
+  EXPECT_NO_THROW(checkOverrideKeys(geometrySchema(), {"pinion.teeth=-3", "pair.speed_rpm=1"}));
+  try {
+    checkOverrideKeys(geometrySchema(), {"pinion.teeth=20", "pinon.module=0.003"});
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.key(), "pinon.module");
+    EXPECT_HAS(std::string(error.what()), "did you mean \"pinion.module\"");
+  }
+}
+
 TEST(Config, MissingRequiredKeyIsNamed) {
   EXPECT_HAS(errorOf(replaced(kValid, "face_width = 0.02\n\n[pair]", "\n[pair]")),
              "gear.face_width: missing required key");

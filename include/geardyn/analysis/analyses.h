@@ -37,9 +37,15 @@ struct TrainInputs {
   std::string analysis_source;        ///< the analysis file
   std::string gearbox_source;         ///< the gearbox file (the analysis file when inline)
   std::vector<std::string> warnings;  ///< of a REXS import
+
+  /// Both configurations as one, as if the gearbox were inline: its sections beside the
+  /// analysis's, [gearbox] holding the keys of both (what `sweep` records as its base and
+  /// finds the named tables of a parameter key in).
+  config::Config combined() const;
 };
 /// Reads the analysis file and its gearbox; `overrides` ("section.key=value") go to the file
-/// that declares the section. Throws InputError naming the key.
+/// that declares the section. Throws InputError naming the key; a key neither file takes is
+/// named with a did-you-mean over the keys of both (config::trainSchema(true)).
 TrainInputs loadTrainInputs(const std::filesystem::path& file,
                             const std::vector<std::string>& overrides);
 /// As loadTrainInputs, from the text of an analysis file (e.g. a dict from Python); `source`
@@ -56,11 +62,21 @@ const std::vector<std::string>& analysisNames();
 
 /// The schema `name` validates a configuration with (`model_type` = the file's [model] type,
 /// which selects the finite-element `rotor` schema), knowing the other analyses' schemas so
-/// that their sections in the same file are ignored with a note but still spell-checked.
+/// that their sections in the same file are ignored with a note but still spell-checked
+/// (`train`, whose file holds a gearbox or names one: its own analysis and gearbox keys only,
+/// as `geardyn train` reads it, and no other analysis takes its sections).
 /// Throws InputError for an unknown name, with a did-you-mean.
 config::ConfigSchema analysisSchema(const std::string& name, const std::string& model_type = "");
 
-/// Runs analysis `name` on a configuration validated with analysisSchema(name, ...).
+/// The configuration of analysis `name` read from `file` with `overrides` ("section.key=value")
+/// as its command reads it: validated with analysisSchema(name, the file's [model] type); for
+/// `train`, the analysis file and the gearbox it names as one (TrainInputs::combined), one load
+/// case (gearbox.all_load_cases refused). Throws InputError naming a bad key.
+config::Config loadAnalysisConfig(const std::string& name, const std::filesystem::path& file,
+                                  const std::vector<std::string>& overrides = {});
+
+/// Runs analysis `name` on a configuration validated with analysisSchema(name, ...) (for
+/// `train`: with the gearbox inline) or read by loadAnalysisConfig.
 AnalysisResult runAnalysis(const std::string& name, const config::Config& config,
                            const AnalysisContext& context);
 

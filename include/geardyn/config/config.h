@@ -58,6 +58,12 @@ class Config {
 Config parseConfig(std::string_view toml_text, const std::string& source_name,
                    const ConfigSchema& schema, const std::vector<std::string>& overrides = {});
 
+/// Throws the InputError parseConfig would for the first override whose key `schema` does not
+/// declare ("unknown key (--set)" with a did-you-mean); the values are not checked. For a
+/// command whose overrides go to several files (`train`: the analysis file and its gearbox), so
+/// that a misspelt key is named against every key it may take.
+void checkOverrideKeys(const ConfigSchema& schema, const std::vector<std::string>& overrides);
+
 /// The text of a configuration file. A missing or unreadable file is an InputError (key
 /// `config`).
 std::string readConfigFile(const std::filesystem::path& file);

@@ -57,8 +57,10 @@ struct SweepDefinition {
   StudyCase caseAt(long long index) const;
   /// The overrides of case `c` applied to the base configuration ("key=value" in TOML).
   std::vector<std::string> overridesOf(const StudyCase& c) const;
-  /// A hash of everything that determines the cases and their outputs (the resume check).
-  std::string fingerprint() const;
+  /// A hash of everything that determines the cases and their outputs (the resume check): the
+  /// study, the base file's text and `base_inputs` (what else the base reads, e.g. the gearbox
+  /// file a `train` analysis file names, as its resolved configuration).
+  std::string fingerprint(const std::string& base_inputs = "") const;
 };
 
 /// A value of a study as a TOML literal ("0.10000000000000001", "\"text\"", "true").

@@ -536,7 +536,14 @@ config::Config loadGearboxConfig(const std::filesystem::path& file,
   }
   RexsImportOptions options;
   options.load_case = load_case;
-  RexsImport imported = importRexsFile(file, options);
+  RexsImport imported;
+  try {
+    imported = importRexsFile(file, options);
+  } catch (const InputError& e) {
+    // The load case is the analysis file's key (and a sweep's parameter): named as such.
+    if (e.key() != "load_case") throw;
+    throw InputError("gearbox.load_case", e.value(), e.allowed());
+  }
   warnings.insert(warnings.end(), imported.warnings.begin(), imported.warnings.end());
   return config::parseConfig(imported.toml, file.string(), config::gearboxSchema(), overrides);
 }
