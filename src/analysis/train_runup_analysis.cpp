@@ -108,12 +108,19 @@ void addWaterfall(const Channel& channel, const TrainRunUpResponse& r,
                   const Eigen::VectorXd& signal, int window, double fmax, AnalysisResult& result) {
   const double fs = 1.0 / r.time_step;
   io::CsvTable table({"channel", "unit", "t_s", "speed_rpm", "frequency_hz", "amplitude"});
+  Eigen::VectorXd hann(window);
+  for (int k = 0; k < window; ++k) hann(k) = 0.5 - 0.5 * std::cos(kTwoPi * k / window);
+  const double gain = hann.mean();  // coherent gain: a sinusoid's amplitude is kept
   for (Eigen::Index start = 0; start + window <= signal.size(); start += window) {
-    const AmplitudeSpectrum s = amplitudeSpectrum(signal.segment(start, window), fs);
+    // Hann-windowed (the strong mesh orders leak far less), amplitudes divided by its mean.
+    const Eigen::VectorXd x = signal.segment(start, window).cwiseProduct(hann);
+    AmplitudeSpectrum s = amplitudeSpectrum(x, fs);
+    for (double& a : s.amplitude) a /= gain;
     const double speed = r.speed.segment(start, window).cwiseAbs().mean();
     const double t = r.t(start) + 0.5 * window * r.time_step;
-    // From the first bin above 0 Hz: the mean (a mesh force's static load) is not vibration.
-    for (std::size_t k = 1; k < s.frequency.size() && s.frequency[k] <= fmax; ++k)
+    // From the third bin: the mean (a mesh force's static load) is not vibration, and the
+    // Hann window spreads it over bins 0 and 1.
+    for (std::size_t k = 2; k < s.frequency.size() && s.frequency[k] <= fmax; ++k)
       table.addRow({channel.name, channel.unit, t, speed / kRpm, s.frequency[k], s.amplitude[k]});
   }
   result.addTable("waterfall.csv", table);
@@ -245,6 +252,7 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
   summary.results["runup"] = {{"status", r.status},
                               {"speed_start_rpm", options.ramp.start / kRpm},
                               {"speed_end_rpm", options.ramp.end / kRpm},
+                              {"start", r.start},
                               {"duration_s", options.ramp.duration},
                               {"duration_derived", derived_duration},
                               {"quasi_static_duration_s", defaults.duration},

@@ -177,7 +177,8 @@ void addRunUpSection(config::ConfigSchema& schema) {
       .defaultValue(0.0)
       .doc(
           "ramp time (0: derived so that every resonance the mesh orders pass is swept "
-          "quasi-statically: order-line sweep rate <= 4π ζ² f_n² / 5, at least 40 windows)");
+          "quasi-statically: order-line sweep rate <= 4π ζ² f_n² / 5 over the resonances whose "
+          "modes hold >= 0.1 % of their strain energy in the meshes, and at least 100 windows)");
   schema.real("runup.window")
       .unit("s")
       .min(0.0)
@@ -209,9 +210,13 @@ void addRunUpSection(config::ConfigSchema& schema) {
       .doc(
           "what is tracked: mesh names (dynamic mesh force [N]) or DOF names such as "
           "\"input.y\", \"output.theta\" (mode_shapes.csv; [m] or [rad]); empty: every mesh");
-  schema.boolean("runup.start_from_static")
-      .defaultValue(true)
-      .doc("start from the static deflection at the first speed (else from rest)");
+  schema.string("runup.start")
+      .choices({"steady_state", "static", "rest"})
+      .defaultValue("steady_state")
+      .doc(
+          "initial state: the periodic steady state at the first speed (frequency domain: no "
+          "start transient; the static deflection when the common period is too long for "
+          "it), the static deflection there, or rest");
 }
 
 }  // namespace
@@ -402,7 +407,10 @@ TrainRunUpOptions trainRunUpOptionsFromConfig(const config::Config& analysis) {
   o.time_step = analysis.real("runup.time_step");
   o.steps_per_mesh_period = static_cast<int>(analysis.integer("runup.steps_per_mesh_period"));
   o.speed_tolerance = analysis.real("runup.speed_tolerance");
-  o.start_from_static = analysis.boolean("runup.start_from_static");
+  const std::string start = analysis.string("runup.start");
+  o.start = start == "steady_state" ? TrainRunUpOptions::Start::kSteadyState
+            : start == "static"     ? TrainRunUpOptions::Start::kStatic
+                                    : TrainRunUpOptions::Start::kRest;
   return o;
 }
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geardyn/error.h"
@@ -134,19 +135,35 @@ std::vector<OrderTrack> trackOrdersByAngle(const Eigen::Ref<const Eigen::MatrixX
     throw InputError("angle", std::to_string(angle.size()), "one angle and speed per sample");
   if (window < 8) throw InputError("window", std::to_string(window), "at least 8 samples");
   const int m = static_cast<int>(orders.size());
+  std::vector<double> sorted{0.0};
+  for (double o : orders) sorted.push_back(std::abs(o));
+  std::sort(sorted.begin(), sorted.end());
+  double spacing = HUGE_VAL;
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i] - sorted[i - 1] > 1e-9 * sorted[i])
+      spacing = std::min(spacing, sorted[i] - sorted[i - 1]);
+  }
+  // (Plus one period when windows are cut to whole periods, so that the cut one still does.)
+  const double resolving_angle =
+      std::isfinite(spacing) ? kTwoPi / spacing + std::max(period_angle, 0.0) : 0.0;
   std::vector<OrderTrack> tracks(signals.cols());
   for (auto& track : tracks) track.amplitude.resize(orders.size());
   std::vector<std::vector<double>> a;
   for (Eigen::Index start = 0; start + window <= signals.rows();) {
-    Eigen::Index length = window;
+    // Long enough to resolve the orders: the window grows until θ has turned by 2π over the
+    // smallest spacing of the orders (and of the lowest order from 0, the mean).
+    Eigen::Index stop = start + window;  // exclusive
+    while (stop < signals.rows() && angle(stop - 1) - angle(start) < resolving_angle) ++stop;
+    if (angle(stop - 1) - angle(start) < resolving_angle) break;  // the record's end
+    Eigen::Index length = stop - start;
     if (period_angle > 0.0) {
       // Whole periods of the angle within the window: the samples up to the one nearest the
       // last whole period's end (exclusive).
-      const double span = angle(start + window - 1) - angle(start);
+      const double span = angle(stop - 1) - angle(start);
       const double periods = std::floor(span / period_angle);
       if (periods >= 1.0) {
         const double target = angle(start) + periods * period_angle;
-        Eigen::Index end = start + window - 1;
+        Eigen::Index end = stop - 1;
         while (end > start && angle(end - 1) >= target) --end;
         if (end - 1 > start && target - angle(end - 1) < angle(end) - target) --end;
         length = end - start;

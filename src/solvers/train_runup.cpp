@@ -15,6 +15,8 @@
 namespace geardyn {
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+// Mesh harmonics of the steady state a run-up starts from (the forced response's default).
+constexpr int kStartMeshHarmonics = 10;
 // Steps between progress reports and divergence checks.
 constexpr long long kCheckEvery = 1000;
 
@@ -80,9 +82,30 @@ TrainRunUpResponse solveTrainRunUp(const GearTrainModel& model, const TrainRunUp
   r.displacement.resize(samples, channels);
 
   TrainNewmarkStepper stepper(model, options.ramp, dt, options.newmark, options.speed_tolerance);
-  Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n);
-  if (options.start_from_static) q0 = solveTrainStatic(model, options.ramp.start).displacement;
-  stepper.reset(0.0, q0, Eigen::VectorXd::Zero(n));
+  Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n), v0 = Eigen::VectorXd::Zero(n);
+  r.start = "rest";
+  if (options.start == TrainRunUpOptions::Start::kSteadyState && options.ramp.start != 0.0) {
+    try {
+      // q(t) = Re[X₀ + 2 Σ_h X_h e^{i h ω₀ t}] at t = 0, and its derivative.
+      TrainSteadyOptions steady;
+      steady.mesh_harmonics = kStartMeshHarmonics;
+      const TrainSteadyState s = solveTrainSteadyState(model, options.ramp.start, steady);
+      const double w0 = kTwoPi * s.base_frequency;
+      q0 = s.harmonic.col(0).real();
+      for (Eigen::Index h = 1; h < s.harmonic.cols(); ++h) {
+        q0 += 2.0 * s.harmonic.col(h).real();
+        v0 -= 2.0 * static_cast<double>(h) * w0 * s.harmonic.col(h).imag();
+      }
+      r.start = "steady_state";
+    } catch (const InputError&) {
+      // A common period too long for the balance: start from the static deflection.
+    }
+  }
+  if (r.start == "rest" && options.start != TrainRunUpOptions::Start::kRest) {
+    q0 = solveTrainStatic(model, options.ramp.start).displacement;
+    r.start = "static";
+  }
+  stepper.reset(0.0, q0, v0);
   auto record = [&](Eigen::Index i) {
     r.t(i) = stepper.time();
     r.speed(i) = stepper.speed();

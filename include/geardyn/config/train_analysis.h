@@ -41,7 +41,7 @@ std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, do
 /// runup.duration (0: to be derived). InputError naming runup.speed_max_rpm when it is below
 /// speed_min_rpm.
 TrainSpeedRamp runUpRampFromConfig(const config::Config& analysis, double operating);
-/// runup.time_step, steps_per_mesh_period, speed_tolerance, start_from_static.
+/// runup.time_step, steps_per_mesh_period, speed_tolerance, start.
 TrainRunUpOptions trainRunUpOptionsFromConfig(const config::Config& analysis);
 
 /// Ascending input speeds [rad/s] of a section with speed_min_rpm, speed_max_rpm (defaults: 0

@@ -47,7 +47,10 @@ std::vector<OrderTrack> trackOrdersPerColumn(const Eigen::Ref<const Eigen::Matri
 /// in each window the least-squares fit x_k = a₀ + Σ_o [a_o cos o θ_k + b_o sin o θ_k], exact in
 /// phase however the speed changes inside the window (the fixed-frequency fit of
 /// trackOrdersPerColumn drifts by o Δω t²/2 there). `speed` [rad/s] gives each window's mean
-/// speed; `time` is the window centre, counting samples from 0 at `sample_rate`. With
+/// speed; `time` is the window centre, counting samples from 0 at `sample_rate`. A window is
+/// `window` samples, longer where θ turns by less than 2π / (the smallest spacing of the orders
+/// and of the lowest order from 0) in them (slow speeds: the orders could not be told apart);
+/// a last window that cannot reach that is dropped. With
 /// `period_angle` > 0 [rad] each window of at most `window` samples is cut to a whole number of
 /// those periods of θ (a gear train's common period): every harmonic of it, tracked or not, is
 /// then orthogonal to the tracked ones and does not leak into them (an uncut window leaks a few

@@ -46,10 +46,13 @@ struct TrainRunUpOptions {
   double time_step = 0.0;          ///< Δt [s]; 0: fastest mesh period at max |Ω| / steps_…
   int steps_per_mesh_period = 64;  ///< for the derived Δt (>= 8)
   double speed_tolerance = kTrainSpeedTolerance;  ///< relative; see train_time.h
-  std::vector<int> dofs;          ///< DOFs whose displacement is recorded (any subset)
-  bool start_from_static = true;  ///< q(0) the static deflection at Ω₀, else rest
-  ProgressCallback progress;      ///< (steps done, steps)
-  void validate() const;          ///< InputError naming the runup.* key
+  std::vector<int> dofs;  ///< DOFs whose displacement is recorded (any subset)
+  /// q(0), q̇(0): the frequency-domain periodic steady state at Ω₀ (no start transient; the
+  /// static deflection when the train's common period is too long for it), the static
+  /// deflection at Ω₀, or rest.
+  enum class Start { kSteadyState, kStatic, kRest } start = Start::kSteadyState;
+  ProgressCallback progress;  ///< (steps done, steps)
+  void validate() const;      ///< InputError naming the runup.* key
 };
 
 struct TrainRunUpResponse {
@@ -61,6 +64,7 @@ struct TrainRunUpResponse {
   double time_step = 0.0;        ///< [s]
   long long steps = 0;
   int factorisations = 0;
+  std::string start;                 ///< "steady_state", "static" or "rest": how it started
   std::string status = "completed";  ///< or "diverged"
   std::string message;
 };
