@@ -353,21 +353,31 @@ TrainHarmonicBalanceOptions trainHarmonicBalanceOptionsFromConfig(const config::
   return o;
 }
 
-std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating) {
+namespace {
+/// (lowest, highest) input speed [rad/s] of a section's speed_min_rpm and speed_max_rpm, by
+/// default the given fractions of the operating speed; InputError naming the key when it is
+/// absent and the operating speed is 0. The order is the caller's to check.
+std::pair<double, double> sectionSpeeds(const config::Config& analysis, const std::string& s,
+                                        double operating, double min_fraction,
+                                        double max_fraction) {
   const double op = std::abs(operating);
-  for (const char* key : {"nonlinear.speed_min_rpm", "nonlinear.speed_max_rpm"}) {
+  for (const std::string key : {s + ".speed_min_rpm", s + ".speed_max_rpm"}) {
     if (!analysis.has(key) && op == 0.0) {
       throw InputError(key, "",
                        "required when the operating speed is 0 rpm (the default range is "
                        "relative to it)");
     }
   }
-  const double lo = analysis.has("nonlinear.speed_min_rpm")
-                        ? analysis.real("nonlinear.speed_min_rpm") * kRpm
-                        : 0.5 * op;
-  const double hi = analysis.has("nonlinear.speed_max_rpm")
-                        ? analysis.real("nonlinear.speed_max_rpm") * kRpm
-                        : 1.5 * op;
+  const double lo = analysis.has(s + ".speed_min_rpm") ? analysis.real(s + ".speed_min_rpm") * kRpm
+                                                       : min_fraction * op;
+  const double hi = analysis.has(s + ".speed_max_rpm") ? analysis.real(s + ".speed_max_rpm") * kRpm
+                                                       : max_fraction * op;
+  return {lo, hi};
+}
+}  // namespace
+
+std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating) {
+  const auto [lo, hi] = sectionSpeeds(analysis, "nonlinear", operating, 0.5, 1.5);
   if (!(hi > lo)) {
     throw InputError("nonlinear.speed_max_rpm", fmt::format("{:g} rpm", hi / kRpm),
                      fmt::format("more than nonlinear.speed_min_rpm = {:g} rpm", lo / kRpm));
@@ -376,18 +386,7 @@ std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, do
 }
 
 TrainSpeedRamp runUpRampFromConfig(const config::Config& analysis, double operating) {
-  const double op = std::abs(operating);
-  for (const char* key : {"runup.speed_min_rpm", "runup.speed_max_rpm"}) {
-    if (!analysis.has(key) && op == 0.0) {
-      throw InputError(key, "",
-                       "required when the operating speed is 0 rpm (the default range is "
-                       "relative to it)");
-    }
-  }
-  const double lo =
-      analysis.has("runup.speed_min_rpm") ? analysis.real("runup.speed_min_rpm") * kRpm : 0.1 * op;
-  const double hi =
-      analysis.has("runup.speed_max_rpm") ? analysis.real("runup.speed_max_rpm") * kRpm : 1.5 * op;
+  const auto [lo, hi] = sectionSpeeds(analysis, "runup", operating, 0.1, 1.5);
   if (!(hi >= lo)) {
     throw InputError("runup.speed_max_rpm", fmt::format("{:g} rpm", hi / kRpm),
                      fmt::format("at least runup.speed_min_rpm = {:g} rpm", lo / kRpm));
