@@ -147,6 +147,17 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
       model, options.ramp.start, options.ramp.end, harmonics,
       static_cast<int>(analysis.integer("campbell.modes")), analysis.real("runup.window"));
   const bool derived_duration = !(options.ramp.duration > 0.0);
+  if (derived_duration && !std::isfinite(defaults.duration)) {
+    for (const TrainRunUpResonance& x : defaults.resonances) {
+      if (std::isfinite(x.sweep_duration)) continue;
+      throw InputError(
+          "runup.duration", "0 (derived)",
+          fmt::format("a duration > 0 s: mode {} ({:.1f} Hz), crossed by the {} line at {:.1f} "
+                      "rpm, is undamped, so no sweep passes it quasi-statically (add mesh or "
+                      "bearing damping, or give the duration)",
+                      x.mode + 1, x.frequency, x.line, x.speed / kRpm));
+    }
+  }
   if (derived_duration) options.ramp.duration = defaults.duration;
   const double dt = options.time_step > 0.0
                         ? options.time_step
@@ -167,8 +178,8 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
   if (!derived_duration && options.ramp.duration < defaults.duration) {
     summary.warnings.push_back(fmt::format(
         "runup: duration {:.3g} s is shorter than the quasi-stationary {:.3g} s the resonances "
-        "in the range ask for (train_runup.h): their peaks are lowered and moved in the sweep "
-        "direction",
+        "in the range ask for (train_runup.h; inf: an undamped one): their peaks are lowered "
+        "and moved in the sweep direction",
         options.ramp.duration, defaults.duration));
   }
   const double inertia_torque = trainRampInertiaTorque(model, options.ramp);
@@ -245,7 +256,8 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
                           {"speed_rpm", x.speed / kRpm},
                           {"frequency_Hz", x.frequency},
                           {"damping_ratio", x.damping_ratio},
-                          {"quasi_static_duration_s", x.sweep_duration}});
+                          {"quasi_static_duration_s",
+                           std::isfinite(x.sweep_duration) ? Json(x.sweep_duration) : Json()}});
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -255,7 +267,8 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
                               {"start", r.start},
                               {"duration_s", options.ramp.duration},
                               {"duration_derived", derived_duration},
-                              {"quasi_static_duration_s", defaults.duration},
+                              {"quasi_static_duration_s",
+                               std::isfinite(defaults.duration) ? Json(defaults.duration) : Json()},
                               {"sweep_rate_rpm_per_s", (options.ramp.end - options.ramp.start) /
                                                            options.ramp.duration / kRpm},
                               {"window_s", window * r.time_step},

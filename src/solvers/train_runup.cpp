@@ -15,6 +15,8 @@
 namespace geardyn {
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+// Damping ratios below this are round-off of an undamped mode (the eigensolver's accuracy).
+constexpr double kUndampedRatio = 1e-10;
 // Mesh harmonics of the steady state a run-up starts from (the forced response's default).
 constexpr int kStartMeshHarmonics = 10;
 // Steps between progress reports and divergence checks.
@@ -170,15 +172,18 @@ TrainRunUpDefaults trainRunUpDefaults(const GearTrainModel& model, double start,
       const TrainMode& mode = c.modes[i][cs.mode];
       double mesh_energy = 0.0;
       for (double e : mode.mesh_strain_energy) mesh_energy += e;
-      if (mesh_energy < kExcitedMeshEnergy || !(mode.damping_ratio > 0.0)) continue;
+      if (mesh_energy < kExcitedMeshEnergy) continue;
       double slope = 0.0;  // the line's frequency per unit speed [Hz per rad/s]
       for (const TrainOrderLine& l : lines) {
         if (l.name == cs.line) slope = l.slope;
       }
       // ḟ = slope (hi − lo) / T <= 4π ζ² f² / kSweepTimeConstants.
-      const double zeta = mode.damping_ratio;
-      const double sweep = kSweepTimeConstants * slope * (hi - lo) /
-                           (4.0 * std::numbers::pi * zeta * zeta * cs.frequency * cs.frequency);
+      // An undamped mode (ζ at round-off) asks for an infinite duration.
+      const double zeta = mode.damping_ratio > kUndampedRatio ? mode.damping_ratio : 0.0;
+      const double sweep =
+          zeta > 0.0 ? kSweepTimeConstants * slope * (hi - lo) /
+                           (4.0 * std::numbers::pi * zeta * zeta * cs.frequency * cs.frequency)
+                     : HUGE_VAL;
       d.resonances.push_back({cs.mode, cs.line, cs.speed, cs.frequency, zeta, sweep});
       duration = std::max(duration, sweep);
     }

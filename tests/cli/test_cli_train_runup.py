@@ -93,3 +93,19 @@ def test_a_runup_too_large_for_memory_is_refused(tmp_path):
                  *quick("--set", "analysis.run=[\"runup\"]", "--set", "runup.duration=1e5"))
     assert result.returncode == 2, result.stderr
     assert "runup.duration" in result.stderr and "memory" in result.stderr, result.stderr
+
+
+def test_an_undamped_train_needs_a_duration_and_a_planetary_stage_is_refactorised(tmp_path):
+    # Lin & Parker's planetary stage has no damping: no sweep passes its resonances
+    # quasi-statically, so the derived duration is refused naming the key; given one, the
+    # carrier-frame terms (Ω G₁, Ω² K_Ω) are refactorised along the ramp (1e-3 tolerance).
+    lin_parker = EXAMPLES / "train_lin_parker1999.toml"
+    common = quick("--set", "analysis.run=[\"runup\"]", "--set", "runup.speed_min_rpm=500",
+                   "--set", "runup.speed_max_rpm=1500")
+    result = run("train", lin_parker, "--out", tmp_path, *common)
+    assert result.returncode == 2, result.stderr
+    assert "runup.duration" in result.stderr and "undamped" in result.stderr, result.stderr
+    result = run("train", lin_parker, "--out", tmp_path, *common, "--set", "runup.duration=0.2")
+    assert result.returncode == 0, result.stderr
+    runup = json.loads((tmp_path / "summary.json").read_text())["results"]["runup"]
+    assert runup["factorisations"] > 100  # 1000 rpm of 1500 in steps of 1.5 rpm: about 660

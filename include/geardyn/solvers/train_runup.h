@@ -82,7 +82,7 @@ struct TrainRunUpResonance {
   double speed = 0.0;           ///< input speed [rad/s]
   double frequency = 0.0;       ///< [Hz]
   double damping_ratio = 0.0;   ///< [-]
-  double sweep_duration = 0.0;  ///< the quasi-stationary duration it asks for [s]
+  double sweep_duration = 0.0;  ///< the quasi-stationary duration it asks for [s] (inf: ζ = 0)
 };
 
 struct TrainRunUpDefaults {
