@@ -184,8 +184,10 @@ void addRunUpSection(config::ConfigSchema& schema) {
       .min(0.0)
       .defaultValue(0.0)
       .doc(
-          "order-tracking and waterfall window (0: 8 common periods of the meshes, at least one "
-          "input revolution, at the mean speed)");
+          "order-tracking and waterfall window (0: 8 common periods of the meshes but at most 32 "
+          "periods of the slowest mesh, and at least one input revolution, at the mean speed; "
+          "order tracking lengthens it where the input turns too little to tell the orders "
+          "apart and cuts it to whole common periods)");
   schema.real("runup.time_step")
       .unit("s")
       .min(0.0)

@@ -151,7 +151,11 @@ TrainRunUpDefaults trainRunUpDefaults(const GearTrainModel& model, double start,
     // response) and at least one input revolution, at the mean speed.
     const double mean = 0.5 * (lo + hi);
     const double base = trainBaseFrequency(model, 1, 1000000000).ratio * mean;
-    d.window = std::max(kWindowCommonPeriods / base, kTwoPi / mean);
+    double slowest = HUGE_VAL;  // the slowest mesh frequency [Hz]
+    for (const TrainMesh& m : model.meshes()) slowest = std::min(slowest, m.frequency_ratio * mean);
+    // A train whose meshes have no small common period: kWindowSlowestMeshPeriods instead.
+    d.window = std::max(std::min(kWindowCommonPeriods / base, kWindowSlowestMeshPeriods / slowest),
+                        kTwoPi / mean);
   }
   double duration = kMinRunUpWindows * d.window;
   if (hi > lo) {

@@ -34,9 +34,11 @@ inline constexpr double kSweepTimeConstants = 5.0;
 /// A mode is excited by the meshes (and sets the derived duration) when at least this
 /// fraction of its strain energy is in the meshes.
 inline constexpr double kExcitedMeshEnergy = 1e-3;
-/// The derived window: this many common periods of the train at the mean speed (and at least
-/// one input revolution there).
+/// The derived window: this many common periods of the train at the mean speed, at most
+/// kWindowSlowestMeshPeriods periods of the slowest mesh (trains whose meshes have no small
+/// common period), and at least one input revolution there.
 inline constexpr int kWindowCommonPeriods = 8;
+inline constexpr int kWindowSlowestMeshPeriods = 32;
 /// The derived duration holds at least this many windows.
 inline constexpr int kMinRunUpWindows = 100;
 
