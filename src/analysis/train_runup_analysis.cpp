@@ -104,6 +104,39 @@ Orders trackedOrders(const GearTrainModel& model, int harmonics) {
   return o;
 }
 
+/// runup.csv (one row per channel and window) and the largest window of every mesh order per
+/// channel: {channel: {order: {speed_rpm, amplitude, unit}}}.
+Json addOrderTracks(const std::vector<Channel>& channels, const Orders& orders,
+                    const std::vector<OrderTrack>& tracks, AnalysisResult& result) {
+  std::vector<std::string> header{"channel", "unit", "t_s", "speed_rpm"};
+  header.insert(header.end(), orders.column.begin(), orders.column.end());
+  io::CsvTable table(header);
+  Json peaks = Json::object();
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    const OrderTrack& track = tracks[c];
+    std::vector<double> best(orders.column.size(), -1.0), best_speed(orders.column.size(), 0.0);
+    for (std::size_t w = 0; w < track.time.size(); ++w) {
+      std::vector<io::CsvCell> row{channels[c].name, channels[c].unit, track.time[w],
+                                   track.speed[w] / kRpm};
+      for (std::size_t j = 0; j < orders.column.size(); ++j) {
+        const double a = track.amplitude[orders.column_order[j]][w];
+        row.push_back(a);
+        if (a > best[j]) best[j] = a, best_speed[j] = track.speed[w];
+      }
+      table.addRow(row);
+    }
+    Json per_order = Json::object();
+    for (std::size_t j = 0; j < orders.column.size(); ++j) {
+      if (orders.mesh[j] < 0) continue;  // the 1×: no excitation in the model to peak
+      per_order[orders.column[j].substr(std::string("amplitude_").size())] = {
+          {"speed_rpm", best_speed[j] / kRpm}, {"amplitude", best[j]}, {"unit", channels[c].unit}};
+    }
+    peaks[channels[c].name] = per_order;
+  }
+  result.addTable("runup.csv", table);
+  return peaks;
+}
+
 void addWaterfall(const Channel& channel, const TrainRunUpResponse& r,
                   const Eigen::VectorXd& signal, int window, double fmax, AnalysisResult& result) {
   const double fs = 1.0 / r.time_step;
@@ -212,32 +245,7 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
   const double common_period = 1.0 / trainBaseFrequency(model, 1, 1000000000).ratio;
   const std::vector<OrderTrack> tracks = trackOrdersByAngle(
       signals, 1.0 / r.time_step, r.angle, speed, orders.unique, window, common_period);
-  std::vector<std::string> header{"channel", "unit", "t_s", "speed_rpm"};
-  header.insert(header.end(), orders.column.begin(), orders.column.end());
-  io::CsvTable table(header);
-  Json peaks = Json::object();
-  for (std::size_t c = 0; c < channels.size(); ++c) {
-    const OrderTrack& track = tracks[c];
-    std::vector<double> best(orders.column.size(), -1.0), best_speed(orders.column.size(), 0.0);
-    for (std::size_t w = 0; w < track.time.size(); ++w) {
-      std::vector<io::CsvCell> row{channels[c].name, channels[c].unit, track.time[w],
-                                   track.speed[w] / kRpm};
-      for (std::size_t j = 0; j < orders.column.size(); ++j) {
-        const double a = track.amplitude[orders.column_order[j]][w];
-        row.push_back(a);
-        if (a > best[j]) best[j] = a, best_speed[j] = track.speed[w];
-      }
-      table.addRow(row);
-    }
-    Json per_order = Json::object();
-    for (std::size_t j = 0; j < orders.column.size(); ++j) {
-      if (orders.mesh[j] < 0) continue;  // the 1×: no excitation in the model to peak
-      per_order[orders.column[j].substr(std::string("amplitude_").size())] = {
-          {"speed_rpm", best_speed[j] / kRpm}, {"amplitude", best[j]}, {"unit", channels[c].unit}};
-    }
-    peaks[channels[c].name] = per_order;
-  }
-  result.addTable("runup.csv", table);
+  const Json peaks = addOrderTracks(channels, orders, tracks, result);
   double fmax = 0.0;
   for (const TrainMesh& m : model.meshes())
     fmax = std::max(fmax, harmonics * m.frequency_ratio * options.ramp.maxSpeed());
