@@ -23,6 +23,7 @@ from .plot_rotor import (full_spectrum_figure, orbits_figure, plot_rotor, plot_s
 from .plot_sweep import plot_histograms, plot_sweep  # noqa: F401  (re-exported)
 from .plot_train import plot_train, train_campbell_figure, train_forced_response_figure  # noqa: F401
 from .plot_train_nonlinear import train_nonlinear_figure  # noqa: F401
+from .plot_train_runup import train_runup_figure, train_waterfall_figure  # noqa: F401
 
 
 def _read_profiles(path):

@@ -41,6 +41,11 @@ constexpr double kRotorSampleBytes = 600.0;
 // rotor (FE): one Newmark step per DOF (40 000 steps of 30 DOFs in 0.27 s with start-up).
 constexpr double kFeStepSecondsPerDof = 100e-9;
 
+// train runup: one Newmark step of a dense train per DOF² (matrix-vector products and the LU
+// back-substitution dominate; a 12-DOF reducer step is about 1 us) plus the mesh updates.
+constexpr double kTrainStepSecondsPerDof2 = 5e-9;
+constexpr double kTrainStepSeconds = 1e-6;
+
 std::string shown(const config::Config& config, const std::string& key) {
   return fmt::format("{}", config.integer(key));
 }
@@ -145,6 +150,21 @@ RunEstimate estimateFeRotorTime(const config::Config& config, int dofs) {
   e.seconds = steps * dofs * kFeStepSecondsPerDof;
   e.basis =
       fmt::format("{:g} Newmark steps (time.duration / time.time_step) × {} DOFs", steps, dofs);
+  return e;
+}
+
+RunEstimate estimateTrainRunUp(double steps, int dofs, int channels, int meshes,
+                               const std::string& key, const std::string& value) {
+  RunEstimate e;
+  e.key = key;
+  e.value = value;
+  // Per kept sample: t, speed, angle, the mesh forces and channels, and the copy of the
+  // channels the order tracking reads.
+  e.bytes = (steps + 1.0) * (3.0 + meshes + 2.0 * channels) * 8.0;
+  const double n = static_cast<double>(dofs);
+  e.seconds = steps * (kTrainStepSeconds + kTrainStepSecondsPerDof2 * n * n);
+  e.basis = fmt::format("{:g} Newmark steps of {} DOFs, every step kept for {} channel(s)", steps,
+                        dofs, channels + meshes);
   return e;
 }
 

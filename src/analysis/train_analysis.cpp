@@ -1,6 +1,6 @@
 /// `train`: any gear train described once (a gearbox file or inline) and
 /// analysed: kinematics and phasing, statics, modes, Campbell, forced response, time response,
-/// nonlinear steady state (train_nonlinear_analysis.cpp).
+/// run-up (train_runup_analysis.cpp), nonlinear steady state (train_nonlinear_analysis.cpp).
 
 #include "geardyn/config/train_analysis.h"
 
@@ -24,6 +24,7 @@
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/units.h"
 #include "train_nonlinear_analysis.h"
+#include "train_runup_analysis.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -525,6 +526,9 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
     if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
       code = std::max(code, runTime(model, loaded.analysis, result, summary, text));
+    if (analysis == "runup") {
+      code = std::max(code, detail::runTrainRunUp(model, loaded.analysis, result, text, context));
+    }
     if (analysis == "nonlinear") {
       const std::string s =
           detail::runTrainNonlinear(model, loaded.analysis, result, text, context);

@@ -147,6 +147,80 @@ void addNonlinearSection(config::ConfigSchema& schema) {
       .doc("common periods before a check that has not settled is reported");
 }
 
+/// [runup]: Newmark along a linear input-speed ramp with order tracking (train_runup.h).
+void addRunUpSection(config::ConfigSchema& schema) {
+  schema.section("runup",
+                 "Run-up (or run-down) of the train: Newmark integration while the input speed "
+                 "follows a linear ramp (every mesh phase the integral of its mesh frequency, the "
+                 "speed-dependent matrices refactorised within speed_tolerance), order tracking "
+                 "of every mesh order and the input's 1x against the input angle, and a waterfall "
+                 "of the first channel.");
+  schema.real("runup.speed_min_rpm")
+      .unit("rpm")
+      .min(0.0)
+      .optional()
+      .doc("lowest input speed (default: 0.1 × the operating speed)");
+  schema.real("runup.speed_max_rpm")
+      .unit("rpm")
+      .positive()
+      .optional()
+      .doc(
+          "highest input speed (default: 1.5 × the operating speed; equal to speed_min_rpm: a "
+          "constant-speed run)");
+  schema.string("runup.direction")
+      .choices({"up", "down"})
+      .defaultValue("up")
+      .doc("from speed_min_rpm to speed_max_rpm (up) or back (down)");
+  schema.real("runup.duration")
+      .unit("s")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc(
+          "ramp time (0: derived so that every resonance the mesh orders pass is swept "
+          "quasi-statically: order-line sweep rate <= 4π ζ² f_n² / 5 over the resonances whose "
+          "modes hold >= 0.1 % of their strain energy in the meshes, and at least 100 windows)");
+  schema.real("runup.window")
+      .unit("s")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc(
+          "order-tracking and waterfall window (0: 8 common periods of the meshes but at most 32 "
+          "periods of the slowest mesh, and at least one input revolution, at the mean speed; "
+          "order tracking lengthens it where the input turns too little to tell the orders "
+          "apart and cuts it to whole common periods)");
+  schema.real("runup.time_step")
+      .unit("s")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("Δt (0: the fastest mesh period at the highest speed / steps_per_mesh_period)");
+  schema.integer("runup.steps_per_mesh_period").min(8).defaultValue(64).doc("for the default Δt");
+  schema.real("runup.speed_tolerance")
+      .unit("-")
+      .positive()
+      .max(0.5)
+      .defaultValue(kTrainSpeedTolerance)
+      .doc(
+          "relative speed change (of the highest speed) after which the gyroscopic and "
+          "carrier-frame terms are refactorised");
+  schema.integer("runup.mesh_harmonics")
+      .min(1)
+      .max(10)
+      .defaultValue(2)
+      .doc("harmonics 1..n of every mesh frequency tracked (and searched for resonances)");
+  schema.stringList("runup.channels")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc(
+          "what is tracked: mesh names (dynamic mesh force [N]) or DOF names such as "
+          "\"input.y\", \"output.theta\" (mode_shapes.csv; [m] or [rad]); empty: every mesh");
+  schema.string("runup.start")
+      .choices({"steady_state", "static", "rest"})
+      .defaultValue("steady_state")
+      .doc(
+          "initial state: the periodic steady state at the first speed (frequency domain: no "
+          "start transient; the static deflection when the common period is too long for "
+          "it), the static deflection there, or rest");
+}
+
 }  // namespace
 
 config::ConfigSchema trainSchema(bool inline_gearbox) {
@@ -182,7 +256,7 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
           "into <out>/load_case_<id>/");
   schema.section("analysis", "What to run.");
   schema.stringList("analysis.run")
-      .choices({"static", "modal", "campbell", "forced", "time", "nonlinear"})
+      .choices({"static", "modal", "campbell", "forced", "time", "runup", "nonlinear"})
       .defaultValue(nlohmann::ordered_json::array({"static", "modal"}))
       .doc("analyses, in any combination");
   schema.section("modal", "Modes at one speed.");
@@ -236,6 +310,7 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(200)
       .defaultValue(20)
       .doc("harmonics of the frequency-domain steady state it is compared with");
+  addRunUpSection(schema);
   addNonlinearSection(schema);
   config::addOutputSection(schema);
   return schema;
@@ -280,26 +355,64 @@ TrainHarmonicBalanceOptions trainHarmonicBalanceOptionsFromConfig(const config::
   return o;
 }
 
-std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating) {
+namespace {
+/// (lowest, highest) input speed [rad/s] of a section's speed_min_rpm and speed_max_rpm, by
+/// default the given fractions of the operating speed; InputError naming the key when it is
+/// absent and the operating speed is 0. The order is the caller's to check.
+std::pair<double, double> sectionSpeeds(const config::Config& analysis, const std::string& s,
+                                        double operating, double min_fraction,
+                                        double max_fraction) {
   const double op = std::abs(operating);
-  for (const char* key : {"nonlinear.speed_min_rpm", "nonlinear.speed_max_rpm"}) {
+  for (const std::string key : {s + ".speed_min_rpm", s + ".speed_max_rpm"}) {
     if (!analysis.has(key) && op == 0.0) {
       throw InputError(key, "",
                        "required when the operating speed is 0 rpm (the default range is "
                        "relative to it)");
     }
   }
-  const double lo = analysis.has("nonlinear.speed_min_rpm")
-                        ? analysis.real("nonlinear.speed_min_rpm") * kRpm
-                        : 0.5 * op;
-  const double hi = analysis.has("nonlinear.speed_max_rpm")
-                        ? analysis.real("nonlinear.speed_max_rpm") * kRpm
-                        : 1.5 * op;
+  const double lo = analysis.has(s + ".speed_min_rpm") ? analysis.real(s + ".speed_min_rpm") * kRpm
+                                                       : min_fraction * op;
+  const double hi = analysis.has(s + ".speed_max_rpm") ? analysis.real(s + ".speed_max_rpm") * kRpm
+                                                       : max_fraction * op;
+  return {lo, hi};
+}
+}  // namespace
+
+std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating) {
+  const auto [lo, hi] = sectionSpeeds(analysis, "nonlinear", operating, 0.5, 1.5);
   if (!(hi > lo)) {
     throw InputError("nonlinear.speed_max_rpm", fmt::format("{:g} rpm", hi / kRpm),
                      fmt::format("more than nonlinear.speed_min_rpm = {:g} rpm", lo / kRpm));
   }
   return {lo, hi};
+}
+
+TrainSpeedRamp runUpRampFromConfig(const config::Config& analysis, double operating) {
+  const auto [lo, hi] = sectionSpeeds(analysis, "runup", operating, 0.1, 1.5);
+  if (!(hi >= lo)) {
+    throw InputError("runup.speed_max_rpm", fmt::format("{:g} rpm", hi / kRpm),
+                     fmt::format("at least runup.speed_min_rpm = {:g} rpm", lo / kRpm));
+  }
+  // The operating speed's sense of rotation.
+  const double sign = operating < 0.0 ? -1.0 : 1.0;
+  TrainSpeedRamp ramp;
+  const bool up = analysis.string("runup.direction") == "up";
+  ramp.start = sign * (up ? lo : hi);
+  ramp.end = sign * (up ? hi : lo);
+  ramp.duration = analysis.real("runup.duration");  // 0: derived by the analysis
+  return ramp;
+}
+
+TrainRunUpOptions trainRunUpOptionsFromConfig(const config::Config& analysis) {
+  TrainRunUpOptions o;
+  o.time_step = analysis.real("runup.time_step");
+  o.steps_per_mesh_period = static_cast<int>(analysis.integer("runup.steps_per_mesh_period"));
+  o.speed_tolerance = analysis.real("runup.speed_tolerance");
+  const std::string start = analysis.string("runup.start");
+  o.start = start == "steady_state" ? TrainRunUpOptions::Start::kSteadyState
+            : start == "static"     ? TrainRunUpOptions::Start::kStatic
+                                    : TrainRunUpOptions::Start::kRest;
+  return o;
 }
 
 std::vector<double> speedRangeFromConfig(const config::Config& analysis, const std::string& s,

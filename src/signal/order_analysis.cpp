@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geardyn/error.h"
@@ -13,6 +14,34 @@ namespace geardyn {
 namespace {
 constexpr double kTwoPi = 6.283185307179586;
 }
+
+namespace {
+// Least-squares fit of every column of `signals` to a₀ + Σ_j [a_j cos p_kj + b_j sin p_kj],
+// p_kj = phase(k, j) [rad]: amplitudes[column][j] = √(a_j² + b_j²); false when the design is
+// rank-deficient (components not resolvable in the record).
+template <class Phase>
+bool fitAmplitudes(const Eigen::Ref<const Eigen::MatrixXd>& signals, int m, const Phase& phase,
+                   std::vector<std::vector<double>>& amplitude) {
+  const Eigen::Index n = signals.rows();
+  Eigen::MatrixXd A(n, 2 * m + 1);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    A(k, 0) = 1.0;
+    for (int j = 0; j < m; ++j) {
+      const double p = phase(k, j);
+      A(k, 1 + 2 * j) = std::cos(p);
+      A(k, 2 + 2 * j) = std::sin(p);
+    }
+  }
+  const auto qr = A.colPivHouseholderQr();
+  if (qr.rank() < A.cols()) return false;
+  const Eigen::MatrixXd c = qr.solve(signals);
+  amplitude.assign(signals.cols(), std::vector<double>(m));
+  for (Eigen::Index col = 0; col < signals.cols(); ++col)
+    for (int j = 0; j < m; ++j)
+      amplitude[col][j] = std::hypot(c(1 + 2 * j, col), c(2 + 2 * j, col));
+  return true;
+}
+}  // namespace
 
 std::vector<std::vector<double>> harmonicAmplitudesPerColumn(
     const Eigen::Ref<const Eigen::MatrixXd>& signals, double sample_rate,
@@ -28,24 +57,13 @@ std::vector<std::vector<double>> harmonicAmplitudesPerColumn(
     throw InputError("signal", fmt::format("{} samples", n),
                      fmt::format("at least {} samples for {} frequencies", 2 * m + 1, m));
   }
-  Eigen::MatrixXd A(n, 2 * m + 1);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const double t = static_cast<double>(k) / sample_rate;
-    A(k, 0) = 1.0;
-    for (int j = 0; j < m; ++j) {
-      A(k, 1 + 2 * j) = std::cos(kTwoPi * frequencies[j] * t);
-      A(k, 2 + 2 * j) = std::sin(kTwoPi * frequencies[j] * t);
-    }
-  }
-  const auto qr = A.colPivHouseholderQr();
-  if (qr.rank() < A.cols()) {
+  std::vector<std::vector<double>> amplitude;
+  const auto phase = [&](Eigen::Index k, int j) {
+    return kTwoPi * frequencies[j] * (static_cast<double>(k) / sample_rate);
+  };
+  if (!fitAmplitudes(signals, m, phase, amplitude)) {
     throw InputError("frequencies", "", "distinct frequencies resolvable in the record");
   }
-  const Eigen::MatrixXd c = qr.solve(signals);
-  std::vector<std::vector<double>> amplitude(signals.cols(), std::vector<double>(m));
-  for (Eigen::Index col = 0; col < signals.cols(); ++col)
-    for (int j = 0; j < m; ++j)
-      amplitude[col][j] = std::hypot(c(1 + 2 * j, col), c(2 + 2 * j, col));
   return amplitude;
 }
 
@@ -105,6 +123,72 @@ OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample
                        const std::vector<double>& speed, const std::vector<double>& orders,
                        int window) {
   return trackOrdersPerColumn(x, sample_rate, speed, orders, window).front();
+}
+
+std::vector<OrderTrack> trackOrdersByAngle(const Eigen::Ref<const Eigen::MatrixXd>& signals,
+                                           double sample_rate,
+                                           const Eigen::Ref<const Eigen::VectorXd>& angle,
+                                           const std::vector<double>& speed,
+                                           const std::vector<double>& orders, int window,
+                                           double period_angle) {
+  if (angle.size() != signals.rows() || static_cast<Eigen::Index>(speed.size()) != signals.rows())
+    throw InputError("angle", std::to_string(angle.size()), "one angle and speed per sample");
+  if (window < 8) throw InputError("window", std::to_string(window), "at least 8 samples");
+  const int m = static_cast<int>(orders.size());
+  std::vector<double> sorted{0.0};
+  for (double o : orders) sorted.push_back(std::abs(o));
+  std::sort(sorted.begin(), sorted.end());
+  double spacing = HUGE_VAL;
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i] - sorted[i - 1] > 1e-9 * sorted[i])
+      spacing = std::min(spacing, sorted[i] - sorted[i - 1]);
+  }
+  // (Plus one period when windows are cut to whole periods, so that the cut one still does.)
+  const double resolving_angle =
+      std::isfinite(spacing) ? kTwoPi / spacing + std::max(period_angle, 0.0) : 0.0;
+  std::vector<OrderTrack> tracks(signals.cols());
+  for (auto& track : tracks) track.amplitude.resize(orders.size());
+  std::vector<std::vector<double>> a;
+  for (Eigen::Index start = 0; start + window <= signals.rows();) {
+    // Long enough to resolve the orders: the window grows until θ has turned by 2π over the
+    // smallest spacing of the orders (and of the lowest order from 0, the mean).
+    Eigen::Index stop = start + window;  // exclusive
+    while (stop < signals.rows() && angle(stop - 1) - angle(start) < resolving_angle) ++stop;
+    if (angle(stop - 1) - angle(start) < resolving_angle) break;  // the record's end
+    Eigen::Index length = stop - start;
+    if (period_angle > 0.0) {
+      // Whole periods of the angle within the window: the samples up to the one nearest the
+      // last whole period's end (exclusive).
+      const double span = angle(stop - 1) - angle(start);
+      const double periods = std::floor(span / period_angle);
+      if (periods >= 1.0) {
+        const double target = angle(start) + periods * period_angle;
+        Eigen::Index end = stop - 1;
+        while (end > start && angle(end - 1) >= target) --end;
+        if (end - 1 > start && target - angle(end - 1) < angle(end) - target) --end;
+        length = end - start;
+      }
+    }
+    double mean = 0.0;
+    for (Eigen::Index k = 0; k < length; ++k) mean += speed[start + k];
+    mean /= static_cast<double>(length);
+    // Phases from the window's first angle: cos and sin of small arguments, whatever the run.
+    const double origin = angle(start);
+    const auto phase = [&](Eigen::Index k, int j) {
+      return orders[j] * (angle(start + k) - origin);
+    };
+    if (length < 2 * m + 1 || !fitAmplitudes(signals.middleRows(start, length), m, phase, a)) {
+      a.assign(signals.cols(), std::vector<double>(orders.size(), std::nan("")));
+    }
+    for (Eigen::Index c = 0; c < signals.cols(); ++c) {
+      tracks[c].time.push_back((static_cast<double>(start) + 0.5 * static_cast<double>(length)) /
+                               sample_rate);
+      tracks[c].speed.push_back(mean);
+      for (std::size_t o = 0; o < orders.size(); ++o) tracks[c].amplitude[o].push_back(a[c][o]);
+    }
+    start += length;
+  }
+  return tracks;
 }
 
 }  // namespace geardyn

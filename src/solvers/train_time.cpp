@@ -35,6 +35,28 @@ void TrainTimeOptions::validate() const {
   }
 }
 
+void TrainSpeedRamp::validate() const {
+  if (!std::isfinite(start) || !std::isfinite(end) || start * end < 0.0) {
+    throw InputError("runup.speed_max_rpm", fmt::format("{:g} rpm", end * 30.0 / std::numbers::pi),
+                     fmt::format("a speed of the same sign as runup.speed_min_rpm = {:g} rpm (the "
+                                 "train does not reverse)",
+                                 start * 30.0 / std::numbers::pi));
+  }
+  if (!(duration > 0.0) || !std::isfinite(duration)) {
+    throw InputError("runup.duration", fmt::format("{:g} s", duration), "a duration > 0 s");
+  }
+}
+
+double TrainSpeedRamp::speed(double t) const noexcept {
+  return t >= duration ? end : start + (end - start) * (t / duration);
+}
+
+double TrainSpeedRamp::angle(double t) const noexcept {
+  const double a = std::abs(start), b = std::abs(end);
+  if (t <= duration) return a * t + 0.5 * (b - a) * (t * t / duration);
+  return 0.5 * (a + b) * duration + b * (t - duration);
+}
+
 TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double input_speed,
                                          double time_step, NewmarkParameters newmark,
                                          std::optional<bool> sparse)
@@ -46,48 +68,85 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
   newmark.validate();
   const int n = model.dofCount();
   const int r = static_cast<int>(model.meshes().size());
-  Cg_ = model.dampingAt(speed_);
-  K0_ = model.meanStiffnessAt(speed_);
   V_.resize(n, r);
   for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
-  const Eigen::MatrixXd A = K0_ + nm_.a0 * model.mass() + nm_.a1 * Cg_;
   sparse_ = sparse.value_or(n >= kSparseTrainDofs);
   if (sparse_) {
     // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
     Msp_ = model.mass().sparseView(1.0, 1e-14 * model.mass().cwiseAbs().maxCoeff());
+  }
+  speed_dependent_ = model.gyroscopic().cwiseAbs().maxCoeff() > 0.0 ||
+                     model.centripetal().cwiseAbs().maxCoeff() > 0.0;
+  Cg_.resize(n, n);
+  K0_.resize(n, n);
+  A_.resize(n, n);
+  Z_.resize(n, r);
+  S_.resize(r, r);
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  q_ = v_ = a_ = f_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
+  factorise(speed_);
+  small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
+  small_matrix_ = Eigen::MatrixXd::Zero(r, r);
+  w_ = w_solved_ = dk_ = ke_ = k_ = e_ = Eigen::VectorXd::Zero(r);
+}
+
+TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, const TrainSpeedRamp& ramp,
+                                         double time_step, NewmarkParameters newmark,
+                                         double speed_tolerance, std::optional<bool> sparse)
+    : TrainNewmarkStepper(model, (ramp.validate(), ramp.start), time_step, newmark, sparse) {
+  if (!(speed_tolerance > 0.0 && speed_tolerance < 1.0)) {
+    throw InputError("runup.speed_tolerance", fmt::format("{:g}", speed_tolerance),
+                     "a relative tolerance in (0, 1)");
+  }
+  ramp_ = ramp;
+  tolerance_ = speed_tolerance;
+}
+
+void TrainNewmarkStepper::factorise(double speed) {
+  const GearTrainModel& m = model_;
+  // The expressions of GearTrainModel::dampingAt and meanStiffnessAt, written into the
+  // preallocated matrices (coefficient-wise: no temporaries).
+  Cg_ = m.damping() + speed * m.gyroscopic();
+  K0_ = m.stiffness() + m.meanMeshStiffness() + speed * speed * m.centripetal();
+  A_ = K0_ + nm_.a0 * m.mass() + nm_.a1 * Cg_;
+  if (sparse_) {
     Cgsp_ = Cg_.sparseView(1.0, 1e-14 * std::max(Cg_.cwiseAbs().maxCoeff(), 1e-300));
-    const Eigen::SparseMatrix<double> Asp = A.sparseView(1.0, 1e-14 * A.cwiseAbs().maxCoeff());
+    const Eigen::SparseMatrix<double> Asp = A_.sparseView(1.0, 1e-14 * A_.cwiseAbs().maxCoeff());
     if (!slu_.factorize(Asp)) {
       throw InputError("gearbox", "",
                        "a train whose Newmark matrix can be factorised: " + slu_.message());
     }
-    Z_.resize(n, r);
-    Eigen::VectorXd column(n);
-    for (int m = 0; m < r; ++m) {
-      slu_.solve(V_.col(m), column);
-      Z_.col(m) = column;
+    for (Eigen::Index c = 0; c < V_.cols(); ++c) {
+      slu_.solve(V_.col(c), y_);
+      Z_.col(c) = y_;
     }
   } else {
-    lu_.compute(A);
-    Z_ = lu_.solve(V_);
+    lu_.compute(A_);
+    for (Eigen::Index c = 0; c < V_.cols(); ++c) {
+      rhs_ = V_.col(c);
+      y_ = lu_.solve(rhs_);
+      Z_.col(c) = y_;
+    }
   }
-  S_ = V_.transpose() * Z_;  // W = Vᵀ A⁻¹ V; the step's matrix is I + D W
-  small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
-  small_matrix_ = Eigen::MatrixXd::Zero(r, r);
-  q_ = v_ = a_ = f_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
-  w_ = w_solved_ = dk_ = ke_ = k_ = Eigen::VectorXd::Zero(r);
+  S_.noalias() = V_.transpose() * Z_;  // W = Vᵀ A⁻¹ V; the step's matrix is I + D W
+  speed_factorised_ = speed;
+  ++factorisations_;
 }
 
 void TrainNewmarkStepper::meshState(double t) {
   const auto& meshes = model_.meshes();
+  const double speed = ramp_ ? ramp_->speed(t) : speed_;
+  const double angle = ramp_ ? ramp_->angle(t) : 0.0;
   for (std::size_t m = 0; m < meshes.size(); ++m) {
-    const double phi = meshes[m].phaseAt(t, speed_);
+    const double phi =
+        ramp_ ? meshes[m].frequency_ratio * angle + meshes[m].phase : meshes[m].phaseAt(t, speed_);
     k_(m) = meshes[m].stiffness->stiffness(phi);
     dk_(m) = k_(m) - meshes[m].mean_stiffness;
     const TransmissionError& e = meshes[m].transmission_error;
+    e_(m) = e.value(phi);
     // k e + c ė, ė = de/dφ f_m.
-    ke_(m) = k_(m) * e.value(phi) +
-             meshes[m].damping * e.derivative(phi) * meshes[m].frequency_ratio * std::abs(speed_);
+    ke_(m) = k_(m) * e_(m) +
+             meshes[m].damping * e.derivative(phi) * meshes[m].frequency_ratio * std::abs(speed);
   }
 }
 
@@ -95,6 +154,10 @@ void TrainNewmarkStepper::reset(double t, const Eigen::VectorXd& q, const Eigen:
   t_ = t;
   q_ = q;
   v_ = qdot;
+  if (ramp_) {
+    speed_ = ramp_->speed(t);
+    if (speed_dependent_ && speed_ != speed_factorised_) factorise(speed_);
+  }
   meshState(t);
   // M a = F − C v − K(t) q.
   f_ = model_.staticLoad() + V_ * ke_ - Cg_ * v_ - K0_ * q_ -
@@ -104,6 +167,11 @@ void TrainNewmarkStepper::reset(double t, const Eigen::VectorXd& q, const Eigen:
 
 void TrainNewmarkStepper::step() {
   const double t1 = t_ + dt_;
+  if (ramp_) {
+    speed_ = ramp_->speed(t1);
+    if (speed_dependent_ && std::abs(speed_ - speed_factorised_) > tolerance_ * ramp_->maxSpeed())
+      factorise(speed_);
+  }
   meshState(t1);
   rhs_.noalias() = model_.staticLoad();
   rhs_.noalias() += V_ * ke_;
@@ -141,7 +209,9 @@ void TrainNewmarkStepper::step() {
 }
 
 double TrainNewmarkStepper::meshForce(int mesh) const {
-  return model_.meshes()[mesh].force(t_, speed_, q_);
+  // k(φ) g(vᵀq − e(φ)) at the phase of the last step (TrainMesh::force at constant speed).
+  const TrainMesh& m = model_.meshes()[mesh];
+  return k_(mesh) * m.contactDeflection(m.deflection(q_) - e_(mesh));
 }
 
 TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,

@@ -21,7 +21,8 @@ CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
 SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 EXAMPLES = ["hbm_backlash_kahraman_singh", "hbm_ltca_visnadi2021_long_relief", "rotor_rao2023_study",
             "spectrum_rao2023_table41_probes", "rotor_visnadi2021_modal", "rotor_visnadi2021_campbell",
-            "rotor_visnadi2021_runup", "sweep_gear_pair_speed_damping", "simulate_gear_pair_backlash"]
+            "rotor_visnadi2021_runup", "sweep_gear_pair_speed_damping", "simulate_gear_pair_backlash",
+            "train_two_stage_reducer_runup"]
 PLOTTER = {"hbm": "hbm", "rotor": None, "spectrum": "spectrum", "sweep": "sweep", "simulate": "simulate"}
 
 

@@ -7,6 +7,7 @@
 
 #include <Eigen/Sparse>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 #include "geardyn/solvers/detail/sparse_lu_factors.h"
@@ -48,6 +49,45 @@ TEST(TrainNewmarkAllocation, SparseStepsAllocateNothing) {
   const GearTrainModel model(testing::flexibleChain(4, 0.03, varying(4e8)));
   ASSERT_GE(model.dofCount(), kSparseTrainDofs);
   EXPECT_EQ(allocationsOverSteps(model, true), 0);
+}
+
+// Along a run-up (TrainSpeedRamp): the mesh phases from the ramp's angle, and, on the dense
+// path, the refactorisations of the speed-dependent matrices (a planetary stage's carrier-frame
+// G₁ and K_Ω) allocate nothing. The sparse path's refactorisation allocates (SparseLU's
+// analysis, train_time.h); its steps between refactorisations do not.
+TEST(TrainNewmarkAllocation, RunUpStepsAndRefactorisationsAllocateNothing) {
+  GearTrainSpec spec = testing::linParker1999(3);
+  for (auto& stage : spec.stages)
+    stage.sun_planet_stiffness = stage.ring_planet_stiffness = varying(5e8);
+  const GearTrainModel model(spec);
+  ASSERT_GT(model.gyroscopic().cwiseAbs().maxCoeff(), 0.0);
+  const double speed = 2000.0 * std::numbers::pi / 30.0;
+  TrainNewmarkStepper stepper(model, TrainSpeedRamp{0.5 * speed, speed, 5e-3}, 1e-5,
+                              NewmarkParameters::averageAcceleration(), 1e-3, false);
+  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                Eigen::VectorXd::Zero(model.dofCount()));
+  stepper.step();  // warm-up
+  testing::AllocationCounter counter;
+  for (int s = 0; s < 500; ++s) stepper.step();  // the whole ramp
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_GT(stepper.factorisations(), 400);  // a 50 % speed change, 0.1 % per factorisation
+  EXPECT_TRUE(std::isfinite(stepper.displacement().norm()));
+}
+
+TEST(TrainNewmarkAllocation, SparseRunUpStepsAllocateNothing) {
+  const GearTrainModel model(testing::flexibleChain(4, 0.03, varying(4e8)));
+  ASSERT_GE(model.dofCount(), kSparseTrainDofs);
+  const double speed = model.inputSpeed();
+  // Tolerance 0.5: no refactorisation in the counted steps (1 % speed change).
+  TrainNewmarkStepper stepper(model, TrainSpeedRamp{speed, 1.01 * speed, 5e-3}, 1e-5,
+                              NewmarkParameters::averageAcceleration(), 0.5, true);
+  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
+                Eigen::VectorXd::Zero(model.dofCount()));
+  stepper.step();  // warm-up
+  testing::AllocationCounter counter;
+  for (int s = 0; s < 500; ++s) stepper.step();
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_TRUE(std::isfinite(stepper.displacement().norm()));
 }
 
 // The nonlinear Newmark step with tooth-pair meshes: the elements are refilled per step into the

@@ -5,6 +5,8 @@
 /// measured on the reference machine (Release build; see docs/cli.md, "Resource limits") and
 /// rounded up: an estimate errs on the large side.
 
+#include <string>
+
 #include "geardyn/analysis/run_budget.h"
 #include "geardyn/config/config.h"
 
@@ -21,6 +23,11 @@ RunEstimate estimateHarmonicBalance(const config::Config& config);
 RunEstimate estimateRotorTime(const config::Config& config);
 /// rotor (finite element, analysis "time"): duration / time_step Newmark steps.
 RunEstimate estimateFeRotorTime(const config::Config& config, int dofs);
+/// train runup: `steps` Newmark steps of a train of `dofs` DOFs, every step kept for `channels`
+/// tracked channels and `meshes` mesh forces (order tracking needs the whole record); `key` and
+/// `value` name what drives the size (runup.duration).
+RunEstimate estimateTrainRunUp(double steps, int dofs, int channels, int meshes,
+                               const std::string& key, const std::string& value);
 /// The estimate of a stage an analysis reports through AnalysisContext::check_budget
 /// ("simulate", "stats_time", "hbm", "rotor_time", "rotor_fe_time" with `size` = DOFs,
 /// "stats_monte_carlo" with `size` = threads); {} for other stages.

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The analysis file of `geardyn train`: which analyses to run on a gearbox (static, modal,
-/// campbell, forced, time, nonlinear) and their options. The gearbox is named by `[gearbox] file =
-/// "path"` (relative to the analysis file) or written inline in the same file.
+/// campbell, forced, time, runup, nonlinear) and their options. The gearbox is named by `[gearbox]
+/// file = "path"` (relative to the analysis file) or written inline in the same file.
 
 #include <utility>
 #include <vector>
@@ -13,6 +13,7 @@
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_response.h"
+#include "geardyn/solvers/train_runup.h"
 #include "geardyn/solvers/train_time.h"
 
 namespace geardyn::config {
@@ -34,6 +35,14 @@ TrainHarmonicBalanceOptions trainHarmonicBalanceOptionsFromConfig(const config::
 /// speed_min_rpm (default 0.5 × the operating speed) and speed_max_rpm (1.5 ×); InputError
 /// naming the key when the range is empty or the operating speed is 0 and no range is given.
 std::pair<double, double> nonlinearSpeedRange(const config::Config& analysis, double operating);
+
+/// [runup] speed_min_rpm (default 0.1 × the operating speed), speed_max_rpm (1.5 ×) and
+/// direction as a ramp in the operating speed's sense of rotation [rad/s], with
+/// runup.duration (0: to be derived). InputError naming runup.speed_max_rpm when it is below
+/// speed_min_rpm.
+TrainSpeedRamp runUpRampFromConfig(const config::Config& analysis, double operating);
+/// runup.time_step, steps_per_mesh_period, speed_tolerance, start.
+TrainRunUpOptions trainRunUpOptionsFromConfig(const config::Config& analysis);
 
 /// Ascending input speeds [rad/s] of a section with speed_min_rpm, speed_max_rpm (defaults: 0
 /// and 1.5 × the operating speed) and points; InputError naming the keys when the range is

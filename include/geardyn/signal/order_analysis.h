@@ -43,5 +43,25 @@ OrderTrack trackOrders(const Eigen::Ref<const Eigen::VectorXd>& x, double sample
 std::vector<OrderTrack> trackOrdersPerColumn(const Eigen::Ref<const Eigen::MatrixXd>& signals,
                                              double sample_rate, const std::vector<double>& speed,
                                              const std::vector<double>& orders, int window);
+/// Order tracking against the reference shaft's rotation θ_k [rad] (computed order tracking):
+/// in each window the least-squares fit x_k = a₀ + Σ_o [a_o cos o θ_k + b_o sin o θ_k], exact in
+/// phase however the speed changes inside the window (the fixed-frequency fit of
+/// trackOrdersPerColumn drifts by o Δω t²/2 there). `speed` [rad/s] gives each window's mean
+/// speed; `time` is the window centre, counting samples from 0 at `sample_rate`. A window is
+/// `window` samples, longer where θ turns by less than 2π / (the smallest spacing of the orders
+/// and of the lowest order from 0) in them (slow speeds: the orders could not be told apart);
+/// a last window that cannot reach that is dropped. With
+/// `period_angle` > 0 [rad] each window of at most `window` samples is cut to a whole number of
+/// those periods of θ (a gear train's common period): every harmonic of it, tracked or not, is
+/// then orthogonal to the tracked ones and does not leak into them (an uncut window leaks a few
+/// % of the parametric harmonics into the mesh orders); windows shorter than one period stay
+/// uncut. Windows where the orders cannot be resolved (too little rotation, equal orders) hold
+/// NaN.
+std::vector<OrderTrack> trackOrdersByAngle(const Eigen::Ref<const Eigen::MatrixXd>& signals,
+                                           double sample_rate,
+                                           const Eigen::Ref<const Eigen::VectorXd>& angle,
+                                           const std::vector<double>& speed,
+                                           const std::vector<double>& orders, int window,
+                                           double period_angle = 0.0);
 
 }  // namespace geardyn

@@ -15,9 +15,22 @@
 /// nothing: small trains use dense matrices; from kSparseTrainDofs DOFs on (flexible shafts)
 /// M, C + ΩG₁ and A are sparse and A is factorised by Eigen's SparseLU, whose factors are
 /// solved with in a preallocated vector (detail::SparseLuFactors).
+///
+/// Along a speed ramp (TrainSpeedRamp: a run-up or run-down, train_runup.h) the input speed
+/// Ω(t) is prescribed and the DOFs stay vibrations about the rigid rotation it implies: every
+/// mesh phase is φ_m(t) = (f_m/|Ω|) ∫₀ᵗ |Ω| dτ + φ_m0 (exact for the linear ramp) and ė uses
+/// the speed at t. The speed-dependent matrices Ω G₁ and Ω² K_Ω (and with them A, Z and W) are
+/// refactorised when the speed has moved by more than `speed_tolerance` × the ramp's largest
+/// |Ω| since the last factorisation, as FeNewmarkStepper does with its gyroscopic term: G₁ is
+/// then within that relative tolerance of its exact value and K_Ω within twice it. Trains
+/// without G₁ and K_Ω (fixed-axis lumped trains) are never refactorised. Dense refactorisation
+/// allocates nothing; the sparse path's (SparseLU's pattern analysis) allocates, the steps
+/// between do not.
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,9 +62,26 @@ struct TrainTimeResponse {
   std::string message;
 };
 
-/// One Newmark step at a time (for benchmarks, and the building block of the solver).
 /// DOF count from which the Newmark stepper works with sparse matrices.
 inline constexpr int kSparseTrainDofs = 64;
+
+/// A prescribed input speed: Ω(t) = Ω₀ + (Ω₁ − Ω₀) t / T for 0 <= t <= T, Ω₁ after [rad/s].
+/// Ω₀ and Ω₁ have the same sign (or one is 0): the train does not reverse.
+struct TrainSpeedRamp {
+  double start = 0.0;     ///< Ω₀ [rad/s]
+  double end = 0.0;       ///< Ω₁ [rad/s]
+  double duration = 0.0;  ///< T [s] (> 0)
+  void validate() const;  ///< InputError naming runup.speed_*_rpm / runup.duration
+  double speed(double t) const noexcept;
+  /// ∫₀ᵗ |Ω| dτ [rad]: the input shaft's rotation, exact for the ramp.
+  double angle(double t) const noexcept;
+  double maxSpeed() const noexcept { return std::max(std::abs(start), std::abs(end)); }
+};
+
+/// Relative speed change that triggers refactorisation along a ramp (TrainNewmarkStepper).
+inline constexpr double kTrainSpeedTolerance = 1e-3;
+
+/// One Newmark step at a time (for benchmarks, and the building block of the solvers).
 
 class TrainNewmarkStepper {
  public:
@@ -59,25 +89,38 @@ class TrainNewmarkStepper {
   /// kSparseTrainDofs DOFs on.
   TrainNewmarkStepper(const GearTrainModel& model, double input_speed, double time_step,
                       NewmarkParameters newmark, std::optional<bool> sparse = std::nullopt);
+  /// Along a speed ramp; `speed_tolerance` in (0, 1) (see the file comment).
+  TrainNewmarkStepper(const GearTrainModel& model, const TrainSpeedRamp& ramp, double time_step,
+                      NewmarkParameters newmark, double speed_tolerance = kTrainSpeedTolerance,
+                      std::optional<bool> sparse = std::nullopt);
   void reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot);
   void step();  ///< allocation-free
   double time() const noexcept { return t_; }
+  /// The input speed Ω at the current time [rad/s].
+  double speed() const noexcept { return speed_; }
   const Eigen::VectorXd& displacement() const noexcept { return q_; }
-  /// k_m(t)(v_mᵀ q − e_m) [N] at the current state.
+  /// k_m(φ_m)(v_mᵀ q − e_m(φ_m)) [N] at the current state.
   double meshForce(int mesh) const;
+  /// Factorisations of the Newmark matrix so far (1 at constant speed).
+  int factorisations() const noexcept { return factorisations_; }
 
  private:
   void meshState(double t);  // fills dk_ (k − k̄) and ke_ (k e + c ė) of every mesh at t
+  void factorise(double speed);
 
   const GearTrainModel& model_;
+  std::optional<TrainSpeedRamp> ramp_;
   double speed_, dt_, gamma_, t_ = 0.0;
+  double tolerance_ = kTrainSpeedTolerance, speed_factorised_ = 0.0;
+  int factorisations_ = 0;
+  bool speed_dependent_ = false;  // G₁ or K_Ω nonzero
   NewmarkCoefficients nm_;
   bool sparse_ = false;
-  Eigen::MatrixXd Cg_, K0_, V_, Z_, S_, small_matrix_;
+  Eigen::MatrixXd Cg_, K0_, A_, V_, Z_, S_, small_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
   Eigen::SparseMatrix<double> Msp_, Cgsp_;
   detail::SparseLuFactors slu_;
-  Eigen::VectorXd q_, v_, a_, f_, rhs_, y_, w_, w_solved_, dk_, ke_, k_;
+  Eigen::VectorXd q_, v_, a_, f_, rhs_, y_, w_, w_solved_, dk_, ke_, k_, e_;
 };
 
 TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
