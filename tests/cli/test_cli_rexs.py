@@ -13,8 +13,10 @@ from cli_support import SOURCE, run
 
 REXS = SOURCE.parent / "shared" / "rexs"
 TWO_STAGE = REXS / "FVA-Industriegetriebe_2_stufig_1-6.rexs"
-needs_data = pytest.mark.skipif(not REXS.is_dir(),
-                                reason=f"REXS example models not found in {REXS}")
+needs_data = pytest.mark.skipif(
+    not REXS.is_dir(),
+    reason=f"the FVA/SEW REXS models are not in {REXS} (they live beside the repository, not in "
+    "it); test_cli_rexs_generated.py covers the importer with a gearbox the tests write")
 
 
 def rows(path):

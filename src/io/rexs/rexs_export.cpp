@@ -94,13 +94,22 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
     const int m = w.add("material", name + " material",
                         material(s["youngs_modulus"], s["poisson_ratio"], s["density"]));
     w.relate("reference", {{id, "origin", "shaft"}, {m, "referenced", "material"}});
-    if (s["mass"].get<double>() != 0 || s["polar_inertia"].get<double>() != 0) {
-      bool carrier = false;
-      for (const auto& [_, p] : cfg["planetary"].items()) carrier |= p["carrier"] == name;
-      if (!carrier)
-        warnings.push_back("shafts." + name +
-                           ".mass/polar_inertia: REXS has no lumped mass on a "
-                           "shaft here; not exported");
+    bool carrier = false;
+    for (const auto& [_, p] : cfg["planetary"].items()) carrier |= p["carrier"] == name;
+    // The shaft's own lumped mass and inertia (a motor's rotor, a hub) as an additional mass
+    // at its mid-length, the import's disk (a carrier's go to its side plate below).
+    if (!carrier && (s["mass"].get<double>() != 0 || s["polar_inertia"].get<double>() != 0 ||
+                     s["diametral_inertia"].get<double>() != 0)) {
+      double length = 0.0;
+      for (const auto& l : s["section_lengths"]) length += l.get<double>();
+      const int lumped = w.add(
+          "additional_mass", name + " lumped mass",
+          {real("u_coordinate_on_shaft", "mm", 0.5 * length * 1000),
+           real("mass_of_component", "kg", s["mass"]),
+           real("moment_of_inertia_u_axis", "kg m^2", s["polar_inertia"]),
+           real("moment_of_inertia_v_axis", "kg m^2", s["diametral_inertia"]),
+           real("moment_of_inertia_w_axis", "kg m^2", s["diametral_inertia"])});
+      w.part(id, "shaft", lumped, "additional_mass");
     }
   }
   auto addGear = [&](const std::string& name, const Json& g, int shaft, bool ring, double u) {

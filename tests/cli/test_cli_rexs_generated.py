@@ -1,0 +1,84 @@
+"""REXS through the command line in every clone (issue 34): a gearbox the tests write
+themselves (rexs_generated.py: the two-stage reducer exported, with three load cases) is
+imported, analysed directly at each load case, read zipped, and refused where it should be.
+The FVA/SEW models of ../shared/rexs (test_cli_rexs.py) add third-party files where present."""
+
+import csv
+import json
+
+import pytest
+
+from cli_support import run
+from rexs_generated import LOAD_CASES, write_rexs_gearbox
+
+
+@pytest.fixture(scope="module")
+def rexs(tmp_path_factory):
+    return write_rexs_gearbox(tmp_path_factory.mktemp("rexs"))
+
+
+def static_analysis(folder, gearbox, extra=""):
+    path = folder / f"static_{abs(hash((str(gearbox), extra)))}.toml"
+    path.write_text(f'[gearbox]\nfile = "{gearbox}"\n{extra}\n[analysis]\nrun = ["static", "modal"]\n'
+                    "[output]\nplots = false\n")
+    return path
+
+
+def results(folder):
+    return json.loads((folder / "summary.json").read_text())
+
+
+def frequencies(folder):
+    with open(folder / "modes.csv", newline="") as handle:
+        return [float(row["frequency_hz"]) for row in csv.DictReader(handle)]
+
+
+def test_import_lists_the_written_load_cases(rexs, tmp_path):
+    rexsj, _ = rexs
+    out = tmp_path / "reducer.toml"
+    result = run("import", rexsj, "-o", out, "--load-case", "2")
+    assert result.returncode == 0, result.stderr
+    assert "3 load case(s)" in result.stdout, result.stdout
+    assert "2 meshes" in result.stdout
+    text = out.read_text()
+    assert "speed_rpm = 3000" in text
+    # The motor's lumped mass and inertia (a shaft without sections) come back as a disk: the
+    # export once dropped them, and the re-imported motor had no inertia at all.
+    disk = text[text.index("motor lumped mass"):]
+    assert "mass = 15" in disk and "polar_inertia = 0.04" in disk, disk[:400]
+
+
+def test_each_load_case_scales_the_static_mesh_forces(rexs, tmp_path):
+    """The static mesh forces are proportional to the input torque: load case 2 (400 N m) gives
+    twice and case 7 (100 N m) half those of case 1 (the gearbox file's 200 N m, whose stage-1
+    force the example train_two_stage_reducer states: 6169.1465 N). Linear statics: to 1e-9."""
+    rexsj, _ = rexs
+    forces = {}
+    for case_id in LOAD_CASES:
+        out = tmp_path / f"case{case_id}"
+        done = run("train", static_analysis(tmp_path, rexsj, f"load_case = {case_id}"), "--out", out)
+        assert done.returncode == 0, done.stderr
+        summary = results(out)
+        speed = summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"]
+        assert speed == LOAD_CASES[case_id][0]
+        forces[case_id] = summary["results"]["static"]["mesh_force_N"]
+    assert forces[1]["stage1"] == pytest.approx(6169.1465, rel=1e-7)
+    for case_id, (_, torque) in LOAD_CASES.items():
+        for mesh in ("stage1", "stage2"):
+            assert forces[case_id][mesh] == pytest.approx(forces[1][mesh] * torque / 200.0, rel=1e-9)
+
+
+def test_zipped_and_plain_give_identical_results(rexs, tmp_path):
+    rexsj, rexsz = rexs
+    for name, gearbox in (("plain", rexsj), ("zipped", rexsz)):
+        done = run("train", static_analysis(tmp_path, gearbox, "load_case = 2"), "--out",
+                   tmp_path / name)
+        assert done.returncode == 0, done.stderr
+    assert frequencies(tmp_path / "plain") == frequencies(tmp_path / "zipped")
+
+
+def test_an_unknown_load_case_is_refused_naming_the_key_and_the_cases(rexs, tmp_path):
+    rexsj, _ = rexs
+    bad = run("train", static_analysis(tmp_path, rexsj, "load_case = 5"), "--out", tmp_path / "bad")
+    assert bad.returncode == 2
+    assert "load_case = 5" in bad.stderr and "1, 2, 7" in bad.stderr, bad.stderr
