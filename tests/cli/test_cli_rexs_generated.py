@@ -5,10 +5,12 @@ The FVA/SEW models of ../shared/rexs (test_cli_rexs.py) add third-party files wh
 
 import csv
 import json
+import re
+import zipfile
 
 import pytest
 
-from cli_support import run
+from cli_support import EXAMPLES, run
 from rexs_generated import LOAD_CASES, write_rexs_gearbox
 
 
@@ -82,3 +84,31 @@ def test_an_unknown_load_case_is_refused_naming_the_key_and_the_cases(rexs, tmp_
     bad = run("train", static_analysis(tmp_path, rexsj, "load_case = 5"), "--out", tmp_path / "bad")
     assert bad.returncode == 2
     assert "load_case = 5" in bad.stderr and "1, 2, 7" in bad.stderr, bad.stderr
+
+
+def test_hostile_files_are_refused_before_they_are_read_whole(tmp_path):
+    """A zip bomb (300 MiB of spaces in a few hundred kB), a deeply nested JSON model and a
+    planetary stage of 10^6 planets exit 2 naming the limit, in well under a second's worth of
+    memory: nothing is inflated past the limit."""
+    bomb = tmp_path / "bomb.rexsz"
+    with zipfile.ZipFile(bomb, "w", zipfile.ZIP_DEFLATED) as archive:
+        with archive.open("model.rexsj", "w") as entry:
+            block = b" " * (1 << 20)
+            for _ in range(300):
+                entry.write(block)
+    assert bomb.stat().st_size < 2e6
+    refused = run("import", bomb, "-o", tmp_path / "bomb.toml")
+    assert refused.returncode == 2 and "at most 256 MiB" in refused.stderr, refused.stderr
+
+    deep = tmp_path / "deep.rexsj"
+    deep.write_text('{"model": {"version": "1.6", "relations": ' + "[" * 100000 + "]" * 100000 +
+                    ', "components": []}}')
+    refused = run("import", deep, "-o", tmp_path / "deep.toml")
+    assert refused.returncode == 2, refused.stderr
+
+    gearbox = (EXAMPLES / "gearboxes" / "planetary_parallel.toml").read_text()
+    many = tmp_path / "many.toml"
+    many.write_text(re.sub(r"(?m)^planets = .*$", "planets = 1000000", gearbox))
+    refused = run("train", static_analysis(tmp_path, many), "--out", tmp_path / "many")
+    assert refused.returncode == 2
+    assert "planets = 1000000" in refused.stderr and "[1, 32]" in refused.stderr, refused.stderr

@@ -33,15 +33,33 @@ Document readRexsZip(const std::filesystem::path& file) {
     const bool xml = lower.size() > 5 && lower.ends_with(".rexs");
     const bool json = lower.ends_with(".rexsj");
     if (!xml && !json) continue;
-    if (info.uncompressed_size > (std::uint64_t{1} << 31))
-      throw InputError(source + ": entry " + entry, fmt::format("{} bytes", info.uncompressed_size),
-                       "a REXS model under 2 GB");
-    std::string text(info.uncompressed_size, '\0');
+    // Neither the declared size nor the ratio is trusted (a zip bomb declares what it likes):
+    // the entry is inflated in chunks and refused as soon as it passes kMaxRexsModelBytes.
+    const auto too_large = [&](std::uint64_t bytes) {
+      return InputError(source + ": entry " + entry, fmt::format("{} bytes or more", bytes),
+                        fmt::format("a REXS model of at most {} MiB uncompressed (the largest "
+                                    "published gearbox models are a few MiB)",
+                                    kMaxRexsModelBytes >> 20));
+    };
+    if (info.uncompressed_size > kMaxRexsModelBytes) throw too_large(info.uncompressed_size);
     if (unzOpenCurrentFile(zip.get()) != UNZ_OK)
       throw InputError(source + ": entry " + entry, "", "an entry that can be decompressed");
-    const int read = unzReadCurrentFile(zip.get(), text.data(), static_cast<unsigned>(text.size()));
+    std::string text;
+    text.reserve(static_cast<std::size_t>(info.uncompressed_size));
+    constexpr unsigned kChunk = 1u << 20;
+    int read = 0;
+    do {
+      const std::size_t at = text.size();
+      text.resize(at + kChunk);
+      read = unzReadCurrentFile(zip.get(), text.data() + at, kChunk);
+      text.resize(at + static_cast<std::size_t>(std::max(read, 0)));
+      if (text.size() > kMaxRexsModelBytes) {
+        unzCloseCurrentFile(zip.get());
+        throw too_large(text.size());
+      }
+    } while (read > 0);
     const int closed = unzCloseCurrentFile(zip.get());
-    if (read < 0 || static_cast<std::size_t>(read) != text.size() || closed != UNZ_OK)
+    if (read < 0 || text.size() != info.uncompressed_size || closed != UNZ_OK)
       throw InputError(source + ": entry " + entry, fmt::format("zip status {}", read),
                        "an intact zip entry (CRC or size mismatch: truncated archive?)");
     const std::string where = source + "/" + entry;

@@ -5,6 +5,7 @@
 /// not well formed (truncated, not XML/JSON, no <model>) is an InputError naming the file and,
 /// where the parser knows it, the offset.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -19,6 +20,10 @@ bool isRexsPath(const std::filesystem::path& file);
 
 Document parseRexsXml(std::string_view text, const std::string& source);
 Document parseRexsJson(std::string_view text, const std::string& source);
+/// Largest uncompressed REXS model read from a .rexsz [bytes]: 256 MiB, some fifty times the
+/// largest published gearbox models; a zip bomb is refused when it passes this, whatever its
+/// entry declares.
+inline constexpr std::uint64_t kMaxRexsModelBytes = std::uint64_t{256} << 20;
 /// The model inside a .rexsz archive (the first .rexs or .rexsj entry).
 Document readRexsZip(const std::filesystem::path& file);
 
