@@ -7,17 +7,18 @@
 #include <cstdint>
 #include <string_view>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/geometry_io.h"
+#include "geardyn/io/geometry_results.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const geardyn::io::ConfigSchema schema = geardyn::io::geometrySchema();
+  static const geardyn::config::ConfigSchema schema = geardyn::config::geometrySchema();
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const auto config = geardyn::io::parseConfig(text, "fuzz.toml", schema);
-    const geardyn::GearPair pair(geardyn::io::gearPairSpecFromConfig(config));
+    const auto config = geardyn::config::parseConfig(text, "fuzz.toml", schema);
+    const geardyn::GearPair pair(geardyn::config::gearPairSpecFromConfig(config));
     volatile std::size_t length = geardyn::io::toJson(pair).dump().size();
     (void)length;
   } catch (const geardyn::InputError&) {

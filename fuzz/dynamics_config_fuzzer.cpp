@@ -7,25 +7,28 @@
 #include <cstdint>
 #include <string_view>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/hbm_config.h"
+#include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/hbm_io.h"
-#include "geardyn/io/simulate_io.h"
+#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/solvers/harmonic_balance.h"
+#include "geardyn/solvers/time_response.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const geardyn::io::ConfigSchema schema = geardyn::io::hbmSchema();
+  static const geardyn::config::ConfigSchema schema = geardyn::config::hbmSchema();
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const auto config = geardyn::io::parseConfig(text, "fuzz.toml", schema);
+    const auto config = geardyn::config::parseConfig(text, "fuzz.toml", schema);
     if (config.integer("hbm.harmonics") > 8 || config.integer("hbm.samples_per_period") > 128 ||
         config.integer("mesh_stiffness.potential_energy.table_points") > 1025) {
       return 0;
     }
-    const auto build = geardyn::io::buildGearPairModel(config, false);
+    const auto build = geardyn::config::buildGearPairModel(config, false);
     geardyn::GearPairModelSpec spec = build.spec;
     if (!(spec.mesh_frequency > 0.0)) spec.mesh_frequency = build.natural_frequency / 7.0;
     const geardyn::GearPairModel model(spec);
-    auto options = geardyn::io::timeResponseOptionsFromConfig(config);
+    auto options = geardyn::config::timeResponseOptionsFromConfig(config);
     options.max_periods = 4;
     options.min_periods = 2;
     options.steps_per_period = 64;
@@ -33,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.output_periods = 1;
     const auto response = geardyn::solveTimeResponse(model, options);
     volatile double sink = response.x.empty() ? 0.0 : response.x.back();
-    geardyn::HarmonicBalance hbm(model, geardyn::io::harmonicBalanceOptionsFromConfig(config));
+    geardyn::HarmonicBalance hbm(model, geardyn::config::harmonicBalanceOptionsFromConfig(config));
     geardyn::HarmonicBalancePoint point;
     point.omega = 2.0 * 3.141592653589793 * spec.mesh_frequency;
     point.q = hbm.linearGuess(point.omega);

@@ -6,24 +6,25 @@
 #include <cstdint>
 #include <string_view>
 
+#include "geardyn/config/config.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/config/stiffness_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/config.h"
-#include "geardyn/io/geometry_io.h"
-#include "geardyn/io/stiffness_io.h"
+#include "geardyn/io/stiffness_results.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const geardyn::io::ConfigSchema schema = geardyn::io::stiffnessSchema();
+  static const geardyn::config::ConfigSchema schema = geardyn::config::stiffnessSchema();
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     // Keep each input cheap: at most 64 output positions and 4097 table nodes.
-    const auto config = geardyn::io::parseConfig(text, "fuzz.toml", schema);
+    const auto config = geardyn::config::parseConfig(text, "fuzz.toml", schema);
     if (config.integer("mesh_stiffness.positions") > 64 ||
         config.integer("mesh_stiffness.potential_energy.table_points") > 4097 ||
         config.integer("mesh_stiffness.potential_energy.slices") > 200) {
       return 0;
     }
-    const geardyn::GearPair pair(geardyn::io::gearPairSpecFromConfig(config));
-    const auto models = geardyn::io::buildMeshStiffnessModels(config, pair);
+    const geardyn::GearPair pair(geardyn::config::gearPairSpecFromConfig(config));
+    const auto models = geardyn::config::buildMeshStiffnessModels(config, pair);
     const auto results = geardyn::io::stiffnessResultsJson(config, pair, models);
     volatile std::size_t length =
         results.dump().size() +
