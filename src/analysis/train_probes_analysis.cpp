@@ -152,7 +152,17 @@ std::vector<ProbeStation> probeStations(const GearTrainModel& model,
         } catch (const std::exception&) {
           throw InputError(key, "\"" + given + "\"", "\"shaft@position\" with a position in m");
         }
-        st.body = model.bodyAt(static_cast<int>(i), position, key);
+        try {
+          st.body = model.bodyAt(static_cast<int>(i), position, key);
+        } catch (const InputError& e) {
+          std::vector<std::string> nodes;  // positions from the shaft's first section start
+          for (int b : model.shaftNodes(static_cast<int>(i)))
+            nodes.push_back(
+                fmt::format("{:g}", model.bodies()[b].axial - spec.shafts[i].axial_offset));
+          throw InputError(
+              key, "\"" + given + "\"",
+              fmt::format("{} (nodes at [{}] m)", e.allowed(), fmt::join(nodes, ", ")));
+        }
       }
     }
     for (const TrainBearingSpec& b : spec.bearings) {
@@ -168,10 +178,17 @@ std::vector<ProbeStation> probeStations(const GearTrainModel& model,
       for (const auto& b : spec.bearings) known.push_back(b.name);
       const auto match = config::closestMatch(name, known);
       throw InputError(key, "\"" + given + "\"",
-                       fmt::format("a shaft (optionally \"shaft@position\"), planet or bearing "
-                                   "name ({}){}",
+                       fmt::format("a shaft (optionally \"shaft@position\") or bearing name "
+                                   "({}){}",
                                    fmt::join(known, ", "),
                                    match ? fmt::format("; did you mean \"{}\"?", *match) : ""));
+    }
+    if (model.rotatingFrame(st.body) >= 0) {
+      throw InputError(key, "\"" + given + "\"",
+                       fmt::format("a body whose translations are in the fixed frame: {} moves in "
+                                   "the rotating carrier frame of its planetary stage (not "
+                                   "supported by probes yet)",
+                                   model.bodies()[st.body].name));
     }
     st.rotation_sign = model.bodies()[st.body].speed_ratio < 0.0 ? -1.0 : 1.0;
     stations.push_back(st);
@@ -182,7 +199,6 @@ std::vector<ProbeStation> probeStations(const GearTrainModel& model,
 void checkTrainProbes(const GearTrainModel& model, const config::Config& analysis, double speed) {
   const auto stations = probeStations(model, analysis);
   if (stations.empty()) return;
-  keyphasorBody(model, analysis, stations);
   const double fs = sampleRate(model, analysis, speed);
   const double highest = highestTracked(model, analysis, speed);
   if (fs <= 2.0 * highest) {
@@ -190,6 +206,22 @@ void checkTrainProbes(const GearTrainModel& model, const config::Config& analysi
                      fmt::format("more than twice the highest tracked frequency ({:.6g} Hz: "
                                  "probes.mesh_harmonics × the fastest mesh frequency)",
                                  highest));
+  }
+  const int key_body = keyphasorBody(model, analysis, stations);
+  if (key_body >= 0) {
+    // The recorded window: time.record_periods common periods of the meshes.
+    const double window = static_cast<double>(analysis.integer("time.record_periods")) /
+                          (trainBaseFrequency(model, 1, 1000000000).ratio * std::abs(speed));
+    const double key_speed = std::abs(model.bodies()[key_body].speed_ratio * speed) / kTwoPi;
+    if (window * key_speed < 2.0) {  // spectrum needs two pulses
+      throw InputError(
+          "time.record_periods", std::to_string(analysis.integer("time.record_periods")),
+          fmt::format("a recorded window of at least two revolutions of the keyphasor shaft "
+                      "({:.6g} s; the window is {:.6g} s: at least {} common periods)",
+                      2.0 / key_speed, window,
+                      std::ceil(2.0 / key_speed / window *
+                                static_cast<double>(analysis.integer("time.record_periods")))));
+    }
   }
   const auto formats = analysis.stringList("probes.formats");
   if (std::find(formats.begin(), formats.end(), "wav") != formats.end() && std::round(fs) != fs) {
@@ -213,12 +245,6 @@ void writeTrainProbes(const GearTrainModel& model, const config::Config& analysi
   const double dt = r.time_step, t0 = r.t(0);
   const double window = r.t(r.t.size() - 1) - t0;
   const auto samples = static_cast<std::size_t>(std::floor(window * fs + 1e-9)) + 1;
-  if (key_body >= 0 && window * key_speed < 2.0) {  // spectrum needs two pulses
-    throw InputError("time.record_periods", std::to_string(analysis.integer("time.record_periods")),
-                     fmt::format("a recorded window of at least two revolutions of the keyphasor "
-                                 "shaft ({:.6g} s; the window is {:.6g} s)",
-                                 2.0 / key_speed, window));
-  }
   const Eigen::MatrixXd& f = quantity == "displacement" ? r.displacement
                              : quantity == "velocity"   ? r.velocity
                                                         : r.acceleration;
@@ -254,10 +280,8 @@ void writeTrainProbes(const GearTrainModel& model, const config::Config& analysi
   }
   Json files = Json::array();
   for (const auto& name : analysis.stringList("probes.formats")) {
-    const auto format = name == "csv"   ? io::RecordFormat::kCsv
-                        : name == "wav" ? io::RecordFormat::kWav
-                                        : io::RecordFormat::kHdf5;
     const std::string file = name == "hdf5" ? "probes.h5" : "probes." + name;
+    const io::RecordFormat format = io::recordFormatOf(file, "probes.formats");
     result.files.push_back({file, [format, record](const std::filesystem::path& path) {
                               io::writeProbeRecord(path, format, record);
                             }});

@@ -22,7 +22,8 @@ struct ProbeStation {
 };
 
 /// The stations of probes.stations (InputError naming the key, the value and the known shafts
-/// and bearings, with a did-you-mean, for an unknown name; a torsional train has no probes).
+/// and bearings, with a did-you-mean, for an unknown name; a torsional train has no probes;
+/// a body in a rotating carrier frame is refused).
 std::vector<ProbeStation> probeStations(const GearTrainModel& model,
                                         const config::Config& analysis);
 

@@ -158,8 +158,9 @@ void addProbesSection(config::ConfigSchema& schema) {
   schema.stringList("probes.stations")
       .defaultValue(nlohmann::ordered_json::array())
       .doc(
-          "probe stations, channels x1, y1, x2, y2, ... in this order: a shaft or planet name "
-          "(a rigid shaft's body), \"shaft@position\" (a flexible shaft's node at that position "
+          "probe stations, channels x1, y1, x2, y2, ... in this order: a shaft name (a rigid "
+          "shaft's body; not a member of a rotating carrier frame), \"shaft@position\" (a flexible "
+          "shaft's node at that position "
           "[m] from its first section start) or a bearing name (its node on its shaft); empty: "
           "no probes. `spectrum` reads two stations: pinion (x1, y1) and gear (x2, y2)");
   schema.string("probes.quantity")

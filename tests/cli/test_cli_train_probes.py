@@ -108,6 +108,13 @@ def test_bad_probe_input_is_named_by_key(tmp_path):
     assert result.returncode == 2
     assert "time.record_periods" in result.stderr and "two revolutions" in result.stderr
 
+    # A flexible shaft's station is one of its nodes; the message lists them (before Newmark).
+    result = run("train", EXAMPLES / "train_two_stage_flexible.toml", "--out", tmp_path / "f",
+                 *quick("probes.stations=[\"intermediate@0.1\", \"output\"]"))
+    assert result.returncode == 2
+    assert "probes.stations = \"intermediate@0.1\"" in result.stderr
+    assert "0.08, 0.104" in result.stderr
+
 
 def test_flexible_shaft_station_and_bearing_station(tmp_path):
     result = run("train", TRAIN, "--out", tmp_path,
