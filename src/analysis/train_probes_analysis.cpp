@@ -127,8 +127,8 @@ Json steadyStateWhirl(const GearTrainModel& model, const config::Config& analysi
 
 }  // namespace
 
-std::vector<ProbeStation> probeStations(const GearTrainModel& model,
-                                        const config::Config& analysis) {
+std::vector<ProbeStation> probeStations(const GearTrainModel& model, const config::Config& analysis,
+                                        double speed) {
   const auto names = analysis.stringList("probes.stations");
   if (!names.empty() && model.spec().dofs == TrainDofs::kTorsional) {
     throw InputError("gearbox.dofs", "\"torsional\"",
@@ -190,14 +190,14 @@ std::vector<ProbeStation> probeStations(const GearTrainModel& model,
                                    "supported by probes yet)",
                                    model.bodies()[st.body].name));
     }
-    st.rotation_sign = model.bodies()[st.body].speed_ratio < 0.0 ? -1.0 : 1.0;
+    st.rotation_sign = model.bodies()[st.body].speed_ratio * speed < 0.0 ? -1.0 : 1.0;
     stations.push_back(st);
   }
   return stations;
 }
 
 void checkTrainProbes(const GearTrainModel& model, const config::Config& analysis, double speed) {
-  const auto stations = probeStations(model, analysis);
+  const auto stations = probeStations(model, analysis, speed);
   if (stations.empty()) return;
   const double fs = sampleRate(model, analysis, speed);
   const double highest = highestTracked(model, analysis, speed);
@@ -233,7 +233,7 @@ void checkTrainProbes(const GearTrainModel& model, const config::Config& analysi
 void writeTrainProbes(const GearTrainModel& model, const config::Config& analysis, double speed,
                       const TrainTimeResponse& r, const TrainSteadyState* steady,
                       AnalysisResult& result, std::string& text) {
-  const auto stations = probeStations(model, analysis);
+  const auto stations = probeStations(model, analysis, speed);
   if (stations.empty()) return;
   const double fs = sampleRate(model, analysis, speed);
   const std::string quantity = analysis.string("probes.quantity");

@@ -14,18 +14,18 @@
 namespace geardyn::analysis::detail {
 
 /// A probe station: the body whose (y, z) translation the probe reads, and the sign of its
-/// shaft's rotation about the train's x axis (+1 or −1).
+/// shaft's rotation about the train's x axis at the input speed (+1 or −1).
 struct ProbeStation {
   std::string name;  ///< as given in probes.stations
   int body = 0;
   double rotation_sign = 1.0;
 };
 
-/// The stations of probes.stations (InputError naming the key, the value and the known shafts
-/// and bearings, with a did-you-mean, for an unknown name; a torsional train has no probes;
-/// a body in a rotating carrier frame is refused).
-std::vector<ProbeStation> probeStations(const GearTrainModel& model,
-                                        const config::Config& analysis);
+/// The stations of probes.stations at input speed `speed` [rad/s] (InputError naming the key, the
+/// value and the known shafts and bearings, with a did-you-mean, for an unknown name; a torsional
+/// train has no probes; a body in a rotating carrier frame is refused).
+std::vector<ProbeStation> probeStations(const GearTrainModel& model, const config::Config& analysis,
+                                        double speed);
 
 /// Checks [probes] before the time run (stations, keyphasor shaft, sample rate against twice the
 /// highest tracked frequency, an integer rate for WAV) so that bad input fails before Newmark.

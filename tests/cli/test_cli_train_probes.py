@@ -22,11 +22,11 @@ def quick(*settings):
     return args
 
 
-def simulate(out, steps, quantity="displacement", file_format="wav"):
+def simulate(out, steps, quantity="displacement", file_format="wav", speed_rpm=1500.0):
     """Train time run writing probes, then spectrum on its record; both summaries' results."""
     train = run("train", TRAIN, "--out", out / "train",
                 *quick(f"time.steps_per_mesh_period={steps}", f"probes.quantity=\"{quantity}\"",
-                       f"probes.formats=[\"{file_format}\"]"))
+                       f"probes.formats=[\"{file_format}\"]", f"time.speed_rpm={speed_rpm}"))
     assert train.returncode == 0, train.stderr
     record = out / "train" / ("probes.h5" if file_format == "hdf5" else f"probes.{file_format}")
     spectrum = run("spectrum", SPECTRUM, "--out", out / "spectrum",
@@ -54,11 +54,17 @@ def whirl_differences(train, spectrum):
     return worst, compared
 
 
-@pytest.mark.parametrize("quantity,file_format", [("displacement", "wav"), ("velocity", "csv"),
-                                                  ("acceleration", "hdf5")])
+@pytest.mark.parametrize("quantity,file_format,speed_rpm",
+                         [("displacement", "wav", 1500.0), ("velocity", "csv", 1500.0),
+                          ("acceleration", "hdf5", 1500.0), ("displacement", "wav", -1500.0)])
 def test_full_spectrum_of_the_records_is_the_frequency_domain_steady_state(
-        tmp_path, quantity, file_format):
-    train, spectrum = simulate(tmp_path, 512, quantity, file_format)
+        tmp_path, quantity, file_format, speed_rpm):
+    # At −1500 rpm every shaft turns the other way: the channels' y sign flips with it, so that
+    # forward stays each shaft's own rotation sense.
+    train, spectrum = simulate(tmp_path, 512, quantity, file_format, speed_rpm)
+    sign = "" if speed_rpm > 0 else "-"
+    assert train["probes"]["channels"][0]["y"] == f"y1 = {'-' if not sign else ''}intermediate.z"
+    assert train["probes"]["channels"][1]["y"] == f"y2 = {sign}output.z"
     assert train["probes"]["quantity"] == quantity
     assert spectrum["keyphasor"]["speed_rpm"] == pytest.approx(1500.0 * 23.0 / 51.0, rel=1e-9)
     worst, compared = whirl_differences(train, spectrum)
