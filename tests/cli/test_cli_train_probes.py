@@ -132,3 +132,17 @@ def test_flexible_shaft_station_and_bearing_station(tmp_path):
     assert channels[0]["body"] == "intermediate"
     assert channels[0]["y"] == "y1 = -intermediate.z"
     assert channels[1]["y"] == "y2 = output.z"
+
+
+def test_noise_is_seeded_and_recorded(tmp_path):
+    records = []
+    for name, seed in (("a", 7), ("b", 7), ("c", 8)):
+        out = tmp_path / name
+        result = run("train", TRAIN, "--out", out,
+                     *quick("probes.noise_level=0.05", f"probes.seed={seed}",
+                            "probes.formats=[\"csv\"]", "time.steps_per_mesh_period=64"))
+        assert result.returncode == 0, result.stderr
+        summary = json.loads((out / "summary.json").read_text())
+        assert summary["seed"] == seed and summary["results"]["probes"]["seed"] == seed
+        records.append((out / "probes.csv").read_text())
+    assert records[0] == records[1] and records[0] != records[2]
