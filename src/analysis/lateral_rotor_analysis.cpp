@@ -13,6 +13,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
 #include "geardyn/io/rotor_results.h"
+#include "geardyn/signal/gear_whirl.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -35,22 +36,6 @@ void requireNyquist(const LateralRotorModel& model, double sample_rate, const st
                                  "highest mesh harmonic ({:.6g} Hz)",
                                  sample_rate, highest));
   }
-}
-
-/// A once-per-revolution keyphasor: 0 → 1 at each pinion revolution (pinion angle ω_p t = 2πk),
-/// with linear edges 4 samples wide centred on the revolution, high for 10 % of a revolution
-/// (an eddy-current probe over a key: the crossing of 0.5 is recovered exactly by linear
-/// interpolation).
-double keyphasorAt(double t, double speed, double sample_rate) {
-  double phase = std::fmod(t * speed, 1.0);
-  if (phase < 0.0) phase += 1.0;
-  const double since = phase / speed, to_next = (1.0 - phase) / speed;
-  const double ramp = 4.0 / sample_rate, high = 0.1 / speed;
-  if (to_next < ramp / 2) return 0.5 - to_next / ramp;
-  if (since < ramp / 2) return 0.5 + since / ramp;
-  if (since < high) return 1.0;
-  if (since < high + ramp) return 1.0 - (since - high) / ramp;
-  return 0.0;
 }
 
 /// The four probe channels x₁, y₁, x₂, y₂ over the steady window of a time response.
@@ -293,7 +278,7 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
     record.channels.assign(5, std::vector<double>(times.size()));
     for (std::size_t k = 0; k < times.size(); ++k) {
       for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);
-      record.channels[4][k] = keyphasorAt(times[k], s.pinion_speed, fs);
+      record.channels[4][k] = keyphasorSignal(times[k], s.pinion_speed, fs);
     }
     const double measurement_noise = config.real("measurement.noise_level");
     if (measurement_noise > 0.0) {

@@ -24,6 +24,7 @@
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/units.h"
 #include "train_nonlinear_analysis.h"
+#include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
 
 namespace geardyn::analysis {
@@ -321,6 +322,7 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
             io::RunSummary& summary, std::string& text) {
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
+  detail::checkTrainProbes(model, analysis, speed);
   const TrainTimeResponse r =
       solveTrainTimeResponse(model, speed, config::trainTimeOptionsFromConfig(analysis));
   const double seconds = secondsSince(start);
@@ -404,6 +406,7 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
                              {"mesh_force_harmonics", harmonics}};
   text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s\n", r.steps, r.time_step,
                       seconds);
+  detail::writeTrainProbes(model, analysis, speed, r, compare ? &s : nullptr, result, text);
   return 0;
 }
 

@@ -147,6 +147,60 @@ void addNonlinearSection(config::ConfigSchema& schema) {
       .doc("common periods before a check that has not settled is reported");
 }
 
+/// [probes]: simulated probe records of the `time` analysis (train_probes_analysis.cpp).
+void addProbesSection(config::ConfigSchema& schema) {
+  schema.section("probes",
+                 "Simulated probe records of the time analysis's steady-state window (x/y at each "
+                 "station, then a keyphasor) in the forms `geardyn spectrum` reads. Channel x_i is "
+                 "the station's global y translation and y_i its global z translation times the "
+                 "sign of its shaft's rotation about x, so that x_i -> y_i turns with the shaft "
+                 "and forward whirl (spectrum's probe frame) is the shaft's own rotation sense.");
+  schema.stringList("probes.stations")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc(
+          "probe stations, channels x1, y1, x2, y2, ... in this order: a shaft name (a rigid "
+          "shaft's body; not a member of a rotating carrier frame), \"shaft@position\" (a flexible "
+          "shaft's node at that position "
+          "[m] from its first section start) or a bearing name (its node on its shaft); empty: "
+          "no probes. `spectrum` reads two stations: pinion (x1, y1) and gear (x2, y2)");
+  schema.string("probes.quantity")
+      .choices({"displacement", "velocity", "acceleration"})
+      .defaultValue("displacement")
+      .doc("what the probes measure [m, m/s, m/s²]");
+  schema.integer("probes.mesh_harmonics")
+      .min(1)
+      .max(50)
+      .defaultValue(3)
+      .doc(
+          "harmonics 1..n of every mesh frequency tracked: the Nyquist check, the default "
+          "sample rate and the frequency-domain whirl reported beside the records");
+  schema.real("probes.sample_rate")
+      .unit("Hz")
+      .positive()
+      .optional()
+      .doc(
+          "default: 8 × the highest tracked frequency (n × the fastest mesh frequency), rounded "
+          "up to whole Hz (a WAV header holds an integer rate): 8 samples per cycle of the "
+          "highest order draw its orbit; the whirl extraction itself needs only > 2×");
+  schema.stringList("probes.formats")
+      .choices({"csv", "wav", "hdf5"})
+      .defaultValue(nlohmann::ordered_json::array({"csv"}))
+      .doc("files to write: probes.csv / probes.wav (64-bit float) / probes.h5");
+  schema.string("probes.keyphasor")
+      .defaultValue("")
+      .doc(
+          "the shaft whose once-per-revolution pulse (rising through 0.5 at its rigid-body angle "
+          "2πk from t = 0) is the last channel; empty: the first station's shaft; \"none\": no "
+          "keyphasor");
+  schema.real("probes.noise_level")
+      .unit("-")
+      .min(0.0)
+      .max(10.0)
+      .defaultValue(0.0)
+      .doc("white Gaussian noise in the probe channels: level x std(channel) (not the keyphasor)");
+  schema.integer("probes.seed").min(0).defaultValue(1).doc("seed of the probe noise");
+}
+
 /// [runup]: Newmark along a linear input-speed ramp with order tracking (train_runup.h).
 void addRunUpSection(config::ConfigSchema& schema) {
   schema.section("runup",
@@ -310,6 +364,7 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(200)
       .defaultValue(20)
       .doc("harmonics of the frequency-domain steady state it is compared with");
+  addProbesSection(schema);
   addRunUpSection(schema);
   addNonlinearSection(schema);
   config::addOutputSection(schema);
@@ -342,6 +397,7 @@ TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis) {
   o.steps_per_mesh_period = static_cast<int>(analysis.integer("time.steps_per_mesh_period"));
   o.record_periods = static_cast<int>(analysis.integer("time.record_periods"));
   o.start_from_static = analysis.boolean("time.start_from_static");
+  o.record_rates = !analysis.stringList("probes.stations").empty();
   return o;
 }
 

@@ -172,4 +172,16 @@ KeyphasorPulses findKeyphasorPulses(const std::vector<double>& keyphasor, double
   return out;
 }
 
+double keyphasorSignal(double t, double speed, double sample_rate) {
+  double phase = std::fmod(t * speed, 1.0);
+  if (phase < 0.0) phase += 1.0;
+  const double since = phase / speed, to_next = (1.0 - phase) / speed;
+  const double ramp = 4.0 / sample_rate, high = 0.1 / speed;
+  if (to_next < ramp / 2) return 0.5 - to_next / ramp;
+  if (since < ramp / 2) return 0.5 + since / ramp;
+  if (since < high) return 1.0;
+  if (since < high + ramp) return 1.0 - (since - high) / ramp;
+  return 0.0;
+}
+
 }  // namespace geardyn

@@ -269,6 +269,10 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
   r.t.resize(recorded);
   r.displacement.resize(recorded, n);
   r.mesh_force.resize(recorded, static_cast<Eigen::Index>(model.meshes().size()));
+  if (options.record_rates) {
+    r.velocity.resize(recorded, n);
+    r.acceleration.resize(recorded, n);
+  }
   for (long long k = 1; k <= steps; ++k) {
     stepper.step();
     if (k % per_period == 0 && !stepper.displacement().allFinite()) {
@@ -281,6 +285,10 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
       const long long i = k - first - 1;
       r.t(i) = stepper.time();
       r.displacement.row(i) = stepper.displacement().transpose();
+      if (options.record_rates) {
+        r.velocity.row(i) = stepper.velocity().transpose();
+        r.acceleration.row(i) = stepper.acceleration().transpose();
+      }
       for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) {
         r.mesh_force(i, m) = stepper.meshForce(static_cast<int>(m));
       }

@@ -91,4 +91,11 @@ KeyphasorPulses findKeyphasorPulses(const std::vector<double>& keyphasor, double
                                     double start_time, double threshold = 0.0 / 0.0,
                                     double max_speed_variation = 0.05);
 
+/// A simulated once-per-revolution keyphasor at time t [s] of a shaft turning at `speed`
+/// [rev/s] (angle 2π·speed·t): 0 → 1 at each revolution, with linear edges 4 samples (of
+/// `sample_rate` [Hz]) wide centred on the revolution, high for 10 % of a revolution (an
+/// eddy-current probe over a key: findKeyphasorPulses recovers the crossing of 0.5 exactly by
+/// linear interpolation).
+double keyphasorSignal(double t, double speed, double sample_rate);
+
 }  // namespace geardyn

@@ -49,13 +49,19 @@ struct TrainTimeOptions {
   /// Common periods recorded at the end (the steady-state window).
   int record_periods = 1;
   bool start_from_static = true;  ///< q(0) from the mean static deflection, else rest
+  /// Also record q̇ and q̈ at every recorded step (simulated velocity/acceleration probes, and
+  /// the cubic Hermite interpolation of q between steps).
+  bool record_rates = false;
   void validate() const;
 };
 
 struct TrainTimeResponse {
   Eigen::VectorXd t;             ///< recorded times [s]
   Eigen::MatrixXd displacement;  ///< rows: recorded samples, cols: DOFs
-  Eigen::MatrixXd mesh_force;    ///< rows: samples, cols: meshes [N]
+  /// q̇ [m/s, rad/s] and q̈ [m/s², rad/s²] like `displacement` (TrainTimeOptions::record_rates;
+  /// else empty).
+  Eigen::MatrixXd velocity, acceleration;
+  Eigen::MatrixXd mesh_force;  ///< rows: samples, cols: meshes [N]
   double time_step = 0.0;
   long long steps = 0;
   std::string status = "completed";  ///< or "diverged"
@@ -99,6 +105,8 @@ class TrainNewmarkStepper {
   /// The input speed Ω at the current time [rad/s].
   double speed() const noexcept { return speed_; }
   const Eigen::VectorXd& displacement() const noexcept { return q_; }
+  const Eigen::VectorXd& velocity() const noexcept { return v_; }
+  const Eigen::VectorXd& acceleration() const noexcept { return a_; }
   /// k_m(φ_m)(v_mᵀ q − e_m(φ_m)) [N] at the current state.
   double meshForce(int mesh) const;
   /// Factorisations of the Newmark matrix so far (1 at constant speed).
