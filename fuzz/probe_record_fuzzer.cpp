@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const std::string extensions[] = {".wav", ".csv"};
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() /
-      ("geardyn_fuzz_" + std::to_string(::getpid()) + extensions[data[0] % 2]);
+      ("libfuzzer_input_" + std::to_string(::getpid()) + extensions[data[0] % 2]);
   {
     std::ofstream out(path, std::ios::binary);
     out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));

@@ -24,7 +24,7 @@ namespace {
 
 geardyn::io::rexs::Document readZipped(std::string_view bytes) {
   const std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     ("geardyn_fuzz_" + std::to_string(::getpid()) + ".rexsz");
+                                     ("libfuzzer_input_" + std::to_string(::getpid()) + ".rexsz");
   {
     std::ofstream out(path, std::ios::binary);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));

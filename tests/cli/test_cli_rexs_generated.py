@@ -112,3 +112,28 @@ def test_hostile_files_are_refused_before_they_are_read_whole(tmp_path):
     refused = run("train", static_analysis(tmp_path, many), "--out", tmp_path / "many")
     assert refused.returncode == 2
     assert "planets = 1000000" in refused.stderr and "[1, 32]" in refused.stderr, refused.stderr
+
+
+NOT_A_GEAR = """<?xml version="1.0"?>
+<model applicationId="t" applicationVersion="1" version="1.6"><relations>
+<relation id="1" type="assembly"><ref id="1" role="assembly"/><ref id="3" role="part"/></relation>
+<relation id="2" type="assembly"><ref id="2" role="assembly"/><ref id="4" role="part"/></relation>
+<relation id="3" type="stage"><ref id="5" role="stage"/><ref id="3" role="gear_1"/><ref id="4" role="gear_2"/></relation>
+</relations><components>
+<component id="1" name="Input" type="shaft"/><component id="2" name="Output" type="shaft"/>
+<component id="3" name="Pinion" type="cylindrical_gear"><attribute id="number_of_teeth" unit="none">20</attribute>
+<attribute id="normal_module" unit="mm">3</attribute><attribute id="face_width" unit="mm">30</attribute></component>
+<component id="4" name="Wheel" type="cylunitindrical_gear"/>
+<component id="5" name="Stage" type="cylindrical_stage"><attribute id="center_distance" unit="mm">92</attribute></component>
+</components></model>
+"""
+
+
+def test_a_stage_whose_gear_is_not_a_gear_names_the_relation(tmp_path):
+    """Found by the REXS fuzzer (fuzz/rexs_fuzzer.cpp): a stage relation whose gear_2 is a
+    component of another type ended in std::out_of_range (exit 1), not an input error."""
+    path = tmp_path / "not_a_gear.rexs"
+    path.write_text(NOT_A_GEAR)
+    refused = run("import", path, "-o", tmp_path / "x.toml")
+    assert refused.returncode == 2, refused.stderr
+    assert 'gear_2 = component 4 (cylunitindrical_gear "Wheel")' in refused.stderr, refused.stderr

@@ -277,9 +277,19 @@ RexsImport importRexsGearbox(const Document& doc, const RexsImportOptions& optio
     if (auto a = read.real(*st, "center_distance")) {
       // A centre distance within 1 µm of the zero-backlash one is that one (files round it;
       // geardyn refuses a distance below it, where the teeth would overlap).
+      // Both ends must be gears on shafts (a fuzzed file named another component: map::at
+      // threw std::out_of_range, an exit 1 instead of 2).
+      const auto gearOf = [&](const char* role, int g) -> const GearSpec& {
+        const auto found = gear_specs.find(g);
+        if (found == gear_specs.end())
+          io::rexs::throwAttributeError(*st, "(stage relation)",
+                                        fmt::format("{} = {}", role, model.component(g).label()),
+                                        "a cylindrical_gear or ring_gear on a shaft");
+        return found->second;
+      };
       GearPairSpec pair;
-      pair.pinion = gear_specs.at(g1);
-      pair.gear = gear_specs.at(g2);
+      pair.pinion = gearOf("gear_1", g1);
+      pair.gear = gearOf("gear_2", g2);
       const double tight = ring ? *a : GearPair(pair).centreDistance();
       if (!ring && *a < tight && tight - *a <= 1e-6) {
         t.add("# centre_distance", tomlReal(*a),
