@@ -419,7 +419,7 @@ std::pair<double, double> sectionSpeeds(const config::Config& analysis, const st
                                         double operating, double min_fraction,
                                         double max_fraction) {
   const double op = std::abs(operating);
-  for (const std::string key : {s + ".speed_min_rpm", s + ".speed_max_rpm"}) {
+  for (const std::string& key : {s + ".speed_min_rpm", s + ".speed_max_rpm"}) {
     if (!analysis.has(key) && op == 0.0) {
       throw InputError(key, "",
                        "required when the operating speed is 0 rpm (the default range is "

@@ -11,8 +11,11 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
+#include "geardyn/units.h"
 
 namespace geardyn {
+
+using units::kRpm;
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Damping ratios below this are round-off of an undamped mode (the eigensolver's accuracy).
@@ -125,7 +128,7 @@ TrainRunUpResponse solveTrainRunUp(const GearTrainModel& model, const TrainRunUp
       if (!stepper.displacement().allFinite()) {
         r.status = "diverged";
         r.message = fmt::format("Newmark diverged at t = {:.6g} s ({:.1f} rpm)", stepper.time(),
-                                stepper.speed() * 30.0 / std::numbers::pi);
+                                stepper.speed() / kRpm);
         r.steps = k;
         r.factorisations = stepper.factorisations();
         return r;

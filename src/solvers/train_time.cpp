@@ -5,16 +5,15 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
+#include "geardyn/units.h"
 
 namespace geardyn {
-namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-}
+
+using units::kRpm;
 
 void TrainTimeOptions::validate() const {
   newmark.validate();
@@ -37,10 +36,10 @@ void TrainTimeOptions::validate() const {
 
 void TrainSpeedRamp::validate() const {
   if (!std::isfinite(start) || !std::isfinite(end) || start * end < 0.0) {
-    throw InputError("runup.speed_max_rpm", fmt::format("{:g} rpm", end * 30.0 / std::numbers::pi),
+    throw InputError("runup.speed_max_rpm", fmt::format("{:g} rpm", end / kRpm),
                      fmt::format("a speed of the same sign as runup.speed_min_rpm = {:g} rpm (the "
                                  "train does not reverse)",
-                                 start * 30.0 / std::numbers::pi));
+                                 start / kRpm));
   }
   if (!(duration > 0.0) || !std::isfinite(duration)) {
     throw InputError("runup.duration", fmt::format("{:g} s", duration), "a duration > 0 s");

@@ -123,18 +123,19 @@ void PotentialEnergyMeshStiffness::assessFoundationFit() {
   const std::string& pinion = pinion_beam_.foundationFitExtrapolation();
   const std::string& gear = gear_beam_.foundationFitExtrapolation();
   if (pinion.empty() && gear.empty()) return;
-  const auto trapezoid = [&] {
+  const int n = static_cast<int>(values_.size());
+  const auto trapezoid = [n](const auto& k_at) {
     double sum = 0.0;
-    const int n = static_cast<int>(values_.size());
-    for (int i = 0; i < n; ++i)
-      sum += (i == 0 || i == n - 1 ? 0.5 : 1.0) * pairStiffnessPerWidthExact(s_begin_ + i * step_);
+    for (int i = 0; i < n; ++i) sum += (i == 0 || i == n - 1 ? 0.5 : 1.0) * k_at(i);
     return sum;
   };
-  const double as_fitted = trapezoid();
+  // As fitted: the table already holds k′ on the grid.
+  const double as_fitted = trapezoid([&](int i) { return values_[i]; });
   const ToothBeam pinion_fitted = pinion_beam_, gear_fitted = gear_beam_;
   pinion_beam_ = pinion_fitted.withFoundationFitClamped();
   gear_beam_ = gear_fitted.withFoundationFitClamped();
-  const double held = trapezoid();
+  const double held =
+      trapezoid([&](int i) { return pairStiffnessPerWidthExact(s_begin_ + i * step_); });
   pinion_beam_ = pinion_fitted;
   gear_beam_ = gear_fitted;
 

@@ -125,7 +125,7 @@ ToothBeam::ToothBeam(const GearPair& pair, Member member, ToothRoot root, Founda
       lmpq_[x] = c[0] / (t * t) + c[1] * h * h + c[2] * h / t + c[3] / t + c[4] * h + c[5];
       if (lmpq_[x] < kSainsotRange[x][0] || lmpq_[x] > kSainsotRange[x][1]) {
         extrapolated_ +=
-            fmt::format("{}{} = {:.4g} (data {} to {})", extrapolated_.empty() ? "" : ", ",
+            fmt::format("{}{} = {:.5g} (data {} to {})", extrapolated_.empty() ? "" : ", ",
                         kNames[x], lmpq_[x], kSainsotRange[x][0], kSainsotRange[x][1]);
       }
     }

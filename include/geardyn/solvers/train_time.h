@@ -88,7 +88,6 @@ struct TrainSpeedRamp {
 inline constexpr double kTrainSpeedTolerance = 1e-3;
 
 /// One Newmark step at a time (for benchmarks, and the building block of the solvers).
-
 class TrainNewmarkStepper {
  public:
   /// `sparse`: force the sparse (true) or dense (false) path; absent: sparse from

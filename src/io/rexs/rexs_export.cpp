@@ -102,13 +102,13 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
                      s["diametral_inertia"].get<double>() != 0)) {
       double length = 0.0;
       for (const auto& l : s["section_lengths"]) length += l.get<double>();
-      const int lumped = w.add(
-          "additional_mass", name + " lumped mass",
-          {real("u_coordinate_on_shaft", "mm", 0.5 * length * 1000),
-           real("mass_of_component", "kg", s["mass"]),
-           real("moment_of_inertia_u_axis", "kg m^2", s["polar_inertia"]),
-           real("moment_of_inertia_v_axis", "kg m^2", s["diametral_inertia"]),
-           real("moment_of_inertia_w_axis", "kg m^2", s["diametral_inertia"])});
+      const int lumped =
+          w.add("additional_mass", name + " lumped mass",
+                {real("u_coordinate_on_shaft", "mm", 0.5 * length * 1000),
+                 real("mass_of_component", "kg", s["mass"]),
+                 real("moment_of_inertia_u_axis", "kg m^2", s["polar_inertia"]),
+                 real("moment_of_inertia_v_axis", "kg m^2", s["diametral_inertia"]),
+                 real("moment_of_inertia_w_axis", "kg m^2", s["diametral_inertia"])});
       w.part(id, "shaft", lumped, "additional_mass");
     }
   }
