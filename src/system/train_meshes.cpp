@@ -82,23 +82,116 @@ PairGeometry internalPair(const GearSpec& pinion, const GearSpec& ring, bool rin
   return g;
 }
 
+/// The body of spec.gears[g] (a flexible shaft's node at its position).
+int bodyOfGear(const GearTrainModel& model, const GearTrainSpec& spec, int g) {
+  return detail::bodyAtOf(model, spec.gears[g].shaft, "gears." + spec.gears[g].name + ".shaft",
+                          spec.gears[g].position, "gears." + spec.gears[g].name + ".position");
+}
+
+/// A mesh between bodies a and b with loaded flank σ = +1: its geometry, pitch point and
+/// transverse line of action (see the file comment).
+TrainMesh placedMesh(const std::vector<TrainBody>& bodies, std::string name, TrainMeshKind kind,
+                     int a, int b, int za, int zb, const PairGeometry& g, bool ring_is_a) {
+  TrainMesh m;
+  m.name = std::move(name);
+  m.kind = kind;
+  m.body_a = a, m.body_b = b, m.teeth_a = za, m.teeth_b = zb;
+  m.centre_distance = g.centre_distance;
+  m.pressure_angle = g.pressure_angle;
+  m.base_helix_angle = g.base_helix;
+  m.base_radius_a = g.rb_a, m.base_radius_b = g.rb_b;
+  m.contact_ratio = g.contact_ratio;
+  const Eigen::Vector2d e = (bodies[b].centre - bodies[a].centre).normalized();
+  const bool internal = kind == TrainMeshKind::kInternal || kind == TrainMeshKind::kRingPlanet;
+  const bool b_is_ring = internal && !ring_is_a;
+  // Pitch point: on the far side of the pinion from a ring's centre.
+  m.pitch_point = b_is_ring ? Eigen::Vector2d(bodies[a].centre - g.rw_a * e)
+                            : Eigen::Vector2d(bodies[a].centre + g.rw_a * e);
+  m.normal = std::cos(g.pressure_angle) * Eigen::Vector2d(-e.y(), e.x()) +
+             std::sin(g.pressure_angle) * (internal ? -e : e);
+  return m;
+}
+
+/// The mesh's stiffness, transmission error, damping ratio and contact, checked (InputError
+/// naming `key`).
+void setMeshModel(TrainMesh& m, const std::shared_ptr<const MeshStiffness>& stiffness,
+                  const TransmissionError& error, double zeta, const TrainMeshContact& contact,
+                  const std::string& key) {
+  const bool internal = m.kind == TrainMeshKind::kInternal || m.kind == TrainMeshKind::kRingPlanet;
+  if (!stiffness) throw InputError(key + ".stiffness", "", "a mesh-stiffness model");
+  m.stiffness = stiffness;
+  m.mean_stiffness = summarizeMeshStiffness(*stiffness, 0).mean;
+  if (!(m.mean_stiffness > 0.0) || !std::isfinite(m.mean_stiffness)) {
+    throw InputError(key + ".stiffness", fmt::format("{:g} N/m mean", m.mean_stiffness),
+                     "a mesh stiffness with a positive mean");
+  }
+  if (!(zeta >= 0.0) || !std::isfinite(zeta)) {
+    throw InputError(key + ".damping_ratio", fmt::format("{:g}", zeta), "a ratio >= 0");
+  }
+  m.transmission_error = error;
+  m.damping_ratio = zeta;
+  if (!(contact.backlash >= 0.0) || !std::isfinite(contact.backlash) ||
+      (contact.law == ContactLaw::kBacklash && !(contact.backlash > 0.0))) {
+    throw InputError(key + ".backlash", fmt::format("{:g} m", contact.backlash),
+                     contact.law == ContactLaw::kBacklash
+                         ? "a backlash > 0 m (contact = \"backlash\")"
+                         : "a backlash >= 0 m");
+  }
+  if (contact.tooth_pairs) {
+    if (internal) {
+      throw InputError(key + ".contact", "\"tooth_pairs\"",
+                       "linear, one_sided or backlash on a ring (internal) mesh: the loaded "
+                       "tooth contact is written for external pairs");
+    }
+    if (contact.law != ContactLaw::kOneSided || contact.tooth_pairs->count() < 1) {
+      throw InputError(key + ".contact", "\"tooth_pairs\"",
+                       "at least one one-sided contact element and no backlash");
+    }
+  }
+  m.contact = contact;
+}
+
 }  // namespace
 
-void GearTrainModel::buildMeshes() {
-  const bool planar = spec_.dofs == TrainDofs::kPlanar;
-  std::vector<SpeedConstraint> constraints;
-  auto body_of_gear = [&](int g) {
-    return detail::bodyAtOf(*this, spec_.gears[g].shaft, "gears." + spec_.gears[g].name + ".shaft",
-                            spec_.gears[g].position, "gears." + spec_.gears[g].name + ".position");
-  };
-
-  // --- fixed-axis meshes: geometry and kinematic constraints ---------------------------------
-  struct Pending {
-    int ga, gb, ba, bb;
+/// What the steps of buildMeshes hand on: the geometry of every fixed-axis mesh and planetary
+/// stage, and the speed constraints of the kinematics.
+struct GearTrainModel::MeshLayout {
+  struct FixedMesh {
+    int ga, gb, ba, bb;  // gears and bodies of members a and b
     PairGeometry geometry;
     TrainMeshKind kind;
   };
-  std::vector<Pending> fixed;
+  struct Stage {
+    int sun, ring, carrier, sun_gear, ring_gear;  // bodies; gears
+    PairGeometry sun_planet, ring_planet;
+    std::vector<double> angles;  // planet position angles [rad]
+  };
+  std::vector<FixedMesh> fixed;
+  std::vector<Stage> stages;
+  std::vector<SpeedConstraint> constraints;
+};
+
+void GearTrainModel::buildMeshes() {
+  MeshLayout layout;
+  addFixedAxisMeshGeometry(layout);
+  addPlanetaryStageGeometry(layout);
+  solveTrainKinematics(layout);
+  placeShaftCentres(layout);
+  createMeshes(layout);
+  orientMeshesByLoad();
+  // The ring-to-sun phase of each planet, from its loaded flanks (system/planet_phasing.h).
+  for (std::size_t s = 0; s < layout.stages.size(); ++s) {
+    const MeshLayout::Stage& g = layout.stages[s];
+    const PlanetaryStageSpec& st = spec_.stages[s];
+    addRingSunPhases(
+        meshes_, bodies_, static_cast<int>(s), bodies_[g.carrier].speed_ratio,
+        planetMeshGeometry(spec_.gears[g.sun_gear].gear, st.planet, spec_.gears[g.ring_gear].gear,
+                           g.sun_planet.centre_distance, "planetary." + st.name));
+  }
+}
+
+/// Fixed-axis meshes: their geometry and kinematic constraints.
+void GearTrainModel::addFixedAxisMeshGeometry(MeshLayout& layout) {
   for (const TrainMeshSpec& m : spec_.meshes) {
     const std::string key = "meshes." + m.name;
     if (m.gear_a == m.gear_b) {
@@ -106,7 +199,7 @@ void GearTrainModel::buildMeshes() {
     }
     const int ga = detail::gearIndexOf(spec_, m.gear_a, key + ".gears");
     const int gb = detail::gearIndexOf(spec_, m.gear_b, key + ".gears");
-    const int ba = body_of_gear(ga), bb = body_of_gear(gb);
+    const int ba = bodyOfGear(*this, spec_, ga), bb = bodyOfGear(*this, spec_, gb);
     if (spec_.gears[ga].shaft == spec_.gears[gb].shaft) {
       throw InputError(key + ".gears", fmt::format("[\"{}\", \"{}\"]", m.gear_a, m.gear_b),
                        fmt::format("gears on two different shafts: both sit on shaft \"{}\"",
@@ -119,31 +212,29 @@ void GearTrainModel::buildMeshes() {
     if (!std::isfinite(m.position_angle)) {
       throw InputError(key + ".position_angle_deg", "", "a finite angle");
     }
-    Pending p{ga, gb, ba, bb, {}, TrainMeshKind::kExternal};
+    MeshLayout::FixedMesh p{ga, gb, ba, bb, {}, TrainMeshKind::kExternal};
     if (A.internal || B.internal) {
       p.kind = TrainMeshKind::kInternal;
       p.geometry = B.internal ? internalPair(A.gear, B.gear, false, m.centre_distance, key)
                               : internalPair(B.gear, A.gear, true, m.centre_distance, key);
-      constraints.push_back({{ba, bb}, {double(A.gear.teeth), -double(B.gear.teeth)}, key});
+      layout.constraints.push_back({{ba, bb}, {double(A.gear.teeth), -double(B.gear.teeth)}, key});
     } else {
       p.geometry = externalPair(A.gear, B.gear, m.centre_distance, "gears." + A.name,
                                 "gears." + B.name, key, warnings_);
-      constraints.push_back({{ba, bb}, {double(A.gear.teeth), double(B.gear.teeth)}, key});
+      layout.constraints.push_back({{ba, bb}, {double(A.gear.teeth), double(B.gear.teeth)}, key});
     }
-    fixed.push_back(p);
+    layout.fixed.push_back(p);
   }
+}
 
-  // --- planetary stages -------------------------------------------------------------------------
-  struct StageGeometry {
-    int sun, ring, carrier, sun_gear, ring_gear;
-    PairGeometry sun_planet, ring_planet;
-    std::vector<double> angles;
-  };
-  std::vector<StageGeometry> stages;
+/// Planetary stages: sun–planet and ring–planet geometry, planet angles, the planets'
+/// kinematic constraints and the carrier frames.
+void GearTrainModel::addPlanetaryStageGeometry(MeshLayout& layout) {
+  const bool planar = spec_.dofs == TrainDofs::kPlanar;
   for (std::size_t s = 0; s < spec_.stages.size(); ++s) {
     const PlanetaryStageSpec& st = spec_.stages[s];
     const std::string key = "planetary." + st.name;
-    StageGeometry g{};
+    MeshLayout::Stage g{};
     g.sun_gear = detail::gearIndexOf(spec_, st.sun, key + ".sun");
     g.ring_gear = detail::gearIndexOf(spec_, st.ring, key + ".ring");
     if (spec_.gears[g.sun_gear].internal) {
@@ -152,8 +243,8 @@ void GearTrainModel::buildMeshes() {
     if (!spec_.gears[g.ring_gear].internal) {
       throw InputError(key + ".ring", "\"" + st.ring + "\"", "a ring gear (internal = true)");
     }
-    g.sun = body_of_gear(g.sun_gear);
-    g.ring = body_of_gear(g.ring_gear);
+    g.sun = bodyOfGear(*this, spec_, g.sun_gear);
+    g.ring = bodyOfGear(*this, spec_, g.ring_gear);
     g.carrier = detail::shaftBodyOf(*this, spec_, st.carrier, key + ".carrier");
     if (g.sun == g.ring || g.sun == g.carrier || g.ring == g.carrier) {
       throw InputError(key, "", "sun, ring and carrier on three different shafts");
@@ -195,11 +286,11 @@ void GearTrainModel::buildMeshes() {
       if (bodies_[b].stage != static_cast<int>(s)) continue;
       const int p = static_cast<int>(b);
       const std::string pkey = fmt::format("{}.planet{}", key, bodies_[b].planet + 1);
-      constraints.push_back(
+      layout.constraints.push_back(
           {{g.sun, p, g.carrier}, {double(zs), double(zp), -double(zs + zp)}, pkey + ".sun_mesh"});
-      constraints.push_back({{g.ring, p, g.carrier},
-                             {double(zr), -double(zp), double(zp - zr)},
-                             pkey + ".ring_mesh"});
+      layout.constraints.push_back({{g.ring, p, g.carrier},
+                                    {double(zr), -double(zp), double(zp - zr)},
+                                    pkey + ".ring_mesh"});
     }
     if (planar && st.carrier_frame_terms) {
       for (int central : {g.sun, g.ring, g.carrier}) {
@@ -213,21 +304,23 @@ void GearTrainModel::buildMeshes() {
         bodies_[central].stage = static_cast<int>(s);
       }
     }
-    stages.push_back(g);
+    layout.stages.push_back(g);
   }
+}
 
-  // --- kinematics -----------------------------------------------------------------------------
+/// Speed ratios of every body from the mesh, shaft, coupling and bearing constraints.
+void GearTrainModel::solveTrainKinematics(MeshLayout& layout) {
   // The nodes of a flexible shaft turn together and share its axis.
   for (std::size_t s = 0; s < spec_.shafts.size(); ++s) {
     const auto& chain = shaft_nodes_[s];
     for (std::size_t k = 1; k < chain.size(); ++k) {
-      constraints.push_back(
+      layout.constraints.push_back(
           {{chain[k - 1], chain[k]}, {1.0, -1.0}, "shafts." + spec_.shafts[s].name});
     }
   }
   for (const auto& c : spec_.couplings) {
     const auto [a, b] = detail::couplingBodies(*this, c);
-    constraints.push_back({{a, b}, {1.0, -1.0}, "couplings." + c.name});
+    layout.constraints.push_back({{a, b}, {1.0, -1.0}, "couplings." + c.name});
   }
   for (const auto& b : spec_.bearings) {
     if (!(b.k_torsion > 0.0)) continue;
@@ -236,47 +329,52 @@ void GearTrainModel::buildMeshes() {
         detail::bodyAtOf(*this, b.shaft, key + ".shaft", b.position, key + ".position");
     if (b.other_shaft.empty()) {
       for (int node : shaft_nodes_[bodies_[body].shaft]) bodies_[node].grounded_torsion = true;
-      constraints.push_back({{body}, {1.0}, key});
+      layout.constraints.push_back({{body}, {1.0}, key});
     } else {
-      constraints.push_back({{body, detail::bodyAtOf(*this, b.other_shaft, key + ".other_shaft",
-                                                     b.other_position, key + ".other_position")},
-                             {1.0, -1.0},
-                             key});
+      layout.constraints.push_back(
+          {{body, detail::bodyAtOf(*this, b.other_shaft, key + ".other_shaft", b.other_position,
+                                   key + ".other_position")},
+           {1.0, -1.0},
+           key});
     }
   }
   std::vector<std::string> names;
   for (const auto& b : bodies_) names.push_back(b.name);
   const int input = detail::inputBody(*this);
-  kinematics_ = solveKinematics(names, constraints, input, "operating_point.input");
+  kinematics_ = solveKinematics(names, layout.constraints, input, "operating_point.input");
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     bodies_[b].speed_ratio = kinematics_.speed_ratio[b];
   }
+}
 
-  // --- layout: shaft centres from the meshes (loops must close), coaxial members ---------------
+/// Shaft centres from the meshes (loops must close) and coaxial members; planets on their
+/// carriers.
+void GearTrainModel::placeShaftCentres(const MeshLayout& layout) {
   struct Link {
     int a, b;
     Eigen::Vector2d offset;
     std::string source;
   };
   std::vector<Link> links;
-  for (std::size_t i = 0; i < fixed.size(); ++i) {
+  for (std::size_t i = 0; i < layout.fixed.size(); ++i) {
     const double psi = spec_.meshes[i].position_angle;
     links.push_back(
-        {fixed[i].ba, fixed[i].bb,
-         fixed[i].geometry.centre_distance * Eigen::Vector2d(std::cos(psi), std::sin(psi)),
+        {layout.fixed[i].ba, layout.fixed[i].bb,
+         layout.fixed[i].geometry.centre_distance * Eigen::Vector2d(std::cos(psi), std::sin(psi)),
          "meshes." + spec_.meshes[i].name});
   }
-  for (const auto& c : constraints) {
+  for (const auto& c : layout.constraints) {
     if (c.bodies.size() == 2 && c.coefficients[0] == -c.coefficients[1] &&
         (c.source.rfind("couplings.", 0) == 0 || c.source.rfind("bearings.", 0) == 0 ||
          c.source.rfind("shafts.", 0) == 0)) {
       links.push_back({c.bodies[0], c.bodies[1], Eigen::Vector2d::Zero(), c.source});
     }
   }
-  for (std::size_t s = 0; s < stages.size(); ++s) {
+  for (std::size_t s = 0; s < layout.stages.size(); ++s) {
     const std::string key = "planetary." + spec_.stages[s].name;
-    links.push_back({stages[s].sun, stages[s].carrier, Eigen::Vector2d::Zero(), key});
-    links.push_back({stages[s].ring, stages[s].carrier, Eigen::Vector2d::Zero(), key});
+    links.push_back({layout.stages[s].sun, layout.stages[s].carrier, Eigen::Vector2d::Zero(), key});
+    links.push_back(
+        {layout.stages[s].ring, layout.stages[s].carrier, Eigen::Vector2d::Zero(), key});
   }
   std::vector<bool> placed(bodies_.size(), false);
   const int first = shaft_body_[0];
@@ -304,79 +402,27 @@ void GearTrainModel::buildMeshes() {
       }
     }
   }
-  for (std::size_t s = 0; s < stages.size(); ++s) {
-    const Eigen::Vector2d c = bodies_[stages[s].carrier].centre;
+  for (std::size_t s = 0; s < layout.stages.size(); ++s) {
+    const Eigen::Vector2d c = bodies_[layout.stages[s].carrier].centre;
     for (auto& body : bodies_) {
       if (body.kind != TrainBodyKind::kPlanet || body.stage != static_cast<int>(s)) continue;
-      const double psi = stages[s].angles[body.planet];
-      body.centre =
-          c + stages[s].sun_planet.centre_distance * Eigen::Vector2d(std::cos(psi), std::sin(psi));
+      const double psi = layout.stages[s].angles[body.planet];
+      body.centre = c + layout.stages[s].sun_planet.centre_distance *
+                            Eigen::Vector2d(std::cos(psi), std::sin(psi));
     }
   }
+}
 
-  // --- the meshes with σ = +1 --------------------------------------------------------------------
-  auto make_mesh = [&](std::string name, TrainMeshKind kind, int a, int b, int za, int zb,
-                       const PairGeometry& g, bool ring_is_a,
-                       const std::shared_ptr<const MeshStiffness>& stiffness,
-                       const TransmissionError& error, double zeta, const TrainMeshContact& contact,
-                       const std::string& key) {
-    TrainMesh m;
-    m.name = std::move(name);
-    m.kind = kind;
-    m.body_a = a, m.body_b = b, m.teeth_a = za, m.teeth_b = zb;
-    m.centre_distance = g.centre_distance;
-    m.pressure_angle = g.pressure_angle;
-    m.base_helix_angle = g.base_helix;
-    m.base_radius_a = g.rb_a, m.base_radius_b = g.rb_b;
-    m.contact_ratio = g.contact_ratio;
-    const Eigen::Vector2d e = (bodies_[b].centre - bodies_[a].centre).normalized();
-    const bool internal = kind == TrainMeshKind::kInternal || kind == TrainMeshKind::kRingPlanet;
-    const bool b_is_ring = internal && !ring_is_a;
-    // Pitch point: on the far side of the pinion from a ring's centre.
-    m.pitch_point = b_is_ring ? Eigen::Vector2d(bodies_[a].centre - g.rw_a * e)
-                              : Eigen::Vector2d(bodies_[a].centre + g.rw_a * e);
-    m.normal = std::cos(g.pressure_angle) * Eigen::Vector2d(-e.y(), e.x()) +
-               std::sin(g.pressure_angle) * (internal ? -e : e);
-    if (!stiffness) throw InputError(key + ".stiffness", "", "a mesh-stiffness model");
-    m.stiffness = stiffness;
-    m.mean_stiffness = summarizeMeshStiffness(*stiffness, 0).mean;
-    if (!(m.mean_stiffness > 0.0) || !std::isfinite(m.mean_stiffness)) {
-      throw InputError(key + ".stiffness", fmt::format("{:g} N/m mean", m.mean_stiffness),
-                       "a mesh stiffness with a positive mean");
-    }
-    if (!(zeta >= 0.0) || !std::isfinite(zeta)) {
-      throw InputError(key + ".damping_ratio", fmt::format("{:g}", zeta), "a ratio >= 0");
-    }
-    m.transmission_error = error;
-    m.damping_ratio = zeta;
-    if (!(contact.backlash >= 0.0) || !std::isfinite(contact.backlash) ||
-        (contact.law == ContactLaw::kBacklash && !(contact.backlash > 0.0))) {
-      throw InputError(key + ".backlash", fmt::format("{:g} m", contact.backlash),
-                       contact.law == ContactLaw::kBacklash
-                           ? "a backlash > 0 m (contact = \"backlash\")"
-                           : "a backlash >= 0 m");
-    }
-    if (contact.tooth_pairs) {
-      if (internal) {
-        throw InputError(key + ".contact", "\"tooth_pairs\"",
-                         "linear, one_sided or backlash on a ring (internal) mesh: the loaded "
-                         "tooth contact is written for external pairs");
-      }
-      if (contact.law != ContactLaw::kOneSided || contact.tooth_pairs->count() < 1) {
-        throw InputError(key + ".contact", "\"tooth_pairs\"",
-                         "at least one one-sided contact element and no backlash");
-      }
-    }
-    m.contact = contact;
-    return m;
-  };
-  for (std::size_t i = 0; i < fixed.size(); ++i) {
+/// The meshes with σ = +1: fixed-axis meshes, then each planet's sun and ring meshes with
+/// their phases.
+void GearTrainModel::createMeshes(const MeshLayout& layout) {
+  for (std::size_t i = 0; i < layout.fixed.size(); ++i) {
     const TrainMeshSpec& ms = spec_.meshes[i];
-    const Pending& p = fixed[i];
-    TrainMesh m = make_mesh(ms.name, p.kind, p.ba, p.bb, spec_.gears[p.ga].gear.teeth,
-                            spec_.gears[p.gb].gear.teeth, p.geometry, spec_.gears[p.ga].internal,
-                            ms.stiffness, ms.transmission_error, ms.damping_ratio, ms.contact,
-                            "meshes." + ms.name);
+    const MeshLayout::FixedMesh& p = layout.fixed[i];
+    TrainMesh m = placedMesh(bodies_, ms.name, p.kind, p.ba, p.bb, spec_.gears[p.ga].gear.teeth,
+                             spec_.gears[p.gb].gear.teeth, p.geometry, spec_.gears[p.ga].internal);
+    setMeshModel(m, ms.stiffness, ms.transmission_error, ms.damping_ratio, ms.contact,
+                 "meshes." + ms.name);
     m.frequency_ratio = m.teeth_a * std::abs(bodies_[p.ba].speed_ratio) / kTwoPi;
     m.phase = ms.phase.value_or(0.0);
     m.gear_a = p.ga, m.gear_b = p.gb;
@@ -389,9 +435,9 @@ void GearTrainModel::buildMeshes() {
     }
     meshes_.push_back(std::move(m));
   }
-  for (std::size_t s = 0; s < stages.size(); ++s) {
+  for (std::size_t s = 0; s < layout.stages.size(); ++s) {
     const PlanetaryStageSpec& st = spec_.stages[s];
-    const StageGeometry& g = stages[s];
+    const MeshLayout::Stage& g = layout.stages[s];
     const std::string key = "planetary." + st.name;
     const int zs = spec_.gears[g.sun_gear].gear.teeth, zr = spec_.gears[g.ring_gear].gear.teeth;
     const double relative = bodies_[g.sun].speed_ratio - bodies_[g.carrier].speed_ratio;
@@ -403,16 +449,16 @@ void GearTrainModel::buildMeshes() {
         continue;
       const int n = bodies_[b].planet;
       const double psi = g.angles[n] - g.angles[0];
-      TrainMesh sun =
-          make_mesh(fmt::format("{}.sun_planet{}", st.name, n + 1), TrainMeshKind::kSunPlanet,
-                    g.sun, static_cast<int>(b), zs, st.planet.teeth, g.sun_planet, false,
-                    st.sun_planet_stiffness, st.sun_planet_error, st.sun_planet_damping_ratio,
-                    st.sun_planet_contact, key + ".sun_planet");
-      TrainMesh ring =
-          make_mesh(fmt::format("{}.ring_planet{}", st.name, n + 1), TrainMeshKind::kRingPlanet,
-                    g.ring, static_cast<int>(b), zr, st.planet.teeth, g.ring_planet, true,
-                    st.ring_planet_stiffness, st.ring_planet_error, st.ring_planet_damping_ratio,
-                    st.ring_planet_contact, key + ".ring_planet");
+      TrainMesh sun = placedMesh(bodies_, fmt::format("{}.sun_planet{}", st.name, n + 1),
+                                 TrainMeshKind::kSunPlanet, g.sun, static_cast<int>(b), zs,
+                                 st.planet.teeth, g.sun_planet, false);
+      setMeshModel(sun, st.sun_planet_stiffness, st.sun_planet_error, st.sun_planet_damping_ratio,
+                   st.sun_planet_contact, key + ".sun_planet");
+      TrainMesh ring = placedMesh(bodies_, fmt::format("{}.ring_planet{}", st.name, n + 1),
+                                  TrainMeshKind::kRingPlanet, g.ring, static_cast<int>(b), zr,
+                                  st.planet.teeth, g.ring_planet, true);
+      setMeshModel(ring, st.ring_planet_stiffness, st.ring_planet_error,
+                   st.ring_planet_damping_ratio, st.ring_planet_contact, key + ".ring_planet");
       sun.stage = ring.stage = static_cast<int>(s);
       sun.planet = ring.planet = n;
       sun.frequency_ratio = ring.frequency_ratio = zs * std::abs(relative) / kTwoPi;
@@ -429,10 +475,10 @@ void GearTrainModel::buildMeshes() {
       meshes_.push_back(std::move(ring));
     }
   }
+}
 
-  // --- loaded flanks from the torque flow ------------------------------------------------------
-  // Torsional statics with σ = +1 everywhere: a mesh whose force comes out negative carries its
-  // load on the other flank (σ = −1).
+/// The static mesh forces of the torsional model with σ = +1 everywhere [N] (the torque flow).
+std::vector<double> GearTrainModel::torsionalMeshForces() const {
   const int nb = static_cast<int>(bodies_.size());
   auto torsional_gradient = [&](const TrainMesh& m) {
     Eigen::VectorXd g = Eigen::VectorXd::Zero(nb);
@@ -477,18 +523,26 @@ void GearTrainModel::buildMeshes() {
     }
   }
   Eigen::VectorXd Ft = Eigen::VectorXd::Zero(nb);
-  const int out = detail::outputBody(*this);
+  const int input = detail::inputBody(*this), out = detail::outputBody(*this);
   Ft(input) += spec_.operating.input_torque;
   if (std::abs(bodies_[out].speed_ratio) > 1e-12) {
     Ft(out) -= spec_.operating.input_torque / bodies_[out].speed_ratio;
   }
   const Eigen::VectorXd theta = Kt.completeOrthogonalDecomposition().solve(Ft);
-  double largest = 0.0;
   std::vector<double> force(meshes_.size());
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     force[i] = meshes_[i].mean_stiffness * torsional_gradient(meshes_[i]).dot(theta);
-    largest = std::max(largest, std::abs(force[i]));
   }
+  return force;
+}
+
+/// Loaded flanks from the torque flow: a mesh whose torsional force comes out negative carries
+/// its load on the other flank (σ = −1). Then each mesh's gradient over the model's DOFs, its
+/// equivalent mass and its damping.
+void GearTrainModel::orientMeshesByLoad() {
+  const std::vector<double> force = torsionalMeshForces();
+  double largest = 0.0;
+  for (double f : force) largest = std::max(largest, std::abs(f));
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     TrainMesh& m = meshes_[i];
     if (force[i] < -1e-9 * largest) {
@@ -535,16 +589,6 @@ void GearTrainModel::buildMeshes() {
     } else {
       m.damping = 2.0 * m.damping_ratio * std::sqrt(m.mean_stiffness * m.equivalent_mass);
     }
-  }
-
-  // --- ring-to-sun phase of each planet, from its loaded flanks (system/planet_phasing.h) -----
-  for (std::size_t s = 0; s < stages.size(); ++s) {
-    const StageGeometry& g = stages[s];
-    const PlanetaryStageSpec& st = spec_.stages[s];
-    addRingSunPhases(
-        meshes_, bodies_, static_cast<int>(s), bodies_[g.carrier].speed_ratio,
-        planetMeshGeometry(spec_.gears[g.sun_gear].gear, st.planet, spec_.gears[g.ring_gear].gear,
-                           g.sun_planet.centre_distance, "planetary." + st.name));
   }
 }
 

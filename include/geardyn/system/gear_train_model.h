@@ -209,7 +209,17 @@ class GearTrainModel {
   void fullMeshGradient(const TrainMesh& m, std::vector<int>& dofs, Eigen::VectorXd& v) const;
   /// Polar inertia of a body for the mesh's equivalent mass (nodes: with half their beams').
   double rotatingInertia(int body) const;
+  /// The meshes in named steps (train_meshes.cpp): geometry and constraints of fixed-axis
+  /// meshes and planetary stages, kinematics, shaft centres, the meshes, their loaded flanks.
+  struct MeshLayout;
   void buildMeshes();
+  void addFixedAxisMeshGeometry(MeshLayout& layout);
+  void addPlanetaryStageGeometry(MeshLayout& layout);
+  void solveTrainKinematics(MeshLayout& layout);
+  void placeShaftCentres(const MeshLayout& layout);
+  void createMeshes(const MeshLayout& layout);
+  std::vector<double> torsionalMeshForces() const;
+  void orientMeshesByLoad();
   void buildElements();
   /// InputError on a bad bearings.<name>.radial_clearance (< 0, torsional DOFs, anisotropic k).
   void checkClearance(const TrainBearingSpec& bearing, const std::string& key) const;

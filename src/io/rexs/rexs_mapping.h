@@ -110,4 +110,30 @@ GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& section);
 /// section already carries the gear's mass.
 void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& section);
 
+/// The REXS component types the mapping writes as shafts, gears, bearings and couplings.
+inline const std::set<std::string> kShaftTypes = {"shaft"};
+inline const std::set<std::string> kGearTypes = {"cylindrical_gear", "ring_gear"};
+inline const std::set<std::string> kBearingTypes = {
+    "concept_bearing", "rolling_bearing_with_catalog_geometry",
+    "rolling_bearing_with_detailed_geometry", "fluid_bearing"};
+inline const std::set<std::string> kCouplingTypes = {"coupling", "switchable_coupling"};
+
+/// The gearbox sections being written and what the steps of the mapping hand on
+/// (rexs_components.cpp, rexs_gearbox.cpp).
+struct GearboxSections {
+  Model& model;
+  PlanetaryMapping pm;
+  std::vector<TomlSection> sections;
+  std::set<int> shafts;                ///< shaft components written as shafts
+  std::map<int, GearSpec> gear_specs;  ///< gear component → its geometry
+  /// The shaft that stands for component `id` (a carrier member → its carrier shaft).
+  int bodyOf(int id) const { return pm.body_of.count(id) ? pm.body_of.at(id) : id; }
+};
+void addShafts(GearboxSections& out);
+void addGears(GearboxSections& out);
+void addParallelStages(GearboxSections& out);
+void addDisks(GearboxSections& out);
+void addBearingsAndCouplings(GearboxSections& out, double default_stiffness,
+                             std::vector<std::string>& warnings);
+
 }  // namespace geardyn::io::rexs::detail
