@@ -99,6 +99,279 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
   return std::sqrt(sum);
 }
 
+/// The time response (Dormand–Prince), its steady-window full spectrum and its comparison with
+/// the exact frequency-domain peaks `exact`; false when the integration failed.
+bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
+                   const LateralRotorModel& model, const GearPairSpectrumOptions& spectrum_options,
+                   const std::array<std::vector<WhirlComponent>, 2>& exact, AnalysisResult& result,
+                   RotorTimeResponse& time, std::string& text) {
+  io::RunSummary& summary = result.summary;
+  const GearWhirlSetup setup = setupOf(model);
+  const double max_frequency =
+      config.optionalReal("spectrum.max_frequency")
+          .value_or(1.25 * setup.meshFrequency() * std::max(1, model.harmonics()));
+  const std::uint64_t seed = static_cast<std::uint64_t>(config.integer("spectrum.seed"));
+  const double noise = config.real("spectrum.noise_level");
+  bool ok = true;
+  context.checkBudget("rotor_time");
+  RotorTimeOptions time_options = config::rotorTimeOptionsFromConfig(config);
+  time_options.progress = context.progressFor("rotor: time response", "s simulated");
+  // Checked before integrating: the grid's rate (snapped to the common period) is within a
+  // sample per period of duration/(samples − 1).
+  const std::string samples_shown =
+      fmt::format("{} (over time.duration = {:g} s)", time_options.samples, time_options.duration);
+  requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
+                 "time.samples", samples_shown);
+  const auto start = std::chrono::steady_clock::now();
+  time = solveRotorTimeResponse(model, time_options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  requireNyquist(model, time.sample_rate, "time.samples", samples_shown);
+  summary.results["time_domain"] = {{"status", toString(time.status)},
+                                    {"message", time.message},
+                                    {"wall_time_s", seconds},
+                                    {"steps", time.steps},
+                                    {"rhs_evaluations", time.rhs_evaluations},
+                                    {"sample_rate_hz", time.sample_rate},
+                                    {"samples", time.t.size()},
+                                    {"transient_end_s", time.t[time.transient_end]},
+                                    {"window_start_s", time.t[time.window_begin]},
+                                    {"window_periods", time.window_periods}};
+  // Displacements of the pinion (1) and gear (2) centres [m] (Rao 2023, Fig. 2.1 axes).
+  io::CsvTable history({"t_s", "x1_m", "y1_m", "x2_m", "y2_m", "steady"});
+  for (std::size_t k = 0; k < time.t.size(); ++k) {
+    const auto& e = time.eta[k];
+    history.addRow({time.t[k], e(0), e(1), e(2), e(3),
+                    static_cast<long long>(static_cast<long long>(k) >= time.window_begin &&
+                                           static_cast<long long>(k) < time.window_end)});
+  }
+  result.addTable("time_history.csv", history);
+  text +=
+      fmt::format("  time domain: {} ({} steps, {:.3g} s)\n", time.message, time.steps, seconds);
+  if (!time.converged()) {
+    ok = false;
+    result.errors.push_back(time.message);
+  } else {
+    auto channels = steadyChannels(time);
+    if (noise > 0.0) {
+      std::mt19937_64 rng(seed);
+      for (auto& channel : channels) addRelativeNoise(channel, noise, rng);
+    }
+    const GearPairSpectrum spectrum = analyseGearPairRecord(
+        channels, time.sample_rate, time.t[time.window_begin], 0.0, setup, spectrum_options);
+    result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
+    result.addTable("full_spectrum.csv", io::fullSpectrumTable(spectrum.display, max_frequency));
+    // Time domain against the exact solution, component by component.
+    double largest = 0.0, amplitude_error = 0.0, phase_error = 0.0;
+    for (int sh = 0; sh < 2; ++sh)
+      for (const auto& c : exact[sh]) largest = std::max(largest, std::abs(c.value));
+    for (int sh = 0; sh < 2; ++sh) {
+      for (std::size_t i = 0; i < exact[sh].size(); ++i) {
+        const auto a = spectrum.peaks[sh][i].value, b = exact[sh][i].value;
+        if (std::abs(b) < 1e-3 * largest) continue;  // phases of vanishing peaks mean nothing
+        amplitude_error = std::max(amplitude_error, std::abs(std::abs(a) / std::abs(b) - 1.0));
+        phase_error = std::max(phase_error, std::abs(std::arg(a / b)));
+      }
+    }
+    summary.results["coefficient_noise"] = {{"pinion", spectrum.coefficient_sigma[0]},
+                                            {"gear", spectrum.coefficient_sigma[1]}};
+    summary.results["time_domain"]["extraction"] =
+        spectrum.method == WhirlExtraction::kExactBins ? "exact_bins" : "least_squares";
+    summary.results["time_domain"]["peaks"] = io::whirlPeaksJson(spectrum.peaks);
+    summary.results["time_vs_frequency"] = {
+        {"max_relative_amplitude_difference", amplitude_error},
+        {"max_phase_difference_rad", phase_error},
+        {"note", "over peaks above 1e-3 of the largest; includes the noise when noise_level > 0"}};
+    text += fmt::format(
+        "  time vs frequency domain: relative amplitudes within {:.2e} [-], phases within "
+        "{:.2e} rad\n",
+        amplitude_error, phase_error);
+  }
+  return ok;
+}
+
+/// The exact periodic response superposed from its whirl components at the time run's steady
+/// samples (or over one common period) (frequency_history.csv).
+void addSuperposedHistory(const LateralRotorModel& model,
+                          const std::vector<RotorWhirlResponse>& parts,
+                          const RotorTimeResponse& time, AnalysisResult& result) {
+  std::vector<double> times;
+  if (!time.t.empty()) {
+    times.assign(time.t.begin() + time.window_begin, time.t.begin() + time.window_end);
+  } else {
+    const int n = 4096;
+    for (int k = 0; k < n; ++k) times.push_back(model.commonPeriod() * k / n);
+  }
+  const auto history = superposeWhirlResponse(parts, times);
+  io::CsvTable table({"t_s", "x1_m", "y1_m", "x2_m", "y2_m"});
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const auto& e = history[k];
+    table.addRow({times[k], e(0), e(1), e(2), e(3)});
+  }
+  result.addTable("frequency_history.csv", table);
+}
+
+/// Simulated probe records x₁, y₁, x₂, y₂ with a keyphasor (measurement.*), sampled from the
+/// exact periodic response, in the formats `spectrum` reads.
+void addProbeRecords(const config::Config& config, const LateralRotorModel& model,
+                     const RotorTimeResponse& time, AnalysisResult& result) {
+  io::RunSummary& summary = result.summary;
+  const auto& s = model.spec();
+  const auto formats = config.stringList("measurement.formats");
+  if (formats.empty()) return;
+  const double fs = config.real("measurement.sample_rate");
+  requireNyquist(model, fs, "measurement.sample_rate", fmt::format("{:g} Hz", fs));
+  const double period = model.commonPeriod();
+  double start = 0.0;
+  if (auto given = config.optionalReal("measurement.start")) {
+    start = *given;
+  } else if (!time.t.empty() && time.converged()) {
+    start = std::ceil(time.t[time.transient_end] / period - 1e-9) * period;
+  } else {
+    throw InputError("measurement.start", "(not set)",
+                     "give a start time, or enable [time] so the transient is detected");
+  }
+  const double duration = config.optionalReal("measurement.duration").value_or(2.0 * period);
+  const auto n = static_cast<long long>(std::floor(duration * fs));
+  // Two samples before the start so the first pulse's rising edge is fully sampled.
+  std::vector<double> times;
+  for (long long k = -2; k < n; ++k) times.push_back(start + static_cast<double>(k) / fs);
+  if (times.front() < 0.0) {
+    throw InputError("measurement.start", fmt::format("{:g}", start),
+                     fmt::format(">= {:g} s (two samples)", 2.0 / fs));
+  }
+  const auto eta = sampleRotorTimeResponse(model, times, config.real("time.relative_tolerance"),
+                                           config.real("time.absolute_tolerance"));
+  io::ProbeRecord record;
+  record.sample_rate = fs;
+  record.start_time = times.front();
+  record.names = {"x1", "y1", "x2", "y2", "keyphasor"};
+  record.channels.assign(5, std::vector<double>(times.size()));
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);
+    record.channels[4][k] = keyphasorSignal(times[k], s.pinion_speed, fs);
+  }
+  const double measurement_noise = config.real("measurement.noise_level");
+  if (measurement_noise > 0.0) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(config.integer("measurement.seed")));
+    for (int c = 0; c < 4; ++c) addRelativeNoise(record.channels[c], measurement_noise, rng);
+    summary.seed = static_cast<std::uint64_t>(config.integer("measurement.seed"));
+  }
+  nlohmann::ordered_json files = nlohmann::ordered_json::array();
+  for (const auto& f : formats) {
+    const auto format = f == "csv"   ? io::RecordFormat::kCsv
+                        : f == "wav" ? io::RecordFormat::kWav
+                                     : io::RecordFormat::kHdf5;
+    const std::string name = f == "hdf5" ? "measurement.h5" : fmt::format("measurement.{}", f);
+    result.files.push_back({name, [format, record](const std::filesystem::path& path) {
+                              io::writeProbeRecord(path, format, record);
+                            }});
+    files.push_back(name);
+  }
+  summary.results["measurement"] = {{"files", files},
+                                    {"sample_rate_hz", fs},
+                                    {"start_s", record.start_time},
+                                    {"samples", times.size()},
+                                    {"noise_level", measurement_noise},
+                                    {"keyphasor",
+                                     "pulse at each pinion revolution, rising "
+                                     "through 0.5 at pinion angle 2 pi k"}};
+}
+
+/// The parametric study of Rao (2023) §4.5: speed, mesh stiffness with TE, runouts and mesh
+/// damping varied one at a time; each case's whirl peaks and their RMS change against the
+/// baseline; false when a time-domain case failed.
+bool addParametricStudy(const config::Config& config, const LateralRotorModel& model,
+                        const GearPairSpectrumOptions& spectrum_options, AnalysisResult& result,
+                        std::vector<std::string>& warnings, std::string& text) {
+  io::RunSummary& summary = result.summary;
+  const auto& s = model.spec();
+  bool ok = true;
+  const bool in_time = config.string("study.method") == "time";
+  io::CsvTable table({"case", "group", "factor", "shaft", "component", "frequency_hz",
+                      "amplitude_m", "phase_rad"});
+  io::CsvTable totals({"case", "group", "factor", "shaft", "mesh_rms_m", "mesh_relative_change",
+                       "dynamic_rms_m", "dynamic_relative_change"});
+  // Two measures: the gear-mesh vibration (mesh harmonics) and the whole dynamic orbit
+  // (mesh harmonics + 1x runout circles).
+  std::array<std::array<double, 2>, 2> baseline{};  // [measure][shaft]
+  std::array<std::map<std::string, double>, 2> group_change;
+  nlohmann::ordered_json cases_json = nlohmann::ordered_json::array();
+  for (const StudyCase& c : studyCases(config, model.spec())) {
+    const LateralRotorModel m(c.spec);
+    std::array<std::vector<WhirlComponent>, 2> peaks;
+    if (in_time) {
+      RotorTimeOptions o = config::rotorTimeOptionsFromConfig(config);
+      o.samples =
+          static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
+      const RotorTimeResponse r = solveRotorTimeResponse(m, o);
+      if (!r.converged()) {
+        warnings.push_back(fmt::format("study case {}: {}", c.name, r.message));
+        ok = false;
+        continue;
+      }
+      peaks = analyseGearPairRecord(steadyChannels(r), r.sample_rate, r.t[r.window_begin], 0.0,
+                                    setupOf(m), spectrum_options)
+                  .peaks;
+    } else {
+      peaks = io::frequencyDomainPeaks(solveRotorFrequencyResponse(m), spectrum_options.frame);
+    }
+    nlohmann::ordered_json case_json = {{"case", c.name}, {"group", c.group}, {"factor", c.factor}};
+    for (int sh = 0; sh < 2; ++sh) {
+      for (const auto& p : peaks[sh]) {
+        table.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), p.name,
+                      p.frequency, std::abs(p.value), std::arg(p.value)});
+      }
+      std::array<double, 2> rms{whirlRms(peaks[sh], "mesh_"), whirlRms(peaks[sh], "")};
+      std::array<double, 2> change{0.0, 0.0};
+      for (int k = 0; k < 2; ++k) {
+        if (c.group == "baseline") baseline[k][sh] = rms[k];
+        change[k] = baseline[k][sh] > 0.0 ? rms[k] / baseline[k][sh] - 1.0 : 0.0;
+        if (c.group != "baseline")
+          group_change[k][c.group] = std::max(group_change[k][c.group], std::abs(change[k]));
+      }
+      totals.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), rms[0], change[0],
+                     rms[1], change[1]});
+      case_json[io::kShaftNames[sh]] = {{"mesh_rms_m", rms[0]},
+                                        {"mesh_relative_change", change[0]},
+                                        {"dynamic_rms_m", rms[1]},
+                                        {"dynamic_relative_change", change[1]}};
+    }
+    cases_json.push_back(case_json);
+  }
+  result.addTable("study.csv", table);
+  result.addTable("study_totals.csv", totals);
+  std::array<nlohmann::ordered_json, 2> rankings;
+  std::array<std::string, 2> dominant;
+  for (int k = 0; k < 2; ++k) {
+    std::vector<std::pair<std::string, double>> ranking(group_change[k].begin(),
+                                                        group_change[k].end());
+    std::sort(ranking.begin(), ranking.end(),
+              [](const auto& a, const auto& b) { return a.second > b.second; });
+    rankings[k] = nlohmann::ordered_json::array();
+    for (const auto& [group, change] : ranking)
+      rankings[k].push_back({{"group", group}, {"max_relative_change", change}});
+    if (!ranking.empty())
+      dominant[k] =
+          fmt::format("{} ({:.1f} %)", ranking.front().first, 100 * ranking.front().second);
+  }
+  summary.results["study"] = {
+      {"method", in_time ? "time" : "frequency"},
+      {"measures",
+       {{"mesh_rms",
+         "sqrt(sum |c|^2) over the mesh harmonics, forward and backward: the "
+         "gear-mesh vibration"},
+        {"dynamic_rms",
+         "the same over every dynamic component (mesh harmonics and the 1x "
+         "runout circles)"}}},
+      {"cases", cases_json},
+      {"ranking_mesh", rankings[0]},
+      {"ranking_dynamic", rankings[1]}};
+  text += fmt::format("  study: dominant source of the mesh vibration {}, of the whole orbit {}\n",
+                      dominant[0], dominant[1]);
+  return ok;
+}
+
 }  // namespace
 
 AnalysisResult lateralRotorAnalysis(const config::Config& config, const AnalysisContext& context) {
@@ -107,9 +380,6 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
   const GearPairSpectrumOptions spectrum_options =
       config::gearPairSpectrumOptionsFromConfig(config);
   const GearWhirlSetup setup = setupOf(model);
-  const double max_frequency =
-      config.optionalReal("spectrum.max_frequency")
-          .value_or(1.25 * setup.meshFrequency() * std::max(1, model.harmonics()));
   const std::uint64_t seed = static_cast<std::uint64_t>(config.integer("spectrum.seed"));
   const double noise = config.real("spectrum.noise_level");
   std::vector<std::string> warnings;
@@ -148,252 +418,14 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
       "lateral geared rotor: pinion {:.6g} Hz, gear {:.6g} Hz, mesh {:.6g} Hz, common period "
       "{:.6g} s\n",
       s.pinion_speed, setup.gearSpeed(), setup.meshFrequency(), model.commonPeriod());
-  bool ok = true;
   RotorTimeResponse time;
-  if (config.boolean("time.enabled")) {
-    context.checkBudget("rotor_time");
-    RotorTimeOptions time_options = config::rotorTimeOptionsFromConfig(config);
-    time_options.progress = context.progressFor("rotor: time response", "s simulated");
-    // Checked before integrating: the grid's rate (snapped to the common period) is within a
-    // sample per period of duration/(samples − 1).
-    const std::string samples_shown = fmt::format("{} (over time.duration = {:g} s)",
-                                                  time_options.samples, time_options.duration);
-    requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
-                   "time.samples", samples_shown);
-    const auto start = std::chrono::steady_clock::now();
-    time = solveRotorTimeResponse(model, time_options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    requireNyquist(model, time.sample_rate, "time.samples", samples_shown);
-    summary.results["time_domain"] = {{"status", toString(time.status)},
-                                      {"message", time.message},
-                                      {"wall_time_s", seconds},
-                                      {"steps", time.steps},
-                                      {"rhs_evaluations", time.rhs_evaluations},
-                                      {"sample_rate_hz", time.sample_rate},
-                                      {"samples", time.t.size()},
-                                      {"transient_end_s", time.t[time.transient_end]},
-                                      {"window_start_s", time.t[time.window_begin]},
-                                      {"window_periods", time.window_periods}};
-    // Displacements of the pinion (1) and gear (2) centres [m] (Rao 2023, Fig. 2.1 axes).
-    io::CsvTable history({"t_s", "x1_m", "y1_m", "x2_m", "y2_m", "steady"});
-    for (std::size_t k = 0; k < time.t.size(); ++k) {
-      const auto& e = time.eta[k];
-      history.addRow({time.t[k], e(0), e(1), e(2), e(3),
-                      static_cast<long long>(static_cast<long long>(k) >= time.window_begin &&
-                                             static_cast<long long>(k) < time.window_end)});
-    }
-    result.addTable("time_history.csv", history);
-    text +=
-        fmt::format("  time domain: {} ({} steps, {:.3g} s)\n", time.message, time.steps, seconds);
-    if (!time.converged()) {
-      ok = false;
-      result.errors.push_back(time.message);
-    } else {
-      auto channels = steadyChannels(time);
-      if (noise > 0.0) {
-        std::mt19937_64 rng(seed);
-        for (auto& channel : channels) addRelativeNoise(channel, noise, rng);
-      }
-      const GearPairSpectrum spectrum = analyseGearPairRecord(
-          channels, time.sample_rate, time.t[time.window_begin], 0.0, setup, spectrum_options);
-      result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
-      result.addTable("full_spectrum.csv", io::fullSpectrumTable(spectrum.display, max_frequency));
-      // Time domain against the exact solution, component by component.
-      double largest = 0.0, amplitude_error = 0.0, phase_error = 0.0;
-      for (int sh = 0; sh < 2; ++sh)
-        for (const auto& c : exact[sh]) largest = std::max(largest, std::abs(c.value));
-      for (int sh = 0; sh < 2; ++sh) {
-        for (std::size_t i = 0; i < exact[sh].size(); ++i) {
-          const auto a = spectrum.peaks[sh][i].value, b = exact[sh][i].value;
-          if (std::abs(b) < 1e-3 * largest) continue;  // phases of vanishing peaks mean nothing
-          amplitude_error = std::max(amplitude_error, std::abs(std::abs(a) / std::abs(b) - 1.0));
-          phase_error = std::max(phase_error, std::abs(std::arg(a / b)));
-        }
-      }
-      summary.results["coefficient_noise"] = {{"pinion", spectrum.coefficient_sigma[0]},
-                                              {"gear", spectrum.coefficient_sigma[1]}};
-      summary.results["time_domain"]["extraction"] =
-          spectrum.method == WhirlExtraction::kExactBins ? "exact_bins" : "least_squares";
-      summary.results["time_domain"]["peaks"] = io::whirlPeaksJson(spectrum.peaks);
-      summary.results["time_vs_frequency"] = {
-          {"max_relative_amplitude_difference", amplitude_error},
-          {"max_phase_difference_rad", phase_error},
-          {"note",
-           "over peaks above 1e-3 of the largest; includes the noise when noise_level > 0"}};
-      text += fmt::format(
-          "  time vs frequency domain: relative amplitudes within {:.2e} [-], phases within "
-          "{:.2e} rad\n",
-          amplitude_error, phase_error);
-    }
-  }
-
-  if (config.boolean("frequency.superpose")) {
-    std::vector<double> times;
-    if (!time.t.empty()) {
-      times.assign(time.t.begin() + time.window_begin, time.t.begin() + time.window_end);
-    } else {
-      const int n = 4096;
-      for (int k = 0; k < n; ++k) times.push_back(model.commonPeriod() * k / n);
-    }
-    const auto history = superposeWhirlResponse(parts, times);
-    io::CsvTable table({"t_s", "x1_m", "y1_m", "x2_m", "y2_m"});
-    for (std::size_t k = 0; k < times.size(); ++k) {
-      const auto& e = history[k];
-      table.addRow({times[k], e(0), e(1), e(2), e(3)});
-    }
-    result.addTable("frequency_history.csv", table);
-  }
-
-  // Simulated probe records with a keyphasor.
-  const auto formats = config.stringList("measurement.formats");
-  if (!formats.empty()) {
-    const double fs = config.real("measurement.sample_rate");
-    requireNyquist(model, fs, "measurement.sample_rate", fmt::format("{:g} Hz", fs));
-    const double period = model.commonPeriod();
-    double start = 0.0;
-    if (auto given = config.optionalReal("measurement.start")) {
-      start = *given;
-    } else if (!time.t.empty() && time.converged()) {
-      start = std::ceil(time.t[time.transient_end] / period - 1e-9) * period;
-    } else {
-      throw InputError("measurement.start", "(not set)",
-                       "give a start time, or enable [time] so the transient is detected");
-    }
-    const double duration = config.optionalReal("measurement.duration").value_or(2.0 * period);
-    const auto n = static_cast<long long>(std::floor(duration * fs));
-    // Two samples before the start so the first pulse's rising edge is fully sampled.
-    std::vector<double> times;
-    for (long long k = -2; k < n; ++k) times.push_back(start + static_cast<double>(k) / fs);
-    if (times.front() < 0.0) {
-      throw InputError("measurement.start", fmt::format("{:g}", start),
-                       fmt::format(">= {:g} s (two samples)", 2.0 / fs));
-    }
-    const auto eta = sampleRotorTimeResponse(model, times, config.real("time.relative_tolerance"),
-                                             config.real("time.absolute_tolerance"));
-    io::ProbeRecord record;
-    record.sample_rate = fs;
-    record.start_time = times.front();
-    record.names = {"x1", "y1", "x2", "y2", "keyphasor"};
-    record.channels.assign(5, std::vector<double>(times.size()));
-    for (std::size_t k = 0; k < times.size(); ++k) {
-      for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);
-      record.channels[4][k] = keyphasorSignal(times[k], s.pinion_speed, fs);
-    }
-    const double measurement_noise = config.real("measurement.noise_level");
-    if (measurement_noise > 0.0) {
-      std::mt19937_64 rng(static_cast<std::uint64_t>(config.integer("measurement.seed")));
-      for (int c = 0; c < 4; ++c) addRelativeNoise(record.channels[c], measurement_noise, rng);
-      summary.seed = static_cast<std::uint64_t>(config.integer("measurement.seed"));
-    }
-    nlohmann::ordered_json files = nlohmann::ordered_json::array();
-    for (const auto& f : formats) {
-      const auto format = f == "csv"   ? io::RecordFormat::kCsv
-                          : f == "wav" ? io::RecordFormat::kWav
-                                       : io::RecordFormat::kHdf5;
-      const std::string name = f == "hdf5" ? "measurement.h5" : fmt::format("measurement.{}", f);
-      result.files.push_back({name, [format, record](const std::filesystem::path& path) {
-                                io::writeProbeRecord(path, format, record);
-                              }});
-      files.push_back(name);
-    }
-    summary.results["measurement"] = {{"files", files},
-                                      {"sample_rate_hz", fs},
-                                      {"start_s", record.start_time},
-                                      {"samples", times.size()},
-                                      {"noise_level", measurement_noise},
-                                      {"keyphasor",
-                                       "pulse at each pinion revolution, rising "
-                                       "through 0.5 at pinion angle 2 pi k"}};
-  }
-
-  // Parametric study (§4.5).
-  if (config.boolean("study.enabled")) {
-    const bool in_time = config.string("study.method") == "time";
-    io::CsvTable table({"case", "group", "factor", "shaft", "component", "frequency_hz",
-                        "amplitude_m", "phase_rad"});
-    io::CsvTable totals({"case", "group", "factor", "shaft", "mesh_rms_m", "mesh_relative_change",
-                         "dynamic_rms_m", "dynamic_relative_change"});
-    // Two measures: the gear-mesh vibration (mesh harmonics) and the whole dynamic orbit
-    // (mesh harmonics + 1x runout circles).
-    std::array<std::array<double, 2>, 2> baseline{};  // [measure][shaft]
-    std::array<std::map<std::string, double>, 2> group_change;
-    nlohmann::ordered_json cases_json = nlohmann::ordered_json::array();
-    for (const StudyCase& c : studyCases(config, model.spec())) {
-      const LateralRotorModel m(c.spec);
-      std::array<std::vector<WhirlComponent>, 2> peaks;
-      if (in_time) {
-        RotorTimeOptions o = config::rotorTimeOptionsFromConfig(config);
-        o.samples =
-            static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
-        const RotorTimeResponse r = solveRotorTimeResponse(m, o);
-        if (!r.converged()) {
-          warnings.push_back(fmt::format("study case {}: {}", c.name, r.message));
-          ok = false;
-          continue;
-        }
-        peaks = analyseGearPairRecord(steadyChannels(r), r.sample_rate, r.t[r.window_begin], 0.0,
-                                      setupOf(m), spectrum_options)
-                    .peaks;
-      } else {
-        peaks = io::frequencyDomainPeaks(solveRotorFrequencyResponse(m), spectrum_options.frame);
-      }
-      nlohmann::ordered_json case_json = {
-          {"case", c.name}, {"group", c.group}, {"factor", c.factor}};
-      for (int sh = 0; sh < 2; ++sh) {
-        for (const auto& p : peaks[sh]) {
-          table.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), p.name,
-                        p.frequency, std::abs(p.value), std::arg(p.value)});
-        }
-        std::array<double, 2> rms{whirlRms(peaks[sh], "mesh_"), whirlRms(peaks[sh], "")};
-        std::array<double, 2> change{0.0, 0.0};
-        for (int k = 0; k < 2; ++k) {
-          if (c.group == "baseline") baseline[k][sh] = rms[k];
-          change[k] = baseline[k][sh] > 0.0 ? rms[k] / baseline[k][sh] - 1.0 : 0.0;
-          if (c.group != "baseline")
-            group_change[k][c.group] = std::max(group_change[k][c.group], std::abs(change[k]));
-        }
-        totals.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), rms[0],
-                       change[0], rms[1], change[1]});
-        case_json[io::kShaftNames[sh]] = {{"mesh_rms_m", rms[0]},
-                                          {"mesh_relative_change", change[0]},
-                                          {"dynamic_rms_m", rms[1]},
-                                          {"dynamic_relative_change", change[1]}};
-      }
-      cases_json.push_back(case_json);
-    }
-    result.addTable("study.csv", table);
-    result.addTable("study_totals.csv", totals);
-    std::array<nlohmann::ordered_json, 2> rankings;
-    std::array<std::string, 2> dominant;
-    for (int k = 0; k < 2; ++k) {
-      std::vector<std::pair<std::string, double>> ranking(group_change[k].begin(),
-                                                          group_change[k].end());
-      std::sort(ranking.begin(), ranking.end(),
-                [](const auto& a, const auto& b) { return a.second > b.second; });
-      rankings[k] = nlohmann::ordered_json::array();
-      for (const auto& [group, change] : ranking)
-        rankings[k].push_back({{"group", group}, {"max_relative_change", change}});
-      if (!ranking.empty())
-        dominant[k] =
-            fmt::format("{} ({:.1f} %)", ranking.front().first, 100 * ranking.front().second);
-    }
-    summary.results["study"] = {
-        {"method", in_time ? "time" : "frequency"},
-        {"measures",
-         {{"mesh_rms",
-           "sqrt(sum |c|^2) over the mesh harmonics, forward and backward: the "
-           "gear-mesh vibration"},
-          {"dynamic_rms",
-           "the same over every dynamic component (mesh harmonics and the 1x "
-           "runout circles)"}}},
-        {"cases", cases_json},
-        {"ranking_mesh", rankings[0]},
-        {"ranking_dynamic", rankings[1]}};
-    text +=
-        fmt::format("  study: dominant source of the mesh vibration {}, of the whole orbit {}\n",
-                    dominant[0], dominant[1]);
-  }
+  bool ok = !config.boolean("time.enabled") ||
+            addTimeDomain(config, context, model, spectrum_options, exact, result, time, text);
+  if (config.boolean("frequency.superpose")) addSuperposedHistory(model, parts, time, result);
+  addProbeRecords(config, model, time, result);
+  if (config.boolean("study.enabled") &&
+      !addParametricStudy(config, model, spectrum_options, result, warnings, text))
+    ok = false;
 
   summary.status = ok ? "ok" : (time.converged() ? "study_incomplete" : toString(time.status));
   summary.warnings = warnings;
