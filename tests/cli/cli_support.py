@@ -9,6 +9,6 @@ SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__
 EXAMPLES = SOURCE / "examples"
 
 
-def run(*args, timeout=600):
+def run(*args):
     """Runs `geardyn ARGS...` and returns the completed process (text output captured)."""
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=timeout)
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True)

@@ -14,7 +14,7 @@ EXAMPLES = SOURCE / "examples"
 
 
 def run(*args):
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=120)
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True)
 
 
 def test_simulate_backlash_example(tmp_path):

@@ -27,7 +27,7 @@ face_width = 0.02
 
 
 def run(*args, cwd=None):
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=60)
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, cwd=cwd)
 
 
 def write(tmp_path, text, name="pair.toml"):
@@ -93,7 +93,7 @@ def test_missing_plotter_is_a_warning_not_a_failure(tmp_path):
     config = write(tmp_path, VALID)
     env = dict(os.environ, GEARDYN_PYTHON="/nonexistent/python3")
     result = subprocess.run([CLI, "geometry", str(config), "--out", str(tmp_path / "o")],
-                            capture_output=True, text=True, env=env, timeout=60)
+                            capture_output=True, text=True, env=env)
     assert result.returncode == 0
     assert "warning: plots skipped" in result.stderr
     assert json.loads((tmp_path / "o" / "summary.json").read_text())["files"] == ["gears.csv", "tooth_profiles.csv"]

@@ -15,7 +15,7 @@ EXAMPLE = SOURCE / "examples" / "hbm_saletti2025_100Nm.toml"
 
 
 def run(*args):
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=300)
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True)
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ def loaded_objects(*args, cwd=None):
     """The shared objects the dynamic loader maps during `geardyn ARGS` (LD_DEBUG=files)."""
     env = dict(os.environ, LD_DEBUG="files")
     result = subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, env=env,
-                            timeout=300, cwd=cwd)
+                            cwd=cwd)
     assert result.returncode == 0, result.stderr[-2000:]
     return set(re.findall(r"file=(\S+)\s+\[0\];\s+(?:needed by|dynamically loaded)", result.stderr))
 

@@ -18,7 +18,7 @@ PLOTS = os.environ.get("GEARDYN_PLOTS", "1") == "1"
 
 
 def run(*args):
-    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=120)
+    return subprocess.run([CLI, *map(str, args)], capture_output=True, text=True)
 
 
 def test_visnadi_spur_end_to_end(tmp_path):

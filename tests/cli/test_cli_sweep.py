@@ -88,7 +88,7 @@ def test_mpi_sweep_gives_the_same_hdf5_as_threads(tmp_path):
     assert run("sweep", study, "--out", tmp_path / "threads", "--quiet").returncode == 0
     mpi = subprocess.run(["mpirun", "-n", "2", CLI, "sweep", str(study), "--out",
                           str(tmp_path / "mpi"), "--quiet"],
-                         capture_output=True, text=True, timeout=300, env=MPI_ENV)
+                         capture_output=True, text=True, env=MPI_ENV)
     assert mpi.returncode == 0, mpi.stdout + mpi.stderr
     a, _ = h5(tmp_path / "threads" / "sweep.h5")
     b, _ = h5(tmp_path / "mpi" / "sweep.h5")

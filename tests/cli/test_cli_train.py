@@ -124,7 +124,7 @@ def test_a_train_too_fine_for_memory_is_refused_before_it_allocates(tmp_path):
     # 1 µm elements on a 0.25 m shaft: 250 000 nodes, 1.5e6 DOFs, 1.8e14 B of dense matrices.
     flexible = EXAMPLES / "train_two_stage_flexible.toml"
     result = run("train", flexible, "--out", tmp_path, *quick(
-        "--set", "shafts.input.max_element_length=1e-6"), timeout=60)
+        "--set", "shafts.input.max_element_length=1e-6"))
     assert result.returncode == 2, result.stderr
     assert "shafts.input.max_element_length = 1e-06 m" in result.stderr, result.stderr
     assert "DOFs need" in result.stderr and "GEARDYN_MEMORY_LIMIT" in result.stderr

@@ -21,7 +21,7 @@ def main():
             return 1
     out.mkdir(parents=True, exist_ok=True)
     done = subprocess.run([sys.executable, "-m", "nbconvert", "--to", "notebook", "--execute",
-                           "--ExecutePreprocessor.timeout=600", "--output-dir", str(out),
+                           "--ExecutePreprocessor.timeout=-1", "--output-dir", str(out),
                            str(notebook.resolve())], cwd=notebook.parent)
     if done.returncode != 0:
         return done.returncode

@@ -177,7 +177,7 @@ def test_ctrl_c_interrupts_a_long_run():
             print("interrupted after", round(time.monotonic() - start, 2))
     """)
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                          timeout=120, env=os.environ)
+                          env=os.environ)
     assert "interrupted after" in done.stdout, done.stderr
     assert float(done.stdout.split()[-1]) < 10.0
 

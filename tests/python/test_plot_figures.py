@@ -34,8 +34,7 @@ def folders(tmp_path_factory):
         command = stem.split("_", 1)[0]
         folder = root / stem
         done = subprocess.run([CLI, command, str(SOURCE / "examples" / f"{stem}.toml"), "--out", str(folder),
-                               "--quiet", "--set", "output.plots=false"], capture_output=True, text=True,
-                              timeout=300)
+                               "--quiet", "--set", "output.plots=false"], capture_output=True, text=True)
         assert done.returncode == 0, done.stderr
         out[stem] = folder
     return out

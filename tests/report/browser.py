@@ -49,8 +49,9 @@ class Browser:
         options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
         self.driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
-    def open(self, path, timeout=30.0):
-        """Loads the page and waits until every plot container rendered (or `timeout` s);
+    def open(self, path, timeout=600.0):
+        """Loads the page and waits until every plot container rendered (or `timeout` s: long
+        enough for a busy machine, it returns as soon as the plots are drawn);
         returns {containers, rendered, drawn, traces, console: [messages]}."""
         self.driver.get(pathlib.Path(path).resolve().as_uri())
         deadline = time.monotonic() + timeout
