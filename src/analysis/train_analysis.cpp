@@ -148,8 +148,8 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
                                  m.damping_ratio,       static_cast<long long>(m.divergent),
                                  m.growthRate(),        std::to_string(m.multiplicity),
                                  stageTypes(m),         m.translational_fraction};
-    for (double e : m.mesh_strain_energy) row.push_back(e);
-    for (double e : m.element_strain_energy) row.push_back(e);
+    row.insert(row.end(), m.mesh_strain_energy.begin(), m.mesh_strain_energy.end());
+    row.insert(row.end(), m.element_strain_energy.begin(), m.element_strain_energy.end());
     table.addRow(row);
     for (int i = 0; i < model.dofCount(); ++i) {
       shapes.addRow(
@@ -219,7 +219,7 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
   std::size_t first_divergent = speeds.size(), last_divergent = 0;
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     std::vector<io::CsvCell> row{speeds[i] / kRpm};
-    for (const auto& m : d.modes[i]) row.push_back(m.frequency);
+    for (const auto& m : d.modes[i]) row.emplace_back(std::in_place_type<double>, m.frequency);
     row.push_back(d.divergence_rate[i]);
     table.addRow(row);
     if (d.divergence_rate[i] > 0.0) {
