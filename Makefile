@@ -26,11 +26,10 @@ sanitize:
 fuzz:
 	bash scripts/fuzz.sh
 
+# Through setup.sh: the same packages, ccache and pinned interpreter as the main build.
 bench:
-	bash scripts/setup.sh --deps
-	cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DGEARDYN_BUILD_BENCHMARKS=ON \
-	  -DGEARDYN_BUILD_TESTS=OFF -DGEARDYN_BUILD_PYTHON=OFF
-	cmake --build build-bench
+	BUILD_DIR=build-bench GEARDYN_CMAKE_ARGS="-DGEARDYN_BUILD_BENCHMARKS=ON \
+	  -DGEARDYN_BUILD_TESTS=OFF -DGEARDYN_BUILD_PYTHON=OFF" bash scripts/setup.sh
 	build-bench/bin/geardyn_bench
 
 format:
