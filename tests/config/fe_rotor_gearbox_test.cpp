@@ -74,11 +74,14 @@ TEST(FeRotorGearbox, ThePrintedGearboxHasTheFeRotorsMatrices) {
 }
 
 TEST(FeRotorGearbox, AHelicalRotorWithAxialDofsHasTheFeRotorsMatrices) {
-  const Translated t = translate(
-      example("rotor_visnadi2021_modal.toml",
-              {"pinion.helix_angle_deg=5.0", "gear.helix_angle_deg=-5.0", "model.axial=true",
-               "pinion_shaft.bearings.kxx=[5e7, 0.0]", "gear_shaft.bearings.kxx=[5e7, 0.0]",
-               "load.gravity=0.0", "mesh.damping=300.0", "damping.mass_proportional=2.0"}));
+  const Translated t = translate(example(
+      "rotor_visnadi2021_modal.toml",
+      {"pinion.helix_angle_deg=5.0", "gear.helix_angle_deg=-5.0", "model.axial=true",
+       "pinion_shaft.bearings.kxx=[5e7, 0.0]", "gear_shaft.bearings.kxx=[5e7, 0.0]",
+       "load.gravity=0.0", "mesh.damping=300.0", "damping.mass_proportional=2.0",
+       "mesh.line_of_action_angle_deg=50.0", "load.drive_node=2", "load.load_node=0",
+       "gear_shaft.disks.nodes=[2]", "gear_shaft.disks.mass=[1.5]",
+       "gear_shaft.disks.polar_inertia=[0.01]", "gear_shaft.disks.diametral_inertia=[0.005]"}));
   ASSERT_EQ(t.train->dofCount(), t.fe->dofCount());
   EXPECT_LT(relative(restrict(t.train->mass(), t.map), t.fe->mass()), 1e-12);
   EXPECT_LT(relative(restrict(t.train->stiffness(), t.map), t.fe->stiffness()), 1e-12);
