@@ -32,6 +32,8 @@ struct CommandOptions {
   bool progress = false;   ///< progress lines on stderr even when it is not a terminal
   bool resume = false;     ///< sweep: continue from the journal of an interrupted run
   bool overwrite = false;  ///< sweep: discard the journal of a previous run in the folder
+  /// Write the gearbox description the file translates to (TOML) on stdout and stop.
+  bool print_gearbox = false;
 
   /// The folder results go to.
   std::filesystem::path resultFolder() const;

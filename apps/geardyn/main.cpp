@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/fe_rotor_gearbox.h"
 #include "geardyn/error.h"
 #include "geardyn/version.h"
 #include "report_command.h"
@@ -65,12 +66,27 @@ int rejectUnknownCommand(int argc, char** argv, const std::vector<std::string>& 
   return geardyn::cli::kExitBadInput;
 }
 
+/// `--print-gearbox`: the gearbox text of a file that translates to one (an FE rotor file).
+int printGearbox(const geardyn::cli::Command& command, const geardyn::config::Config& config) {
+  const auto text = geardyn::config::feRotorGearbox(config);
+  if (!text) {
+    std::cerr << "geardyn " << command.name
+              << ": error: --print-gearbox: this file has no gearbox translation yet (a "
+                 "finite-element rotor file, [model] type = \"fe_geared_rotor\", has)\n";
+    return geardyn::cli::kExitBadInput;
+  }
+  std::cout << *text << std::flush;
+  return geardyn::cli::kExitOk;
+}
+
 int runCommand(const geardyn::cli::Command& command, const CommandOptions& options) {
   if (const int code = checkConfigFile(command, options); code != geardyn::cli::kExitOk)
     return code;
   try {
     if (command.run_file) return command.run_file(options);
-    return command.run(geardyn::cli::loadCommandConfig(command, options), options);
+    const geardyn::config::Config config = geardyn::cli::loadCommandConfig(command, options);
+    if (options.print_gearbox) return printGearbox(command, config);
+    return command.run(config, options);
   } catch (const geardyn::InputError& error) {
     std::cerr << "geardyn " << command.name << ": error: " << error.what() << "\n";
     return geardyn::cli::kExitBadInput;
@@ -129,6 +145,11 @@ int main(int argc, char** argv) {
     sub->add_flag("--progress", o.progress,
                   "progress lines with an ETA on stderr for runs over ~2 s (default: only when "
                   "stderr is a terminal)");
+    if (command.name == "rotor") {
+      sub->add_flag("--print-gearbox", o.print_gearbox,
+                    "write the gearbox description (TOML) this file translates to on stdout "
+                    "(finite-element rotor files) and stop");
+    }
     if (command.run_file) {
       sub->add_flag("--resume", o.resume,
                     "continue an interrupted sweep from its journal in the result folder");

@@ -7,10 +7,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <complex>
 #include <exception>
+#include <memory>
 #include <numbers>
 #include <thread>
 
+#include "fe_rotor_modes.h"
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/error.h"
@@ -228,12 +231,13 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
   const double lo = std::min(p.start, p.end), hi = std::max(p.start, p.end);
   std::vector<double> speeds;
   for (int i = 0; i <= 40; ++i) speeds.push_back(lo + (hi - lo) * i / 40.0);
-  ModalOptions mo;
-  mo.modes = static_cast<int>(config.integer("campbell.modes"));
-  mo.max_damping_ratio = config.real("modal.max_damping_ratio");
   nlohmann::ordered_json predicted = nlohmann::ordered_json::array();
   if (hi > lo) {
-    const CampbellDiagram d = campbellDiagram(model, speeds, mo, standardOrderLines(model));
+    std::vector<std::string> notes;  // the time run has reported the file's warnings
+    const detail::FeRotorTrain train = detail::feRotorTrain(config, model, notes);
+    const TrainCampbell d = detail::feRotorCampbell(
+        train, model, speeds, static_cast<int>(config.integer("campbell.modes")),
+        config.real("modal.max_damping_ratio"));
     for (const auto& cs : d.critical_speeds) {
       if (cs.line != "mesh") continue;
       predicted.push_back({{"mode", cs.mode},
@@ -315,7 +319,7 @@ int runTime(const config::Config& config, const AnalysisContext& context, io::Ru
   return kOk;
 }
 
-nlohmann::ordered_json modeJson(const RotorMode& m) {
+nlohmann::ordered_json modeJson(const TrainMode& m) {
   return {{"frequency_hz", m.frequency},
           {"damping_ratio", m.damping_ratio},
           {"whirl", m.whirl},
@@ -325,26 +329,48 @@ nlohmann::ordered_json modeJson(const RotorMode& m) {
           {"axial_fraction", m.axial_fraction}};
 }
 
+/// The model and its train (the file's gearbox).
+struct FeRotorModels {
+  config::FeRotorBuild build;
+  std::unique_ptr<FeGearedRotor> model;
+  detail::FeRotorTrain train;
+};
+
+FeRotorModels buildModels(const config::Config& config, io::RunSummary& summary) {
+  FeRotorModels m;
+  m.build = config::feRotorSpecFromConfig(config);
+  summary.warnings.insert(summary.warnings.end(), m.build.warnings.begin(), m.build.warnings.end());
+  m.model = std::make_unique<FeGearedRotor>(m.build.spec);
+  // The gearbox reader's warnings are about the same gears and mesh-stiffness model, which the
+  // file's own build has just reported in the file's keys.
+  std::vector<std::string> same_warnings;
+  m.train = detail::feRotorTrain(config, *m.model, same_warnings);
+  return m;
+}
+
+/// The modes at one speed, from the train's modal solver on the file's gearbox.
 int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
              std::string& text) {
-  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
-  summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
-  const FeGearedRotor model(build.spec);
+  const FeRotorModels models = buildModels(config, summary);
+  const FeGearedRotor& model = *models.model;
   const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
                                                       : config.real("speed.speed_rpm")) *
                        kRpm;
-  const auto modes = modalAnalysis(model, speed, config::modalOptionsFromConfig(config, "modal"));
+  const auto modes =
+      detail::feRotorModes(models.train, speed, static_cast<int>(config.integer("modal.modes")),
+                           config.real("modal.max_damping_ratio"));
   io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
                       "lateral_fraction", "torsional_fraction", "axial_fraction"});
   io::CsvTable shapes({"mode", "dof", "re", "im", "amplitude"});
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (std::size_t j = 0; j < modes.size(); ++j) {
-    const RotorMode& m = modes[j];
+    const TrainMode& m = modes[j];
     table.addRow({static_cast<long long>(j + 1), m.frequency, m.damping_ratio, m.whirl,
                   m.forward_fraction, m.lateral_fraction, m.torsional_fraction, m.axial_fraction});
     for (int i = 0; i < model.dofCount(); ++i) {
-      shapes.addRow({static_cast<long long>(j + 1), model.dofName(i), m.shape(i).real(),
-                     m.shape(i).imag(), std::abs(m.shape(i))});
+      const std::complex<double> x = m.shape(models.train.train_dof[i]);
+      shapes.addRow(
+          {static_cast<long long>(j + 1), model.dofName(i), x.real(), x.imag(), std::abs(x)});
     }
     list.push_back(modeJson(m));
     text += fmt::format("  mode {:2d}: {:9.2f} Hz  zeta {} [-]  {}\n", j + 1, m.frequency,
@@ -352,31 +378,33 @@ int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResu
   }
   result.addTable("modes.csv", table);
   result.addTable("mode_shapes.csv", shapes);
-  summary.results["model"] = modelJson(model, build.stiffness_model);
-  summary.results["modal"] = {{"speed_rpm", speed / kRpm}, {"modes", list}};
+  summary.results["model"] = modelJson(model, models.build.stiffness_model);
+  summary.results["modal"] = {
+      {"speed_rpm", speed / kRpm}, {"solver", "train_modal (the file's gearbox)"}, {"modes", list}};
   return kOk;
 }
 
 int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
                 std::string& text) {
-  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
-  summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
-  const FeGearedRotor model(build.spec);
+  const FeRotorModels models = buildModels(config, summary);
+  const FeGearedRotor& model = *models.model;
   const auto speeds = config::campbellSpeedsFromConfig(config);
-  const CampbellDiagram d = campbellDiagram(
-      model, speeds, config::modalOptionsFromConfig(config, "campbell"), standardOrderLines(model));
+  const TrainCampbell d = detail::feRotorCampbell(
+      models.train, model, speeds, static_cast<int>(config.integer("campbell.modes")),
+      config.real("modal.max_damping_ratio"));
   io::CsvTable table(
       {"speed_rpm", "mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction"});
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     for (std::size_t j = 0; j < d.modes[i].size(); ++j) {
-      const RotorMode& m = d.modes[i][j];
+      const TrainMode& m = d.modes[i][j];
       table.addRow({speeds[i] / kRpm, static_cast<long long>(j + 1), m.frequency, m.damping_ratio,
                     m.whirl, m.forward_fraction});
     }
   }
   result.addTable("campbell.csv", table);
+  // The order of a line: its slope [Hz per rad/s] × 2π, multiples of the pinion speed.
   io::CsvTable lines({"line", "order"});
-  for (const auto& l : d.lines) lines.addRow({l.name, l.order});
+  for (const auto& l : d.lines) lines.addRow({l.name, l.slope * kTwoPi});
   result.addTable("campbell_lines.csv", lines);
   io::CsvTable critical({"mode", "line", "speed_rpm", "frequency_hz", "whirl"});
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
@@ -390,9 +418,10 @@ int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisR
                     {"whirl", c.whirl}});
   }
   result.addTable("critical_speeds.csv", critical);
-  summary.results["model"] = modelJson(model, build.stiffness_model);
+  summary.results["model"] = modelJson(model, models.build.stiffness_model);
   summary.results["campbell"] = {{"speeds_rpm", {speeds.front() / kRpm, speeds.back() / kRpm}},
                                  {"points", speeds.size()},
+                                 {"solver", "train_modal (the file's gearbox)"},
                                  {"critical_speeds", list}};
   text += fmt::format("  {} modes tracked over {:.0f}-{:.0f} rpm; {} critical speed(s)\n",
                       d.modes.front().size(), speeds.front() / kRpm, speeds.back() / kRpm,

@@ -530,11 +530,4 @@ std::vector<double> campbellSpeedsFromConfig(const Config& config) {
   return speeds;
 }
 
-ModalOptions modalOptionsFromConfig(const Config& config, const std::string& section) {
-  ModalOptions o;
-  o.modes = static_cast<int>(config.integer(section + ".modes"));
-  o.max_damping_ratio = config.real("modal.max_damping_ratio");
-  return o;
-}
-
 }  // namespace geardyn::config

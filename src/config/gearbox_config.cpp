@@ -109,6 +109,13 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .positive()
       .optional()
       .doc("longest beam element (default: one per section, split at every gear, bearing, disk)");
+  schema.real("shafts.*.stiffness_proportional_damping")
+      .unit("s")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc(
+          "β_s: material damping β_s K_e of a flexible shaft's beam elements only (the "
+          "gearbox's β also damps bearings and meshes); 0 on a rigid shaft");
   schema.real("shafts.*.axial_offset")
       .unit("m")
       .defaultValue(0.0)
@@ -370,6 +377,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     s.poisson_ratio = config.real(p + "poisson_ratio");
     s.max_element_length = config.optionalReal(p + "max_element_length");
     s.axial_offset = config.real(p + "axial_offset");
+    s.stiffness_proportional_damping = config.real(p + "stiffness_proportional_damping");
     spec.shafts.push_back(std::move(s));
   }
   for (const std::string& name : config.names("gears")) {

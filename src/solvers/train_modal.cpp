@@ -26,6 +26,51 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
+/// Lateral, torsional and axial shares of the diagonal kinetic energy and the whirl
+/// (train_modal.h, TrainMode::whirl).
+void classifyWhirl(const GearTrainModel& model, TrainMode& mode,
+                   const Eigen::SparseMatrix<double>* sparse_mass) {
+  const Eigen::VectorXd md = sparse_mass ? Eigen::VectorXd(sparse_mass->diagonal())
+                                         : Eigen::VectorXd(model.mass().diagonal());
+  const int per = model.dofsPerBody();
+  double lateral = 0.0, torsional = 0.0, axial = 0.0, forward = 0.0, backward = 0.0;
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const TrainBody& body = model.bodies()[b];
+    const int r = model.rotationDof(static_cast<int>(b));
+    for (int d = body.first_dof; d < body.first_dof + per; ++d) {
+      const double e = md(d) * std::norm(mode.shape(d));
+      if (d == r) {
+        torsional += e;
+      } else if (per == 6 && d == body.first_dof + 3) {
+        axial += e;
+      } else {
+        lateral += e;
+      }
+    }
+    if (per == 1) continue;
+    const std::complex<double> Y = mode.shape(body.first_dof), Z = mode.shape(body.first_dof + 1);
+    const std::complex<double> I(0.0, 1.0);
+    double f = std::norm(Y + I * Z), bw = std::norm(Y - I * Z);
+    if (body.speed_ratio < 0.0) std::swap(f, bw);
+    forward += md(body.first_dof) * f;
+    backward += md(body.first_dof) * bw;
+  }
+  const double total = lateral + torsional + axial;
+  mode.lateral_fraction = total > 0.0 ? lateral / total : 0.0;
+  mode.torsional_fraction = total > 0.0 ? torsional / total : 0.0;
+  mode.axial_fraction = total > 0.0 ? axial / total : 0.0;
+  mode.forward_fraction = forward + backward > 0.0 ? forward / (forward + backward) : 0.5;
+  if (mode.torsional_fraction > 0.5) {
+    mode.whirl = "torsional";
+  } else if (mode.axial_fraction > 0.5) {
+    mode.whirl = "axial";
+  } else {
+    mode.whirl = mode.forward_fraction > 0.75   ? "forward"
+                 : mode.forward_fraction < 0.25 ? "backward"
+                                                : "mixed";
+  }
+}
+
 /// Energy fractions and the planetary mode type (Lin & Parker 1999: rotational modes move the
 /// central members without translating them, translational modes without rotating them,
 /// planet modes not at all). With six DOFs per body, modes of the stage's axial and tilting
@@ -59,6 +104,7 @@ void describe(const GearTrainModel& model, TrainMode& mode,
     translational += trans[b] / total;
   }
   mode.translational_fraction = translational;
+  classifyWhirl(model, mode, sparse_mass);
 
   // Strain energy of the real part of the shape (for real modes, the mode itself).
   const Eigen::VectorXd x = mode.shape.real();
@@ -427,10 +473,12 @@ TrainCampbell trainCampbell(const GearTrainModel& model, const std::vector<doubl
     }
   }
   for (const TrainOrderLine& line : lines) {
-    detail::findCrossings(d.speeds, d.modes, line.slope,
-                          [&](std::size_t j, std::size_t, double speed, double f, double) {
-                            d.critical_speeds.push_back({static_cast<int>(j), line.name, speed, f});
-                          });
+    detail::findCrossings(
+        d.speeds, d.modes, line.slope,
+        [&](std::size_t j, std::size_t i, double speed, double f, double s) {
+          d.critical_speeds.push_back({static_cast<int>(j), line.name, speed, f,
+                                       (s < 0.5 ? d.modes[i - 1][j] : d.modes[i][j]).whirl});
+        });
   }
   std::sort(
       d.critical_speeds.begin(), d.critical_speeds.end(),

@@ -2,6 +2,8 @@
 
 #include "geardyn/system/fe_rotor_train.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "geardyn/error.h"
@@ -13,18 +15,24 @@ GearTrainSpec gearTrainFromFeRotor(const FeGearedRotorSpec& rotor, const GearPai
   spec.name = "fe_geared_rotor";
   spec.dofs = TrainDofs::kFull;
   spec.mass_proportional_damping = rotor.mass_proportional;
-  spec.stiffness_proportional_damping = rotor.stiffness_proportional;
+  // β K_shafts of the FE rotor: the shafts' material damping, not the gearbox's β (which would
+  // also damp the bearings and the mesh).
+  spec.stiffness_proportional_damping = 0.0;
   spec.gravity = rotor.gravity;
   const char* gear_names[2] = {"pinion", "gear"};
   for (int s = 0; s < 2; ++s) {
     const FeShaftSpec& fe = rotor.shafts[s];
     if (!fe.unbalances.empty()) {
-      throw InputError(fe.name + ".unbalance", "", "none: gear trains carry no unbalance forces");
+      throw InputError(fe.name + ".unbalance.nodes",
+                       fmt::format("{} unbalance(s)", fe.unbalances.size()),
+                       "none: a gearbox description carries no unbalance forces (the modes do "
+                       "not depend on them)");
     }
     if (fe.elements.empty()) throw InputError(fe.name + ".element_lengths", "[]", "elements");
     TrainShaftSpec shaft;
     shaft.name = fe.name;
     shaft.flexible = true;
+    shaft.stiffness_proportional_damping = rotor.stiffness_proportional;
     const ShaftSegment& first = fe.elements.front();
     shaft.density = first.density;
     shaft.youngs_modulus = first.youngs_modulus;
@@ -50,13 +58,13 @@ GearTrainSpec gearTrainFromFeRotor(const FeGearedRotorSpec& rotor, const GearPai
     spec.gears.push_back(gear);
     for (std::size_t i = 0; i < fe.disks.size(); ++i) {
       const FeDisk& d = fe.disks[i];
-      spec.disks.push_back({fe.name + ".disk" + std::to_string(i), fe.name, node_x[d.node], d.mass,
+      spec.disks.push_back({fe.name + "_disk" + std::to_string(i), fe.name, node_x[d.node], d.mass,
                             d.polar_inertia, d.diametral_inertia});
     }
     for (std::size_t i = 0; i < fe.bearings.size(); ++i) {
       const FeBearing& b = fe.bearings[i];
       TrainBearingSpec t;
-      t.name = fe.name + ".bearing" + std::to_string(i);
+      t.name = fe.name + "_bearing" + std::to_string(i);
       t.shaft = fe.name;
       t.position = node_x[b.node];
       t.kyy = b.kyy, t.kzz = b.kzz, t.kyz = b.kyz, t.kzy = b.kzy;

@@ -177,6 +177,15 @@ void GearTrainModel::buildBodies() {
       throw InputError(key + ".axial_offset", fmt::format("{:g} m", shaft.axial_offset),
                        "a finite position");
     }
+    if (!(shaft.stiffness_proportional_damping >= 0.0) ||
+        !std::isfinite(shaft.stiffness_proportional_damping) ||
+        (!shaft.flexible && shaft.stiffness_proportional_damping != 0.0)) {
+      throw InputError(key + ".stiffness_proportional_damping",
+                       fmt::format("{:g} s", shaft.stiffness_proportional_damping),
+                       shaft.flexible ? "a finite β >= 0 s"
+                                      : "0 on a rigid shaft (it damps beam elements: flexible = "
+                                        "true)");
+    }
     if (shaft.flexible) {
       buildShaftNodes(static_cast<int>(s));
       shaft_body_.push_back(shaft_nodes_[s].front());

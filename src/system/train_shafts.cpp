@@ -246,8 +246,10 @@ void GearTrainModel::addBeamElements() {
     e.stiffness = shaftElementStiffness(beam.segment);
     e.jacobian = Eigen::MatrixXd::Identity(2 * kNodeDofs, 2 * kNodeDofs);
     e.local_stiffness = e.stiffness;
+    // Material damping β_s K_e of the shaft (Visnadi & de Castro 2021 eq. 10).
+    element_damping_.push_back(spec_.shafts[beam.shaft].stiffness_proportional_damping *
+                               e.stiffness);
     elements_.push_back(e);
-    element_damping_.push_back(Eigen::MatrixXd::Zero(2 * kNodeDofs, 2 * kNodeDofs));
   }
 }
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geardyn/error.h"
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/solvers/rotor_modal.h"
 #include "geardyn/solvers/train_modal.h"
@@ -52,13 +53,13 @@ struct Pair {
   GearPairSpec gears;
 };
 
-/// Visnadi's rotor with `elements` per shaft, axial bearings when `axial`, β = 0 (the train
-/// applies β to bearings and meshes as well).
+/// Visnadi's rotor with `elements` per shaft, axial bearings when `axial`, the paper's
+/// β = 3e-5 s on the shafts' elements (the translated shafts' stiffness_proportional_damping).
 Pair visnadi(double helix_deg, int elements, bool axial,
              std::shared_ptr<const MeshStiffness> k = testing::constantMesh(2.5e8)) {
   Pair p{testing::visnadiFeRotorSpec(std::move(k), helix_deg, elements), {}};
   p.gears = testing::visnadiPairSpec(helix_deg);
-  p.fe.stiffness_proportional = 0.0;
+  p.fe.stiffness_proportional = 3e-5;
   p.fe.mass_proportional = 3.0;
   p.fe.mesh_damping = 400.0;
   p.fe.axial = axial;
@@ -101,6 +102,47 @@ TEST(FeRotorReduction, SpurRotorWithoutAxialDofsIsTheTrainRestricted) {
 
 TEST(FeRotorReduction, HelicalRotorHasTheFeMatrices) {
   expectSameMatrices(visnadi(20.0, 4, true));
+}
+
+TEST(FeRotorReduction, ShaftBetaDampsTheBeamsOnlyAsTheFeRotorsBetaKShafts) {
+  const Pair p = visnadi(20.0, 4, true);
+  ASSERT_GT(p.fe.stiffness_proportional, 0.0);
+  const GearTrainSpec spec = gearTrainFromFeRotor(p.fe, p.gears);
+  EXPECT_EQ(spec.stiffness_proportional_damping, 0.0) << "β K would damp bearings and mesh too";
+  for (const TrainShaftSpec& shaft : spec.shafts)
+    EXPECT_EQ(shaft.stiffness_proportional_damping, p.fe.stiffness_proportional);
+  // C with β ≠ 0 (expectSameMatrices compares it to 1e-12); its β K_shafts part is not small.
+  Pair undamped = p;
+  undamped.fe.stiffness_proportional = 0.0;
+  const GearTrainModel a(spec), b(gearTrainFromFeRotor(undamped.fe, undamped.gears));
+  EXPECT_GT(relative(a.damping() - b.damping(), b.damping()), 1.0);
+  expectSameMatrices(p);
+}
+
+TEST(FeRotorReduction, ShaftBetaOnARigidShaftIsRefusedNamingTheKey) {
+  Pair p = visnadi(0.0, 2, true);
+  GearTrainSpec spec = gearTrainFromFeRotor(p.fe, p.gears);
+  spec.shafts[1].flexible = false;
+  try {
+    const GearTrainModel model(spec);
+    FAIL() << "a rigid shaft with material damping was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("shafts.gear_shaft.stiffness_proportional_damping"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(FeRotorReduction, UnbalancesAreRefusedNamingTheKey) {
+  Pair p = visnadi(0.0, 2, true);
+  p.fe.shafts[0].unbalances.push_back({1, 1e-5, 0.0});
+  try {
+    gearTrainFromFeRotor(p.fe, p.gears);
+    FAIL() << "an unbalance was dropped silently";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pinion_shaft.unbalance.nodes"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(FeRotorReduction, ModesAtSpeedMatchTheFeRotor) {

@@ -13,7 +13,6 @@
 #include "geardyn/config/config_schema.h"
 #include "geardyn/models/fe_geared_rotor.h"
 #include "geardyn/solvers/fe_rotor_response.h"
-#include "geardyn/solvers/rotor_modal.h"
 
 namespace geardyn::config {
 
@@ -49,6 +48,5 @@ std::vector<int> feOutputChannels(const Config& config, const FeGearedRotor& mod
 
 /// Pinion speeds [rad/s] of [campbell].
 std::vector<double> campbellSpeedsFromConfig(const Config& config);
-ModalOptions modalOptionsFromConfig(const Config& config, const std::string& section);
 
 }  // namespace geardyn::config

@@ -33,6 +33,17 @@ struct TrainMode {
   /// "out_of_plane" (axial and tilting motion only); "outside" for modes not in the stage.
   std::vector<std::string> stage_type;
   int multiplicity = 1;  ///< modes within 1e-6 relative of this frequency (itself included)
+  /// Shares of the diagonal kinetic energy Σ M_ii |x_i|² in the lateral motion (u_y, u_z, θ_y,
+  /// θ_z), the torsion θ_x and the axial u_x [-] (they sum to 1).
+  double lateral_fraction = 0.0, torsional_fraction = 0.0, axial_fraction = 0.0;
+  /// Whirl (planar and full DOFs): each body's lateral motion r = u_y + i u_z of e^{iωt} is a
+  /// circle (U_y + iU_z)/2 turning about +x and one (U_y − iU_z)/2 about −x; forward is the
+  /// sense of the body's own spin. The mass-weighted share of the forward circles [-] (0.5
+  /// without lateral motion), Lalanne & Ferraris (1998) §2.
+  double forward_fraction = 0.5;
+  /// "torsional" (torsional share > 1/2), "axial" (axial share > 1/2), else "forward" (forward
+  /// share > 0.75), "backward" (< 0.25) or "mixed".
+  std::string whirl;
   /// A static divergence: λ real and > 0 (growth rate [1/s]), frequency 0, damping ratio −1.
   /// Listed before the oscillating modes and not counted in TrainModalOptions::modes.
   bool divergent = false;
@@ -79,6 +90,7 @@ struct TrainCriticalSpeed {
   std::string line;        ///< order line name
   double speed = 0.0;      ///< input speed [rad/s]
   double frequency = 0.0;  ///< [Hz]
+  std::string whirl;       ///< TrainMode::whirl of the mode at the nearer speed
 };
 
 struct TrainCampbell {

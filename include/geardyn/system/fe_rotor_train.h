@@ -5,9 +5,12 @@
 /// sections, bearings and disks at their nodes' positions, one mesh whose position angle puts
 /// the line of action where the FE rotor's angle ψ does, and the drive and load torques at the
 /// same nodes. GearTrainModel of the result reproduces FeGearedRotor's M, K, G₁, the mesh
-/// vector, F₀ and, for β = 0, C (tests/system/fe_rotor_reduction_test.cpp). Not carried over:
-/// unbalances (refused), gravity on the shaft elements (the train also weighs the beams, the
-/// FE rotor only its disks), β K (the train applies β to bearings and meshes too).
+/// vector, F₀ (without gravity) and C, whose β K_shafts is each flexible shaft's
+/// stiffness_proportional_damping (tests/system/fe_rotor_reduction_test.cpp). Differences:
+/// unbalances are refused (InputError naming <shaft>.unbalance: a gear train has no unbalance
+/// forces); gravity is carried as the gearbox's, which weighs the beam elements as well as the
+/// disks (the FE rotor weighs its disks only), so F₀ differs by the shafts' own weight when
+/// gravity ≠ 0 — the modes and the Campbell diagram do not depend on it.
 
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/models/fe_geared_rotor.h"

@@ -52,6 +52,10 @@ struct TrainShaftSpec {
   double axial_offset = 0.0;
   /// About a transverse axis through its mass centre [kg m²] (full DOFs, rigid shafts).
   double diametral_inertia = 0.0;
+  /// β_s [s]: material (stiffness-proportional) damping of a flexible shaft's beam elements,
+  /// C_e = β_s K_e, beside the gearbox's Rayleigh α M + β K (which also damps bearings and
+  /// meshes); Visnadi & de Castro (2021) eq. (10), C = α M + β K_shafts. 0 on a rigid shaft.
+  double stiffness_proportional_damping = 0.0;
 };
 
 /// A rigid disk (an inertia: flywheel, rotor of a motor, brake disk) on a shaft at an axial

@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// The gearbox a finite-element geared rotor file is (issue #31): a `geardyn rotor` file with
+/// `[model] type = "fe_geared_rotor"` (fe_rotor_config.h, Visnadi & de Castro 2021 §3)
+/// translated into gearbox description text (gearbox_config.h) — full DOFs, the two shafts
+/// flexible with one section per element and their β as stiffness_proportional_damping, the
+/// bearings and disks (the gear bodies among them) at their nodes' positions, one mesh with the
+/// file's stiffness model and [mesh_stiffness.<model>] options, dashpot and transmission error,
+/// the line of action where [mesh] puts it, and the operating point (speed, torque at the drive
+/// and load nodes). Doubles are printed so that they read back exactly (fmt "{}").
+///
+/// What does not translate is refused with an InputError naming the key: unbalances (a gearbox
+/// has no unbalance forces; FeUnbalances::kOmit drops them for the modal analyses, whose modes
+/// do not depend on them), a helical pair without model.axial (the FE rotor holds the axial
+/// DOFs the helical mesh loads; a gearbox keeps them), model.contact_point =
+/// "base_tangent_points" with a helical pair (the gearbox mesh acts at the pitch point), and
+/// pair.driver = "gear". Gravity is the gearbox's, which weighs the shafts as well as the disks
+/// (docs/guide/fe_rotor.md, "Which gearbox this file is").
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geardyn/config/config.h"
+#include "geardyn/system/gear_train.h"
+
+namespace geardyn::config {
+
+/// What the translation does with the shafts' [<shaft>.unbalance] entries.
+enum class FeUnbalances { kRefuse, kOmit };
+
+/// The gearbox description text of an FE rotor configuration (feRotorSchema()); it is accepted
+/// by gearboxSchema() and describes the train of gearTrainFromFeRotor.
+std::string feRotorGearboxToml(const Config& config,
+                               FeUnbalances unbalances = FeUnbalances::kRefuse);
+
+/// `rotor FILE --print-gearbox`: the gearbox text when `config` is an FE rotor file ([model]
+/// type = "fe_geared_rotor"), nullopt otherwise.
+std::optional<std::string> feRotorGearbox(const Config& config);
+
+/// The gear train of an FE rotor configuration, read from its translated text by the gearbox
+/// reader (gearTrainFromConfig); the reader's warnings are appended.
+GearTrainSpec feRotorGearTrain(const Config& config, std::vector<std::string>& warnings,
+                               FeUnbalances unbalances = FeUnbalances::kRefuse);
+
+}  // namespace geardyn::config
