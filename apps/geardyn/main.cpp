@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/translated_gearbox.h"
 #include "geardyn/error.h"
 #include "geardyn/version.h"
 #include "report_command.h"
@@ -65,10 +66,27 @@ int rejectUnknownCommand(int argc, char** argv, const std::vector<std::string>& 
   return geardyn::cli::kExitBadInput;
 }
 
+/// --print-gearbox: the gearbox the file translates into, on stdout (issue #31).
+int printGearbox(const geardyn::cli::Command& command, const CommandOptions& options) {
+  const auto refuse = [&] {
+    std::cerr << "geardyn " << command.name << ": error: --print-gearbox: `" << command.name
+              << "` has no translation into a gearbox description (the gear-pair commands "
+                 "simulate, hbm and stats have one)\n";
+    return geardyn::cli::kExitBadInput;
+  };
+  if (command.run_file) return refuse();
+  const auto text = geardyn::config::translatedGearbox(
+      command.name, geardyn::cli::loadCommandConfig(command, options));
+  if (!text) return refuse();
+  std::cout << *text << std::flush;
+  return geardyn::cli::kExitOk;
+}
+
 int runCommand(const geardyn::cli::Command& command, const CommandOptions& options) {
   if (const int code = checkConfigFile(command, options); code != geardyn::cli::kExitOk)
     return code;
   try {
+    if (options.print_gearbox) return printGearbox(command, options);
     if (command.run_file) return command.run_file(options);
     return command.run(geardyn::cli::loadCommandConfig(command, options), options);
   } catch (const geardyn::InputError& error) {
@@ -129,6 +147,9 @@ int main(int argc, char** argv) {
     sub->add_flag("--progress", o.progress,
                   "progress lines with an ETA on stderr for runs over ~2 s (default: only when "
                   "stderr is a terminal)");
+    sub->add_flag("--print-gearbox", o.print_gearbox,
+                  "write the gearbox description (TOML) the file translates into to stdout and "
+                  "exit without analysing (simulate, hbm, stats)");
     if (command.run_file) {
       sub->add_flag("--resume", o.resume,
                     "continue an interrupted sweep from its journal in the result folder");
