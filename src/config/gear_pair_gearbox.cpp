@@ -115,21 +115,25 @@ GearSpec nominalGear() {
   return g;
 }
 
-/// The stiffness model names that are computed from the gears (copied [mesh_stiffness.*]).
+/// The tooth-pair contact elements of the loaded tooth contact (model.type = "gear_pair_ltca"):
+/// the gearbox mesh's contact = "tooth_pairs".
+bool toothPairs(const Config& config) {
+  return config.string("model.type") == "gear_pair_ltca";
+}
+
+/// The stiffness is computed from the gears (copied [mesh_stiffness.*]).
 bool fromGears(const Config& config) {
   const std::string type = config.string("model.stiffness.type");
-  return config.string("model.type") == "gear_pair" &&
-         (type == "potential_energy" || type == "api" || type == "iso6336");
+  return toothPairs(config) || (config.string("model.type") == "gear_pair" &&
+                                (type == "potential_energy" || type == "api" || type == "iso6336"));
 }
 
 }  // namespace
 
 std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBuild& build) {
   const std::string type = config.string("model.type");
-  if (type == "gear_pair_ltca" || build.spec.contact_elements) {
-    return "model.type = \"" + type +
-           "\": the loaded-tooth-contact elements are not translated into a gearbox yet (the "
-           "mesh's contact = \"tooth_pairs\" is their gearbox form)";
+  if (build.spec.contact_elements && !toothPairs(config)) {
+    return "model.type = \"" + type + "\": its contact elements have no gearbox form";
   }
   const std::string stiffness = config.string("model.stiffness.type");
   if (type == "gear_pair" && stiffness == "ltca") {
@@ -242,7 +246,11 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
         "[N/m]\ncontact_ratio = {}\n",
         real(k->kMin()), real(k->kMax()), real(k->contactRatio()));
   } else {
-    t += "stiffness = " + quoted(config.string("model.stiffness.type")) + "\n";
+    // gear_pair_ltca: k(φ) is the unmodified potential-energy stiffness (scales, k̄, linear
+    // analyses); the tooth-pair elements carry the modifications.
+    t += "stiffness = " +
+         quoted(toothPairs(config) ? "potential_energy" : config.string("model.stiffness.type")) +
+         "\n";
     stiffness_tables = meshStiffnessTables(config, "mesh_stiffness");
   }
   t += fmt::format("damping = {}  # [N s/m]: zeta = {} on m_e and the mean stiffness\n",
@@ -263,7 +271,18 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
       t += "contact = \"linear\"\n";
       break;
     case ContactLaw::kOneSided:
-      t += "contact = \"one_sided\"\n";
+      if (toothPairs(config)) {
+        t += fmt::format(
+            "contact = \"tooth_pairs\"  # the file's model.type = \"gear_pair_ltca\"\n"
+            "tooth_pair_slices = {}  # model.stiffness.ltca_slices\n",
+            config.integer("model.stiffness.ltca_slices"));
+        // The file's [modifications], the gaps of the tooth-pair elements.
+        if (const Json* m = tableAt(config, "modifications")) {
+          stiffness_tables = "\n[meshes.mesh.modifications]\n" + keys(*m) + stiffness_tables;
+        }
+      } else {
+        t += "contact = \"one_sided\"\n";
+      }
       break;
     case ContactLaw::kBacklash:
       t += fmt::format(
