@@ -143,13 +143,6 @@ std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBui
   if (!config.realList("model.extra_force_amplitudes").empty()) {
     return "model.extra_force_amplitudes: the gearbox has no extra harmonic force";
   }
-  const std::string te = "model.transmission_error.";
-  if (config.real(te + "rectangular_amplitude") != 0.0) {
-    return te + "rectangular_amplitude: the gearbox's transmission error is a Fourier series";
-  }
-  if (!config.realList(te + "table_phases").empty()) {
-    return te + "table_phases: the gearbox's transmission error is a Fourier series";
-  }
   if (hasGearPair(config) && (config.real("pinion.helix_angle_deg") != 0.0 ||
                               config.real("gear.helix_angle_deg") != 0.0)) {
     return "pinion.helix_angle_deg: a helical pair's gearbox mesh acts along the contact normal, "
@@ -265,6 +258,18 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
     t += "te_amplitudes = " + realList(te_amplitudes) + "  # [m]\n";
     t += "te_phases_deg = " + realList(phases_deg) +
          "  # the file's model.transmission_error.phases [rad] in degrees\n";
+  }
+  const std::string te = "model.transmission_error.";
+  if (config.real(te + "rectangular_amplitude") != 0.0) {
+    t += fmt::format("te_rectangular_amplitude = {}  # [m]\n",
+                     real(config.real(te + "rectangular_amplitude")));
+    t += "te_rectangular_duty = " + real(config.real(te + "rectangular_duty")) + "\n";
+    t += "te_rectangular_start = " + real(config.real(te + "rectangular_start")) + "\n";
+  }
+  if (!config.realList(te + "table_phases").empty() ||
+      !config.realList(te + "table_values").empty()) {
+    t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
+    t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
   }
   switch (s.contact) {
     case ContactLaw::kLinear:

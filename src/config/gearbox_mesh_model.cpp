@@ -54,6 +54,32 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .unit("deg")
       .defaultValue(Json::array())
       .doc("phases φ_r of the TE orders (one per amplitude; empty: 0)");
+  // The other forms of the gear-pair file's [model.transmission_error] (models/
+  // transmission_error.h), added to the series.
+  schema.real(prefix + "te_rectangular_amplitude")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("rectangular wave added to e(φ): its value on the duty part of each mesh period");
+  schema.real(prefix + "te_rectangular_duty")
+      .unit("-")
+      .greaterThan(0.0)
+      .lessThan(1.0)
+      .defaultValue(0.5)
+      .doc("fraction of the mesh period the rectangular wave is on");
+  schema.real(prefix + "te_rectangular_start")
+      .unit("-")
+      .defaultValue(0.0)
+      .doc("mesh phase where the rectangular wave starts [mesh periods]");
+  schema.realList(prefix + "te_table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(Json::array())
+      .doc("table added to e(φ), linear between points: mesh phases in [0, 1)");
+  schema.realList(prefix + "te_table_values")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("the table's e at te_table_phases");
   schema.string(prefix + "contact")
       .choices({"linear", "one_sided", "backlash", "tooth_pairs"})
       .optional()
@@ -162,6 +188,16 @@ TransmissionError teFromConfig(const config::Config& config, const std::string& 
   if (phases.empty()) phases.assign(amplitudes.size(), 0.0);
   for (double& p : phases) p *= kDeg;
   if (!amplitudes.empty()) te.addFourier(amplitudes, phases, prefix + "te_phases_deg");
+  if (config.real(prefix + "te_rectangular_amplitude") != 0.0) {
+    te.addRectangular(config.real(prefix + "te_rectangular_amplitude"),
+                      config.real(prefix + "te_rectangular_duty"),
+                      config.real(prefix + "te_rectangular_start"), prefix + "te_rectangular");
+  }
+  const auto table_phases = config.realList(prefix + "te_table_phases");
+  const auto table_values = config.realList(prefix + "te_table_values");
+  if (!table_phases.empty() || !table_values.empty()) {
+    te.addTable(table_phases, table_values, prefix + "te_table");
+  }
   return te;
 }
 

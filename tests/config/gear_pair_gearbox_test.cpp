@@ -139,7 +139,7 @@ face_width = 0.025
 bore_diameter = 0.05
 )";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"step levels, damping value, one-sided, speed", R"(
+      {"step levels, damping value, one-sided, rectangular and table TE", R"(
 [model]
 mass = 2.5
 damping = 800.0
@@ -151,6 +151,12 @@ type = "step"
 k_min = 3e8
 k_max = 4.5e8
 contact_ratio = 1.63
+[model.transmission_error]
+rectangular_amplitude = 3e-6
+rectangular_duty = 0.3
+rectangular_start = 0.6
+table_phases = [0.0, 0.25, 0.7]
+table_values = [1e-6, -2e-6, 5e-7]
 [excitation]
 mesh_frequency = 612.5
 initial_phase = 0.37
