@@ -121,6 +121,13 @@ bool toothPairs(const Config& config) {
   return config.string("model.type") == "gear_pair_ltca";
 }
 
+/// The mesh linearised about the mean force (model.stiffness.type = "ltca"): its tangent
+/// stiffness and error tables, the mesh's stiffness = "table" and te_table_*.
+bool linearisedContact(const Config& config) {
+  return config.string("model.type") == "gear_pair" &&
+         config.string("model.stiffness.type") == "ltca";
+}
+
 /// The stiffness is computed from the gears (copied [mesh_stiffness.*]).
 bool fromGears(const Config& config) {
   const std::string type = config.string("model.stiffness.type");
@@ -136,10 +143,6 @@ std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBui
     return "model.type = \"" + type + "\": its contact elements have no gearbox form";
   }
   const std::string stiffness = config.string("model.stiffness.type");
-  if (type == "gear_pair" && stiffness == "ltca") {
-    return "model.stiffness.type = \"ltca\": the gearbox has no key for the linearised loaded "
-           "contact's tangent-stiffness table";
-  }
   if (!config.realList("model.extra_force_amplitudes").empty()) {
     return "model.extra_force_amplitudes: the gearbox has no extra harmonic force";
   }
@@ -149,7 +152,8 @@ std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBui
            "the gear-pair model along the transverse line of action";
   }
   const bool numeric = dynamic_cast<const FourierMeshStiffness*>(build.spec.stiffness.get()) ||
-                       dynamic_cast<const StepMeshStiffness*>(build.spec.stiffness.get());
+                       dynamic_cast<const StepMeshStiffness*>(build.spec.stiffness.get()) ||
+                       linearisedContact(config);
   if (!numeric && !fromGears(config)) {
     return "model.stiffness.type = \"" + stiffness + "\": no gearbox form";
   }
@@ -232,6 +236,17 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
         "[N/m]\namplitudes = {}\nphases_deg = {}\ncontact_ratio = {}\n",
         real(f->mean()), realList(f->relativeAmplitudes()), realList(phases_deg),
         real(f->contactRatio()));
+  } else if (linearisedContact(config)) {
+    // Tabulated at the loaded contact's positions: the table reads back its values there.
+    const std::vector<double> phases = s.stiffness->discontinuities();
+    std::vector<double> values;
+    for (double p : phases) values.push_back(s.stiffness->stiffness(p));
+    t += fmt::format(
+        "stiffness = \"table\"  # the file's model.stiffness.type = \"ltca\": the loaded "
+        "contact's\n# tangent stiffness K(phi) at the mean force F = {} N, at {} positions\n"
+        "stiffness_table_source = \"ltca\"\nstiffness_table_phases = {}\n"
+        "stiffness_table_values = {}  # [N/m]\n",
+        real(s.mean_force), phases.size(), realList(phases), realList(values));
   } else if (const auto* k = dynamic_cast<const StepMeshStiffness*>(s.stiffness.get())) {
     t += "stiffness = \"step\"\n";
     stiffness_tables = fmt::format(
@@ -270,6 +285,22 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
       !config.realList(te + "table_values").empty()) {
     t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
     t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
+  } else if (linearisedContact(config)) {
+    // E = δ − F/K of the loaded contact at its positions: the model's error there less the
+    // file's series and rectangular wave (exact when the file gives none).
+    TransmissionError given;
+    given.addFourier(config.realList(te + "amplitudes"), config.realList(te + "phases"), te);
+    if (config.real(te + "rectangular_amplitude") != 0.0) {
+      given.addRectangular(config.real(te + "rectangular_amplitude"),
+                           config.real(te + "rectangular_duty"),
+                           config.real(te + "rectangular_start"), te);
+    }
+    const std::vector<double> phases = s.stiffness->discontinuities();
+    std::vector<double> values;
+    for (double p : phases) values.push_back(s.transmission_error.value(p) - given.value(p));
+    t += "te_table_phases = " + realList(phases) +
+         "  # the loaded contact's error delta - F/K (model.stiffness.type = \"ltca\")\n";
+    t += "te_table_values = " + realList(values) + "  # [m]\n";
   }
   switch (s.contact) {
     case ContactLaw::kLinear:

@@ -11,6 +11,7 @@
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/stiffness/tabulated_stiffness.h"
 #include "geardyn/units.h"
 
 namespace geardyn::config::detail {
@@ -22,8 +23,8 @@ using Json = nlohmann::ordered_json;
 }  // namespace
 
 namespace {
-const std::vector<std::string> kStiffnessChoices = {"constant", "api",  "potential_energy",
-                                                    "iso6336",  "step", "fourier"};
+const std::vector<std::string> kStiffnessChoices = {
+    "constant", "api", "potential_energy", "iso6336", "step", "fourier", "table"};
 }  // namespace
 
 void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
@@ -40,6 +41,23 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .doc(
           "k when stiffness = \"constant\"; every mesh model's k acts along the contact normal, "
           "inclined by β_b to the transverse plane (torsional stiffness k cos² β_b r_b²)");
+  schema.realList(prefix + "stiffness_table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(Json::array())
+      .doc(
+          "k(φ) when stiffness = \"table\", linear between points: ascending mesh phases in [0, "
+          "1)");
+  schema.realList(prefix + "stiffness_table_values")
+      .unit("N/m")
+      .defaultValue(Json::array())
+      .doc("the table's k at stiffness_table_phases (> 0)");
+  schema.string(prefix + "stiffness_table_source")
+      .defaultValue("table")
+      .doc(
+          "what the table is, the stiffness model's name in results (e.g. \"ltca\": the loaded "
+          "tooth contact's tangent stiffness at the mean force, from a gear-pair file)");
   schema.real(prefix + "damping_ratio")
       .unit("-")
       .min(0.0)
@@ -214,6 +232,18 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& c
     }
     return std::make_shared<ConstantMeshStiffness>(
         "constant", config.real(prefix + "stiffness_value"), contact_ratio);
+  }
+  if (model == "table") {
+    const auto phases = config.realList(prefix + "stiffness_table_phases");
+    const auto values = config.realList(prefix + "stiffness_table_values");
+    if (phases.size() < 2 || phases.size() != values.size()) {
+      throw InputError(prefix + "stiffness_table_values",
+                       fmt::format("{} phases, {} values", phases.size(), values.size()),
+                       "as many values [N/m] as stiffness_table_phases, at least 2, with "
+                       "stiffness = \"table\"");
+    }
+    return std::make_shared<TabulatedMeshStiffness>(
+        phases, values, contact_ratio, config.string(prefix + "stiffness_table_source"));
   }
   if (model == "api") {
     return std::make_shared<ConstantMeshStiffness>("api", apiMeshStiffness(face_width, helix),
