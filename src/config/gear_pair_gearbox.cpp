@@ -135,6 +135,122 @@ bool fromGears(const Config& config) {
                                 (type == "potential_energy" || type == "api" || type == "iso6336"));
 }
 
+/// The mesh's stiffness keys; the [mesh_stiffness.*] tables they need go to `tables`.
+std::string stiffnessKeys(const Config& config, const GearPairModelSpec& s, std::string& tables) {
+  std::string t;
+  if (const auto* f = dynamic_cast<const FourierMeshStiffness*>(s.stiffness.get())) {
+    std::vector<double> phases_deg;
+    for (double p : f->phases()) phases_deg.push_back(p / kDeg);
+    t += "stiffness = \"fourier\"  # k = k0 (1 + sum s_i cos(2 pi i phi - phi_i))\n";
+    tables = fmt::format(
+        "\n[mesh_stiffness.fourier]\nfit = \"given\"\nmean = \"given\"\nmean_value = {}  # "
+        "[N/m]\namplitudes = {}\nphases_deg = {}\ncontact_ratio = {}\n",
+        real(f->mean()), realList(f->relativeAmplitudes()), realList(phases_deg),
+        real(f->contactRatio()));
+  } else if (linearisedContact(config)) {
+    // Tabulated at the loaded contact's positions: the table reads back its values there.
+    const std::vector<double> phases = s.stiffness->discontinuities();
+    std::vector<double> values;
+    for (double p : phases) values.push_back(s.stiffness->stiffness(p));
+    t += fmt::format(
+        "stiffness = \"table\"  # the file's model.stiffness.type = \"ltca\": the loaded "
+        "contact's\n# tangent stiffness K(phi) at the mean force F = {} N, at {} positions\n"
+        "stiffness_table_source = \"ltca\"\nstiffness_table_phases = {}\n"
+        "stiffness_table_values = {}  # [N/m]\n",
+        real(s.mean_force), phases.size(), realList(phases), realList(values));
+  } else if (const auto* k = dynamic_cast<const StepMeshStiffness*>(s.stiffness.get())) {
+    t += "stiffness = \"step\"\n";
+    tables = fmt::format(
+        "\n[mesh_stiffness.step]\nlevels = \"given\"\nk_min = {}  # [N/m]\nk_max = {}  # "
+        "[N/m]\ncontact_ratio = {}\n",
+        real(k->kMin()), real(k->kMax()), real(k->contactRatio()));
+  } else {
+    // gear_pair_ltca: k(φ) is the unmodified potential-energy stiffness (scales, k̄, linear
+    // analyses); the tooth-pair elements carry the modifications.
+    t += "stiffness = " +
+         quoted(toothPairs(config) ? "potential_energy" : config.string("model.stiffness.type")) +
+         "\n";
+    tables = meshStiffnessTables(config, "mesh_stiffness");
+  }
+  return t;
+}
+
+/// The mesh's transmission-error keys.
+std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
+  std::string t;
+  const auto te_amplitudes = config.realList("model.transmission_error.amplitudes");
+  if (!te_amplitudes.empty()) {
+    std::vector<double> phases_deg;
+    for (double p : config.realList("model.transmission_error.phases")) {
+      phases_deg.push_back(p / kDeg);
+    }
+    t += "te_amplitudes = " + realList(te_amplitudes) + "  # [m]\n";
+    t += "te_phases_deg = " + realList(phases_deg) +
+         "  # the file's model.transmission_error.phases [rad] in degrees\n";
+  }
+  const std::string te = "model.transmission_error.";
+  if (config.real(te + "rectangular_amplitude") != 0.0) {
+    t += fmt::format("te_rectangular_amplitude = {}  # [m]\n",
+                     real(config.real(te + "rectangular_amplitude")));
+    t += "te_rectangular_duty = " + real(config.real(te + "rectangular_duty")) + "\n";
+    t += "te_rectangular_start = " + real(config.real(te + "rectangular_start")) + "\n";
+  }
+  if (!config.realList(te + "table_phases").empty() ||
+      !config.realList(te + "table_values").empty()) {
+    t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
+    t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
+  } else if (linearisedContact(config)) {
+    // E = δ − F/K of the loaded contact at its positions: the model's error there less the
+    // file's series and rectangular wave (exact when the file gives none).
+    TransmissionError given;
+    given.addFourier(config.realList(te + "amplitudes"), config.realList(te + "phases"), te);
+    if (config.real(te + "rectangular_amplitude") != 0.0) {
+      given.addRectangular(config.real(te + "rectangular_amplitude"),
+                           config.real(te + "rectangular_duty"),
+                           config.real(te + "rectangular_start"), te);
+    }
+    const std::vector<double> phases = s.stiffness->discontinuities();
+    std::vector<double> values;
+    for (double p : phases) values.push_back(s.transmission_error.value(p) - given.value(p));
+    t += "te_table_phases = " + realList(phases) +
+         "  # the loaded contact's error delta - F/K (model.stiffness.type = \"ltca\")\n";
+    t += "te_table_values = " + realList(values) + "  # [m]\n";
+  }
+  return t;
+}
+
+/// The mesh's contact keys; the tooth pairs' [meshes.mesh.modifications] go before `tables`.
+std::string contactKeys(const Config& config, const GearPairModelSpec& s, std::string& tables) {
+  std::string t;
+  switch (s.contact) {
+    case ContactLaw::kLinear:
+      t += "contact = \"linear\"\n";
+      break;
+    case ContactLaw::kOneSided:
+      if (toothPairs(config)) {
+        t += fmt::format(
+            "contact = \"tooth_pairs\"  # the file's model.type = \"gear_pair_ltca\"\n"
+            "tooth_pair_slices = {}  # model.stiffness.ltca_slices\n",
+            config.integer("model.stiffness.ltca_slices"));
+        // The file's [modifications], the gaps of the tooth-pair elements.
+        if (const Json* m = tableAt(config, "modifications")) {
+          tables = "\n[meshes.mesh.modifications]\n" + keys(*m) + tables;
+        }
+      } else {
+        t += "contact = \"one_sided\"\n";
+      }
+      break;
+    case ContactLaw::kBacklash:
+      t += fmt::format(
+          "contact = \"backlash\"\n# model.backlash = {} m of the file is the HALF clearance b of "
+          "the gear-pair law;\n# the gearbox backlash is the FULL normal clearance j = 2 b.\n"
+          "backlash = {}  # [m]\n",
+          real(s.backlash), real(2.0 * s.backlash));
+      break;
+  }
+  return t;
+}
+
 }  // namespace
 
 std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBuild& build) {
@@ -226,109 +342,14 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
   if (pair_given && config.has("pair.centre_distance")) {
     t += "centre_distance = " + real(config.real("pair.centre_distance")) + "\n";
   }
-  std::string stiffness_tables;
-  if (const auto* f = dynamic_cast<const FourierMeshStiffness*>(s.stiffness.get())) {
-    std::vector<double> phases_deg;
-    for (double p : f->phases()) phases_deg.push_back(p / kDeg);
-    t += "stiffness = \"fourier\"  # k = k0 (1 + sum s_i cos(2 pi i phi - phi_i))\n";
-    stiffness_tables = fmt::format(
-        "\n[mesh_stiffness.fourier]\nfit = \"given\"\nmean = \"given\"\nmean_value = {}  # "
-        "[N/m]\namplitudes = {}\nphases_deg = {}\ncontact_ratio = {}\n",
-        real(f->mean()), realList(f->relativeAmplitudes()), realList(phases_deg),
-        real(f->contactRatio()));
-  } else if (linearisedContact(config)) {
-    // Tabulated at the loaded contact's positions: the table reads back its values there.
-    const std::vector<double> phases = s.stiffness->discontinuities();
-    std::vector<double> values;
-    for (double p : phases) values.push_back(s.stiffness->stiffness(p));
-    t += fmt::format(
-        "stiffness = \"table\"  # the file's model.stiffness.type = \"ltca\": the loaded "
-        "contact's\n# tangent stiffness K(phi) at the mean force F = {} N, at {} positions\n"
-        "stiffness_table_source = \"ltca\"\nstiffness_table_phases = {}\n"
-        "stiffness_table_values = {}  # [N/m]\n",
-        real(s.mean_force), phases.size(), realList(phases), realList(values));
-  } else if (const auto* k = dynamic_cast<const StepMeshStiffness*>(s.stiffness.get())) {
-    t += "stiffness = \"step\"\n";
-    stiffness_tables = fmt::format(
-        "\n[mesh_stiffness.step]\nlevels = \"given\"\nk_min = {}  # [N/m]\nk_max = {}  # "
-        "[N/m]\ncontact_ratio = {}\n",
-        real(k->kMin()), real(k->kMax()), real(k->contactRatio()));
-  } else {
-    // gear_pair_ltca: k(φ) is the unmodified potential-energy stiffness (scales, k̄, linear
-    // analyses); the tooth-pair elements carry the modifications.
-    t += "stiffness = " +
-         quoted(toothPairs(config) ? "potential_energy" : config.string("model.stiffness.type")) +
-         "\n";
-    stiffness_tables = meshStiffnessTables(config, "mesh_stiffness");
-  }
+  std::string tables;
+  t += stiffnessKeys(config, s, tables);
   t += fmt::format("damping = {}  # [N s/m]: zeta = {} on m_e and the mean stiffness\n",
                    real(s.damping), real(build.damping_ratio));
   t += "phase = " + real(s.initial_phase) + "  # mesh phase at t = 0 [mesh periods]\n";
-  const auto te_amplitudes = config.realList("model.transmission_error.amplitudes");
-  if (!te_amplitudes.empty()) {
-    std::vector<double> phases_deg;
-    for (double p : config.realList("model.transmission_error.phases")) {
-      phases_deg.push_back(p / kDeg);
-    }
-    t += "te_amplitudes = " + realList(te_amplitudes) + "  # [m]\n";
-    t += "te_phases_deg = " + realList(phases_deg) +
-         "  # the file's model.transmission_error.phases [rad] in degrees\n";
-  }
-  const std::string te = "model.transmission_error.";
-  if (config.real(te + "rectangular_amplitude") != 0.0) {
-    t += fmt::format("te_rectangular_amplitude = {}  # [m]\n",
-                     real(config.real(te + "rectangular_amplitude")));
-    t += "te_rectangular_duty = " + real(config.real(te + "rectangular_duty")) + "\n";
-    t += "te_rectangular_start = " + real(config.real(te + "rectangular_start")) + "\n";
-  }
-  if (!config.realList(te + "table_phases").empty() ||
-      !config.realList(te + "table_values").empty()) {
-    t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
-    t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
-  } else if (linearisedContact(config)) {
-    // E = δ − F/K of the loaded contact at its positions: the model's error there less the
-    // file's series and rectangular wave (exact when the file gives none).
-    TransmissionError given;
-    given.addFourier(config.realList(te + "amplitudes"), config.realList(te + "phases"), te);
-    if (config.real(te + "rectangular_amplitude") != 0.0) {
-      given.addRectangular(config.real(te + "rectangular_amplitude"),
-                           config.real(te + "rectangular_duty"),
-                           config.real(te + "rectangular_start"), te);
-    }
-    const std::vector<double> phases = s.stiffness->discontinuities();
-    std::vector<double> values;
-    for (double p : phases) values.push_back(s.transmission_error.value(p) - given.value(p));
-    t += "te_table_phases = " + realList(phases) +
-         "  # the loaded contact's error delta - F/K (model.stiffness.type = \"ltca\")\n";
-    t += "te_table_values = " + realList(values) + "  # [m]\n";
-  }
-  switch (s.contact) {
-    case ContactLaw::kLinear:
-      t += "contact = \"linear\"\n";
-      break;
-    case ContactLaw::kOneSided:
-      if (toothPairs(config)) {
-        t += fmt::format(
-            "contact = \"tooth_pairs\"  # the file's model.type = \"gear_pair_ltca\"\n"
-            "tooth_pair_slices = {}  # model.stiffness.ltca_slices\n",
-            config.integer("model.stiffness.ltca_slices"));
-        // The file's [modifications], the gaps of the tooth-pair elements.
-        if (const Json* m = tableAt(config, "modifications")) {
-          stiffness_tables = "\n[meshes.mesh.modifications]\n" + keys(*m) + stiffness_tables;
-        }
-      } else {
-        t += "contact = \"one_sided\"\n";
-      }
-      break;
-    case ContactLaw::kBacklash:
-      t += fmt::format(
-          "contact = \"backlash\"\n# model.backlash = {} m of the file is the HALF clearance b of "
-          "the gear-pair law;\n# the gearbox backlash is the FULL normal clearance j = 2 b.\n"
-          "backlash = {}  # [m]\n",
-          real(s.backlash), real(2.0 * s.backlash));
-      break;
-  }
-  t += stiffness_tables;
+  t += errorKeys(config, s);
+  t += contactKeys(config, s, tables);
+  t += tables;
   const double speed_rpm = 60.0 * s.mesh_frequency / z_a;
   t += fmt::format(
       "\n[operating_point]\ninput = \"pinion_shaft\"\noutput = \"gear_shaft\"\n"
