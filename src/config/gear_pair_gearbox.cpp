@@ -44,15 +44,18 @@ std::string realList(const std::vector<double>& xs) {
   return s + "]";
 }
 
+/// A TOML basic string: quotes, backslashes and control characters escaped.
 std::string quoted(const std::string& text) {
   std::string s = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') s += '\\';
-    if (c == '\n') {
-      s += "\\n";
-      continue;
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      s += '\\';
+      s += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      s += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+    } else {
+      s += c;
     }
-    s += c;
   }
   return s + "\"";
 }
@@ -366,6 +369,7 @@ std::string gearPairGearbox(const Config& config) {
                      "\"model\" for --print-gearbox: only a [model] describes a gear pair");
   }
   const GearPairModelBuild build = readGearPairModel(config, false);
+  GearPairModel{build.spec};  // bad values named by the gear-pair model, in the file's terms
   if (const std::string why = gearPairGearboxObstacle(config, build); !why.empty()) {
     const auto colon = why.find(':');
     throw InputError(why.substr(0, why.find_first_of(" :")), "(given)",

@@ -333,6 +333,7 @@ GearPairModelBuild readGearPairModel(const Config& config, bool require_speed) {
 GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) {
   GearPairModelBuild b = readGearPairModel(config, require_speed);
   if (!gearPairGearboxObstacle(config, b).empty()) return b;  // no gearbox form yet
+  GearPairModel{b.spec};  // bad values named by the gear-pair model, in the file's terms
   // The file's gearbox, read back through the gearbox reader and reduced: the gear-pair solvers
   // are the one-pair train's fast path (system/sdof_reduction.h).
   b.spec = gearPairFromGearbox(gearPairGearboxToml(config, b), config.source() + " (gearbox)");

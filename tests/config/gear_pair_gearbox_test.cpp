@@ -227,6 +227,7 @@ speed_rpm = 900.0
 
 TEST(GearPairGearbox, BacklashIsTheFullClearanceInTheGearbox) {
   const std::string toml = R"(
+title = "a \"quoted\"\ttitle \\ with a tab"
 [model]
 mass = 1.0
 damping_ratio = 0.05
@@ -245,6 +246,7 @@ mesh_frequency = 500.0
   const GearTrainSpec train = config::gearTrainFromConfig(
       config::parseConfig(text, "printed", config::gearboxSchema()), warnings);
   EXPECT_EQ(train.meshes.at(0).contact.backlash, 2e-4);
+  EXPECT_EQ(train.name, config.string("title"));
   EXPECT_EQ(config::gearPairFromGearbox(text, "printed").backlash, 1e-4);
 }
 
