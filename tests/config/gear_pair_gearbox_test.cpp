@@ -217,6 +217,24 @@ type = "potential_energy"
 [excitation]
 speed_rpm = 900.0
 )" + pair},
+      {"gear pair, API stiffness", R"(
+[model]
+damping_ratio = 0.05
+torque = 80.0
+[model.stiffness]
+type = "api"
+[excitation]
+speed_rpm = 900.0
+)" + pair},
+      {"gear pair, ISO 6336 stiffness", R"(
+[model]
+damping_ratio = 0.05
+torque = 80.0
+[model.stiffness]
+type = "iso6336"
+[excitation]
+speed_rpm = 900.0
+)" + pair},
   };
   for (const auto& [what, toml] : cases) {
     GearPairModelSpec old;
