@@ -296,6 +296,37 @@ mesh_frequency = 500.0
   EXPECT_THROW(config::translatedGearbox("simulate", config), InputError);
 }
 
+TEST(GearPairGearbox, HelicalPairsKeepTheDirectReading) {
+  // The gearbox mesh acts along the contact normal, the gear-pair model along the transverse
+  // line of action: not translated yet, and the command still runs on the file's keys.
+  const config::Config config = config::parseConfig(R"(
+[model]
+damping_ratio = 0.05
+torque = 60.0
+[model.stiffness]
+mean = 5e8
+cos = [-0.1]
+[excitation]
+speed_rpm = 1200.0
+[pinion]
+teeth = 23
+module = 0.004
+face_width = 0.025
+helix_angle_deg = 15.0
+[gear]
+teeth = 41
+module = 0.004
+face_width = 0.025
+helix_angle_deg = -15.0
+)",
+                                                    "inline", config::simulateSchema());
+  const config::GearPairModelBuild old = config::readGearPairModel(config);
+  EXPECT_NE(config::gearPairGearboxObstacle(config, old).find("helix_angle_deg"),
+            std::string::npos);
+  EXPECT_THROW(config::gearPairGearbox(config), InputError);
+  EXPECT_EQ(config::buildGearPairModel(config).spec.mass, old.spec.mass);
+}
+
 TEST(SdofReduction, RefusesWhatIsNotOneTorsionalPair) {
   const config::Config config = config::parseConfig(R"(
 [model]
