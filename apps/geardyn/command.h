@@ -32,7 +32,8 @@ struct CommandOptions {
   bool progress = false;   ///< progress lines on stderr even when it is not a terminal
   bool resume = false;     ///< sweep: continue from the journal of an interrupted run
   bool overwrite = false;  ///< sweep: discard the journal of a previous run in the folder
-  /// Write the gearbox description the file translates to (TOML) on stdout and stop.
+  /// Write the gearbox TOML the file translates into to stdout and stop (no analysis); a
+  /// command without a translation refuses it (config/translated_gearbox.h).
   bool print_gearbox = false;
 
   /// The folder results go to.

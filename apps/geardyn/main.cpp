@@ -10,7 +10,7 @@
 
 #include "command.h"
 #include "geardyn/config/did_you_mean.h"
-#include "geardyn/config/fe_rotor_gearbox.h"
+#include "geardyn/config/translated_gearbox.h"
 #include "geardyn/error.h"
 #include "geardyn/version.h"
 #include "report_command.h"
@@ -66,15 +66,18 @@ int rejectUnknownCommand(int argc, char** argv, const std::vector<std::string>& 
   return geardyn::cli::kExitBadInput;
 }
 
-/// `--print-gearbox`: the gearbox text of a file that translates to one (an FE rotor file).
-int printGearbox(const geardyn::cli::Command& command, const geardyn::config::Config& config) {
-  const auto text = geardyn::config::feRotorGearbox(config);
-  if (!text) {
-    std::cerr << "geardyn " << command.name
-              << ": error: --print-gearbox: this file has no gearbox translation yet (a "
-                 "finite-element rotor file, [model] type = \"fe_geared_rotor\", has)\n";
+/// --print-gearbox: the gearbox the file translates into, on stdout (issue #31).
+int printGearbox(const geardyn::cli::Command& command, const CommandOptions& options) {
+  const auto refuse = [&] {
+    std::cerr << "geardyn " << command.name << ": error: --print-gearbox: `" << command.name
+              << "` has no translation into a gearbox description for this file (the gear-pair "
+                 "commands simulate, hbm and stats and finite-element rotor files have one)\n";
     return geardyn::cli::kExitBadInput;
-  }
+  };
+  if (command.run_file) return refuse();
+  const auto text = geardyn::config::translatedGearbox(
+      command.name, geardyn::cli::loadCommandConfig(command, options));
+  if (!text) return refuse();
   std::cout << *text << std::flush;
   return geardyn::cli::kExitOk;
 }
@@ -83,10 +86,9 @@ int runCommand(const geardyn::cli::Command& command, const CommandOptions& optio
   if (const int code = checkConfigFile(command, options); code != geardyn::cli::kExitOk)
     return code;
   try {
+    if (options.print_gearbox) return printGearbox(command, options);
     if (command.run_file) return command.run_file(options);
-    const geardyn::config::Config config = geardyn::cli::loadCommandConfig(command, options);
-    if (options.print_gearbox) return printGearbox(command, config);
-    return command.run(config, options);
+    return command.run(geardyn::cli::loadCommandConfig(command, options), options);
   } catch (const geardyn::InputError& error) {
     std::cerr << "geardyn " << command.name << ": error: " << error.what() << "\n";
     return geardyn::cli::kExitBadInput;
@@ -145,11 +147,9 @@ int main(int argc, char** argv) {
     sub->add_flag("--progress", o.progress,
                   "progress lines with an ETA on stderr for runs over ~2 s (default: only when "
                   "stderr is a terminal)");
-    if (command.name == "rotor") {
-      sub->add_flag("--print-gearbox", o.print_gearbox,
-                    "write the gearbox description (TOML) this file translates to on stdout "
-                    "(finite-element rotor files) and stop");
-    }
+    sub->add_flag("--print-gearbox", o.print_gearbox,
+                  "write the gearbox description (TOML) the file translates into to stdout and "
+                  "exit without analysing (simulate, hbm, stats, finite-element rotor files)");
     if (command.run_file) {
       sub->add_flag("--resume", o.resume,
                     "continue an interrupted sweep from its journal in the result folder");

@@ -11,6 +11,7 @@
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/stiffness/tabulated_stiffness.h"
 #include "geardyn/units.h"
 
 namespace geardyn::config::detail {
@@ -22,8 +23,8 @@ using Json = nlohmann::ordered_json;
 }  // namespace
 
 namespace {
-const std::vector<std::string> kStiffnessChoices = {"constant", "api",  "potential_energy",
-                                                    "iso6336",  "step", "fourier"};
+const std::vector<std::string> kStiffnessChoices = {
+    "constant", "api", "potential_energy", "iso6336", "step", "fourier", "table"};
 }  // namespace
 
 void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
@@ -40,6 +41,23 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .doc(
           "k when stiffness = \"constant\"; every mesh model's k acts along the contact normal, "
           "inclined by β_b to the transverse plane (torsional stiffness k cos² β_b r_b²)");
+  schema.realList(prefix + "stiffness_table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(Json::array())
+      .doc(
+          "k(φ) when stiffness = \"table\", linear between points: ascending mesh phases in [0, "
+          "1)");
+  schema.realList(prefix + "stiffness_table_values")
+      .unit("N/m")
+      .defaultValue(Json::array())
+      .doc("the table's k at stiffness_table_phases (> 0)");
+  schema.string(prefix + "stiffness_table_source")
+      .defaultValue("table")
+      .doc(
+          "what the table is, the stiffness model's name in results (e.g. \"ltca\": the loaded "
+          "tooth contact's tangent stiffness at the mean force, from a gear-pair file)");
   schema.real(prefix + "damping_ratio")
       .unit("-")
       .min(0.0)
@@ -54,6 +72,32 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
       .unit("deg")
       .defaultValue(Json::array())
       .doc("phases φ_r of the TE orders (one per amplitude; empty: 0)");
+  // The other forms of the gear-pair file's [model.transmission_error] (models/
+  // transmission_error.h), added to the series.
+  schema.real(prefix + "te_rectangular_amplitude")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("rectangular wave added to e(φ): its value on the duty part of each mesh period");
+  schema.real(prefix + "te_rectangular_duty")
+      .unit("-")
+      .greaterThan(0.0)
+      .lessThan(1.0)
+      .defaultValue(0.5)
+      .doc("fraction of the mesh period the rectangular wave is on");
+  schema.real(prefix + "te_rectangular_start")
+      .unit("-")
+      .defaultValue(0.0)
+      .doc("mesh phase where the rectangular wave starts [mesh periods]");
+  schema.realList(prefix + "te_table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(Json::array())
+      .doc("table added to e(φ), linear between points: mesh phases in [0, 1)");
+  schema.realList(prefix + "te_table_values")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("the table's e at te_table_phases");
   schema.string(prefix + "contact")
       .choices({"linear", "one_sided", "backlash", "tooth_pairs"})
       .optional()
@@ -162,6 +206,16 @@ TransmissionError teFromConfig(const config::Config& config, const std::string& 
   if (phases.empty()) phases.assign(amplitudes.size(), 0.0);
   for (double& p : phases) p *= kDeg;
   if (!amplitudes.empty()) te.addFourier(amplitudes, phases, prefix + "te_phases_deg");
+  if (config.real(prefix + "te_rectangular_amplitude") != 0.0) {
+    te.addRectangular(config.real(prefix + "te_rectangular_amplitude"),
+                      config.real(prefix + "te_rectangular_duty"),
+                      config.real(prefix + "te_rectangular_start"), prefix + "te_rectangular");
+  }
+  const auto table_phases = config.realList(prefix + "te_table_phases");
+  const auto table_values = config.realList(prefix + "te_table_values");
+  if (!table_phases.empty() || !table_values.empty()) {
+    te.addTable(table_phases, table_values, prefix + "te_table");
+  }
   return te;
 }
 
@@ -178,6 +232,18 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& c
     }
     return std::make_shared<ConstantMeshStiffness>(
         "constant", config.real(prefix + "stiffness_value"), contact_ratio);
+  }
+  if (model == "table") {
+    const auto phases = config.realList(prefix + "stiffness_table_phases");
+    const auto values = config.realList(prefix + "stiffness_table_values");
+    if (phases.size() < 2 || phases.size() != values.size()) {
+      throw InputError(prefix + "stiffness_table_values",
+                       fmt::format("{} phases, {} values", phases.size(), values.size()),
+                       "as many values [N/m] as stiffness_table_phases, at least 2, with "
+                       "stiffness = \"table\"");
+    }
+    return std::make_shared<TabulatedMeshStiffness>(
+        phases, values, contact_ratio, config.string(prefix + "stiffness_table_source"));
   }
   if (model == "api") {
     return std::make_shared<ConstantMeshStiffness>("api", apiMeshStiffness(face_width, helix),

@@ -6,6 +6,7 @@
 #include <complex>
 #include <numbers>
 
+#include "geardyn/config/gear_pair_gearbox.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/ltca_config.h"
 #include "geardyn/config/stiffness_config.h"
@@ -27,7 +28,7 @@ using Json = nlohmann::ordered_json;
 
 }  // namespace
 
-GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) {
+GearPairModelBuild readGearPairModel(const Config& config, bool require_speed) {
   GearPairModelBuild b;
   b.nondimensional = config.string("model.units") == "nondimensional";
   std::optional<GearPair> pair;
@@ -326,6 +327,18 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
                       h, natural_period, needed));
     }
   }
+  return b;
+}
+
+GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) {
+  GearPairModelBuild b = readGearPairModel(config, require_speed);
+  if (!gearPairGearboxObstacle(config, b).empty()) return b;  // no gearbox form yet
+  GearPairModel{b.spec};  // bad values named by the gear-pair model, in the file's terms
+  // The file's gearbox, read back through the gearbox reader and reduced: the gear-pair solvers
+  // are the one-pair train's fast path (system/sdof_reduction.h).
+  b.spec = gearPairFromGearbox(gearPairGearboxToml(config, b), config.source() + " (gearbox)");
+  b.mean_stiffness = summarizeMeshStiffness(*b.spec.stiffness, 0).mean;
+  b.natural_frequency = std::sqrt(b.mean_stiffness / b.spec.mass);
   return b;
 }
 

@@ -62,7 +62,7 @@ class ModelFactory {
   }
   std::shared_ptr<const MeshStiffness> step() {
     const std::string levels = config_.string("mesh_stiffness.step.levels");
-    const double eps = pair_.contactRatioTotal();
+    const double eps = contactRatio("mesh_stiffness.step.contact_ratio");
     if (levels == "given") {
       for (const char* key : {"mesh_stiffness.step.k_min", "mesh_stiffness.step.k_max"}) {
         if (!config_.has(key)) {
@@ -104,7 +104,12 @@ class ModelFactory {
     for (double& p : phases) p *= kDegree;
     return std::make_shared<FourierMeshStiffness>(
         mean, config_.realList("mesh_stiffness.fourier.amplitudes"), phases,
-        pair_.contactRatioTotal());
+        contactRatio("mesh_stiffness.fourier.contact_ratio"));
+  }
+  /// ε of a given step or series: the key when given (e.g. a gear-pair file's
+  /// model.stiffness.contact_ratio translated into a gearbox), else the pair's total one.
+  double contactRatio(const std::string& key) const {
+    return config_.has(key) ? config_.real(key) : pair_.contactRatioTotal();
   }
 
   const Config& config_;
@@ -201,6 +206,12 @@ void addMeshStiffnessModelSections(ConfigSchema& schema) {
       .optional()
       .doc("stiffness with n + 1 pairs in contact");
 
+  schema.real("mesh_stiffness.step.contact_ratio")
+      .unit("-")
+      .min(1.0)
+      .optional()
+      .doc("ε of the step (default: the pair's total contact ratio ε_γ)");
+
   schema.section("mesh_stiffness.fourier", "Fourier series (Visnadi eq. 8).");
   schema.string("mesh_stiffness.fourier.fit")
       .choices({"potential_energy", "given"})
@@ -229,6 +240,11 @@ void addMeshStiffnessModelSections(ConfigSchema& schema) {
       .unit("deg")
       .defaultValue(nlohmann::ordered_json::array())
       .doc("phases φ_i when fit = \"given\"");
+  schema.real("mesh_stiffness.fourier.contact_ratio")
+      .unit("-")
+      .min(1.0)
+      .optional()
+      .doc("ε recorded with a given series (default: the pair's total contact ratio ε_γ)");
 
   schema.section("mesh_stiffness.potential_energy",
                  "Potential-energy beam model (Ma 2014, Sainsot 2004, Wan 2015).");

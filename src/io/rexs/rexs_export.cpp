@@ -144,7 +144,9 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
     w.relate("stage", {{st, "stage", "cylindrical_stage"},
                        {gear_id.at(m["gears"][0]), "gear_1", ""},
                        {gear_id.at(m["gears"][1]), "gear_2", ""}});
-    if (m["stiffness"] != "potential_energy" || !m["te_amplitudes"].empty())
+    if (m["stiffness"] != "potential_energy" || !m["te_amplitudes"].empty() ||
+        m.value("te_rectangular_amplitude", 0.0) != 0.0 ||
+        !m.value("te_table_phases", Json::array()).empty())
       warnings.push_back("meshes." + name +
                          ": the mesh-stiffness model and transmission error "
                          "are geardyn's; not exported");

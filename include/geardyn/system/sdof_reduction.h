@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// The single-degree-of-freedom gear pair as the fast path of a one-mesh train: a train of two
+/// rigid shafts with torsional DOFs and one external spur mesh, and nothing else, IS the model
+/// of models/gear_pair_model.h along the line of action (docs/theory/gear_trains.md; checked by
+/// tests/system/train_response_test.cpp, TrainReduction.SinglePairTorsionalIsTheSdofGearPairModel):
+///
+///   m_e = 1 / (r_a²/I_a + r_b²/I_b),  F = T / r_a,  f_m = z_a |Ω_a| / 2π,  c = c_m,
+///   k(φ), e(φ) and the mesh phase of the train's mesh,
+///
+/// with the contact law kept and the backlash converted: the train's `backlash` j is the full
+/// normal clearance (free play −j ≤ δ − e ≤ 0), the SDOF model's b the half clearance
+/// (−b ≤ y ≤ b), so b = j / 2 and y = δ − e + b.
+
+#include <string>
+
+#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+
+/// Why `train` is not a single rigid external pair with torsional DOFs (empty: it is one).
+std::string sdofReductionObstacle(const GearTrainModel& train);
+
+/// The gear-pair model of a single-pair train at its operating point (speed and input torque).
+/// Throws InputError naming what stands in the way (sdofReductionObstacle).
+GearPairModelSpec sdofReduction(const GearTrainModel& train);
+
+}  // namespace geardyn

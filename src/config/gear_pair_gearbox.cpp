@@ -1,0 +1,388 @@
+/// The gearbox a gear-pair file is (config/gear_pair_gearbox.h).
+
+#include "geardyn/config/gear_pair_gearbox.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/geometry_config.h"
+#include "geardyn/error.h"
+#include "geardyn/geometry/gear_pair.h"
+#include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/sdof_reduction.h"
+#include "geardyn/units.h"
+
+namespace geardyn::config {
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kDeg = geardyn::units::kDegree;
+
+/// The nominal spur pair of a file without gear geometry: it only sets the base radii (which
+/// the inertias compensate) and the teeth (which the speed compensates).
+constexpr int kNominalTeeth = 25;
+constexpr double kNominalModule = 3e-3;          // [m]
+constexpr double kNominalPressureAngleDeg = 20;  // [deg]
+constexpr double kNominalFaceWidth = 20e-3;      // [m]
+
+/// A TOML float that reads back as the same double: fmt's shortest round-trip form, with a
+/// ".0" when it would read as an integer.
+std::string real(double x) {
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // n: inf, nan
+  return s;
+}
+
+std::string realList(const std::vector<double>& xs) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? ", " : "") + real(xs[i]);
+  return s + "]";
+}
+
+/// A TOML basic string: quotes, backslashes and control characters escaped.
+std::string quoted(const std::string& text) {
+  std::string s = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      s += '\\';
+      s += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      s += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+    } else {
+      s += c;
+    }
+  }
+  return s + "\"";
+}
+
+/// A resolved configuration value as TOML (numbers keep their integer/float kind).
+std::string value(const Json& v) {
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number_integer()) return fmt::format("{}", v.get<long long>());
+  if (v.is_number()) return real(v.get<double>());
+  if (v.is_string()) return quoted(v.get<std::string>());
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + value(v[i]);
+  return s + "]";
+}
+
+/// The plain keys of a resolved table, one "key = value" line each (sub-tables left out).
+std::string keys(const Json& table) {
+  std::string s;
+  for (const auto& [key, v] : table.items()) {
+    if (!v.is_object() && !v.is_null()) s += fmt::format("{} = {}\n", key, value(v));
+  }
+  return s;
+}
+
+/// The resolved table at a dotted path, or null.
+const Json* tableAt(const Config& config, const std::string& path) {
+  const Json* node = &config.resolved();
+  std::size_t begin = 0;
+  while (node) {
+    const std::size_t end = path.find('.', begin);
+    const std::string part = path.substr(begin, end - begin);
+    node = node->is_object() && node->contains(part) ? &(*node)[part] : nullptr;
+    if (end == std::string::npos) break;
+    begin = end + 1;
+  }
+  return node;
+}
+
+/// [mesh_stiffness.<model>] tables of the file, copied (the gear-based models read them).
+std::string meshStiffnessTables(const Config& config, const std::string& prefix) {
+  std::string s;
+  const Json* table = tableAt(config, prefix);
+  if (!table || !table->is_object()) return s;
+  for (const auto& [key, v] : table->items()) {
+    if (!v.is_object()) continue;
+    s += fmt::format("\n[{}.{}]\n{}", prefix, key, keys(v));
+    for (const auto& [sub, w] : v.items()) {
+      if (w.is_object()) s += fmt::format("\n[{}.{}.{}]\n{}", prefix, key, sub, keys(w));
+    }
+  }
+  return s;
+}
+
+GearSpec nominalGear() {
+  GearSpec g;
+  g.teeth = kNominalTeeth;
+  g.normal_module = kNominalModule;
+  g.normal_pressure_angle = kNominalPressureAngleDeg * kDeg;
+  g.face_width = kNominalFaceWidth;
+  return g;
+}
+
+/// The tooth-pair contact elements of the loaded tooth contact (model.type = "gear_pair_ltca"):
+/// the gearbox mesh's contact = "tooth_pairs".
+bool toothPairs(const Config& config) {
+  return config.string("model.type") == "gear_pair_ltca";
+}
+
+/// The mesh linearised about the mean force (model.stiffness.type = "ltca"): its tangent
+/// stiffness and error tables, the mesh's stiffness = "table" and te_table_*.
+bool linearisedContact(const Config& config) {
+  return config.string("model.type") == "gear_pair" &&
+         config.string("model.stiffness.type") == "ltca";
+}
+
+/// The stiffness is computed from the gears (copied [mesh_stiffness.*]).
+bool fromGears(const Config& config) {
+  const std::string type = config.string("model.stiffness.type");
+  return toothPairs(config) || (config.string("model.type") == "gear_pair" &&
+                                (type == "potential_energy" || type == "api" || type == "iso6336"));
+}
+
+/// The mesh's stiffness keys; the [mesh_stiffness.*] tables they need go to `tables`.
+std::string stiffnessKeys(const Config& config, const GearPairModelSpec& s, std::string& tables) {
+  std::string t;
+  if (const auto* f = dynamic_cast<const FourierMeshStiffness*>(s.stiffness.get())) {
+    std::vector<double> phases_deg;
+    for (double p : f->phases()) phases_deg.push_back(p / kDeg);
+    t += "stiffness = \"fourier\"  # k = k0 (1 + sum s_i cos(2 pi i phi - phi_i))\n";
+    tables = fmt::format(
+        "\n[mesh_stiffness.fourier]\nfit = \"given\"\nmean = \"given\"\nmean_value = {}  # "
+        "[N/m]\namplitudes = {}\nphases_deg = {}\ncontact_ratio = {}\n",
+        real(f->mean()), realList(f->relativeAmplitudes()), realList(phases_deg),
+        real(f->contactRatio()));
+  } else if (linearisedContact(config)) {
+    // Tabulated at the loaded contact's positions: the table reads back its values there.
+    const std::vector<double> phases = s.stiffness->discontinuities();
+    std::vector<double> values;
+    for (double p : phases) values.push_back(s.stiffness->stiffness(p));
+    t += fmt::format(
+        "stiffness = \"table\"  # the file's model.stiffness.type = \"ltca\": the loaded "
+        "contact's\n# tangent stiffness K(phi) at the mean force F = {} N, at {} positions\n"
+        "stiffness_table_source = \"ltca\"\nstiffness_table_phases = {}\n"
+        "stiffness_table_values = {}  # [N/m]\n",
+        real(s.mean_force), phases.size(), realList(phases), realList(values));
+  } else if (const auto* k = dynamic_cast<const StepMeshStiffness*>(s.stiffness.get())) {
+    t += "stiffness = \"step\"\n";
+    tables = fmt::format(
+        "\n[mesh_stiffness.step]\nlevels = \"given\"\nk_min = {}  # [N/m]\nk_max = {}  # "
+        "[N/m]\ncontact_ratio = {}\n",
+        real(k->kMin()), real(k->kMax()), real(k->contactRatio()));
+  } else {
+    // gear_pair_ltca: k(φ) is the unmodified potential-energy stiffness (scales, k̄, linear
+    // analyses); the tooth-pair elements carry the modifications.
+    t += "stiffness = " +
+         quoted(toothPairs(config) ? "potential_energy" : config.string("model.stiffness.type")) +
+         "\n";
+    tables = meshStiffnessTables(config, "mesh_stiffness");
+  }
+  return t;
+}
+
+/// The mesh's transmission-error keys.
+std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
+  std::string t;
+  const auto te_amplitudes = config.realList("model.transmission_error.amplitudes");
+  if (!te_amplitudes.empty()) {
+    std::vector<double> phases_deg;
+    for (double p : config.realList("model.transmission_error.phases")) {
+      phases_deg.push_back(p / kDeg);
+    }
+    t += "te_amplitudes = " + realList(te_amplitudes) + "  # [m]\n";
+    t += "te_phases_deg = " + realList(phases_deg) +
+         "  # the file's model.transmission_error.phases [rad] in degrees\n";
+  }
+  const std::string te = "model.transmission_error.";
+  if (config.real(te + "rectangular_amplitude") != 0.0) {
+    t += fmt::format("te_rectangular_amplitude = {}  # [m]\n",
+                     real(config.real(te + "rectangular_amplitude")));
+    t += "te_rectangular_duty = " + real(config.real(te + "rectangular_duty")) + "\n";
+    t += "te_rectangular_start = " + real(config.real(te + "rectangular_start")) + "\n";
+  }
+  if (!config.realList(te + "table_phases").empty() ||
+      !config.realList(te + "table_values").empty()) {
+    t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
+    t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
+  } else if (linearisedContact(config)) {
+    // E = δ − F/K of the loaded contact at its positions: the model's error there less the
+    // file's series and rectangular wave (exact when the file gives none).
+    TransmissionError given;
+    given.addFourier(config.realList(te + "amplitudes"), config.realList(te + "phases"), te);
+    if (config.real(te + "rectangular_amplitude") != 0.0) {
+      given.addRectangular(config.real(te + "rectangular_amplitude"),
+                           config.real(te + "rectangular_duty"),
+                           config.real(te + "rectangular_start"), te);
+    }
+    const std::vector<double> phases = s.stiffness->discontinuities();
+    std::vector<double> values;
+    for (double p : phases) values.push_back(s.transmission_error.value(p) - given.value(p));
+    t += "te_table_phases = " + realList(phases) +
+         "  # the loaded contact's error delta - F/K (model.stiffness.type = \"ltca\")\n";
+    t += "te_table_values = " + realList(values) + "  # [m]\n";
+  }
+  return t;
+}
+
+/// The mesh's contact keys; the tooth pairs' [meshes.mesh.modifications] go before `tables`.
+std::string contactKeys(const Config& config, const GearPairModelSpec& s, std::string& tables) {
+  std::string t;
+  switch (s.contact) {
+    case ContactLaw::kLinear:
+      t += "contact = \"linear\"\n";
+      break;
+    case ContactLaw::kOneSided:
+      if (toothPairs(config)) {
+        t += fmt::format(
+            "contact = \"tooth_pairs\"  # the file's model.type = \"gear_pair_ltca\"\n"
+            "tooth_pair_slices = {}  # model.stiffness.ltca_slices\n",
+            config.integer("model.stiffness.ltca_slices"));
+        // The file's [modifications], the gaps of the tooth-pair elements.
+        if (const Json* m = tableAt(config, "modifications")) {
+          tables = "\n[meshes.mesh.modifications]\n" + keys(*m) + tables;
+        }
+      } else {
+        t += "contact = \"one_sided\"\n";
+      }
+      break;
+    case ContactLaw::kBacklash:
+      t += fmt::format(
+          "contact = \"backlash\"\n# model.backlash = {} m of the file is the HALF clearance b of "
+          "the gear-pair law;\n# the gearbox backlash is the FULL normal clearance j = 2 b.\n"
+          "backlash = {}  # [m]\n",
+          real(s.backlash), real(2.0 * s.backlash));
+      break;
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBuild& build) {
+  const std::string type = config.string("model.type");
+  if (build.spec.contact_elements && !toothPairs(config)) {
+    return "model.type = \"" + type + "\": its contact elements have no gearbox form";
+  }
+  const std::string stiffness = config.string("model.stiffness.type");
+  if (!config.realList("model.extra_force_amplitudes").empty()) {
+    return "model.extra_force_amplitudes: the gearbox has no extra harmonic force";
+  }
+  if (hasGearPair(config) && (config.real("pinion.helix_angle_deg") != 0.0 ||
+                              config.real("gear.helix_angle_deg") != 0.0)) {
+    return "pinion.helix_angle_deg: a helical pair's gearbox mesh acts along the contact normal, "
+           "the gear-pair model along the transverse line of action";
+  }
+  const bool numeric = dynamic_cast<const FourierMeshStiffness*>(build.spec.stiffness.get()) ||
+                       dynamic_cast<const StepMeshStiffness*>(build.spec.stiffness.get()) ||
+                       linearisedContact(config);
+  if (!numeric && !fromGears(config)) {
+    return "model.stiffness.type = \"" + stiffness + "\": no gearbox form";
+  }
+  if (fromGears(config) && config.string("pair.driver") != "pinion") {
+    return "pair.driver = \"gear\": the gearbox's first gear of a mesh drives it";
+  }
+  return "";
+}
+
+std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& build) {
+  const GearPairModelSpec& s = build.spec;
+  const bool pair_given = hasGearPair(config);
+  GearPairSpec pair_spec;
+  if (pair_given) {
+    pair_spec = gearPairSpecFromConfig(config);
+  } else {
+    pair_spec.pinion = pair_spec.gear = nominalGear();
+  }
+  const GearPair pair = makeGearPair(pair_spec, "pinion", "gear", "pair");
+  const double r_a = pair.pinion().base_radius, r_b = pair.gear().base_radius;
+  const int z_a = pair.spec().pinion.teeth;
+  // I = 2 m_e r_b² on each shaft: 1 / (r_a²/I_a + r_b²/I_b) = m_e.
+  const double inertia_a = 2.0 * s.mass * r_a * r_a, inertia_b = 2.0 * s.mass * r_b * r_b;
+
+  std::string t;
+  t += fmt::format(
+      "# The gearbox of {}, written by geardyn --print-gearbox.\n"
+      "# The gear-pair model is a train of two rigid shafts with torsional DOFs and one\n"
+      "# external spur mesh (docs/design.md, system/sdof_reduction.h):\n"
+      "#   m_e = 1 / (r_a^2/I_a + r_b^2/I_b),  F = T / r_a,  f_m = z_a n / 60.\n",
+      config.source().empty() ? std::string("the gear-pair file") : config.source());
+  if (build.nondimensional) {
+    t += "# The file is nondimensional (Gelman's form): its numbers are taken in SI units,\n"
+         "# m_e = 1 kg, mean k = 1 N/m, F = a N, time omega_n t in s, mesh frequency Omega / 2 pi "
+         "Hz.\n";
+  }
+  if (pair_given) {
+    t += "# The gears are the file's [pinion] and [gear]; their bodies are off and each shaft\n"
+         "# carries I = 2 m_e r_b^2, so that the equivalent mass is the file's m_e = " +
+         real(s.mass) + " kg.\n";
+  } else {
+    t += fmt::format(
+        "# The file gives no gear geometry: a nominal spur pair carries the model (z = {},\n"
+        "# m_n = {} mm, alpha_n = {} deg, b = {} mm, ratio 1). It only sets the base radii\n"
+        "# r_b = {} m and the teeth: the gear bodies are off, each shaft carries\n"
+        "# I = 2 m_e r_b^2 (so that the equivalent mass is the file's m_e = {} kg), the torque\n"
+        "# is F r_b and the speed 60 f_m / z.\n",
+        kNominalTeeth, kNominalModule * 1e3, kNominalPressureAngleDeg, kNominalFaceWidth * 1e3,
+        real(r_a), real(s.mass));
+  }
+  t += "\n[gearbox]\n";
+  const Json* title = tableAt(config, "title");
+  t += "name = " + quoted(title && title->is_string() ? title->get<std::string>() : "gear pair") +
+       "\n";
+  t += "dofs = \"torsional\"\n";
+  t += fmt::format("\n[shafts.pinion_shaft]\npolar_inertia = {}  # [kg m^2]\n", real(inertia_a));
+  t += fmt::format("\n[shafts.gear_shaft]\npolar_inertia = {}  # [kg m^2]\n", real(inertia_b));
+  for (const char* gear : {"pinion", "gear"}) {
+    t += fmt::format("\n[gears.{}]\nshaft = \"{}_shaft\"\nbody = false\n", gear, gear);
+    if (pair_given) {
+      t += keys(*tableAt(config, gear));
+    } else {
+      t += fmt::format("teeth = {}\nmodule = {}\npressure_angle_deg = {}\nface_width = {}\n",
+                       kNominalTeeth, real(kNominalModule), real(kNominalPressureAngleDeg),
+                       real(kNominalFaceWidth));
+    }
+  }
+
+  t += "\n[meshes.mesh]\ngears = [\"pinion\", \"gear\"]\n";
+  if (pair_given && config.has("pair.centre_distance")) {
+    t += "centre_distance = " + real(config.real("pair.centre_distance")) + "\n";
+  }
+  std::string tables;
+  t += stiffnessKeys(config, s, tables);
+  t += fmt::format("damping = {}  # [N s/m]: zeta = {} on m_e and the mean stiffness\n",
+                   real(s.damping), real(build.damping_ratio));
+  t += "phase = " + real(s.initial_phase) + "  # mesh phase at t = 0 [mesh periods]\n";
+  t += errorKeys(config, s);
+  t += contactKeys(config, s, tables);
+  t += tables;
+  const double speed_rpm = 60.0 * s.mesh_frequency / z_a;
+  t += fmt::format(
+      "\n[operating_point]\ninput = \"pinion_shaft\"\noutput = \"gear_shaft\"\n"
+      "speed_rpm = {}  # f_m = {} Hz{}\ntorque = {}  # [N m]: F = {} N on r_b = {} m\n",
+      real(speed_rpm), real(s.mesh_frequency),
+      s.mesh_frequency == 0.0 ? " (the file leaves the speed to the analysis)" : "",
+      real(s.mean_force * r_a), real(s.mean_force), real(r_a));
+  return t;
+}
+
+std::string gearPairGearbox(const Config& config) {
+  if (config.resolved().contains("stats") && config.string("stats.source") != "model") {
+    throw InputError("stats.source", quoted(config.string("stats.source")),
+                     "\"model\" for --print-gearbox: only a [model] describes a gear pair");
+  }
+  const GearPairModelBuild build = readGearPairModel(config, false);
+  GearPairModel{build.spec};  // bad values named by the gear-pair model, in the file's terms
+  if (const std::string why = gearPairGearboxObstacle(config, build); !why.empty()) {
+    const auto colon = why.find(':');
+    throw InputError(why.substr(0, why.find_first_of(" :")), "(given)",
+                     "no gearbox translation for --print-gearbox yet" +
+                         (colon == std::string::npos ? std::string() : why.substr(colon)));
+  }
+  return gearPairGearboxToml(config, build);
+}
+
+GearPairModelSpec gearPairFromGearbox(const std::string& toml, const std::string& source) {
+  const Config gearbox = parseConfig(toml, source, gearboxSchema());
+  std::vector<std::string> warnings;  // about the nominal description, not the user's file
+  return sdofReduction(GearTrainModel(gearTrainFromConfig(gearbox, warnings)));
+}
+
+}  // namespace geardyn::config

@@ -1,0 +1,20 @@
+/// The gearbox translations of the commands' older file forms (config/translated_gearbox.h).
+
+#include "geardyn/config/translated_gearbox.h"
+
+#include "geardyn/config/fe_rotor_gearbox.h"
+#include "geardyn/config/gear_pair_gearbox.h"
+
+namespace geardyn::config {
+
+std::optional<std::string> translatedGearbox(const std::string& command, const Config& config) {
+  // The gear-pair commands ([model] = the SDOF pair: a train with one mesh).
+  if (command == "simulate" || command == "hbm" || command == "stats") {
+    return gearPairGearbox(config);
+  }
+  // The finite-element two-shaft rotor (Visnadi & de Castro 2021); Rao's lateral rotor has none.
+  if (command == "rotor") return feRotorGearbox(config);
+  return std::nullopt;
+}
+
+}  // namespace geardyn::config
