@@ -1,6 +1,7 @@
 /// `train`: any gear train described once (a gearbox file or inline) and
 /// analysed: kinematics and phasing, statics, modes, Campbell, forced response, time response,
-/// run-up (train_runup_analysis.cpp), nonlinear steady state (train_nonlinear_analysis.cpp).
+/// run-up (train_runup_analysis.cpp), mesh statistics (train_stats_analysis.cpp), nonlinear
+/// steady state (train_nonlinear_analysis.cpp).
 
 #include "geardyn/config/train_analysis.h"
 
@@ -26,6 +27,7 @@
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
+#include "train_stats_analysis.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -531,6 +533,9 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
       code = std::max(code, runTime(model, loaded.analysis, result, summary, text));
     if (analysis == "runup") {
       code = std::max(code, detail::runTrainRunUp(model, loaded.analysis, result, text, context));
+    }
+    if (analysis == "stats") {
+      code = std::max(code, detail::runTrainStats(model, loaded.analysis, result, text));
     }
     if (analysis == "nonlinear") {
       const std::string s =
