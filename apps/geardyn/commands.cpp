@@ -121,8 +121,15 @@ config::ConfigSchema commandSchema(const Command& command, const std::filesystem
 }
 
 config::Config loadCommandConfig(const Command& command, const CommandOptions& options) {
-  config::Config config = config::loadConfigFile(
-      options.config_file, commandSchema(command, options.config_file), options.overrides);
+  // `ltca` on a mesh of a gearbox file (gearbox.file, gearbox.mesh): the pair is translated.
+  const bool gearbox_mesh = command.name == "ltca" &&
+                            !config::peekConfigString(options.config_file, "gearbox.file").empty();
+  config::Config config =
+      gearbox_mesh
+          ? config::loadLtcaOnGearboxMesh(
+                options.config_file, commandSchema(command, options.config_file), options.overrides)
+          : config::loadConfigFile(options.config_file, commandSchema(command, options.config_file),
+                                   options.overrides);
   for (const auto& note : config.notes()) warn(note);
   return config;
 }
