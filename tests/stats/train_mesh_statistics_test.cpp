@@ -117,9 +117,15 @@ TEST(TrainMeshStatistics, OnePairTorsionalTrainGivesTheSdofStatsNumbers) {
   EXPECT_NEAR(stats[0].simulated_dynamic_mean_excitation, simulated, 1e-6 * simulated);
   EXPECT_NEAR(stats[0].simulated_dynamic_mean_excitation, expected.dynamic_mean_excitation,
               1e-6 * expected.dynamic_mean_excitation);
-  ::testing::Test::RecordProperty(
-      "force_rms_relative_difference",
-      fmt::format("{:.3g}", std::abs(stats[0].force.rms - f.rms) / f.rms));
+  const auto property = [](const char* name, double value) {
+    ::testing::Test::RecordProperty(name, fmt::format("{:.3g}", value));
+  };
+  property("ratio_difference", std::abs(got.ratio - expected.ratio));
+  property("force_rms_relative_difference", std::abs(stats[0].force.rms - f.rms) / f.rms);
+  property("force_p2p_relative_difference", std::abs(stats[0].force.peakToPeak() - fp) / fp);
+  property("dte_rms_relative_difference", std::abs(stats[0].dte.rms - dte.rms) / dte.rms);
+  property("simulated_mean_excitation_relative_difference",
+           std::abs(stats[0].simulated_dynamic_mean_excitation - simulated) / simulated);
 }
 
 TEST(TrainMeshStatistics, EveryMeshOfATwoStageReducerAgreesWithItsIndependentForms) {
