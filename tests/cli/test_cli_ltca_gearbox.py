@@ -1,6 +1,7 @@
-"""geardyn ltca on a mesh of a gearbox ([gearbox] file + mesh): the load is the mesh's static
-force of `geardyn train`, the tables of a gearbox whose mesh is the Visnadi pair equal the
-standalone example's, and a bad mesh name or a pair given twice is an input error (exit 2)."""
+"""geardyn ltca on a mesh of a gearbox ([gearbox] file + mesh), alone and swept over the meshes:
+the load is the mesh's static force of `geardyn train`, the tables of a gearbox whose mesh is the
+Visnadi pair equal the standalone example's, and a bad mesh name or a pair given twice is an
+input error (exit 2)."""
 
 import csv
 import json
@@ -136,3 +137,23 @@ def test_a_pair_beside_the_gearbox_is_an_input_error(tmp_path):
     result = run("ltca", config, "--out", tmp_path / "out", *QUICK)
     assert result.returncode == 2, result.stderr
     assert "pinion" in result.stderr and "gearbox mesh's gears" in result.stderr, result.stderr
+
+
+def test_sweep_over_the_meshes_of_a_gearbox(tmp_path):
+    study = tmp_path / "sweep.toml"
+    study.write_text(f"""
+[study]
+command = "ltca"
+base = "{STAGE1.as_posix()}"
+design = "grid"
+set = ["output.plots=false"]
+outputs = ["force_N=/ltca/force"]
+[study.parameters]
+"gearbox.mesh" = ["stage1", "stage2"]
+""")
+    result = run("sweep", study, "--out", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "out" / "sweep.csv", newline="") as handle:
+        rows = {r["gearbox.mesh"]: float(r["force_N"]) for r in csv.DictReader(handle)}
+    # The intermediate shaft's torque balance: F₂ = F₁ r_b(z2)/r_b(z3) = F₁ × 51 × 3 / (17 × 4.5).
+    assert rows["stage2"] == pytest.approx(rows["stage1"] * 51 * 3.0 / (17 * 4.5), rel=1e-9)
