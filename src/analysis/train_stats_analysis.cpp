@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
@@ -75,7 +76,7 @@ io::CsvTable statisticsTable(const std::vector<TrainMeshStatistics>& stats) {
 }  // namespace
 
 int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
-                  AnalysisResult& result, std::string& text) {
+                  AnalysisResult& result, std::string& text, const TrainTimeResponse* record) {
   const auto start = std::chrono::steady_clock::now();
   io::RunSummary& summary = result.summary;
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
@@ -96,7 +97,9 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
   const TrainStaticResult statics = solveTrainStatic(model, speed);
   TrainTimeOptions options = config::trainTimeOptionsFromConfig(analysis);
   options.record_rates = false;
-  const TrainTimeResponse r = solveTrainTimeResponse(model, speed, options);
+  std::optional<TrainTimeResponse> own;
+  const TrainTimeResponse& r =
+      record ? *record : own.emplace(solveTrainTimeResponse(model, speed, options));
   if (r.status != "completed") {
     summary.warnings.push_back("stats: " + r.message);
     summary.results["stats"] = {{"status", r.status}, {"steps", r.steps}};
@@ -143,6 +146,7 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
       {"time_step_s", r.time_step},
       {"steps", r.steps},
       {"record_s", r.time_step * static_cast<double>(r.t.size())},
+      {"record_from_time_analysis", record != nullptr},
       {"meshes", meshes},
       {"wall_time_s",
        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};

@@ -7,13 +7,16 @@
 
 #include "geardyn/analysis/analysis_result.h"
 #include "geardyn/config/config.h"
+#include "geardyn/solvers/train_time.h"
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn::analysis::detail {
 
 /// Runs [stats] on `model`: mesh_statistics.csv, summary.results["stats"], report lines in
-/// `text`. Returns 0, or 1 when Newmark diverged.
+/// `text`. `record`: the `time` analysis's Newmark record at the same speed and options, reused
+/// (null: run Newmark here). Returns 0, or 1 when Newmark diverged.
 int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
-                  AnalysisResult& result, std::string& text);
+                  AnalysisResult& result, std::string& text,
+                  const TrainTimeResponse* record = nullptr);
 
 }  // namespace geardyn::analysis::detail

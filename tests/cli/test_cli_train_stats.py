@@ -91,3 +91,19 @@ def test_bad_stats_input_is_named(tmp_path, override, key, text):
     result = run("train", STATS, "--out", tmp_path, *quick("--set", override))
     assert result.returncode == 2, result.stderr
     assert key in result.stderr and text in result.stderr, result.stderr
+
+
+def test_stats_after_time_reuses_its_newmark_record(example, tmp_path):
+    out, _ = example
+    both = run("train", STATS, "--out", tmp_path / "both",
+               *quick("--set", 'analysis.run=["time", "stats"]'))
+    assert both.returncode == 0, both.stderr
+    run_both = json.loads((tmp_path / "both" / "summary.json").read_text())["results"]
+    assert run_both["stats"]["record_from_time_analysis"] is True
+    assert run_both["stats"]["steps"] == run_both["time"]["steps"]
+    alone = json.loads((out / "summary.json").read_text())["results"]["stats"]
+    assert alone["record_from_time_analysis"] is False
+    for name, m in alone["meshes"].items():  # the same run: the same numbers, bit for bit
+        assert run_both["stats"]["meshes"][name]["mesh_force_N"] == m["mesh_force_N"]
+        assert run_both["stats"]["meshes"][name]["simulated_mean_excitation_ratio"] == \
+            m["simulated_mean_excitation_ratio"]
