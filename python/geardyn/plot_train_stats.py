@@ -67,8 +67,11 @@ def train_stats_figure(result_dir, title="gear train"):
                                          ("mesh_force_p2p_n", "peak-to-peak"))):
         ax_f.bar([i + (j - 1.5) * width for i in x], [1e-3 * v for v in _numbers(table[column])],
                  width=width, label=label)
+    forces = [1e-3 * v for c in ("static_force_n", "mesh_force_rms_n")
+              for v in _numbers(table[c]) if not math.isnan(v)]
+    ax_f.set_ylim(0.0, 1.45 * max(forces + [1e-3]))  # room for the legend above the bars
     ax_f.set_ylabel("mesh force [kN]")
-    ax_f.legend(fontsize=7, loc="best")
+    ax_f.legend(fontsize=7, loc="upper left", ncols=4)
 
     p2p = [1e6 * v for v in _numbers(table["dte_p2p_m"])]
     mean = _numbers(table["dte_mean_m"])
@@ -77,13 +80,13 @@ def train_stats_figure(result_dir, title="gear train"):
     ax_e.bar([i - 0.15 for i in x], p2p, width=0.3, label="peak-to-peak", color="tab:green")
     ax_e.bar([i + 0.15 for i in x], spread, width=0.3, label="RMS about the mean",
              color="tab:olive")
+    ax_e.set_ylim(0.0, 1.35 * max([v for v in p2p if not math.isnan(v)] + [1e-6]))
     ax_e.set_ylabel("dynamic transmission error [µm]")
-    ax_e.legend(fontsize=7, loc="best")
+    ax_e.legend(fontsize=7, loc="upper left", ncols=2)
 
     for ax in (ax_r, ax_df, ax_f, ax_e):
         ax.set_xticks(x)
         ax.set_xticklabels(meshes, fontsize=8)
-        ax.set_xlabel("mesh")
         ax.grid(alpha=0.3, axis="y")
     figure.suptitle(
         f"{title}: mesh statistics at {run['speed_rpm']:g} rpm over {1e3 * run['record_s']:.3g} ms "
