@@ -91,8 +91,9 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
   }
   if (model.hasNonlinearElements()) {
     summary.warnings.push_back(
-        "stats: the mean excitation statistics assume linear meshes (Gelman eq. 1); the time run "
-        "uses the linear mesh law, without contact loss or bearing clearance");
+        "stats: the mean excitation statistics assume linear meshes (Gelman eq. 1): the Newmark "
+        "run uses each mesh's linear law k(φ)(δ − e(φ)), without contact loss, backlash, the "
+        "tooth-pair gaps of flank modifications or bearing clearance");
   }
   const TrainStaticResult statics = solveTrainStatic(model, speed);
   TrainTimeOptions options = config::trainTimeOptionsFromConfig(analysis);
