@@ -164,8 +164,12 @@ Config loadLtcaOnGearboxMesh(const std::filesystem::path& file, const ConfigSche
   }
   const bool force_given =
       table.at_path("ltca.force") ||
-      std::any_of(overrides.begin(), overrides.end(),
-                  [](const std::string& o) { return o.rfind("ltca.force", 0) == 0; });
+      std::any_of(overrides.begin(), overrides.end(), [](const std::string& o) {
+        std::string key = o.substr(0, o.find('='));
+        key.erase(key.find_last_not_of(" \t") + 1);
+        key.erase(0, key.find_first_not_of(" \t"));
+        return key == "ltca.force";
+      });
   if (!force_given) {
     if (!table.contains("ltca")) table.insert_or_assign("ltca", toml::table{});
     table["ltca"].as_table()->insert_or_assign("force", staticTransverseForce(gearbox, mesh));
