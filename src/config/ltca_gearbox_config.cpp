@@ -1,7 +1,8 @@
 /// `geardyn ltca` on a mesh of a gearbox: the ltca file names the gearbox (`[gearbox] file`) and
 /// one of its meshes (`mesh`); the mesh's gears become [pinion] and [gear], its centre distance
-/// [pair], its flank modifications [modifications] (unless the ltca file gives its own) and its
-/// static force at the gearbox's operating point ltca.force (unless given). The result is the
+/// pair.centre_distance (the file's [pair] may give driver and speed_rpm), its flank
+/// modifications [modifications] (unless the ltca file gives its own) and its static force at
+/// the gearbox's operating point ltca.force (unless given). The result is the
 /// configuration of a standalone pair, validated by the same schema: the tables are those of
 /// `geardyn ltca` on that pair.
 
@@ -120,11 +121,16 @@ Config loadLtcaOnGearboxMesh(const std::filesystem::path& file, const ConfigSche
     throw InputError("gearbox.mesh", "(missing)",
                      "the name of a mesh of the gearbox ([meshes.<name>]) with gearbox.file");
   }
-  for (const char* section : {"pinion", "gear", "pair"}) {
+  for (const char* section : {"pinion", "gear"}) {
     if (table.contains(section)) {
       throw InputError(section, fmt::format("[{}]", section),
                        "absent with gearbox.file: the pair is the gearbox mesh's gears");
     }
+  }
+  if (table.at_path("pair.centre_distance")) {
+    throw InputError("pair.centre_distance", "(given)",
+                     "absent with gearbox.file: the mesh's centre_distance (or the zero-backlash "
+                     "distance) is used");
   }
   std::vector<std::string> warnings;
   const Config gearbox =
@@ -155,9 +161,10 @@ Config loadLtcaOnGearboxMesh(const std::filesystem::path& file, const ConfigSche
     table.insert_or_assign(roles[i], std::move(gear));
   }
   if (m.contains("centre_distance") && !m["centre_distance"].is_null()) {
-    toml::table pair;
-    pair.insert_or_assign("centre_distance", m["centre_distance"].get<double>());
-    table.insert_or_assign("pair", std::move(pair));
+    if (!table.contains("pair")) table.insert_or_assign("pair", toml::table{});
+    if (toml::table* pair = table["pair"].as_table()) {
+      pair->insert_or_assign("centre_distance", m["centre_distance"].get<double>());
+    }
   }
   if (!table.contains("modifications") && m.contains("modifications")) {
     insertJson(table, "modifications", m["modifications"]);

@@ -157,3 +157,16 @@ outputs = ["force_N=/ltca/force"]
         rows = {r["gearbox.mesh"]: float(r["force_N"]) for r in csv.DictReader(handle)}
     # The intermediate shaft's torque balance: F₂ = F₁ r_b(z2)/r_b(z3) = F₁ × 51 × 3 / (17 × 4.5).
     assert rows["stage2"] == pytest.approx(rows["stage1"] * 51 * 3.0 / (17 * 4.5), rel=1e-9)
+
+
+def test_the_centre_distance_comes_from_the_mesh(tmp_path):
+    config = tmp_path / "distance.toml"
+    gearbox = (EXAMPLES / "gearboxes" / "two_stage_reducer_tooth_pairs.toml").as_posix()
+    config.write_text(f'[gearbox]\nfile = "{gearbox}"\nmesh = "stage1"\n[pair]\ncentre_distance = 0.1\n')
+    result = run("ltca", config, "--out", tmp_path / "out", *QUICK)
+    assert result.returncode == 2, result.stderr
+    assert "pair.centre_distance" in result.stderr, result.stderr
+    driver = run("ltca", STAGE1, "--out", tmp_path / "driver", *QUICK, "--set", "pair.driver=gear")
+    assert driver.returncode == 0, driver.stderr
+    resolved = json.loads((tmp_path / "driver" / "summary.json").read_text())["config"]
+    assert resolved["pair"]["driver"] == "gear" and resolved["pinion"]["teeth"] == 23

@@ -42,7 +42,8 @@ PairModifications pairModificationsFromConfig(const Config& config,
 /// its static force along the transverse line of action at the gearbox's operating point
 /// ltca.force (unless given); the result is validated by `schema` as a standalone pair's file.
 /// InputError for an unknown mesh (the mesh names, with a did-you-mean), an internal mesh, a
-/// [pinion], [gear] or [pair] section beside gearbox.file, or a mesh without load.
+/// [pinion] or [gear] section or pair.centre_distance beside gearbox.file, or a mesh without
+/// load. The file's [pair] driver (default: gear a, the pinion) and speed_rpm are kept.
 Config loadLtcaOnGearboxMesh(const std::filesystem::path& file, const ConfigSchema& schema,
                              const std::vector<std::string>& overrides);
 
