@@ -134,9 +134,11 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
           s.force.peakToPeak(), 1e6 * s.dte.peakToPeak());
     } else {
       summary.warnings.push_back(fmt::format(
-          "stats: mesh {} transmits no load ({:g} N): its mean excitation ratio is undefined",
+          "stats: mesh {} carries {:g} N along its line of action at the operating point (not > "
+          "0): its mean excitation ratio, a ratio to the transmitted load, is undefined",
           s.mesh, s.static_force));
-      text += fmt::format("  {:<16} no load: force rms {:.6g} N\n", s.mesh, s.force.rms);
+      text += fmt::format("  {:<16} static force {:.6g} N (R undefined): force rms {:.6g} N\n",
+                          s.mesh, s.static_force, s.force.rms);
     }
     meshes[s.mesh] = mesh;
   }

@@ -43,7 +43,8 @@ struct TrainMeshStatistics {
   std::string mesh;
   double static_force = 0.0;  ///< F_m along the line of action [N]
   double baseload = 0.0;      ///< F₀ [N] (Gelman's baseload; the design load)
-  /// Gelman's statistics; absent when the mesh transmits no load (F_m <= 0: R is undefined).
+  /// Gelman's statistics; absent when F_m <= 0 (no load, or the mesh's other flank loaded by a
+  /// reversed torque): R, a ratio to the transmitted load, is then undefined.
   std::optional<MeanExcitation> excitation;
   RecordStatistics force;  ///< elastic mesh force k(φ)(vᵀq − e(φ)) [N]
   RecordStatistics dte;    ///< dynamic transmission error δ = vᵀq along the line of action [m]
