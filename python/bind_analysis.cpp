@@ -17,6 +17,7 @@
 #include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/ltca_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/result_writer.h"
 
@@ -70,8 +71,12 @@ std::shared_ptr<AnalysisResult> analyze(const std::string& name, const std::stri
     const std::string type =
         path.empty() ? model_type : config::peekConfigString(path, "model.type");
     const config::ConfigSchema schema = analysis::analysisSchema(name, type);
-    config = path.empty() ? config::parseConfig(text, source, schema, overrides)
-                          : config::loadConfigFile(path, schema, overrides);
+    // `ltca` on a mesh of a gearbox file (gearbox.file, gearbox.mesh): the pair is translated.
+    const bool gearbox_mesh =
+        name == "ltca" && !path.empty() && !config::peekConfigString(path, "gearbox.file").empty();
+    config = path.empty()   ? config::parseConfig(text, source, schema, overrides)
+             : gearbox_mesh ? config::loadLtcaOnGearboxMesh(path, schema, overrides)
+                            : config::loadConfigFile(path, schema, overrides);
     if (!warn.is_none()) {
       for (const auto& note : config->notes()) warn(note);
     }

@@ -76,6 +76,11 @@ std::vector<Command> allCommands();
 /// the same file are ignored with a note but still spell-checked (one file, many commands).
 config::ConfigSchema commandSchema(const Command& command, const std::filesystem::path& file);
 
+/// Loads `file` with `schema` (commandSchema) and `overrides`: config::loadConfigFile, or for
+/// `ltca` on a mesh of a gearbox (gearbox.file) config::loadLtcaOnGearboxMesh.
+config::Config loadCommandFile(const Command& command, const std::filesystem::path& file,
+                               const config::ConfigSchema& schema,
+                               const std::vector<std::string>& overrides);
 /// Loads `options.config_file` with commandSchema and prints its notes as warnings.
 config::Config loadCommandConfig(const Command& command, const CommandOptions& options);
 

@@ -120,9 +120,19 @@ config::ConfigSchema commandSchema(const Command& command, const std::filesystem
   return schema;
 }
 
+config::Config loadCommandFile(const Command& command, const std::filesystem::path& file,
+                               const config::ConfigSchema& schema,
+                               const std::vector<std::string>& overrides) {
+  // `ltca` on a mesh of a gearbox file (gearbox.file, gearbox.mesh): the pair is translated.
+  if (command.name == "ltca" && !config::peekConfigString(file, "gearbox.file").empty()) {
+    return config::loadLtcaOnGearboxMesh(file, schema, overrides);
+  }
+  return config::loadConfigFile(file, schema, overrides);
+}
+
 config::Config loadCommandConfig(const Command& command, const CommandOptions& options) {
-  config::Config config = config::loadConfigFile(
-      options.config_file, commandSchema(command, options.config_file), options.overrides);
+  config::Config config = loadCommandFile(
+      command, options.config_file, commandSchema(command, options.config_file), options.overrides);
   for (const auto& note : config.notes()) warn(note);
   return config;
 }

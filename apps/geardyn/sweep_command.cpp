@@ -52,7 +52,7 @@ struct BaseFile {
 
   config::Config load(const std::vector<std::string>& overrides) const {
     return command.load_file ? command.load_file(file, overrides)
-                             : config::loadConfigFile(file, schema, overrides);
+                             : loadCommandFile(command, file, schema, overrides);
   }
   int run(const CommandOptions& options) const {
     return command.run_file ? command.run_file(options)

@@ -306,6 +306,33 @@ def train(folder, summary):
                 for n, v in table.items() if n.startswith("mesh_force_") and n.endswith("_normal_n")]
         out.append(figure("Time history", "Dynamic mesh forces in the steady window.", data,
                           axes_layout(f"{name}: mesh forces", "time [ms]", "mesh force [kN]")))
+    if "stats" in results and (folder / "mesh_statistics.csv").exists():
+        out.append(_train_mesh_statistics(folder, name))
     return out
+
+
+def _train_mesh_statistics(folder, name):
+    """Gelman's R (curves and Newmark record) and the dynamic factor of every mesh, as bars."""
+    table = _read_columns(folder / "mesh_statistics.csv")
+    meshes = [str(m) for m in table["mesh"]]
+
+    def numbers(column):
+        out = []
+        for v in table[column]:
+            try:
+                out.append(float(v))
+            except (TypeError, ValueError):
+                out.append(None)
+        return out
+
+    data = [{"type": "bar", "x": meshes, "y": numbers("mean_excitation_ratio"),
+             "name": "R (Gelman eqs. 5–7)"},
+            {"type": "bar", "x": meshes, "y": numbers("simulated_mean_excitation_ratio"),
+             "name": "R from the Newmark record"},
+            {"type": "bar", "x": meshes, "y": numbers("dynamic_factor"),
+             "name": "dynamic factor max |F| / F"}]
+    layout = axes_layout(f"{name}: mesh statistics", "mesh", "ratio [-]", barmode="group")
+    return figure("Mesh statistics", "Gelman's mean excitation ratio R of every mesh, from the "
+                  "curves and from the Newmark record, and the dynamic factor.", data, layout)
 
 

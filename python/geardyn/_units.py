@@ -55,6 +55,8 @@ _TABLES = {
                     "delta_m1_ef": "", "phase": ""},
     "load_statistics": {"a": "", "m1_k": "", "m1_ef": "", "d_k": "", "d_e": "", "r_ke": "",
                         "delta_m1_ef": "", "variable_term_v": ""},
+    "mesh_statistics": {"a": "", "d_k": "", "d_e": "", "r_ke": "", "delta_m1_ef": "",
+                        "variable_term_v": ""},
     # One row per identified parameter, each in its own unit (N/m, m, N s/m, rad).
     "identified": {"value": "(per row: parameter)", "ci_low": "(per row: parameter)",
                    "ci_high": "(per row: parameter)", "true": "(per row: parameter)",

@@ -242,6 +242,9 @@ def plot_ltca(result_dir, save=False):
     folder = pathlib.Path(result_dir)
     summary = json.loads((folder / "summary.json").read_text())
     title = summary["config"].get("title") or "loaded tooth contact"
+    gearbox = summary["config"].get("gearbox", {})
+    if gearbox.get("mesh"):  # a mesh of a gearbox file
+        title = f"{title}, mesh {gearbox['mesh']} of {gearbox.get('file', 'the gearbox')}"
     table = _read_columns(folder / "ltca.csv")
     figures = {}
     figure, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
@@ -256,7 +259,7 @@ def plot_ltca(result_dir, save=False):
     bottom.set_xlabel("mesh phase [periods]")
     bottom.legend(fontsize=8)
     bottom.grid(alpha=0.3)
-    figure.suptitle(f"{title}: {summary['results']['ltca']['force']:g} N", fontsize=9)
+    figure.suptitle(f"{title}: {summary['results']['ltca']['force']:.6g} N", fontsize=9)
     figure.tight_layout()
     figures["ltca.png"] = figure
     if (folder / "harris.csv").exists():

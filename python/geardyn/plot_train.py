@@ -1,7 +1,8 @@
 """Figures of a gear train (`geardyn train`): the layout with its mode shapes, the Campbell
 diagram with shaft and mesh orders, the forced response against speed, the Newmark time
 response over the frequency-domain steady state, the run-up's order tracks and waterfall
-(plot_train_runup.py), and the nonlinear steady state (plot_train_nonlinear.py)."""
+(plot_train_runup.py), the mesh statistics (plot_train_stats.py) and the nonlinear steady state
+(plot_train_nonlinear.py)."""
 
 import math
 import pathlib
@@ -10,6 +11,7 @@ from ._plot_common import _axes, _long_table, _read_columns, _read_summary, fini
 from ._tables import log_floor
 from .plot_train_nonlinear import train_nonlinear_figure
 from .plot_train_runup import train_runup_figure, train_waterfall_figure
+from .plot_train_stats import train_stats_figure
 
 _TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
                  "mixed": "tab:purple", "outside": "0.3", "": "0.3"}
@@ -251,8 +253,8 @@ def _train_title(summary):
 
 def plot_train(result_dir, save=False):
     """{file name: Figure}: modes.png, campbell.png, forced_response.png, time_history.png,
-    runup.png and waterfall.png (plot_train_runup.py), and nonlinear_response.png of the
-    analyses run; written into the folder when `save`."""
+    runup.png and waterfall.png (plot_train_runup.py), mesh_statistics.png
+    (plot_train_stats.py), and nonlinear_response.png of the analyses run; written into the folder when `save`."""
     folder = pathlib.Path(result_dir)
     summary = _read_summary(folder)
     title = _train_title(summary)
@@ -269,6 +271,8 @@ def plot_train(result_dir, save=False):
     if "runup" in results and (folder / "runup.csv").exists():
         figures["runup.png"] = train_runup_figure(folder, title)
         figures["waterfall.png"] = train_waterfall_figure(folder, title)
+    if "stats" in results and (folder / "mesh_statistics.csv").exists():
+        figures["mesh_statistics.png"] = train_stats_figure(folder, title)
     if "nonlinear" in results:
         figures["nonlinear_response.png"] = train_nonlinear_figure(folder, title=title)
     return finish(figures, folder, save)

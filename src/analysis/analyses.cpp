@@ -87,6 +87,9 @@ config::ConfigSchema analysisSchema(const std::string& name, const std::string& 
 
 config::Config loadAnalysisConfig(const std::string& name, const std::filesystem::path& file,
                                   const std::vector<std::string>& overrides) {
+  if (name == "ltca" && !config::peekConfigString(file, "gearbox.file").empty()) {
+    return config::loadLtcaOnGearboxMesh(file, analysisSchema(name, ""), overrides);
+  }
   if (name != "train") {
     return config::loadConfigFile(
         file, analysisSchema(name, config::peekConfigString(file, "model.type")), overrides);

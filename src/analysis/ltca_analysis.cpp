@@ -43,14 +43,22 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
                                             [](auto& a, auto& b) { return a.ste < b.ste; });
   double mean_tangent = 0.0;
   for (const auto& p : points) mean_tangent += p.tangent / static_cast<double>(points.size());
-  summary.results["ltca"] = {{"force", force},
-                             {"ste_peak_to_peak", hi->ste - lo->ste},
-                             {"ste_min", lo->ste},
-                             {"ste_max", hi->ste},
-                             {"mean_tangent_stiffness", mean_tangent},
-                             {"contact_ratio", stiffness->contactRatio()},
-                             {"wall_time_s", sweep_seconds}};
-  std::string text = fmt::format(
+  summary.results["ltca"] = {
+      {"force", force},
+      {"ste_peak_to_peak", hi->ste - lo->ste},
+      {"ste_min", lo->ste},
+      {"ste_max", hi->ste},
+      {"mean_tangent_stiffness", mean_tangent},
+      {"contact_ratio", stiffness->contactRatio()},
+      {"gearbox_mesh", config.has("gearbox.mesh")
+                           ? nlohmann::ordered_json(config.string("gearbox.mesh"))
+                           : nlohmann::ordered_json(nullptr)},
+      {"wall_time_s", sweep_seconds}};
+  std::string text = config.has("gearbox.mesh")
+                         ? fmt::format("mesh {} of {}:\n", config.string("gearbox.mesh"),
+                                       config.string("gearbox.file"))
+                         : std::string();
+  text += fmt::format(
       "loaded tooth contact at {:g} N: STE {:.4g} .. {:.4g} um (peak to peak {:.4g} um), mean "
       "tangent stiffness {:.4g} N/m\n",
       force, 1e6 * lo->ste, 1e6 * hi->ste, 1e6 * (hi->ste - lo->ste), mean_tangent);

@@ -1,6 +1,7 @@
 /// `train`: any gear train described once (a gearbox file or inline) and
 /// analysed: kinematics and phasing, statics, modes, Campbell, forced response, time response,
-/// run-up (train_runup_analysis.cpp), nonlinear steady state (train_nonlinear_analysis.cpp).
+/// run-up (train_runup_analysis.cpp), mesh statistics (train_stats_analysis.cpp), nonlinear
+/// steady state (train_nonlinear_analysis.cpp).
 
 #include "geardyn/config/train_analysis.h"
 
@@ -12,6 +13,7 @@
 #include <complex>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <string_view>
 
 #include "geardyn/analysis/analyses.h"
@@ -26,6 +28,7 @@
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
+#include "train_stats_analysis.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -318,8 +321,9 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
       fmt::format("forced response: {} speeds in {:.2f} s\n", speeds.size(), secondsSince(start));
 }
 
+/// `record`: receives the Newmark record (for `stats` after `time`).
 int runTime(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
-            io::RunSummary& summary, std::string& text) {
+            io::RunSummary& summary, std::string& text, std::optional<TrainTimeResponse>& record) {
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
   detail::checkTrainProbes(model, analysis, speed);
@@ -407,6 +411,7 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
   text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s\n", r.steps, r.time_step,
                       seconds);
   detail::writeTrainProbes(model, analysis, speed, r, compare ? &s : nullptr, result, text);
+  record = r;
   return 0;
 }
 
@@ -522,15 +527,20 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   writeKinematics(model, result, summary, text);
   int code = 0;
   std::string status = "ok";
+  std::optional<TrainTimeResponse> time_record;  // `time`'s Newmark run, reused by `stats`
   for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
     if (analysis == "static") runStatic(model, result, summary, text);
     if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
     if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text, context);
     if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
-      code = std::max(code, runTime(model, loaded.analysis, result, summary, text));
+      code = std::max(code, runTime(model, loaded.analysis, result, summary, text, time_record));
     if (analysis == "runup") {
       code = std::max(code, detail::runTrainRunUp(model, loaded.analysis, result, text, context));
+    }
+    if (analysis == "stats") {
+      code = std::max(code, detail::runTrainStats(model, loaded.analysis, result, text,
+                                                  time_record ? &*time_record : nullptr));
     }
     if (analysis == "nonlinear") {
       const std::string s =

@@ -62,6 +62,17 @@ ConfigSchema ltcaSchema() {
                       "load.");
   schema.string("title").optional().doc("free text describing the study");
   addGearPairSections(schema, true);
+  schema.section("gearbox",
+                 "A mesh of a gearbox file instead of [pinion], [gear] and [pair]: its gears, "
+                 "centre distance, modifications and static force (loadLtcaOnGearboxMesh).");
+  schema.string("gearbox.file")
+      .optional()
+      .doc("the gearbox description (TOML or REXS), relative to this file");
+  schema.string("gearbox.mesh")
+      .optional()
+      .doc(
+          "the mesh of its [meshes] analysed (gear a is the pinion); ltca.force defaults to its "
+          "static force at the gearbox's operating point, [modifications] to the mesh's");
   schema.section("ltca", "The analysis.");
   schema.real("ltca.force")
       .unit("N")

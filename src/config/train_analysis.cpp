@@ -310,7 +310,7 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
           "into <out>/load_case_<id>/");
   schema.section("analysis", "What to run.");
   schema.stringList("analysis.run")
-      .choices({"static", "modal", "campbell", "forced", "time", "runup", "nonlinear"})
+      .choices({"static", "modal", "campbell", "forced", "time", "runup", "nonlinear", "stats"})
       .defaultValue(nlohmann::ordered_json::array({"static", "modal"}))
       .doc("analyses, in any combination");
   schema.section("modal", "Modes at one speed.");
@@ -364,6 +364,16 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(200)
       .defaultValue(20)
       .doc("harmonics of the frequency-domain steady state it is compared with");
+  schema.section("stats",
+                 "Gelman's (2005) mean excitation ratio R and the statistics of the dynamic mesh "
+                 "force and transmission error at every mesh, from a Newmark run with the [time] "
+                 "options (speed, steps, record).");
+  schema.real("stats.design_torque")
+      .unit("N m")
+      .optional()
+      .doc(
+          "input torque the profile modifications were designed for: each mesh's baseload F₀ is "
+          "its static force at this torque (default: the operating torque, a = 1)");
   addProbesSection(schema);
   addRunUpSection(schema);
   addNonlinearSection(schema);

@@ -34,14 +34,17 @@ CASES = {
     "spectrum": ("spectrum_rao2023_table41_probes.toml", []),
     "identify": ("identify_rao2023_table41.toml", []),
     "ltca": ("ltca_visnadi2021_long_relief.toml", []),
+    "ltca_gearbox_mesh": ("ltca_two_stage_reducer_stage1.toml", []),
+    "train_stats": ("train_two_stage_reducer_stats.toml", []),
 }
+COMMANDS = {"rotor_fe": "rotor", "ltca_gearbox_mesh": "ltca", "train_stats": "train"}
 
 
 @pytest.fixture(scope="module")
 def results():
     out = {}
     for name, (file, overrides) in CASES.items():
-        command = "rotor" if name == "rotor_fe" else name
+        command = COMMANDS.get(name, name)
         out[name] = geardyn.run(command, EXAMPLES / file, overrides=overrides, progress=False)
     return out
 

@@ -22,7 +22,7 @@ SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__
 EXAMPLES = ["hbm_backlash_kahraman_singh", "hbm_ltca_visnadi2021_long_relief", "rotor_rao2023_study",
             "spectrum_rao2023_table41_probes", "rotor_visnadi2021_modal", "rotor_visnadi2021_campbell",
             "rotor_visnadi2021_runup", "sweep_gear_pair_speed_damping", "simulate_gear_pair_backlash",
-            "train_two_stage_reducer_runup"]
+            "train_two_stage_reducer_runup", "train_two_stage_reducer_stats"]
 PLOTTER = {"hbm": "hbm", "rotor": None, "spectrum": "spectrum", "sweep": "sweep", "simulate": "simulate"}
 
 
@@ -177,7 +177,8 @@ def _points_under(legend, ax):
 def test_legends_are_clear_of_the_data(figures):
     for stem, name in [("rotor_visnadi2021_runup", "runup.png"), ("rotor_visnadi2021_campbell", "campbell.png"),
                        ("rotor_rao2023_study", "study.png"), ("hbm_backlash_kahraman_singh", "forced_response.png"),
-                       ("spectrum_rao2023_table41_probes", "full_spectrum.png")]:
+                       ("spectrum_rao2023_table41_probes", "full_spectrum.png"),
+                       ("train_two_stage_reducer_stats", "mesh_statistics.png")]:
         figure = figures[(stem, name)]
         for ax in figure.axes:
             legend = ax.get_legend()

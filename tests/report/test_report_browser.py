@@ -34,6 +34,8 @@ CASES = {
     "rotor_visnadi2021_campbell": ["Campbell diagram"],
     "rotor_visnadi2021_time": ["Time history"],
     "train_lin_parker1999": ["Modes", "Mode shapes"],
+    "train_two_stage_reducer_stats": ["Mesh statistics"],
+    "ltca_two_stage_reducer_stage1": ["Loaded tooth contact", "Harris map"],
 }
 
 
@@ -76,7 +78,8 @@ def chromium():
 # one page per kind of figure: line rows (HBM, LTCA), log bars, orbits with equal axes and log
 # spectra, FE mode-shape rows, train bars; the other reports are checked for their headings.
 IN_BROWSER = ["hbm_saletti2025_100Nm", "ltca_visnadi2021_long_relief", "rotor_rao2023_study",
-              "spectrum_rao2023_table41_probes", "rotor_visnadi2021_modal", "train_lin_parker1999"]
+              "spectrum_rao2023_table41_probes", "rotor_visnadi2021_modal", "train_lin_parker1999",
+              "train_two_stage_reducer_stats"]
 
 
 def _headings(page):

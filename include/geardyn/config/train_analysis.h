@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The analysis file of `geardyn train`: which analyses to run on a gearbox (static, modal,
-/// campbell, forced, time, runup, nonlinear) and their options. The gearbox is named by `[gearbox]
-/// file = "path"` (relative to the analysis file) or written inline in the same file.
+/// campbell, forced, time, runup, nonlinear, stats) and their options. The gearbox is named by
+/// `[gearbox] file = "path"` (relative to the analysis file) or written inline in the same file.
 
 #include <utility>
 #include <vector>
