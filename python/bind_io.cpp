@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "geardyn/analysis/analyses.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/geometry_config.h"
@@ -34,23 +35,17 @@ namespace {
 
 /// The schema of a command; `rotor` files with [model] type = "fe_geared_rotor" use the FE one.
 config::ConfigSchema schemaOf(const std::string& command, const std::string& path = "") {
-  if (command == "geometry") return config::geometrySchema();
-  if (command == "stiffness") return config::stiffnessSchema();
-  if (command == "simulate") return config::simulateSchema();
-  if (command == "stats") return config::statsSchema();
-  if (command == "hbm") return config::hbmSchema();
   if (command == "rotor")
     return !path.empty() && config::peekConfigString(path, "model.type") == "fe_geared_rotor"
                ? config::feRotorSchema()
                : config::rotorSchema();
   if (command == "rotor_fe") return config::feRotorSchema();
-  if (command == "spectrum") return config::spectrumSchema();
-  if (command == "identify") return config::identifySchema();
-  if (command == "ltca") return config::ltcaSchema();
   if (command == "sweep") return config::sweepSchema();
-  throw InputError("command", command,
-                   "one of geometry, stiffness, simulate, stats, hbm, rotor, rotor_fe, spectrum, "
-                   "identify, ltca, sweep");
+  for (const auto& a : analysis::analysisCommands())
+    if (command == a.name) return a.schema();
+  std::string names;
+  for (const auto& a : analysis::analysisCommands()) names += std::string(a.name) + ", ";
+  throw InputError("command", command, "one of " + names + "rotor_fe, sweep");
 }
 
 }  // namespace

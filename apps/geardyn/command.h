@@ -66,6 +66,13 @@ struct Command {
       load_file;
   /// Further schemas `geardyn schema COMMAND` prints after the default one.
   std::vector<std::function<config::ConfigSchema()>> variant_schemas;
+  /// A run of the command on one of the examples, shown by `geardyn COMMAND --help`.
+  std::string example;
+  /// Its files translate into a gearbox description (--print-gearbox,
+  /// config/translated_gearbox.h).
+  bool has_gearbox = false;
+  /// Takes --resume and --overwrite (a journal of finished cases in its result folder: sweep).
+  bool resumable = false;
 };
 
 /// The analysis commands, in the order `geardyn --help` lists them.

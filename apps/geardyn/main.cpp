@@ -3,6 +3,7 @@
 /// A thin layer: it reads a configuration, calls the library and writes results (DESIGN.md).
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -147,10 +148,13 @@ int main(int argc, char** argv) {
     sub->add_flag("--progress", o.progress,
                   "progress lines with an ETA on stderr for runs over ~2 s (default: only when "
                   "stderr is a terminal)");
-    sub->add_flag("--print-gearbox", o.print_gearbox,
-                  "write the gearbox description (TOML) the file translates into to stdout and "
-                  "exit without analysing (simulate, hbm, stats, finite-element rotor files)");
-    if (command.run_file) {
+    if (command.has_gearbox) {
+      sub->add_flag("--print-gearbox", o.print_gearbox,
+                    "write the gearbox description (TOML) the file translates into to stdout and "
+                    "exit without analysing (simulate, hbm, stats, finite-element rotor files)");
+    }
+    if (!command.example.empty()) sub->footer("Example:\n  geardyn " + command.example);
+    if (command.resumable) {
       sub->add_flag("--resume", o.resume,
                     "continue an interrupted sweep from its journal in the result folder");
       sub->add_flag("--overwrite", o.overwrite,
@@ -167,7 +171,14 @@ int main(int argc, char** argv) {
   for (const auto& command : commands) names.push_back(command.name);
   schema_sub->add_option("command", schema_command, "the command")
       ->required()
-      ->check(CLI::IsMember(names));
+      ->check([names](const std::string& value) {
+        if (std::find(names.begin(), names.end(), value) != names.end()) return std::string();
+        std::string known;
+        for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+        const auto match = geardyn::config::closestMatch(value, names);
+        return "'" + value + "' is not one of " + known +
+               (match ? "; did you mean '" + *match + "'?" : std::string());
+      });
 
   try {
     app.parse(argc, argv);

@@ -349,6 +349,7 @@ config::ConfigSchema gearboxSchema() {
                               "planetary stages and the operating point, read by `geardyn train` "
                               "([gearbox] file = \"gearbox.toml\" in the analysis file).");
   schema.setTitle("Gearbox description file");
+  schema.setPrintedBy("train");  // after the train analysis file's reference
   addGearboxSections(schema);
   return schema;
 }

@@ -577,3 +577,25 @@ def test_fe_modal_table_has_no_negative_zero_damping(tmp_path):
                  "--set", "output.plots=false", *undamped)
     assert result.returncode == 0, result.stderr
     assert "zeta 0.0000" in result.stdout and "-0.0000" not in result.stdout, result.stdout
+
+
+def test_help_shows_each_commands_options_and_an_example():
+    # Issue #33 item 7: `train --help` listed sweep's --resume/--overwrite and had no example.
+    train = run("train", "--help")
+    assert train.returncode == 0
+    assert "--resume" not in train.stdout and "--overwrite" not in train.stdout, train.stdout
+    assert "Example:\n  geardyn train examples/" in train.stdout, train.stdout
+    sweep = run("sweep", "--help")
+    assert "--resume" in sweep.stdout and "--overwrite" in sweep.stdout
+    for command in ("geometry", "stiffness", "simulate", "stats", "hbm", "rotor", "spectrum",
+                    "identify", "ltca", "sweep"):
+        shown = run(command, "--help").stdout
+        example = re.search(r"Example:\n  geardyn (\S+) (examples/\S+\.toml)", shown)
+        assert example and example.group(1) == command, shown
+        assert (EXAMPLES.parent / example.group(2)).is_file(), example.group(2)
+
+
+def test_schema_of_a_misspelt_command_suggests_the_command():
+    result = run("schema", "trian")
+    assert result.returncode == 2
+    assert "did you mean 'train'?" in result.stderr, result.stderr

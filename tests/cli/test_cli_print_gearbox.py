@@ -66,10 +66,14 @@ def test_hbm_and_stats_print_their_gearbox(tmp_path):
 
 
 def test_print_gearbox_without_a_translation_is_bad_input(tmp_path):
-    # geometry has no gearbox translation; stats from moments holds no gear pair.
-    geometry = run("geometry", EXAMPLES / "geometry_rao2023_rig.toml", "--print-gearbox")
-    assert geometry.returncode == 2, geometry.stderr
-    assert "--print-gearbox" in geometry.stderr and "no translation" in geometry.stderr
+    # geometry and train have no gearbox translation (train reads a gearbox): the option is not
+    # theirs; stats from moments holds no gear pair.
+    for command, example in (("geometry", "geometry_rao2023_rig.toml"),
+                             ("train", "train_two_stage_reducer.toml")):
+        refused = run(command, EXAMPLES / example, "--print-gearbox")
+        assert refused.returncode == 2, refused.stderr
+        assert "--print-gearbox" in refused.stderr and refused.stdout == ""
+        assert "--print-gearbox" not in run(command, "--help").stdout
     moments = run("stats", EXAMPLES / "stats_gelman2005_case1_a025.toml", "--print-gearbox")
     assert moments.returncode == 2, moments.stderr
     assert "stats.source" in moments.stderr

@@ -57,7 +57,26 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
 /// Campbell, forced response, time response) on one gearbox (one load case).
 AnalysisResult trainAnalysis(const TrainInputs& inputs, const AnalysisContext& context);
 
-/// The analyses runAnalysis knows, in the CLI's order.
+/// One analysis command: what `geardyn NAME`, `geardyn.run(NAME, …)`, `sweep` and the
+/// benchmarks know of it. The one list of commands is analysisCommands(); the CLI adds only
+/// `sweep`, `schema`, `import`, `export` and `report`, which are not analyses.
+struct AnalysisCommand {
+  const char* name;
+  const char* help;     ///< one line (`geardyn --help`, docs/cli.md)
+  const char* example;  ///< a run on a file of examples/, shown by `geardyn NAME --help`
+  config::ConfigSchema (*schema)();  ///< its own schema (`rotor`: the lateral rotor's)
+  /// Further schemas its files may follow (`rotor`: the finite-element rotor; `train`: the
+  /// gearbox description).
+  std::vector<config::ConfigSchema (*)()> variants;
+  /// Its files translate into a gearbox description (`--print-gearbox`,
+  /// config/translated_gearbox.h).
+  bool has_gearbox = false;
+  AnalysisResult (*run)(const config::Config&, const AnalysisContext&);
+};
+/// Every analysis command, in the CLI's order.
+const std::vector<AnalysisCommand>& analysisCommands();
+
+/// The analyses runAnalysis knows, in the CLI's order (the names of analysisCommands()).
 const std::vector<std::string>& analysisNames();
 
 /// The schema `name` validates a configuration with (`model_type` = the file's [model] type,

@@ -92,6 +92,8 @@ class ConfigSchema {
   /// The reference's heading (default: "`geardyn <command>` configuration"), for schemas of
   /// files that no command runs directly (a gearbox description).
   void setTitle(std::string title) { title_ = std::move(title); }
+  /// The command whose `geardyn schema COMMAND` prints this reference (default: command()).
+  void setPrintedBy(std::string command) { printed_by_ = std::move(command); }
   const std::string& description() const noexcept { return description_; }
   const std::deque<KeySpec>& keys() const noexcept { return keys_; }
   const std::vector<SectionSpec>& sections() const noexcept { return sections_; }
@@ -126,6 +128,7 @@ class ConfigSchema {
   std::string command_;
   std::string description_;
   std::string title_;
+  std::string printed_by_;
   std::vector<SectionSpec> sections_;
   std::vector<std::string> collections_;
   std::deque<KeySpec> keys_;  // declaration order; a deque keeps KeyBuilder pointers valid
