@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
     const auto config = geardyn::config::parseConfig(text, "fuzz.toml", schema);
-    if (config.integer("hbm.harmonics") > 8 || config.integer("hbm.samples_per_period") > 128 ||
+    if (config.integer("hbm.harmonics") > 8 || config.integer("hbm.samples") > 128 ||
         config.integer("mesh_stiffness.potential_energy.table_points") > 1025) {
       return 0;
     }

@@ -18,6 +18,7 @@
 #include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/renamed_keys.h"
 #include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/result_writer.h"
@@ -189,8 +190,8 @@ void checkStudyValues(const config::SweepDefinition& study, const BaseFile& base
   const config::ConfigSchema& schema = base.schema;
   for (const auto& p : study.parameters) {
     const std::string where = "study.parameters." + p.key;
-    if (!schema.findKey(p.key)) {
-      base.load({p.key + "=0"});  // throws with did-you-mean
+    if (!schema.findKey(p.key) && !schema.aliasTarget(p.key)) {  // an old key: converted
+      base.load({p.key + "=0"});                                 // throws with did-you-mean
       throw InputError(where, "", "a key of the base configuration");
     }
     checkNamedTable(p.key, where, schema, base_config);
@@ -302,10 +303,19 @@ int runSweep(const CommandOptions& options) {
     }
   }
   for (auto& p : study.parameters) {
-    if (const std::string* renamed = base_schema.aliasTarget(p.key)) {
-      warn(fmt::format("study.parameters.{} is deprecated: write {}", p.key, *renamed));
-      p.key = *renamed;
+    const std::string* renamed = base_schema.aliasTarget(p.key);
+    if (!renamed) continue;
+    if (const config::ValueConversion* c = config::renameConversion(p.key, *renamed)) {
+      // Its values are in the old unit: each case reads the old key and converts it (the
+      // cases' own notes are not shown, so this is the one warning of the run).
+      warn(
+          fmt::format("study.parameters.{} is deprecated: write {} (value {}); the cases read "
+                      "these values converted",
+                      p.key, *renamed, c->text));
+      continue;
     }
+    warn(fmt::format("study.parameters.{} is deprecated: write {}", p.key, *renamed));
+    p.key = *renamed;
   }
   rejectSweptOverrides(study, options);
   checkStudyValues(study, base_file, base, options.config_file);

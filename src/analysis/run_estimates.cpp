@@ -95,7 +95,7 @@ RunEstimate estimateMonteCarlo(const config::Config& config, int threads) {
 
 RunEstimate estimateHarmonicBalance(const config::Config& config) {
   const double n = 2.0 * static_cast<double>(config.integer("hbm.harmonics")) + 1.0;
-  const double samples = static_cast<double>(config.integer("hbm.samples_per_period"));
+  const double samples = static_cast<double>(config.integer("hbm.samples"));
   const double range = std::abs(config.real("sweep.stop") - config.real("sweep.start"));
   const double sweeps = config.string("sweep.direction") == "both" ? 2.0 : 1.0;
   // The step adapts between min_step and max_step; near resonances it stays small: the initial

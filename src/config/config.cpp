@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/renamed_keys.h"
 #include "geardyn/error.h"
 
 namespace geardyn::config {
@@ -45,6 +46,33 @@ std::string describeNode(const toml::node& node) {
   std::ostringstream out;
   node.visit([&](const auto& value) { out << value; });
   return out.str();
+}
+
+/// A converting rename's words for the warning (", value × 2: ..."), empty for a plain rename.
+std::string conversionText(const ValueConversion* conversion) {
+  return conversion ? ", value " + std::string(conversion->text) : std::string();
+}
+
+/// Multiplies the number, or every number of the array, at `table[key]` by `scale` (integers
+/// become reals); other values are left for the type check to reject.
+void scaleNumbers(toml::table& table, const std::string& key, double scale) {
+  if (scale == 1.0) return;
+  toml::node* node = table.get(key);
+  if (!node) return;
+  if (const auto* i = node->as_integer()) {
+    table.insert_or_assign(key, static_cast<double>(i->get()) * scale);
+  } else if (auto* f = node->as_floating_point()) {
+    f->get() *= scale;
+  } else if (auto* array = node->as_array()) {
+    for (std::size_t k = 0; k < array->size(); ++k) {
+      if (const auto* ik = array->get(k)->as_integer()) {
+        array->replace(array->cbegin() + static_cast<std::ptrdiff_t>(k),
+                       static_cast<double>(ik->get()) * scale);
+      } else if (auto* fk = array->get(k)->as_floating_point()) {
+        fk->get() *= scale;
+      }
+    }
+  }
 }
 
 /// Resolves values against the schema and remembers where each came from.
@@ -137,8 +165,11 @@ void Resolver::applyOverride(toml::table& root, const std::string& assignment) {
   };
   std::string path = trim(assignment.substr(0, eq));
   const std::string text = trim(assignment.substr(eq + 1));
+  const ValueConversion* conversion = nullptr;
   if (const std::string* renamed = schema_.aliasTarget(path)) {
-    notes_.push_back(fmt::format("{} is deprecated: it now reads {} (--set)", path, *renamed));
+    conversion = renameConversion(path, *renamed);
+    notes_.push_back(fmt::format("{} is deprecated: it now reads {} (--set{})", path, *renamed,
+                                 conversionText(conversion)));
     path = *renamed;
   }
   if (!schema_.findKey(path)) throwUnknownKey(path, "--set");
@@ -165,12 +196,14 @@ void Resolver::applyOverride(toml::table& root, const std::string& assignment) {
       throw InputError(path, text, "cannot override: " + parts[i] + " is not a table in the file");
     }
   }
+  if (conversion) scaleNumbers(parsed, "v", conversion->scale);
   parsed.get("v")->visit([&](auto&& value) { table->insert_or_assign(parts.back(), value); });
   overridden_.insert(path);
 }
 
 void Resolver::applyAliases(toml::table& root) {
   for (const auto& [from, to] : schema_.aliases()) {
+    const ValueConversion* conversion = renameConversion(from, to);
     const toml::node* node = root.at_path(from).node();
     if (!node) continue;
     if (root.at_path(to).node()) {
@@ -179,8 +212,8 @@ void Resolver::applyAliases(toml::table& root) {
                                    "keep only {}",
                                    to, where(from, *node), to));
     }
-    notes_.push_back(fmt::format("{} is deprecated: write {} ({}; read as {})", from, to,
-                                 where(from, *node), to));
+    notes_.push_back(fmt::format("{} is deprecated: write {} ({}; read as {}{})", from, to,
+                                 where(from, *node), to, conversionText(conversion)));
     const auto from_parts = splitPath(from), to_parts = splitPath(to);
     toml::table* target = &root;
     for (std::size_t i = 0; i + 1 < to_parts.size(); ++i) {
@@ -194,6 +227,7 @@ void Resolver::applyAliases(toml::table& root) {
     source->get(from_parts.back())->visit([&](auto&& value) {
       target->insert_or_assign(to_parts.back(), value);
     });
+    if (conversion) scaleNumbers(*target, to_parts.back(), conversion->scale);
     source->erase(from_parts.back());
   }
 }

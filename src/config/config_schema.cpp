@@ -3,11 +3,49 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <numbers>
 
+#include "geardyn/config/renamed_keys.h"
 #include "geardyn/error.h"
 
 namespace geardyn::config {
 namespace {
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+struct ConvertedRename {
+  std::string_view from, to;
+  ValueConversion conversion;
+};
+
+/// Every rename whose value converts (issue #31); the schemas declare the renames themselves.
+constexpr std::array kConvertedRenames{
+    ConvertedRename{"model.backlash",
+                    "model.normal_backlash",
+                    {2.0, "× 2: model.backlash was the half clearance b, the new key is j = 2b"}},
+    ConvertedRename{"model.transmission_error.phases",
+                    "model.transmission_error.phases_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+    ConvertedRename{"model.extra_force_phases",
+                    "model.extra_force_phases_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+    ConvertedRename{"mesh.te_x_phase",
+                    "mesh.te_x_phase_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+    ConvertedRename{"mesh.te_y_phase",
+                    "mesh.te_y_phase_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+    ConvertedRename{"mesh.line_of_action_angle",
+                    "mesh.line_of_action_angle_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+    ConvertedRename{"runout.pinion_phase",
+                    "runout.pinion_phase_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+    ConvertedRename{"runout.gear_phase",
+                    "runout.gear_phase_deg",
+                    {kDegPerRad, "× 180/π: the old key was in radians"}},
+};
 
 std::string kindName(ValueKind kind) {
   switch (kind) {
@@ -231,6 +269,12 @@ void ConfigSchema::alias(std::string old_path, std::string new_path) {
   aliases_.emplace_back(std::move(old_path), std::move(new_path));
 }
 
+const ValueConversion* renameConversion(std::string_view old_path, std::string_view new_path) {
+  for (const ConvertedRename& r : kConvertedRenames)
+    if (r.from == old_path && r.to == new_path) return &r.conversion;
+  return nullptr;
+}
+
 const std::string* ConfigSchema::aliasTarget(const std::string& old_path) const {
   for (const auto& [from, to] : aliases_)
     if (from == old_path) return &to;
@@ -290,7 +334,11 @@ std::string ConfigSchema::referenceMarkdown() const {
     out +=
         "\n## Renamed keys\n\nThe old spelling is still read, with a warning naming the new "
         "one.\n\n| old key | new key |\n|---|---|\n";
-    for (const auto& [from, to] : aliases_) out += fmt::format("| `{}` | `{}` |\n", from, to);
+    for (const auto& [from, to] : aliases_) {
+      const ValueConversion* c = renameConversion(from, to);
+      out += c ? fmt::format("| `{}` | `{}` (value {}) |\n", from, to, c->text)
+               : fmt::format("| `{}` | `{}` |\n", from, to);
+    }
   }
   return out;
 }

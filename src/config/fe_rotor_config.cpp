@@ -58,8 +58,8 @@ void addShaftSections(ConfigSchema& schema, const std::string& s, const std::str
            {"czz", "N s/m", "vertical damping"},
            {"cyz", "N s/m", "cross damping"},
            {"czy", "N s/m", "cross damping"},
-           {"kxx", "N/m", "axial stiffness (model.axial)"},
-           {"cxx", "N s/m", "axial damping (model.axial)"},
+           {"k_axial", "N/m", "axial stiffness (model.axial), as a gearbox bearing's k_axial"},
+           {"c_axial", "N s/m", "axial damping (model.axial)"},
            {"k_tilt", "N m/rad", "tilt (angular) stiffness about y and z"},
            {"c_tilt", "N m s/rad", "tilt damping"},
            {"k_torsion", "N m/rad", "torsional stiffness to ground (coupling, motor)"},
@@ -69,6 +69,8 @@ void addShaftSections(ConfigSchema& schema, const std::string& s, const std::str
         .defaultValue(nlohmann::ordered_json::array({0.0}))
         .doc(doc);
   }
+  schema.alias(b + ".kxx", b + ".k_axial");
+  schema.alias(b + ".cxx", b + ".c_axial");
   const std::string d = s + ".disks";
   schema.section(d, "Extra rigid disks (the gear body is added by gear_disk).");
   schema.realList(d + ".nodes").defaultValue(nlohmann::ordered_json::array()).doc("disk nodes");
@@ -154,8 +156,8 @@ FeShaftSpec shaftFromConfig(const Config& config, const std::string& s, const Ge
     };
     bearing.kyy = get("kyy"), bearing.kzz = get("kzz"), bearing.kyz = get("kyz");
     bearing.kzy = get("kzy"), bearing.cyy = get("cyy"), bearing.czz = get("czz");
-    bearing.cyz = get("cyz"), bearing.czy = get("czy"), bearing.kxx = get("kxx");
-    bearing.cxx = get("cxx"), bearing.k_tilt = get("k_tilt"), bearing.c_tilt = get("c_tilt");
+    bearing.cyz = get("cyz"), bearing.czy = get("czy"), bearing.kxx = get("k_axial");
+    bearing.cxx = get("c_axial"), bearing.k_tilt = get("k_tilt"), bearing.c_tilt = get("c_tilt");
     bearing.k_torsion = get("k_torsion"), bearing.c_torsion = get("c_torsion");
     shaft.bearings.push_back(bearing);
   }
@@ -207,7 +209,7 @@ ConfigSchema feRotorSchema() {
       .doc("fe_geared_rotor selects this schema (without [model], `rotor` is Rao's 4-DOF rotor)");
   schema.boolean("model.axial")
       .defaultValue(false)
-      .doc("keep the axial DOFs (the paper removes them); needs bearings kxx on each shaft");
+      .doc("keep the axial DOFs (the paper removes them); needs bearings k_axial on each shaft");
   schema.string("model.contact_point")
       .choices({"pitch_point", "base_tangent_points"})
       .defaultValue("pitch_point")
@@ -351,18 +353,20 @@ ConfigSchema feRotorSchema() {
       .defaultValue(0.99)
       .doc("modes more damped than this are skipped (overdamped pairs)");
   schema.section("campbell", "Campbell diagram: modes tracked over pinion speeds.");
-  schema.real("campbell.start_speed_rpm")
+  schema.real("campbell.speed_min_rpm")
       .unit("rpm")
       .min(0.0)
       .defaultValue(0.0)
-      .doc("first pinion speed");
-  schema.real("campbell.end_speed_rpm")
+      .doc("lowest pinion speed of the range (as a gearbox's nonlinear.speed_min_rpm)");
+  schema.real("campbell.speed_max_rpm")
       .unit("rpm")
       .positive()
       .optional()
-      .doc("last pinion speed (default 4 × speed.speed_rpm)");
-  schema.alias("campbell.start_rpm", "campbell.start_speed_rpm");
-  schema.alias("campbell.end_rpm", "campbell.end_speed_rpm");
+      .doc("highest pinion speed of the range (default 4 × speed.speed_rpm)");
+  schema.alias("campbell.start_speed_rpm", "campbell.speed_min_rpm");
+  schema.alias("campbell.end_speed_rpm", "campbell.speed_max_rpm");
+  schema.alias("campbell.start_rpm", "campbell.speed_min_rpm");
+  schema.alias("campbell.end_rpm", "campbell.speed_max_rpm");
   schema.integer("campbell.points").min(2).max(10000).defaultValue(41).doc("speeds");
   schema.integer("campbell.modes").min(1).max(200).defaultValue(8).doc("modes tracked");
   schema.section("compare", "The paper's study: one time response per mesh-stiffness model.");
@@ -515,14 +519,13 @@ std::vector<int> feOutputChannels(const Config& config, const FeGearedRotor& mod
 }
 
 std::vector<double> campbellSpeedsFromConfig(const Config& config) {
-  const double start = config.real("campbell.start_speed_rpm") * kRpm;
-  const double end = (config.has("campbell.end_speed_rpm") ? config.real("campbell.end_speed_rpm")
+  const double start = config.real("campbell.speed_min_rpm") * kRpm;
+  const double end = (config.has("campbell.speed_max_rpm") ? config.real("campbell.speed_max_rpm")
                                                            : 4.0 * config.real("speed.speed_rpm")) *
                      kRpm;
   if (!(end > start)) {
-    throw InputError(
-        "campbell.end_speed_rpm", fmt::format("{:g} rpm", end / kRpm),
-        fmt::format("a speed above campbell.start_speed_rpm = {:g} rpm", start / kRpm));
+    throw InputError("campbell.speed_max_rpm", fmt::format("{:g} rpm", end / kRpm),
+                     fmt::format("a speed above campbell.speed_min_rpm = {:g} rpm", start / kRpm));
   }
   const auto points = config.integer("campbell.points");
   std::vector<double> speeds;

@@ -80,7 +80,7 @@ void checkTranslatable(const Config& config, const FeGearedRotorSpec& spec) {
     throw InputError("model.axial", "false",
                      "true for a helical pair in a gearbox description: a gearbox keeps the "
                      "axial DOFs the helical mesh loads (model.axial = false holds them "
-                     "rigidly); give each shaft's bearings kxx");
+                     "rigidly); give each shaft's bearings k_axial");
   }
   if (helical && config.string("model.contact_point") != "pitch_point") {
     throw InputError("model.contact_point", quoted(config.string("model.contact_point")),

@@ -183,13 +183,9 @@ std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
   std::string t;
   const auto te_amplitudes = config.realList("model.transmission_error.amplitudes");
   if (!te_amplitudes.empty()) {
-    std::vector<double> phases_deg;
-    for (double p : config.realList("model.transmission_error.phases")) {
-      phases_deg.push_back(p / kDeg);
-    }
     t += "te_amplitudes = " + realList(te_amplitudes) + "  # [m]\n";
-    t += "te_phases_deg = " + realList(phases_deg) +
-         "  # the file's model.transmission_error.phases [rad] in degrees\n";
+    t += "te_phases_deg = " + realList(config.realList("model.transmission_error.phases_deg")) +
+         "\n";
   }
   const std::string te = "model.transmission_error.";
   if (config.real(te + "rectangular_amplitude") != 0.0) {
@@ -206,7 +202,9 @@ std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
     // E = δ − F/K of the loaded contact at its positions: the model's error there less the
     // file's series and rectangular wave (exact when the file gives none).
     TransmissionError given;
-    given.addFourier(config.realList(te + "amplitudes"), config.realList(te + "phases"), te);
+    std::vector<double> te_phases = config.realList(te + "phases_deg");
+    for (double& p : te_phases) p *= kDeg;
+    given.addFourier(config.realList(te + "amplitudes"), te_phases, te);
     if (config.real(te + "rectangular_amplitude") != 0.0) {
       given.addRectangular(config.real(te + "rectangular_amplitude"),
                            config.real(te + "rectangular_duty"),
@@ -245,10 +243,9 @@ std::string contactKeys(const Config& config, const GearPairModelSpec& s, std::s
       break;
     case ContactLaw::kBacklash:
       t += fmt::format(
-          "contact = \"backlash\"\n# model.backlash = {} m of the file is the HALF clearance b of "
-          "the gear-pair law;\n# the gearbox backlash is the FULL normal clearance j = 2 b.\n"
-          "backlash = {}  # [m]\n",
-          real(s.backlash), real(2.0 * s.backlash));
+          "contact = \"backlash\"\nbacklash = {}  # [m] the file's model.normal_backlash: "
+          "the full clearance j\n",
+          real(2.0 * s.backlash));
       break;
   }
   return t;

@@ -15,11 +15,12 @@ ConfigSchema hbmSchema() {
       .max(512)
       .defaultValue(14)
       .doc("H, harmonics of the mesh frequency");
-  schema.integer("hbm.samples_per_period")
+  schema.integer("hbm.samples")
       .min(3)
       .max(1 << 20)
       .defaultValue(256)
-      .doc("N, AFT samples per period (> 2H)");
+      .doc("N, AFT samples per period (> 2H), as a gearbox's nonlinear.samples");
+  schema.alias("hbm.samples_per_period", "hbm.samples");
   schema.real("hbm.tolerance")
       .unit("-")
       .positive()
@@ -87,7 +88,7 @@ ConfigSchema hbmSchema() {
 HarmonicBalanceOptions harmonicBalanceOptionsFromConfig(const Config& config) {
   HarmonicBalanceOptions o;
   o.harmonics = static_cast<int>(config.integer("hbm.harmonics"));
-  o.samples_per_period = static_cast<int>(config.integer("hbm.samples_per_period"));
+  o.samples_per_period = static_cast<int>(config.integer("hbm.samples"));
   o.tolerance = config.real("hbm.tolerance");
   o.max_iterations = static_cast<int>(config.integer("hbm.max_iterations"));
   o.validate();

@@ -14,6 +14,7 @@
 
 namespace geardyn::config {
 namespace {
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;  // the file's degrees, the model's radians
 
 void addSpectrumSection(ConfigSchema& schema) {
   schema.section("spectrum",
@@ -66,7 +67,7 @@ std::vector<TeHarmonic> harmonicsOf(const Config& config, const std::string& amp
       throw InputError(amplitudes, fmt::format("{:g} (harmonic {})", a[i], i + 1),
                        "amplitudes must be finite and >= 0 [m]");
     }
-    out.push_back({a[i], p.size() == 1 ? p[0] : p[i]});
+    out.push_back({a[i], (p.size() == 1 ? p[0] : p[i]) / kDegPerRad});  // [deg] → [rad]
   }
   return out;
 }
@@ -93,8 +94,9 @@ void ltcaMesh(const Config& config, LateralRotorSpec& s) {
   const auto contact = loadedContactFromConfig(config, pair, 1);
   const int n = static_cast<int>(config.integer("mesh.ltca_positions"));
   const auto points = contact->sweep(config.real("mesh.ltca_force"), n);
-  const double alpha =
-      config.optionalReal("mesh.line_of_action_angle").value_or(pair.operatingPressureAngle());
+  const double alpha = config.has("mesh.line_of_action_angle_deg")
+                           ? config.real("mesh.line_of_action_angle_deg") / kDegPerRad
+                           : pair.operatingPressureAngle();
   const int harmonics = std::max<int>(1, static_cast<int>(s.te_x.size()));
   double k_mean = 0.0, mean = 0.0;
   for (const auto& p : points) {
@@ -146,7 +148,13 @@ void addRotorSection(ConfigSchema& schema, bool with_speed) {
       .min(0.0)
       .optional()
       .doc("c_s2 given directly (overrides the ratio)");
-  schema.real("rotor.gravity").unit("m/s^2").min(0.0).defaultValue(9.81).doc("g, acting along -y");
+  schema.real("rotor.gravity")
+      .unit("m/s^2")
+      .min(0.0)
+      .defaultValue(9.81)
+      .doc(
+          "g, downwards: along −z as in a gearbox and the FE rotor, which is the model's −y "
+          "(thesis Fig. 2.1: shaft along z, y up)");
   schema.integer("rotor.pinion_teeth").min(2).max(100000).defaultValue(16).doc("t_p");
   schema.integer("rotor.gear_teeth").min(2).max(100000).defaultValue(35).doc("t_g");
   if (with_speed) {
@@ -192,18 +200,22 @@ ConfigSchema rotorSchema() {
       .unit("m")
       .defaultValue(nlohmann::ordered_json::array({40e-6, 25e-6, 35e-6, 20e-6, 10e-6}))
       .doc("e_fx,i: amplitudes of the mesh harmonics i = 1..n in x");
-  schema.realList("mesh.te_x_phase")
-      .unit("rad")
-      .defaultValue(nlohmann::ordered_json::array({0.785}))
-      .doc("phi_ex,i: one phase for all harmonics or one per harmonic");
+  schema.realList("mesh.te_x_phase_deg")
+      .unit("deg")
+      .defaultValue(nlohmann::ordered_json::array({0.785 * kDegPerRad}))
+      .doc("phi_ex,i: one phase for all harmonics or one per harmonic (the thesis's 0.785 rad)");
+  schema.alias("mesh.te_x_phase",
+               "mesh.te_x_phase_deg");  // value converted (config/renamed_keys.h)
   schema.realList("mesh.te_y")
       .unit("m")
       .defaultValue(nlohmann::ordered_json::array({30e-6, 15e-6, 25e-6, 10e-6, 5e-6}))
       .doc("e_fy,i in y (as many as te_x)");
-  schema.realList("mesh.te_y_phase")
-      .unit("rad")
-      .defaultValue(nlohmann::ordered_json::array({1.570}))
-      .doc("phi_ey,i");
+  schema.realList("mesh.te_y_phase_deg")
+      .unit("deg")
+      .defaultValue(nlohmann::ordered_json::array({1.570 * kDegPerRad}))
+      .doc("phi_ey,i (the thesis's 1.570 rad)");
+  schema.alias("mesh.te_y_phase",
+               "mesh.te_y_phase_deg");  // value converted (config/renamed_keys.h)
 
   schema.boolean("mesh.from_ltca")
       .defaultValue(false)
@@ -222,17 +234,29 @@ ConfigSchema rotorSchema() {
       .max(100000)
       .defaultValue(400)
       .doc("from_ltca: mesh positions per period");
-  schema.real("mesh.line_of_action_angle")
-      .unit("rad")
+  schema.real("mesh.line_of_action_angle_deg")
+      .unit("deg")
       .optional()
       .doc(
           "from_ltca: angle of the line of action from the y axis (Rao Fig. 2.1): e_x = e sin, "
           "e_y = e cos; default the operating pressure angle");
+  schema.alias("mesh.line_of_action_angle",
+               "mesh.line_of_action_angle_deg");  // value converted (config/renamed_keys.h)
   schema.section("runout", "Gear runouts (eccentricities) and their phases (eqs. 2.2-2.4).");
   schema.real("runout.pinion").unit("m").min(0.0).defaultValue(200e-6).doc("e_p");
-  schema.real("runout.pinion_phase").unit("rad").defaultValue(1.047).doc("phi_p");
+  schema.real("runout.pinion_phase_deg")
+      .unit("deg")
+      .defaultValue(1.047 * kDegPerRad)
+      .doc("phi_p (the thesis's 1.047 rad)");
+  schema.alias("runout.pinion_phase",
+               "runout.pinion_phase_deg");  // value converted (config/renamed_keys.h)
   schema.real("runout.gear").unit("m").min(0.0).defaultValue(300e-6).doc("e_g");
-  schema.real("runout.gear_phase").unit("rad").defaultValue(2.094).doc("phi_g");
+  schema.real("runout.gear_phase_deg")
+      .unit("deg")
+      .defaultValue(2.094 * kDegPerRad)
+      .doc("phi_g (the thesis's 2.094 rad)");
+  schema.alias("runout.gear_phase",
+               "runout.gear_phase_deg");  // value converted (config/renamed_keys.h)
 
   schema.section("time", "Dormand-Prince 5(4) from rest (the thesis's ode45).");
   schema.boolean("time.enabled").defaultValue(true).doc("integrate in time");
@@ -410,17 +434,17 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   LateralRotorSpec s = knownRotorFromConfig(config);
   s.mesh_stiffness = config.real("mesh.stiffness");
   s.mean_te = config.real("mesh.mean_te");
-  s.te_x = harmonicsOf(config, "mesh.te_x", "mesh.te_x_phase");
-  s.te_y = harmonicsOf(config, "mesh.te_y", "mesh.te_y_phase");
+  s.te_x = harmonicsOf(config, "mesh.te_x", "mesh.te_x_phase_deg");
+  s.te_y = harmonicsOf(config, "mesh.te_y", "mesh.te_y_phase_deg");
   if (s.te_x.size() != s.te_y.size()) {
     throw InputError("mesh.te_y", fmt::format("{} harmonics", s.te_y.size()),
                      fmt::format("as many as mesh.te_x ({})", s.te_x.size()));
   }
   if (config.boolean("mesh.from_ltca")) ltcaMesh(config, s);
   s.pinion_runout = config.real("runout.pinion");
-  s.pinion_runout_phase = config.real("runout.pinion_phase");
+  s.pinion_runout_phase = config.real("runout.pinion_phase_deg") / kDegPerRad;
   s.gear_runout = config.real("runout.gear");
-  s.gear_runout_phase = config.real("runout.gear_phase");
+  s.gear_runout_phase = config.real("runout.gear_phase_deg") / kDegPerRad;
   const MeshDampingMass kind = config.string("mesh.damping_mass") == "effective"
                                    ? MeshDampingMass::kEffective
                                    : MeshDampingMass::kArithmeticMean;

@@ -215,9 +215,10 @@ GearPairModelBuild readGearPairModel(const Config& config, bool require_speed) {
                    : config.string("model.contact") == "linear"    ? ContactLaw::kLinear
                    : config.string("model.contact") == "one_sided" ? ContactLaw::kOneSided
                                                                    : ContactLaw::kBacklash;
-  b.spec.backlash = config.real("model.backlash");
+  // The file gives the full clearance j (as a gearbox); the law's half clearance is b = j/2.
+  b.spec.backlash = 0.5 * config.real("model.normal_backlash");
   if (b.spec.contact != ContactLaw::kBacklash && b.spec.backlash > 0.0) {
-    b.warnings.push_back("model.backlash is ignored unless model.contact = \"backlash\"");
+    b.warnings.push_back("model.normal_backlash is ignored unless model.contact = \"backlash\"");
   }
 
   // Speed (not needed when the caller sweeps the frequency): excitation.mesh_frequency, or the
@@ -263,7 +264,8 @@ GearPairModelBuild readGearPairModel(const Config& config, bool require_speed) {
   // Extra harmonic forces.
   const auto f_amp = config.realList("model.extra_force_amplitudes");
   const auto f_freq = config.realList("model.extra_force_frequencies");
-  const auto f_phase = config.realList("model.extra_force_phases");
+  auto f_phase = config.realList("model.extra_force_phases_deg");
+  for (double& p : f_phase) p *= std::numbers::pi / 180.0;
   if (f_freq.size() != f_amp.size() || f_phase.size() != f_amp.size()) {
     throw InputError("model.extra_force_frequencies",
                      fmt::format("{} and {} values", f_freq.size(), f_phase.size()),
@@ -289,8 +291,9 @@ GearPairModelBuild readGearPairModel(const Config& config, bool require_speed) {
 
   // Transmission error.
   const std::string te = "model.transmission_error";
-  b.spec.transmission_error.addFourier(config.realList(te + ".amplitudes"),
-                                       config.realList(te + ".phases"), te);
+  auto te_phases = config.realList(te + ".phases_deg");
+  for (double& p : te_phases) p *= std::numbers::pi / 180.0;
+  b.spec.transmission_error.addFourier(config.realList(te + ".amplitudes"), te_phases, te);
   if (config.real(te + ".rectangular_amplitude") != 0.0) {
     b.spec.transmission_error.addRectangular(config.real(te + ".rectangular_amplitude"),
                                              config.real(te + ".rectangular_duty"),

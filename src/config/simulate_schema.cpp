@@ -86,19 +86,25 @@ void addGearPairModelSections(ConfigSchema& schema) {
       .min(0.0)
       .defaultValue(Json::array())
       .doc("their frequencies ω_j/2π (nondimensional: ω_j/ω_n)");
-  schema.realList("model.extra_force_phases")
-      .unit("rad")
+  schema.realList("model.extra_force_phases_deg")
+      .unit("deg")
       .defaultValue(Json::array())
       .doc("their phases ψ_j");
+  schema.alias("model.extra_force_phases",
+               "model.extra_force_phases_deg");  // value converted (config/renamed_keys.h)
   schema.string("model.contact")
       .choices({"linear", "one_sided", "backlash"})
       .defaultValue("linear")
       .doc("contact law g(y) of the relative deflection y = x − e");
-  schema.real("model.backlash")
+  schema.real("model.normal_backlash")
       .unit("m")
       .min(0.0)
       .defaultValue(0.0)
-      .doc("half clearance b (contact = \"backlash\")");
+      .doc(
+          "backlash j, the FULL clearance along the line of action, as a gearbox's "
+          "meshes.*.backlash (contact = \"backlash\"; the law's half clearance is b = j/2)");
+  schema.alias("model.backlash",
+               "model.normal_backlash");  // value converted (config/renamed_keys.h)
 
   schema.section("model.stiffness", "Mesh stiffness k(t).");
   schema.string("model.stiffness.type")
@@ -142,10 +148,12 @@ void addGearPairModelSections(ConfigSchema& schema) {
       .unit("m")
       .defaultValue(Json::array())
       .doc("e = Σ a_r cos(rΩt + φ_r), r = 1, 2, ...");
-  schema.realList("model.transmission_error.phases")
-      .unit("rad")
+  schema.realList("model.transmission_error.phases_deg")
+      .unit("deg")
       .defaultValue(Json::array())
-      .doc("φ_r");
+      .doc("φ_r (as a gearbox's meshes.*.te_phases_deg)");
+  schema.alias("model.transmission_error.phases",
+               "model.transmission_error.phases_deg");  // value converted (config/renamed_keys.h)
   schema.real("model.transmission_error.rectangular_amplitude")
       .unit("m")
       .defaultValue(0.0)

@@ -185,7 +185,7 @@ FeGearedRotor::FeGearedRotor(FeGearedRotorSpec spec) : spec_(std::move(spec)) {
       double axial = 0.0;
       for (const FeBearing& b : spec_.shafts[s].bearings) axial += b.kxx;
       if (!(axial > 0.0)) {
-        throw InputError(spec_.shafts[s].name + ".bearings.kxx", "0",
+        throw InputError(spec_.shafts[s].name + ".bearings.k_axial", "0",
                          "an axial stiffness > 0 on at least one bearing when model.axial = true "
                          "(otherwise the shaft floats axially)");
       }

@@ -28,7 +28,7 @@ GearPairModel::GearPairModel(GearPairModelSpec spec) : spec_(std::move(spec)) {
   finite("model.mass", spec_.mass);
   finite("model.damping", spec_.damping);
   finite("model.mean_force", spec_.mean_force);
-  finite("model.backlash", spec_.backlash);
+  finite("model.normal_backlash", spec_.backlash);
   finite("excitation.mesh_frequency", spec_.mesh_frequency);
   if (!(spec_.mass > 0.0))
     throw InputError("model.mass", fmt::format("{:g}", spec_.mass), "must be > 0 [kg]");
@@ -36,8 +36,8 @@ GearPairModel::GearPairModel(GearPairModelSpec spec) : spec_(std::move(spec)) {
     throw InputError("model.damping", fmt::format("{:g}", spec_.damping), "must be >= 0 [N s/m]");
   }
   if (spec_.backlash < 0.0) {
-    throw InputError("model.backlash", fmt::format("{:g}", spec_.backlash),
-                     "half clearance must be >= 0 [m]");
+    throw InputError("model.normal_backlash", fmt::format("{:g} m", 2.0 * spec_.backlash),
+                     "the clearance must be >= 0 [m]");
   }
   if (spec_.mesh_frequency < 0.0) {
     throw InputError("excitation.mesh_frequency", fmt::format("{:g}", spec_.mesh_frequency),

@@ -47,8 +47,8 @@ void LateralRotorSpec::validate() const {
   requireFinite("mesh.mean_te", mean_te);
   requireAtLeast("runout.pinion", pinion_runout, 0.0, "m");
   requireAtLeast("runout.gear", gear_runout, 0.0, "m");
-  requireFinite("runout.pinion_phase", pinion_runout_phase);
-  requireFinite("runout.gear_phase", gear_runout_phase);
+  requireFinite("runout.pinion_phase_deg", pinion_runout_phase);
+  requireFinite("runout.gear_phase_deg", gear_runout_phase);
   requireAtLeast("rotor.gravity", gravity, 0.0, "m/s^2");
   requirePositive("rotor.pinion_speed", pinion_speed, "rev/s");
   if (pinion_teeth < 2 || gear_teeth < 2) {

@@ -32,7 +32,7 @@ void HarmonicBalanceOptions::validate() const {
     throw InputError("hbm.harmonics", std::to_string(harmonics), "must be in [1, 512]");
   }
   if (samples_per_period <= 2 * harmonics) {
-    throw InputError("hbm.samples_per_period", std::to_string(samples_per_period),
+    throw InputError("hbm.samples", std::to_string(samples_per_period),
                      fmt::format("must exceed 2H = {} to resolve {} harmonics without aliasing "
                                  "(at least {}; 8H or more for contact nonlinearities)",
                                  2 * harmonics, harmonics, 2 * harmonics + 1));

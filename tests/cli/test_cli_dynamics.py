@@ -78,7 +78,7 @@ plots = false
 @pytest.mark.parametrize("override, expected", [
     ("model.mass=-1", "model.mass = -1: must be a number > 0 [kg]"),
     ("model.damping=10", "model.damping_ratio: give damping_ratio or damping, not both"),
-    ("model.transmission_error.phases=[0.0, 1.0]", "need one phase per amplitude"),
+    ("model.transmission_error.phases_deg=[0.0, 57.3]", "need one phase per amplitude"),
     ("model.stiffness.type=potential_energy", "computes the stiffness from the gears"),
     ("model.stiffness.mean=nan", "model.stiffness.mean = nan: must be finite"),
     ("solver.output_points_per_period=100", "must be a multiple of solver.output_points_per_period"),
@@ -166,7 +166,7 @@ damping_ratio = 0.05
 mean_force = 1000.0
 extra_force_amplitudes = [100.0]
 extra_force_frequencies = [300.0]
-extra_force_phases = [0.0]
+extra_force_phases_deg = [0.0]
 [model.stiffness]
 mean = 4.55e8
 [excitation]

@@ -83,7 +83,7 @@ def test_modal_analysis_lists_modes_and_shapes(tmp_path):
     ("gear_shaft.bearings.czz=[-150.0]", "gear_shaft.bearings[0]", ">= 0"),
     ("pinion_shaft.element_lengths=[0.1, nan]", "pinion_shaft.element_lengths", "finite"),
     ("pinion_shaft.element_lengths=[0.1, -0.1]", "pinion_shaft.element_lengths", "> 0"),
-    ("model.axial=true", "pinion_shaft.bearings.kxx", "axial"),
+    ("model.axial=true", "pinion_shaft.bearings.k_axial", "axial"),
     ("speed.end_speed_rpm=800.0", "speed.end_speed_rpm", "constant speed"),
     ("speed.speed_rpm=0.0", "speed.speed_rpm", "speed > 0"),
 ])

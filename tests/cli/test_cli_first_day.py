@@ -61,7 +61,7 @@ def test_simulate_that_may_take_long_says_so_and_proceeds(tmp_path):
 
 def test_hbm_and_rotor_estimate_before_running(tmp_path):
     result = run_env("hbm", HBM, "--out", tmp_path / "h", "--set", "hbm.harmonics=512",
-                     "--set", "hbm.samples_per_period=1048576", env={"GEARDYN_MEMORY_LIMIT": "1e8"})
+                     "--set", "hbm.samples=1048576", env={"GEARDYN_MEMORY_LIMIT": "1e8"})
     assert result.returncode == 2 and "hbm.harmonics = 512" in result.stderr, result.stderr
     result = run("rotor", ROTOR, "--out", tmp_path / "r", "--set", "time.samples=200000000")
     assert result.returncode == 2 or "estimated to take" in result.stderr, result.stderr

@@ -73,7 +73,7 @@ def test_paper_observations_in_the_details(sweep):
 
 
 @pytest.mark.parametrize("override, expected", [
-    ("hbm.samples_per_period=28", "must exceed 2H = 28"),
+    ("hbm.samples=28", "must exceed 2H = 28"),
     ("sweep.stop=400", "sweep.stop = 400 Hz: must exceed sweep.start = 500 Hz"),
     ("sweep.min_step=0", "sweep.min_step = 0: must be a number > 0"),
     ("model.stiffness.contact_ratio=0.9", "model.stiffness.contact_ratio = 0.9"),

@@ -32,7 +32,7 @@ def test_printed_gearbox_is_the_simulated_gear_pair(tmp_path):
     gearbox.write_text(printed.stdout)
     text = printed.stdout
     assert "nominal spur pair" in text  # the file has no gear geometry: the comment says so
-    assert "backlash = 0.0002" in text  # model.backlash 1e-4 m is the half clearance
+    assert "backlash = 0.0002" in text  # model.normal_backlash, the full clearance
     analysis = tmp_path / "analysis.toml"
     analysis.write_text(
         '[gearbox]\nfile = "g.toml"\n\n[analysis]\nrun = ["static", "modal"]\n\n'

@@ -77,7 +77,7 @@ TEST(FeRotorGearbox, AHelicalRotorWithAxialDofsHasTheFeRotorsMatrices) {
   const Translated t = translate(example(
       "rotor_visnadi2021_modal.toml",
       {"pinion.helix_angle_deg=5.0", "gear.helix_angle_deg=-5.0", "model.axial=true",
-       "pinion_shaft.bearings.kxx=[5e7, 0.0]", "gear_shaft.bearings.kxx=[5e7, 0.0]",
+       "pinion_shaft.bearings.k_axial=[5e7, 0.0]", "gear_shaft.bearings.k_axial=[5e7, 0.0]",
        "load.gravity=0.0", "mesh.damping=300.0", "damping.mass_proportional=2.0",
        "mesh.line_of_action_angle_deg=50.0", "load.drive_node=2", "load.load_node=0",
        "gear_shaft.disks.nodes=[2]", "gear_shaft.disks.mass=[1.5]",

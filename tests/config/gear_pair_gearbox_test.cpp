@@ -194,7 +194,7 @@ mesh_frequency = 0.9
 damping_ratio = 0.03
 torque = 60.0
 contact = "backlash"
-backlash = 3e-5
+normal_backlash = 6e-5
 [model.stiffness]
 type = "fourier"
 mean = 5e8
@@ -202,7 +202,7 @@ cos = [-0.1, 0.02]
 sin = [0.05, -0.01]
 [model.transmission_error]
 amplitudes = [2e-6, -5e-7]
-phases = [0.3, -1.2]
+phases_deg = [17.188733853924695, -68.75493541569878]
 [pair]
 speed_rpm = 2400.0
 )" + pair},
@@ -251,7 +251,7 @@ mass = 1.0
 damping_ratio = 0.05
 mean_force = 100.0
 contact = "backlash"
-backlash = 1e-4
+normal_backlash = 2e-4
 [model.stiffness]
 mean = 1e8
 [excitation]
@@ -276,7 +276,7 @@ damping_ratio = 0.05
 mean_force = 100.0
 extra_force_amplitudes = [1.0]
 extra_force_frequencies = [10.0]
-extra_force_phases = [0.0]
+extra_force_phases_deg = [0.0]
 [model.stiffness]
 mean = 1e8
 [excitation]

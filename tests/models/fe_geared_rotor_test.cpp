@@ -123,7 +123,7 @@ TEST(FeGearedRotor, RejectsBadInputNamingTheKey) {
   expectKey(spec, "pinion_shaft.element[1].outer_diameter");
   spec = visnadiFeRotorSpec(constantMesh(3e8));
   spec.axial = true;
-  expectKey(spec, "pinion_shaft.bearings.kxx");
+  expectKey(spec, "pinion_shaft.bearings.k_axial");
   spec = visnadiFeRotorSpec(constantMesh(3e8));
   spec.load_node = 3;
   expectKey(spec, "load.load_node");
