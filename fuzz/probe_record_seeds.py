@@ -17,6 +17,6 @@ data = b"".join(struct.pack("<f", v) for f in frames for v in f)
 wav = b"RIFF" + struct.pack("<I", 36 + len(data)) + b"WAVEfmt " + struct.pack(
     "<IHHIIHH", 16, 3, 5, 5000, 5000 * 20, 20, 32) + b"data" + struct.pack("<I", len(data)) + data
 (folder / "seed_wav").write_bytes(b"\x00" + wav)
-csv = "time,x1,y1,x2,y2,keyphasor\n" + "".join(
+csv = "t_s,x1_m,y1_m,x2_m,y2_m,keyphasor\n" + "".join(
     f"{i / 5000}," + ",".join(f"{v:.6g}" for v in f) + "\n" for i, f in enumerate(frames))
 (folder / "seed_csv").write_bytes(b"\x01" + csv.encode())

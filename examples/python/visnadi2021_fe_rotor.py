@@ -21,4 +21,4 @@ api_peak = max(max(h["acceleration"]) for h in models["api"]["harmonics"].values
 beam_peak = max(max(h["acceleration"]) for h in models["potential_energy"]["harmonics"].values())
 print(f"API mesh peaks {api_peak:.1e} m/s^2 vs beam model {beam_peak:.3g} m/s^2")
 assert api_peak < 1e-8 * beam_peak
-assert models["potential_energy"]["mean_stiffness"] > models["api"]["mean_stiffness"]
+assert models["potential_energy"]["mean_stiffness_n_per_m"] > models["api"]["mean_stiffness_n_per_m"]

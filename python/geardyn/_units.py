@@ -8,14 +8,29 @@ has the unit "" and a text column None. A gear-pair model given in nondimensiona
 
 import re
 
-# Name endings and their units, longest first (compared without case: "_Hz", "_N_per_m").
-_SUFFIXES = [
-    ("_nondim", ""), ("hz_per_rpm", "Hz/rpm"), ("_1_per_s", "1/s"), ("_periods", "periods"), ("_m_per_s2", "m/s^2"),
-    ("_m_per_s", "m/s"), ("_rad_per_s2", "rad/s^2"), ("_rad_per_s", "rad/s"), ("_n_s_per_m", "N s/m"), ("_n_per_m", "N/m"), ("_n_m", "N m"), ("_rad_s", "rad/s"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"),
-    ("_kg_m2", "kg m^2"), ("_kg", "kg"), ("_mm", "mm"), ("_um", "µm"), ("_hz", "Hz"), ("_Hz", "Hz"),
-    ("_rpm", "rpm"), ("_rad", "rad"), ("_deg", "deg"), ("_pa", "Pa"), ("_s", "s"), ("_m", "m"),
-    ("_n", "N"), ("_N", "N"),
-]
+# Name endings and their units (docs/development.md, "Result names"): snake_case with a
+# lower-case unit suffix. Compared without case, so files written before the convention
+# ("_Hz", "_N_m") still read; the longest ending wins ("_n_m" is N m, not m).
+_SUFFIXES = sorted([
+    ("_nondim", ""), ("_hz_per_rpm", "Hz/rpm"), ("_1_per_s", "1/s"), ("_periods", "periods"),
+    ("_m_per_s2", "m/s^2"), ("_m_per_s", "m/s"), ("_rad_per_s2", "rad/s^2"),
+    ("_rad_per_s", "rad/s"), ("_n_s_per_m", "N s/m"), ("_n_per_m", "N/m"), ("_n_m", "N m"),
+    ("_rad_s", "rad/s"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"), ("_kg_m2", "kg m^2"),
+    ("_kg", "kg"), ("_mm", "mm"), ("_um", "µm"), ("_hz", "Hz"), ("_rpm", "rpm"),
+    ("_rad", "rad"), ("_deg", "deg"), ("_pa", "Pa"), ("_j", "J"), ("_s", "s"), ("_m", "m"),
+    ("_n", "N"), ("_percent", "%"),
+], key=lambda pair: -len(pair[0]))
+
+
+def suffix_unit(name):
+    """The unit a result name ends with ("mesh_force_n" -> "N", "torque_n_m" -> "N m",
+    "mesh_frequency_hz_per_rpm" -> "Hz/rpm"), or None when it ends with none."""
+    lower = name.lower()
+    for suffix, unit in _SUFFIXES:
+        if lower.endswith(suffix) and len(name) > len(suffix):
+            return unit
+    return None
+
 
 # Dimensionless by their meaning.
 _DIMENSIONLESS = re.compile(
@@ -24,8 +39,9 @@ _DIMENSIONLESS = re.compile(
     r"contact_loss|converged|branch|.*_index|.*_count|iterations|whirl_direction|"
     r"ratio_low|ratio_high|p_value|samples|teeth_.|multiplicity|strain_.*|seed|real|imag)$")
 
-# A unit between underscores inside a name: "p2p_N_stage1".
-_INFIX = re.compile(r"_(N|Hz|rpm|m|s|rad|deg)_")
+# A unit between underscores inside a name: "p2p_n_stage1" (and "p2p_N_stage1" of older files).
+_INFIX = re.compile(r"_(n|hz|N|Hz|rpm|m|s|rad|deg)_")
+_INFIX_UNITS = {"n": "N", "hz": "Hz"}
 
 # Columns without a unit in their name: {table: {column: unit}} (tables of any command).
 _TABLES = {
@@ -83,15 +99,14 @@ def unit_of(table, column):
         return "N/m"
     if column.startswith("load_pair_"):
         return "N"
-    lower = column.lower()
-    for suffix, unit in _SUFFIXES:
-        if lower.endswith(suffix) and len(column) > len(suffix):
-            return unit
+    unit = suffix_unit(column)
+    if unit is not None:
+        return unit
     if _DIMENSIONLESS.match(column):
         return ""
     infix = _INFIX.search(column)
     if infix:
-        return infix.group(1)
+        return _INFIX_UNITS.get(infix.group(1), infix.group(1))
     return None
 
 

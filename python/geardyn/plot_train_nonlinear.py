@@ -76,7 +76,7 @@ def train_nonlinear_figure(result_dir, axes=None, max_meshes=8, title=None):
             continue
         ax.set_title(mesh, fontsize=9)
         ax.set_ylabel("p2p mesh deflection [µm]", fontsize=8)
-        per_rpm = results["mesh_frequency_Hz_per_rpm"][mesh]
+        per_rpm = results["mesh_frequency_hz_per_rpm"][mesh]
         top = ax.secondary_xaxis("top", functions=(lambda n, k=per_rpm: n * k,
                                                    lambda f, k=per_rpm: f / k))
         top.set_xlabel("mesh frequency [Hz]", fontsize=7)

@@ -90,5 +90,5 @@ def train_stats_figure(result_dir, title="gear train"):
         ax.grid(alpha=0.3, axis="y")
     figure.suptitle(
         f"{title}: mesh statistics at {run['speed_rpm']:g} rpm over {1e3 * run['record_s']:.3g} ms "
-        f"(design torque {run['design_torque_N_m']:g} N m)", fontsize=9)
+        f"(design torque {run['design_torque_n_m']:g} N m)", fontsize=9)
     return figure

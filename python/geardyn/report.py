@@ -23,6 +23,7 @@ import sys
 import tempfile
 
 from . import _report_figures as _figures
+from ._units import suffix_unit
 
 _NPM_PATH = pathlib.Path(".cache/npm/node_modules/plotly.js-dist-min/plotly.min.js")
 
@@ -70,17 +71,14 @@ def _script_json(value):
     return json.dumps(_clean(value), allow_nan=False, separators=(",", ":")).replace("</", "<\\/")
 
 
-# Units read from the ends of summary keys, as geardyn writes them.
-_UNIT_SUFFIXES = (("_hz", "Hz"), ("_Hz", "Hz"), ("_rpm", "rpm"), ("_s", "s"), ("_kg", "kg"),
-                  ("_deg", "°"), ("_n", "N"), ("_N", "N"), ("_m", "m"), ("_nm", "N m"),
-                  ("_percent", "%"))
-
-
-def _unit_of(key):
-    for suffix, unit in _UNIT_SUFFIXES:
-        if key.endswith(suffix):
-            return unit
-    return ""
+# Units read from the ends of summary keys, as geardyn writes them (one parser: _units).
+def _unit_of(key, parent_unit=""):
+    """The unit of a summary key from its suffix ("max_p2p_force_n" -> "N", "torque_n_m" ->
+    "N m"); a key without one (a mesh's name) takes its parent's ("mesh_force_n.stage1")."""
+    unit = suffix_unit(key)
+    if unit is None:
+        return parent_unit
+    return "°" if unit == "deg" else unit
 
 
 def _format_number(value):
@@ -99,21 +97,22 @@ def headline_rows(summary, limit=60):
     rows."""
     rows = [("command", summary.get("command", "?"), ""), ("status", summary.get("status", "?"), "")]
 
-    def walk(prefix, table, depth):
+    def walk(prefix, table, depth, parent_unit=""):
         for key, value in table.items():
             name = f"{prefix}{key}"
             if isinstance(value, dict):
                 if depth < 2:
-                    walk(name + ".", value, depth + 1)
+                    walk(name + ".", value, depth + 1, _unit_of(key, parent_unit))
             elif isinstance(value, list):
                 if value and not isinstance(value[0], (dict, list)) and len(value) <= 6:
-                    rows.append((name, ", ".join(_format_number(v) for v in value), _unit_of(key)))
+                    rows.append((name, ", ".join(_format_number(v) for v in value),
+                                 _unit_of(key, parent_unit)))
                 else:
                     rows.append((name, f"{len(value)} entries", ""))
             elif isinstance(value, str) and len(value) > 40:
                 continue  # prose (conventions, messages) is not a headline number
             elif value is not None:
-                rows.append((name, _format_number(value), _unit_of(key)))
+                rows.append((name, _format_number(value), _unit_of(key, parent_unit)))
 
     walk("", summary.get("results", {}), 0)
     return rows[:limit]

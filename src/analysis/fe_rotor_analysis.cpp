@@ -107,12 +107,12 @@ nlohmann::ordered_json modelJson(const FeGearedRotor& model, const std::string& 
           {"nodes", {s.shafts[0].nodeCount(), s.shafts[1].nodeCount()}},
           {"mass_kg", mass},
           {"mesh_stiffness_model", stiffness},
-          {"mean_mesh_stiffness", model.meanMeshStiffness()},
+          {"mean_mesh_stiffness_n_per_m", model.meanMeshStiffness()},
           {"line_of_action_angle_deg", s.mesh.line_of_action_angle * 180.0 / std::numbers::pi},
           {"base_helix_angle_deg", s.mesh.base_helix_angle * 180.0 / std::numbers::pi},
-          {"pinion_base_radius", s.mesh.pinion_base_radius},
-          {"gear_base_radius", s.mesh.gear_base_radius},
-          {"nominal_mesh_force", model.nominalMeshForce()},
+          {"pinion_base_radius_m", s.mesh.pinion_base_radius},
+          {"gear_base_radius_m", s.mesh.gear_base_radius},
+          {"nominal_mesh_force_n", model.nominalMeshForce()},
           {"gear_speed_ratio", model.spinRatio(1)},
           {"mesh_frequency_hz", s.speed.start * s.pinion_teeth / kTwoPi}};
 }
@@ -508,9 +508,9 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
       stiffness.addRow({c.name, k / 200.0, c.model->meshStiffness(k / 200.0)});
     const MeshStiffnessSummary s =
         summarizeMeshStiffness(c.model->spec().mesh_stiffness.operator*(), 1);
-    per_model[c.name] = {{"mean_stiffness", c.mean},
-                         {"min_stiffness", s.min},
-                         {"max_stiffness", s.max},
+    per_model[c.name] = {{"mean_stiffness_n_per_m", c.mean},
+                         {"min_stiffness_n_per_m", s.min},
+                         {"max_stiffness_n_per_m", s.max},
                          {"last_period_change", a.last_change},
                          {"harmonics", harmonicsJson(names, a)}};
     analyses.push_back(a);

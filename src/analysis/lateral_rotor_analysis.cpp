@@ -246,6 +246,7 @@ void addProbeRecords(const config::Config& config, const LateralRotorModel& mode
   record.sample_rate = fs;
   record.start_time = times.front();
   record.names = {"x1", "y1", "x2", "y2", "keyphasor"};
+  record.units = {"m", "m", "m", "m", ""};
   record.channels.assign(5, std::vector<double>(times.size()));
   for (std::size_t k = 0; k < times.size(); ++k) {
     for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);

@@ -79,15 +79,15 @@ void writeKinematics(const GearTrainModel& model, AnalysisResult& result, io::Ru
          m.pressure_angle / std::numbers::pi * 180, m.contact_ratio, m.mean_stiffness, m.damping});
     mj.push_back({{"mesh", m.name},
                   {"kind", toString(m.kind)},
-                  {"mesh_frequency_Hz", f},
+                  {"mesh_frequency_hz", f},
                   {"phase_periods", m.phase},
-                  {"mean_stiffness_N_per_m", m.mean_stiffness}});
+                  {"mean_stiffness_n_per_m", m.mean_stiffness}});
     text += fmt::format("  mesh {:<20} {:>9.2f} Hz  phase {:.4f} periods  k̄ {:.4g} N/m\n", m.name,
                         f, m.phase, m.mean_stiffness);
   }
   result.addTable("meshes.csv", meshes);
   summary.results["kinematics"] = {{"input_speed_rpm", speed / kRpm},
-                                   {"output_torque_N_m", model.outputTorque()},
+                                   {"output_torque_n_m", model.outputTorque()},
                                    {"bodies", json},
                                    {"meshes", mj}};
 }
@@ -100,14 +100,14 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
   io::CsvTable forces({"component", "kind", "unit", "force"});
   Json meshes = Json::object(), elements = Json::object();
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-    forces.addRow({model.meshes()[m].name, "mesh_N", "N", r.mesh_force[m]});
+    forces.addRow({model.meshes()[m].name, "mesh_n", "N", r.mesh_force[m]});
     meshes[model.meshes()[m].name] = r.mesh_force[m];
   }
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const TrainElement& el = model.elements()[e];
     const bool torque = el.local_stiffness.rows() == 1;
     forces.addRow(
-        {el.name, el.kind + (torque ? "_N_m" : "_N"), torque ? "N m" : "N", r.element_force[e]});
+        {el.name, el.kind + (torque ? "_n_m" : "_n"), torque ? "N m" : "N", r.element_force[e]});
     elements[el.name] = r.element_force[e];
   }
   result.addTable("static_forces.csv", forces);
@@ -115,15 +115,15 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
   for (const auto& s : r.load_sharing) {
     sharing.push_back({{"stage", s.stage},
                        {"load_sharing_factor", s.load_sharing_factor},
-                       {"sun_planet_force_N", s.sun_planet_force},
-                       {"ring_planet_force_N", s.ring_planet_force}});
+                       {"sun_planet_force_n", s.sun_planet_force},
+                       {"ring_planet_force_n", s.ring_planet_force}});
     text += fmt::format("  {}: planet load sharing factor {:.4f} [-]\n", s.stage,
                         s.load_sharing_factor);
   }
   summary.results["static"] = {{"status", r.status},
                                {"rigid_modes", r.rigid_modes},
                                {"relative_residual", r.residual},
-                               {"mesh_force_N", meshes},
+                               {"mesh_force_n", meshes},
                                {"element_force", elements},
                                {"load_sharing", sharing},
                                {"wall_time_s", secondsSince(start)}};
@@ -158,7 +158,7 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
       shapes.addRow(
           {static_cast<long long>(j + 1), model.dofName(i), m.shape(i).real(), m.shape(i).imag()});
     }
-    list.push_back({{"frequency_Hz", m.frequency},
+    list.push_back({{"frequency_hz", m.frequency},
                     {"damping_ratio", m.damping_ratio},
                     {"divergent", m.divergent},
                     {"growth_rate_1_per_s", m.growthRate()},
@@ -188,7 +188,7 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
     break;
   }
   summary.results["modal"] = {{"speed_rpm", speed / kRpm},
-                              {"lowest_frequency_Hz", lowest},
+                              {"lowest_frequency_hz", lowest},
                               {"modes", list},
                               {"wall_time_s", secondsSince(start)}};
   text += fmt::format("modal at {:.1f} rpm: {} modes", speed / kRpm, modes.size());
@@ -253,7 +253,7 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
     crit.push_back({{"mode", c.mode + 1},
                     {"line", c.line},
                     {"speed_rpm", c.speed / kRpm},
-                    {"frequency_Hz", c.frequency}});
+                    {"frequency_hz", c.frequency}});
   }
   result.addTable("critical_speeds.csv", ct);
   summary.results["campbell"] = {{"speeds", speeds.size()},
@@ -308,7 +308,7 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
     peaks[model.meshes()[m].name] = {{"max_dynamic_factor", worst[m]},
                                      {"at_speed_rpm", worst_speed[m] / kRpm},
-                                     {"max_p2p_force_N", p2p[m]},
+                                     {"max_p2p_force_n", p2p[m]},
                                      {"max_p2p_force_at_speed_rpm", p2p_speed[m] / kRpm}};
     text += fmt::format("  {}: max dynamic factor {:.3f} [-] at {:.0f} rpm\n",
                         model.meshes()[m].name, worst[m], worst_speed[m] / kRpm);
@@ -392,8 +392,8 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
         const double newmark = 2.0 * std::abs(sum) / static_cast<double>(f.size());
         const double hbm = s.mesh_force_harmonics[m][l - 1];
         orders.push_back({{"order", l},
-                          {"newmark_N", newmark},
-                          {"steady_state_N", hbm},
+                          {"newmark_n", newmark},
+                          {"steady_state_n", hbm},
                           {"difference_relative_to_order_1",
                            scale > 0 ? std::abs(newmark - hbm) / scale : 0.0}});
       }

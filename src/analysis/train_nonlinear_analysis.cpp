@@ -117,7 +117,7 @@ Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& 
     const double width = std::clamp(mode.damping_ratio, 1e-3, 0.5) * w / order;
     if (width < narrowest) {
       narrowest = width, wn = w, zeta = mode.damping_ratio;
-      resonance = {{"mode_frequency_Hz", mode.frequency},
+      resonance = {{"mode_frequency_hz", mode.frequency},
                    {"damping_ratio", mode.damping_ratio},
                    {"harmonic", order},
                    {"speed_rpm", w / order / scale},
@@ -467,7 +467,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
       Json j = {{"sweep", which},
                 {"type", toString(b.type)},
                 {"speed_rpm", r.omega / scale},
-                {"base_frequency_Hz", r.omega / kTwoPi},
+                {"base_frequency_hz", r.omega / kTwoPi},
                 {"p2p_deflection_m", perMesh(model, r.p2p_deflection)}};
       if (hbm.bearingCount() > 0) {
         Json radial = Json::object();
@@ -507,7 +507,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
     }
     if (best) {
       peaks[model.meshes()[m].name] = {{"p2p_deflection_m", best->p2p_deflection[m]},
-                                       {"p2p_force_N", best->p2p_force[m]},
+                                       {"p2p_force_n", best->p2p_force[m]},
                                        {"speed_rpm", best->omega / scale},
                                        {"sweep", best->sweep},
                                        {"stable", best->stable}};
@@ -539,8 +539,8 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
   summary.results["nonlinear"] = {{"harmonics", options.harmonics},
                                   {"samples", options.samples},
                                   {"mesh_multiples", multiples},
-                                  {"base_frequency_Hz_per_rpm", scale / kTwoPi},
-                                  {"mesh_frequency_Hz_per_rpm", per_rpm},
+                                  {"base_frequency_hz_per_rpm", scale / kTwoPi},
+                                  {"mesh_frequency_hz_per_rpm", per_rpm},
                                   {"speed_min_rpm", lo / kRpm},
                                   {"speed_max_rpm", hi / kRpm},
                                   {"stability", sweep.stability},

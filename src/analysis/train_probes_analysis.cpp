@@ -115,7 +115,7 @@ Json steadyStateWhirl(const GearTrainModel& model, const config::Config& analysi
       const std::complex<double> X = 2.0 * d * s.harmonic(y, h);
       const std::complex<double> Y = st.rotation_sign * 2.0 * d * s.harmonic(y + 1, h);
       const auto [forward, backward] = whirlCircles(X, Y);
-      list.push_back({{"frequency_Hz", h * s.base_frequency},
+      list.push_back({{"frequency_hz", h * s.base_frequency},
                       {"orders", names},
                       {"forward_amplitude", std::abs(forward)},
                       {"backward_amplitude", std::abs(backward)}});
@@ -254,11 +254,19 @@ void writeTrainProbes(const GearTrainModel& model, const config::Config& analysi
   io::ProbeRecord record;
   record.sample_rate = fs;
   record.start_time = t0;
+  // The CSV columns carry the unit (x1_m, x1_m_per_s or x1_m_per_s2); spectrum reads x1.
+  const std::string unit = quantity == "displacement" ? "m"
+                           : quantity == "velocity"   ? "m_per_s"
+                                                      : "m_per_s2";
   for (std::size_t i = 0; i < stations.size(); ++i) {
     record.names.push_back(fmt::format("x{}", i + 1));
     record.names.push_back(fmt::format("y{}", i + 1));
+    record.units.insert(record.units.end(), 2, unit);
   }
-  if (key_body >= 0) record.names.push_back("keyphasor");
+  if (key_body >= 0) {
+    record.names.push_back("keyphasor");
+    record.units.push_back("");
+  }
   record.channels.assign(record.names.size(), std::vector<double>(samples));
   for (std::size_t j = 0; j < samples; ++j) {
     const double t = t0 + static_cast<double>(j) / fs;

@@ -114,12 +114,12 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
                       speed / kRpm, r.steps, r.time_step,
                       r.time_step * static_cast<double>(r.t.size()));
   for (const TrainMeshStatistics& s : stats) {
-    Json mesh = {{"static_force_N", s.static_force},
-                 {"baseload_N", s.baseload},
+    Json mesh = {{"static_force_n", s.static_force},
+                 {"baseload_n", s.baseload},
                  {"mean_excitation_ratio", nullptr},
                  {"simulated_mean_excitation_ratio", nullptr},
                  {"dynamic_factor", nullptr},
-                 {"mesh_force_N", recordJson(s.force)},
+                 {"mesh_force_n", recordJson(s.force)},
                  {"dynamic_transmission_error_m", recordJson(s.dte)}};
     if (s.excitation) {
       mesh["mean_excitation_ratio"] = s.excitation->ratio;
@@ -145,7 +145,7 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
   summary.results["stats"] = {
       {"status", r.status},
       {"speed_rpm", speed / kRpm},
-      {"design_torque_N_m", design},
+      {"design_torque_n_m", design},
       {"time_step_s", r.time_step},
       {"steps", r.steps},
       {"record_s", r.time_step * static_cast<double>(r.t.size())},

@@ -375,7 +375,7 @@ ConfigSchema spectrumSchema() {
       .doc("when the file has none; must agree with the file's otherwise");
   schema.string("input.time_column")
       .defaultValue("")
-      .doc("CSV: the time column [s]; empty: the first of time, time_s, t in the header");
+      .doc("CSV: the time column [s]; empty: the first of t_s, time, time_s, t in the header");
   schema.real("input.scale")
       .unit("m/unit")
       .defaultValue(1.0)

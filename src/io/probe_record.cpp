@@ -79,16 +79,28 @@ double agreeRate(const RecordReadOptions& o, const fs::path& path,
   bad(o, path, "has no sample rate (no time column or attribute): set input.sample_rate");
 }
 
+/// The column of a channel: its name, else its name with a unit suffix (`x1_m`, as geardyn
+/// writes displacement channels); the name itself when neither is present (the read then names
+/// the missing channel).
+std::string csvChannelColumn(const std::vector<std::string>& columns, const std::string& name) {
+  if (std::find(columns.begin(), columns.end(), name) != columns.end()) return name;
+  for (const char* unit : {"m", "m_per_s", "m_per_s2", "rad"}) {
+    const std::string suffixed = name + "_" + unit;
+    if (std::find(columns.begin(), columns.end(), suffixed) != columns.end()) return suffixed;
+  }
+  return name;
+}
+
 ProbeRecord readCsv(const fs::path& path, const RecordReadOptions& o) {
   const NumericCsv csv(path, o.key);
   ProbeRecord r;
   std::optional<double> rate;
   const auto& columns = csv.columns();
-  // The time column: the one named by time_column, else the first of time, time_s, t (geardyn's
-  // own tables write t and time_s).
+  // The time column: the one named by time_column, else the first of t_s (geardyn's own
+  // records and tables), time, time_s, t (records written before the naming convention).
   std::string time_name = o.time_column;
   if (time_name.empty()) {
-    for (const char* name : {"time", "time_s", "t"})
+    for (const char* name : {"t_s", "time", "time_s", "t"})
       if (time_name.empty() && std::find(columns.begin(), columns.end(), name) != columns.end())
         time_name = name;
   }
@@ -100,7 +112,7 @@ ProbeRecord readCsv(const fs::path& path, const RecordReadOptions& o) {
   r.sample_rate = agreeRate(o, path, rate);
   for (const auto& name : o.channels) {
     r.names.push_back(name);
-    r.channels.push_back(csv.column(name, o.key));
+    r.channels.push_back(csv.column(csvChannelColumn(columns, name), o.key));
   }
   return r;
 }
@@ -261,8 +273,11 @@ ProbeRecord readHdf5(const fs::path& path, const RecordReadOptions& o) {
 }
 
 std::string csvText(const ProbeRecord& r) {
-  std::string s = "time";
-  for (const auto& n : r.names) s += "," + n;
+  std::string s = "t_s";
+  for (std::size_t c = 0; c < r.names.size(); ++c) {
+    const bool unit = c < r.units.size() && !r.units[c].empty();
+    s += "," + r.names[c] + (unit ? "_" + r.units[c] : std::string());
+  }
   s += "\n";
   for (std::size_t i = 0; i < r.samples(); ++i) {
     s += fmt::format("{}", r.start_time + static_cast<double>(i) / r.sample_rate);

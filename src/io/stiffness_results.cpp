@@ -161,7 +161,7 @@ CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
   const auto f_m = pair.meshFrequency();
   const config::TransmissionErrorSpec te = config::transmissionErrorFromConfig(config);
   std::vector<std::string> columns = {"roll_angle_rad", "mesh_fraction"};
-  if (f_m && *f_m > 0.0) columns.push_back("time_s");
+  if (f_m && *f_m > 0.0) columns.push_back("t_s");
   // k, F and the STE along the transverse line of action (planeJson): the names say so.
   columns.push_back("k_total_transverse_n_per_m");
   for (int j = 0; j < primary.pairCount(); ++j)

@@ -42,8 +42,8 @@ TEST(TrainNonlinearAnalysis, ReportsTheLibraryHarmonicBalanceAtEachSpeed) {
   const auto& steps = info["continuation_steps"];
   ASSERT_FALSE(steps["narrowest_resonance"].is_null());
   const auto& res = steps["narrowest_resonance"];
-  const double per_rpm = info["base_frequency_Hz_per_rpm"].get<double>();
-  const double at = res["mode_frequency_Hz"].get<double>() / res["harmonic"].get<int>() / per_rpm;
+  const double per_rpm = info["base_frequency_hz_per_rpm"].get<double>();
+  const double at = res["mode_frequency_hz"].get<double>() / res["harmonic"].get<int>() / per_rpm;
   EXPECT_NEAR(res["speed_rpm"].get<double>(), at, 1e-9 * at);
   EXPECT_GE(at, 13000.0);
   EXPECT_LE(at, 16000.0);

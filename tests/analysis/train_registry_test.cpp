@@ -32,7 +32,7 @@ TEST(TrainRegistry, RunAnalysisGivesTheNumbersOfTrainAnalysis) {
     x.erase("wall_time_s"), y.erase("wall_time_s");
     EXPECT_EQ(x, y) << part;  // bit-identical: the same model from the same keys
   }
-  EXPECT_GT(a.summary.results["modal"]["lowest_frequency_Hz"].get<double>(), 1.0);
+  EXPECT_GT(a.summary.results["modal"]["lowest_frequency_hz"].get<double>(), 1.0);
 }
 
 TEST(TrainRegistry, EveryLoadCaseInOneRunIsRefused) {

@@ -29,7 +29,7 @@ def test_time_analysis_writes_steady_harmonics_and_the_resolved_config(tmp_path)
     assert summary["geardyn_version"]
     results = summary["results"]
     assert results["model"]["dofs"] == 30
-    assert results["model"]["mean_mesh_stiffness"] == pytest.approx(3.1636e8, rel=1e-4)
+    assert results["model"]["mean_mesh_stiffness_n_per_m"] == pytest.approx(3.1636e8, rel=1e-4)
     # Mesh frequency 25 × 500/60 and a periodic steady state by the end.
     assert results["model"]["mesh_frequency_hz"] == pytest.approx(208.3333, rel=1e-6)
     assert results["steady"]["last_period_change"] < 1e-8
@@ -41,7 +41,7 @@ def test_time_analysis_writes_steady_harmonics_and_the_resolved_config(tmp_path)
     assert float(history[0]["t_s"]) == 0.0 and float(history[0]["pinion_shaft.1.uy_m"]) == 0.0
     # The mesh force settles around T / r_bp (the steady mean of the dynamic force).
     tail = [float(r["mesh_force_normal_n"]) for r in history[-480:]]
-    assert sum(tail) / len(tail) == pytest.approx(results["model"]["nominal_mesh_force"], rel=2e-2)
+    assert sum(tail) / len(tail) == pytest.approx(results["model"]["nominal_mesh_force_n"], rel=2e-2)
 
 
 def test_run_up_tracks_orders_and_lists_the_campbell_crossings(tmp_path):

@@ -293,15 +293,19 @@ def test_probe_csv_with_t_bom_semicolons_or_a_named_time_column(tmp_path):
     assert made.returncode == 0, made.stderr
     original = (rotor / "measurement.csv").read_text()
     header, body = original.split("\n", 1)
-    assert header.startswith("time,")
+    # The result-name convention: time and displacement channels name their units.
+    assert header == "t_s,x1_m,y1_m,x2_m,y2_m,keyphasor", header
+    rest = header[len("t_s"):]
     reference, _ = _spectrum(tmp_path, "reference", original)
     assert reference.returncode == 0, reference.stderr
     expected = (tmp_path / "reference" / "spectrum_peaks.csv").read_text()
     variants = {
-        "t": ("t" + header[4:] + "\n" + body, ""),
-        "time_s_bom": ("\ufefftime_s" + header[4:] + "\n" + body, ""),
+        # Records written before the convention (time, x1, ...) still read.
+        "unsuffixed": ("time" + rest.replace("_m", "") + "\n" + body, ""),
+        "t": ("t" + rest + "\n" + body, ""),
+        "time_s_bom": ("\ufefftime_s" + rest + "\n" + body, ""),
         "semicolon": ((header + "\n" + body).replace(",", ";").replace(".", ","), ""),
-        "named": ("seconds" + header[4:] + "\n" + body, 'time_column = "seconds"\n'),
+        "named": ("seconds" + rest + "\n" + body, 'time_column = "seconds"\n'),
     }
     for name, (text, extra) in variants.items():
         result, out = _spectrum(tmp_path, name, text, extra)
@@ -386,10 +390,11 @@ def test_old_spellings_work_with_a_warning_naming_the_new_key(tmp_path):
 
 # --- item 5: units on everything printed -------------------------------------------------------
 
-# One CSV convention: the unit ends the column's name, lower case (docs/cli.md, "Result files").
+# One convention for CSV columns and summary keys: the unit ends the name, lower case
+# (docs/development.md, "Result names").
 UNIT_SUFFIX = re.compile(
     r"(^|_)(m|mm|um|n|n_m|n_per_m|n_s_per_m|hz|hz_per_rpm|rpm|s|rad|deg|kg|kg_m2|m_per_s|"
-    r"m_per_s2|rad_per_s|rad_per_s2|periods|nondim|pa)$")
+    r"m_per_s2|rad_per_s|rad_per_s2|periods|nondim|pa|j|us)$")
 # Dimensionless by their meaning: ratios, fractions, counts, flags, Gelman's (2005) normalised
 # statistics (k = K/K̄, e_f = E/x₀: a, m1_k, d_k, r_ke, ...), indices.
 DIMENSIONLESS = re.compile(
@@ -399,6 +404,32 @@ DIMENSIONLESS = re.compile(
     r"sample|seed|harmonic|identifiable|a|m1_k|m1_ef|d_k|d_e|r_ke|delta_m1_ef|variable_term_v|"
     r"dynamic_mean_excitation)$")
 MODE_SHAPES = {"re", "im", "amplitude", "real", "imag"}  # normalised shapes
+# A unit written in capitals, at the end or between underscores: "_Hz", "_N_m", "p2p_N_stage1".
+CAPITAL_UNIT = re.compile(r"(^|_)(Hz|N|N_m|N_per_m|N_s_per_m|Pa|MPa|J|Kg|KG|RPM|Rpm|Rad|Deg)"
+                          r"(_|$)")
+# One spelling per quantity: t_s for time, frequency_hz for frequency.
+OTHER_SPELLINGS = re.compile(r"^(time|time_s|t|freq|freq_hz|f_hz|time_hz|frequency_s)$")
+
+
+def _badly_cased(name):
+    """A name whose unit is not lower case (docs/development.md, "Result names")."""
+    return bool(CAPITAL_UNIT.search(name)) or (
+        bool(UNIT_SUFFIX.search(name.lower())) and not UNIT_SUFFIX.search(name)
+        and not DIMENSIONLESS.match(name.lower()))
+
+
+def _summary_keys_badly_named(value, path=""):
+    """Keys of summary.json's results whose unit is not a lower-case suffix."""
+    bad = []
+    if isinstance(value, dict):
+        for key, item in value.items():
+            if _badly_cased(key) or OTHER_SPELLINGS.match(key) and not isinstance(item, dict):
+                bad.append(f"{path}{key}")
+            bad += _summary_keys_badly_named(item, f"{path}{key}.")
+    elif isinstance(value, list):
+        for item in value:
+            bad += _summary_keys_badly_named(item, path)
+    return bad
 
 # Every example, with what keeps the default suite short (the flexible train's Newmark run
 # takes minutes; its tables are the other trains').
@@ -418,11 +449,14 @@ def _columns_without_units(path):
         rows = list(csv.reader(handle))
     header, body = rows[0], rows[1:]
     if "unit" in header:  # one unit per row, named in its own column
-        return []
-    bad = []
+        return [name for name in header if _badly_cased(name)]
+    bad = [name for name in header if _badly_cased(name)]
     for i, name in enumerate(header):
         if not _numeric([r[i] for r in body if i < len(r)]):
             continue  # text
+        if OTHER_SPELLINGS.match(name):
+            bad.append(name)
+            continue
         if UNIT_SUFFIX.search(name) or DIMENSIONLESS.match(name):
             continue
         if path.name == "mode_shapes.csv" and name in MODE_SHAPES:
@@ -474,7 +508,9 @@ def _stdout_lines_without_units(text):
 
 
 def test_every_example_prints_units_and_names_them_in_every_csv_header(tmp_path):
-    missing_columns, missing_units = {}, {}
+    """Every example's stdout gives units; every CSV column and summary.json result key is
+    snake_case with a lower-case unit suffix (or dimensionless), one spelling per quantity."""
+    missing_columns, missing_units, bad_keys = {}, {}, {}
     for example in sorted(EXAMPLES.glob("*.toml")):
         command = example.stem.split("_")[0]
         out = tmp_path / example.stem
@@ -485,14 +521,35 @@ def test_every_example_prints_units_and_names_them_in_every_csv_header(tmp_path)
         if lines:
             missing_units[example.stem] = lines
         for table in out.rglob("*.csv"):
-            # The sweep's own table: the swept keys and the outputs the study names.
+            # The sweep's own table: the swept keys and the outputs the study names (the
+            # example's names follow the convention too).
             if command == "sweep" and table.parent == out:
-                continue
-            bad = _columns_without_units(table)
+                with open(table, newline="") as handle:
+                    bad = [n for n in next(csv.reader(handle)) if _badly_cased(n)]
+            else:
+                bad = _columns_without_units(table)
             if bad:
                 missing_columns[f"{example.stem}/{table.relative_to(out)}"] = bad
+        results = json.loads((out / "summary.json").read_text()).get("results", {})
+        bad = sorted(set(_summary_keys_badly_named(results)))
+        if bad:
+            bad_keys[example.stem] = bad
     assert not missing_columns, missing_columns
+    assert not bad_keys, bad_keys
     assert not missing_units, missing_units
+
+
+def test_result_name_checks_reject_capital_units_and_other_spellings():
+    # The checks above must be able to fail.
+    assert _badly_cased("mesh_frequency_Hz") and _badly_cased("output_torque_N_m")
+    assert _badly_cased("p2p_N_stage1") and _badly_cased("stiffness_N_per_m")
+    assert not _badly_cased("mesh_frequency_hz") and not _badly_cased("output_torque_n_m")
+    assert not _badly_cased("stage1.sun_planet1") and not _badly_cased("dynamic_factor")
+    assert _summary_keys_badly_named({"static": {"mesh_force_N": {"s1": 1.0}}}) == [
+        "static.mesh_force_N"]
+    assert _summary_keys_badly_named({"peak": {"freq_hz": 1.0, "time": 2.0}}) == [
+        "peak.freq_hz", "peak.time"]
+    assert _summary_keys_badly_named({"time": {"steps": 3}}) == []  # an analysis, not a time
 
 
 def test_implausible_lengths_and_speeds_warn_in_pair_commands_and_gearboxes(tmp_path):

@@ -84,7 +84,7 @@ def test_load_is_the_static_mesh_force_of_train(tmp_path):
     train = run("train", analysis, "--out", tmp_path / "train", *QUICK)
     assert train.returncode == 0, train.stderr
     static = json.loads((tmp_path / "train" / "summary.json").read_text())["results"]["static"]
-    assert ltca["force"] == pytest.approx(static["mesh_force_N"]["stage1"], rel=1e-12)
+    assert ltca["force"] == pytest.approx(static["mesh_force_n"]["stage1"], rel=1e-12)
     assert ltca["force"] == pytest.approx(3084.5733, rel=1e-6)  # 100 N m / r_b1 (spur)
     # --set reaches the ltca file's keys on top of the translated pair.
     other = run("ltca", STAGE1, "--out", tmp_path / "other", *QUICK, "--set", "ltca.force=6169.0",
@@ -147,14 +147,14 @@ command = "ltca"
 base = "{STAGE1.as_posix()}"
 design = "grid"
 set = ["output.plots=false"]
-outputs = ["force_N=/ltca/force"]
+outputs = ["force_n=/ltca/force"]
 [study.parameters]
 "gearbox.mesh" = ["stage1", "stage2"]
 """)
     result = run("sweep", study, "--out", tmp_path / "out")
     assert result.returncode == 0, result.stderr
     with open(tmp_path / "out" / "sweep.csv", newline="") as handle:
-        rows = {r["gearbox.mesh"]: float(r["force_N"]) for r in csv.DictReader(handle)}
+        rows = {r["gearbox.mesh"]: float(r["force_n"]) for r in csv.DictReader(handle)}
     # The intermediate shaft's torque balance: F₂ = F₁ r_b(z2)/r_b(z3) = F₁ × 51 × 3 / (17 × 4.5).
     assert rows["stage2"] == pytest.approx(rows["stage1"] * 51 * 3.0 / (17 * 4.5), rel=1e-9)
 

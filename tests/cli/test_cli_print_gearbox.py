@@ -49,10 +49,10 @@ def test_printed_gearbox_is_the_simulated_gear_pair(tmp_path):
     # The train's modes are the damped ones: f_d = f_n sqrt(1 - zeta^2).
     zeta = first["damping_ratio"]
     assert math.isclose(zeta, model["damping_ratio"], rel_tol=FREQUENCY_RTOL), (first, model)
-    f_undamped = first["frequency_Hz"] / math.sqrt(1.0 - zeta * zeta)
+    f_undamped = first["frequency_hz"] / math.sqrt(1.0 - zeta * zeta)
     f_n = model["natural_frequency"] / (2.0 * math.pi)
     assert math.isclose(f_undamped, f_n, rel_tol=FREQUENCY_RTOL), (f_undamped, f_n)
-    force = results["static"]["mesh_force_N"]["mesh"]
+    force = results["static"]["mesh_force_n"]["mesh"]
     assert math.isclose(abs(force), model["mean_force"], rel_tol=FORCE_RTOL), (force, model)
 
 

@@ -56,7 +56,7 @@ def test_the_train_modal_table_of_the_printed_gearbox_is_the_rotors(tmp_path):
     assert len(ours) == 16
     # The train keeps the shafts' axial DOFs, which the spur rotor file leaves out (uncoupled:
     # their modes are extra entries of its list); every rotor mode is a train mode.
-    train_frequencies = [m["frequency_Hz"] for m in theirs]
+    train_frequencies = [m["frequency_hz"] for m in theirs]
     for mode in ours:
         f = mode["frequency_hz"]
         match = min(train_frequencies, key=lambda g: abs(g - f))

@@ -63,7 +63,7 @@ def test_each_load_case_scales_the_static_mesh_forces(rexs, tmp_path):
         summary = results(out)
         speed = summary["config"]["gearbox_description"]["operating_point"]["speed_rpm"]
         assert speed == LOAD_CASES[case_id][0]
-        forces[case_id] = summary["results"]["static"]["mesh_force_N"]
+        forces[case_id] = summary["results"]["static"]["mesh_force_n"]
     assert forces[1]["stage1"] == pytest.approx(6169.1465, rel=1e-7)
     for case_id, (_, torque) in LOAD_CASES.items():
         for mesh in ("stage1", "stage2"):

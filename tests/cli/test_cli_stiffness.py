@@ -44,7 +44,7 @@ def test_visnadi_spur_end_to_end(tmp_path):
     with open(tmp_path / "mesh_stiffness.csv", newline="") as handle:
         rows = list(csv.DictReader(handle))
     assert len(rows) == 1000
-    assert list(rows[0])[:6] == ["roll_angle_rad", "mesh_fraction", "time_s", K, "k_pair_1" + T, "k_pair_2" + T]
+    assert list(rows[0])[:6] == ["roll_angle_rad", "mesh_fraction", "t_s", K, "k_pair_1" + T, "k_pair_2" + T]
     assert "k_iso6336" + T in rows[0] and "ste_transverse_m" in rows[0]
     row = rows[317]
     assert float(row[K]) == pytest.approx(float(row["k_pair_1" + T]) + float(row["k_pair_2" + T]), rel=1e-14)

@@ -47,7 +47,7 @@ def test_a_gearbox_key_of_the_gearbox_file_is_swept(tmp_path):
     # Was: "operating_point.torque: unknown key (--set); the keys in [operating_point] are:
     # (none)" (the analysis file's schema alone).
     path = study(tmp_path, REDUCER, '"operating_point.torque" = [100.0, 200.0, 400.0]',
-                 '["f1=/static/mesh_force_N/stage1", "f2=/static/mesh_force_N/stage2"]',
+                 '["f1=/static/mesh_force_n/stage1", "f2=/static/mesh_force_n/stage2"]',
                  extra=f'set = ["{STATIC}"]')
     table = swept(path, tmp_path / "out", 3)
     f1 = [float(r["f1"]) for r in table]
@@ -64,7 +64,7 @@ def test_inline_gearbox_sections_are_swept(tmp_path):
     inline.write_text('[analysis]\nrun = ["static", "modal"]\n' + GEARBOX.read_text())
     path = study(tmp_path, inline, '"meshes.stage1.damping_ratio" = [0.02, 0.08]\n'
                  '"operating_point.torque" = [150.0, 300.0]',
-                 '["f1=/static/mesh_force_N/stage1", "fn=/modal/lowest_frequency_Hz"]')
+                 '["f1=/static/mesh_force_n/stage1", "fn=/modal/lowest_frequency_hz"]')
     table = swept(path, tmp_path / "out", 4)
     # Mesh damping leaves the static forces alone; torque scales them.
     assert float(table[0]["f1"]) == pytest.approx(float(table[2]["f1"]), rel=1e-12)
@@ -86,7 +86,7 @@ def test_nonlinear_keys_are_swept(tmp_path):
              "nonlinear.speed_max_rpm=1600.0", "nonlinear.stability=false"]
     path = study(tmp_path, REDUCER, '"nonlinear.harmonics" = [4, 6]\n"nonlinear.samples" = [48, 64]',
                  '["h=/nonlinear/harmonics", "n=/nonlinear/samples", '
-                 '"p2p=/nonlinear/peaks/stage1/p2p_force_N"]', design="zip",
+                 '"p2p=/nonlinear/peaks/stage1/p2p_force_n"]', design="zip",
                  extra="set = [" + ", ".join(f'"{s}"' for s in fixed) + "]")
     table = swept(path, tmp_path / "out", 2)
     assert [(float(r["h"]), float(r["n"])) for r in table] == [(4.0, 48.0), (6.0, 64.0)]
@@ -99,19 +99,19 @@ def test_a_case_gives_the_numbers_of_the_same_train_run(tmp_path):
     direct = run("train", REDUCER, "--out", tmp_path / "direct", "--quiet",
                  *sum((["--set", s] for s in sets + ["output.plots=false"]), []))
     assert direct.returncode == 0, direct.stderr
-    outputs = ('["f1=/static/mesh_force_N/stage1", "fn=/modal/lowest_frequency_Hz", '
+    outputs = ('["f1=/static/mesh_force_n/stage1", "fn=/modal/lowest_frequency_hz", '
                '"df=/forced/meshes/stage1/max_dynamic_factor", '
-               '"p2p=/forced/meshes/stage1/max_p2p_force_N"]')
+               '"p2p=/forced/meshes/stage1/max_p2p_force_n"]')
     path = study(tmp_path, REDUCER, '"operating_point.torque" = [100.0, 350.0]\n'
                  '"meshes.stage1.damping_ratio" = [0.03]', outputs,
                  extra='keep_case_results = true\nset = ["analysis.run=[\\"static\\", '
                        '\\"modal\\", \\"forced\\"]", "forced.points=15"]')
     case = swept(path, tmp_path / "sweep", 2)[1]
     results = summary(tmp_path / "direct")["results"]
-    expected = {"f1": results["static"]["mesh_force_N"]["stage1"],
-                "fn": results["modal"]["lowest_frequency_Hz"],
+    expected = {"f1": results["static"]["mesh_force_n"]["stage1"],
+                "fn": results["modal"]["lowest_frequency_hz"],
                 "df": results["forced"]["meshes"]["stage1"]["max_dynamic_factor"],
-                "p2p": results["forced"]["meshes"]["stage1"]["max_p2p_force_N"]}
+                "p2p": results["forced"]["meshes"]["stage1"]["max_p2p_force_n"]}
     # sweep.csv writes 17 significant digits: the same doubles.
     assert {k: float(case[k]) for k in expected} == expected
     kept = tmp_path / "sweep" / "cases" / "000001"
@@ -160,7 +160,7 @@ def test_rexs_load_cases_and_gearbox_keys_are_swept(tmp_path):
     analysis.write_text('[gearbox]\nfile = "box.rexs"\n[analysis]\nrun = ["static", "modal"]\n')
     path = study(tmp_path, analysis, '"gearbox.load_case" = [1, 2, 3, 4]\n'
                  '"operating_point.torque" = [500.0, 1000.0]',
-                 '["rpm=/kinematics/input_speed_rpm", "f1=/static/mesh_force_N/cylindrical_stage_41"]')
+                 '["rpm=/kinematics/input_speed_rpm", "f1=/static/mesh_force_n/cylindrical_stage_41"]')
     table = swept(path, tmp_path / "out", 8)
     # The load cases' speeds (test_cli_rexs.py); the torque parameter overrides each one's.
     assert [float(r["rpm"]) for r in table[::2]] == [543.0, 3456.0, 1234.0, 789.0]
@@ -178,7 +178,7 @@ def test_an_edited_gearbox_file_is_not_resumed(tmp_path):
     gearbox = tmp_path / "gearboxes" / GEARBOX.name
     shutil.copy(GEARBOX, gearbox)
     path = study(tmp_path, tmp_path / "analysis.toml", '"operating_point.torque" = [100.0, 200.0]',
-                 '["f1=/static/mesh_force_N/stage1"]', extra=f'set = ["{STATIC}"]')
+                 '["f1=/static/mesh_force_n/stage1"]', extra=f'set = ["{STATIC}"]')
     swept(path, tmp_path / "out", 2)
     assert run("sweep", path, "--out", tmp_path / "out", "--quiet", "--resume").returncode == 0
     gearbox.write_text(gearbox.read_text().replace("damping_ratio = 0.05", "damping_ratio = 0.06", 1))
@@ -191,10 +191,10 @@ def test_gearbox_files_are_swept(tmp_path):
     heavy = tmp_path / "heavy.toml"
     heavy.write_text(GEARBOX.read_text().replace("torque = 200.0", "torque = 400.0", 1))
     path = study(tmp_path, REDUCER, f'"gearbox.file" = ["{GEARBOX}", "{heavy}"]',
-                 '["f1=/static/mesh_force_N/stage1"]', extra=f'set = ["{STATIC}"]')
+                 '["f1=/static/mesh_force_n/stage1"]', extra=f'set = ["{STATIC}"]')
     f1 = [float(r["f1"]) for r in swept(path, tmp_path / "out", 2)]
     assert f1[1] == pytest.approx(2 * f1[0], rel=1e-9)
     direct = run("train", REDUCER, "--out", tmp_path / "direct", "--quiet", "--set",
                  'analysis.run=["static"]', "--set", f"gearbox.file={heavy}")
     assert direct.returncode == 0, direct.stderr
-    assert summary(tmp_path / "direct")["results"]["static"]["mesh_force_N"]["stage1"] == f1[1]
+    assert summary(tmp_path / "direct")["results"]["static"]["mesh_force_n"]["stage1"] == f1[1]

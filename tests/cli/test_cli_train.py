@@ -45,7 +45,7 @@ def test_reducer_writes_every_analysis_and_records_both_files(tmp_path):
     assert summary["config"]["gearbox"]["file"] == "gearboxes/two_stage_reducer.toml"
     assert summary["config"]["gearbox_description"]["meshes"]["stage1"]["gears"] == ["z1", "z2"]
     results = summary["results"]
-    assert results["kinematics"]["output_torque_N_m"] == pytest.approx(-200 * 51 / 23 * 47 / 17)
+    assert results["kinematics"]["output_torque_n_m"] == pytest.approx(-200 * 51 / 23 * 47 / 17)
     for name in ["bodies.csv", "meshes.csv", "static_forces.csv", "modes.csv", "mode_shapes.csv",
                  "campbell.csv", "critical_speeds.csv", "forced_response.csv", "time_history.csv"]:
         assert (tmp_path / name).exists(), name
@@ -61,10 +61,10 @@ def test_set_reaches_the_gearbox_file(tmp_path):
                  *quick("--set", "analysis.run=[\"static\"]", "--set", "operating_point.torque=400"))
     assert result.returncode == 0, result.stderr
     summary = json.loads((tmp_path / "summary.json").read_text())
-    forces = summary["results"]["static"]["mesh_force_N"]
+    forces = summary["results"]["static"]["mesh_force_n"]
     half = run("train", REDUCER, "--out", tmp_path / "b", *quick("--set", "analysis.run=[\"static\"]"))
     assert half.returncode == 0
-    base = json.loads((tmp_path / "b" / "summary.json").read_text())["results"]["static"]["mesh_force_N"]
+    base = json.loads((tmp_path / "b" / "summary.json").read_text())["results"]["static"]["mesh_force_n"]
     assert forces["stage1"] == pytest.approx(2 * base["stage1"], rel=1e-9)
 
 

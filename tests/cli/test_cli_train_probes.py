@@ -45,8 +45,8 @@ def whirl_differences(train, spectrum):
         largest = max(max(e["forward_amplitude"], e["backward_amplitude"]) for e in entries)
         worst[station] = 0.0
         for e in entries:
-            order = round(e["frequency_Hz"] / STAGE2_MESH_HZ)
-            assert e["frequency_Hz"] == pytest.approx(order * STAGE2_MESH_HZ, rel=1e-12)
+            order = round(e["frequency_hz"] / STAGE2_MESH_HZ)
+            assert e["frequency_hz"] == pytest.approx(order * STAGE2_MESH_HZ, rel=1e-12)
             for sense, key in (("fwd", "forward_amplitude"), ("bwd", "backward_amplitude")):
                 found = spectrum["peaks"][shaft][f"mesh_{order}_{sense}"]["amplitude"]
                 worst[station] = max(worst[station], abs(found - e[key]) / largest)

@@ -38,10 +38,10 @@ def test_ratio_from_the_record_and_the_static_forces(example):
         # (torque balance of each shaft over whole periods): measured 8e-14 at 256 steps.
         assert m["simulated_mean_excitation_ratio"] == pytest.approx(m["mean_excitation_ratio"],
                                                                      abs=1e-8), name
-        assert m["mesh_force_N"]["mean"] == pytest.approx(m["static_force_N"], rel=1e-8), name
+        assert m["mesh_force_n"]["mean"] == pytest.approx(m["static_force_n"], rel=1e-8), name
         assert m["dynamic_factor"] == pytest.approx(
-            max(m["mesh_force_N"]["max"], -m["mesh_force_N"]["min"]) / m["static_force_N"])
-        assert m["mesh_force_N"]["rms"] >= m["mesh_force_N"]["mean"]
+            max(m["mesh_force_n"]["max"], -m["mesh_force_n"]["min"]) / m["static_force_n"])
+        assert m["mesh_force_n"]["rms"] >= m["mesh_force_n"]["mean"]
         assert m["mean_excitation"]["a"] == pytest.approx(1.0)  # design torque = operating
     assert meshes["stage1"]["mean_excitation_ratio"] == pytest.approx(0.9856622, abs=1e-6)
     assert meshes["stage2"]["mean_excitation_ratio"] == pytest.approx(1.0, abs=1e-12)
@@ -62,7 +62,7 @@ def test_ratio_is_linear_in_the_error_and_independent_of_the_baseload(example, t
                  *quick("--set", "stats.design_torque=400.0"))
     assert design.returncode == 0, design.stderr
     d = stats_of(tmp_path / "design")["stage1"]
-    assert d["baseload_N"] == pytest.approx(2.0 * base["static_force_N"], rel=1e-12)
+    assert d["baseload_n"] == pytest.approx(2.0 * base["static_force_n"], rel=1e-12)
     assert d["mean_excitation"]["a"] == pytest.approx(0.5, rel=1e-12)
     assert d["mean_excitation_ratio"] == pytest.approx(base["mean_excitation_ratio"], abs=1e-12)
     assert d["mean_excitation"]["d_e"] == pytest.approx(0.5 * base["mean_excitation"]["d_e"],
@@ -77,8 +77,8 @@ def test_result_table(example):
     for name, m in meshes.items():
         row = rows[name]
         assert float(row["mean_excitation_ratio"]) == pytest.approx(m["mean_excitation_ratio"])
-        assert float(row["mesh_force_rms_n"]) == pytest.approx(m["mesh_force_N"]["rms"])
-        assert float(row["mesh_force_p2p_n"]) == pytest.approx(m["mesh_force_N"]["peak_to_peak"])
+        assert float(row["mesh_force_rms_n"]) == pytest.approx(m["mesh_force_n"]["rms"])
+        assert float(row["mesh_force_p2p_n"]) == pytest.approx(m["mesh_force_n"]["peak_to_peak"])
         assert float(row["dte_p2p_m"]) == pytest.approx(
             m["dynamic_transmission_error_m"]["peak_to_peak"])
 
@@ -104,7 +104,7 @@ def test_stats_after_time_reuses_its_newmark_record(example, tmp_path):
     alone = json.loads((out / "summary.json").read_text())["results"]["stats"]
     assert alone["record_from_time_analysis"] is False
     for name, m in alone["meshes"].items():  # the same run: the same numbers, bit for bit
-        assert run_both["stats"]["meshes"][name]["mesh_force_N"] == m["mesh_force_N"]
+        assert run_both["stats"]["meshes"][name]["mesh_force_n"] == m["mesh_force_n"]
         assert run_both["stats"]["meshes"][name]["simulated_mean_excitation_ratio"] == \
             m["simulated_mean_excitation_ratio"]
 

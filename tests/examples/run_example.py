@@ -9,7 +9,7 @@ form
     #   expect <path> = <value> ± <tolerance>[%]   (why this value, why this tolerance)
 
 is checked against DIR/summary.json: <path> is a dotted path into the JSON with [i] for list
-items and ["a.b"] for keys holding dots (e.g. `results.static.mesh_force_N["stage1.sun_planet1"]`); <value> is the number the header states (a published
+items and ["a.b"] for keys holding dots (e.g. `results.static.mesh_force_n["stage1.sun_planet1"]`); <value> is the number the header states (a published
 number, or the value this example is documented to give); the tolerance is absolute, or relative
 with a trailing %. An example without any `expect` line fails: an example whose numbers nobody
 checks can drift unseen. The run must not warn about the example's own input either (stderr

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "geardyn/error.h"
 
@@ -62,6 +63,26 @@ TEST(ProbeRecord, ConflictingOrMissingSampleRateIsAnError) {
   std::ofstream(csv) << "x1,y1,x2,y2,keyphasor\n1,2,3,4,5\n1,2,3,4,5\n";
   EXPECT_THROW(readProbeRecord(csv, options()), InputError);
   EXPECT_EQ(readProbeRecord(csv, options(100.0)).sample_rate, 100.0);
+}
+
+TEST(ProbeRecord, CsvNamesTimeAndChannelsWithUnitsAndReadsOldNames) {
+  ProbeRecord r = sample();
+  r.units = {"m", "m", "m", "m", ""};
+  const fs::path path = folder() / "units.csv";
+  writeProbeRecord(path, RecordFormat::kCsv, r);
+  std::ifstream in(path);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t_s,x1_m,y1_m,x2_m,y2_m,keyphasor");
+  // Channels are asked for by name, with or without the unit suffix in the file.
+  const ProbeRecord back = readProbeRecord(path, options());
+  EXPECT_EQ(back.sample_rate, 5000.0);
+  EXPECT_EQ(back.names.front(), "x1");
+  for (int c = 0; c < 5; ++c) EXPECT_EQ(back.channels[c], r.channels[c]) << c;
+  // A record written before the convention: time, x1, ...
+  const fs::path old = folder() / "old_names.csv";
+  std::ofstream(old) << "time,x1,y1,x2,y2,keyphasor\n0,1,2,3,4,5\n0.01,1,2,3,4,5\n";
+  EXPECT_EQ(readProbeRecord(old, options()).sample_rate, 100.0);
 }
 
 std::string messageOf(const fs::path& path, const RecordReadOptions& o) {

@@ -40,6 +40,28 @@ def test_headline_rows_flatten_results_with_units_from_key_names():
     assert not [r for r in rows if r[0] in ("skip", "conventions.frame")]  # nothing, prose
 
 
+def test_headline_units_come_from_lower_case_suffixes_longest_first():
+    # A torque in N m is not in m, a force per rpm is not in rpm: the longest ending wins.
+    summary = {"command": "train", "status": "ok",
+               "results": {"kinematics": {"output_torque_n_m": -975.0, "input_speed_rpm": 1500.0},
+                           "static": {"mesh_force_n": {"stage1": 3084.5}},
+                           "nonlinear": {"mesh_frequency_hz_per_rpm": {"stage1": 0.38},
+                                         "stiffness_n_per_m": 4e8, "tilt_deg": 1.5,
+                                         "energy_j": 2.0, "stress_pa": 1e6},
+                           "old": {"torque_N_m": 1.0, "frequency_Hz": 2.0}}}
+    units = {name: unit for name, _, unit in report.headline_rows(summary)}
+    assert units["kinematics.output_torque_n_m"] == "N m"
+    assert units["kinematics.input_speed_rpm"] == "rpm"
+    assert units["static.mesh_force_n.stage1"] == "N"  # a mesh's name: its parent's unit
+    assert units["nonlinear.mesh_frequency_hz_per_rpm.stage1"] == "Hz/rpm"
+    assert units["nonlinear.stiffness_n_per_m"] == "N/m"
+    assert units["nonlinear.tilt_deg"] == "°"
+    assert units["nonlinear.energy_j"] == "J"
+    assert units["nonlinear.stress_pa"] == "Pa"
+    # Files written before the convention still read.
+    assert units["old.torque_N_m"] == "N m" and units["old.frequency_Hz"] == "Hz"
+
+
 def test_script_json_cannot_close_the_script_element_and_has_no_nan():
     text = report._script_json({"a": "</script><b>", "b": float("nan"), "c": [float("inf"), 1.0]})
     assert "</" not in text

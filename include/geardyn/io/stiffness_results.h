@@ -28,7 +28,7 @@ namespace geardyn::io {
 nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const GearPair& pair,
                                             const config::MeshStiffnessModels& models);
 
-/// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [time_s,] k_total_transverse_n_per_m
+/// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [t_s,] k_total_transverse_n_per_m
 /// (primary), k_pair_1..n_transverse_n_per_m (primary), k_<model>_transverse_n_per_m for the
 /// others, [ste_transverse_m]: every k and the STE along the transverse line of action.
 CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
