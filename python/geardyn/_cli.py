@@ -75,6 +75,19 @@ def to_toml(config):
     return "\n".join(lines) + "\n"
 
 
+def _column_array(values):
+    """Integers (a seed may exceed int64: uint64) stay integers; then floats; else text."""
+    for dtype in (np.int64, np.uint64):
+        try:
+            return np.array([int(v) for v in values], dtype=dtype)
+        except (ValueError, OverflowError):
+            pass
+    try:
+        return np.array([float(v) for v in values])
+    except ValueError:
+        return np.array(values)
+
+
 class FolderResult:
     """A finished command-line run: its summary (dict), results (dict) and tables (CSV files
     as {column: numpy array}). When the run went to a temporary folder, everything is read
@@ -106,7 +119,8 @@ class FolderResult:
         return [f[:-4] for f in self.files if f.endswith(".csv")]
 
     def table(self, name=None):
-        """A CSV result file as {column: numpy array} (numbers as float arrays, text as str)."""
+        """A CSV result file as {column: numpy array} (integer columns — case, seed, counts — as
+        integer arrays, other numbers as float arrays, text as str)."""
         name = name or self.tables[0]
         name = name if name.endswith(".csv") else name + ".csv"
         if name not in self._tables:
@@ -116,11 +130,7 @@ class FolderResult:
                 rows = list(csv.DictReader(handle))
             columns = {}
             for column in (rows[0].keys() if rows else []):
-                values = [r[column] for r in rows]
-                try:
-                    columns[column] = np.array([float(v) for v in values])
-                except ValueError:
-                    columns[column] = np.array(values)
+                columns[column] = _column_array([r[column] for r in rows])
             self._tables[name] = columns
         return self._tables[name]
 

@@ -42,6 +42,9 @@ _HEADLINES = {
     "spectrum": [("sample rate", "/sample_rate", "Hz")],
     "identify": [("mesh stiffness", "/mesh_stiffness/value", "N/m")],
     "ltca": [],
+    "train": [("input speed", "/kinematics/input_speed_rpm", "rpm"),
+              ("output torque", "/kinematics/output_torque_n_m", "N m"),
+              ("lowest natural frequency", "/modal/lowest_frequency_hz", "Hz")],
 }
 
 

@@ -211,6 +211,10 @@ def test_train_and_sweep_results_are_dataframes_with_units_too():
         units = train.to_pandas(table).attrs["units"]
         assert "?" not in units.values(), f"train/{table}: {units}"
     assert train.to_pandas("meshes").attrs["units"]["mean_stiffness_normal_n_per_m"] == "N/m"
+    # Issue #33 item 7: a train result's headline was {}.
+    headline = train.headline
+    assert headline["input speed [rpm]"] > 0 and headline["output torque [N m]"] != 0
+    assert headline["lowest natural frequency [Hz]"] > 0, headline
     sweep = geardyn.sweep({"study": {"command": "simulate",
                                      "base": str(EXAMPLES / "simulate_gear_pair_backlash.toml"),
                                      "outputs": ["df=/dynamic_factor",
@@ -219,6 +223,8 @@ def test_train_and_sweep_results_are_dataframes_with_units_too():
     units = sweep.to_pandas("sweep").attrs["units"]
     assert units == {"case": "", "status": None, "seed": "", "excitation.mesh_frequency": "Hz",
                      "df": "", "f": "N", "message": None}
+    # ... and the seed stays an integer (it was read as a float).
+    assert sweep.to_pandas("sweep")["seed"].dtype.kind in "iu"
 
 
 def test_train_on_a_dict_runs_in_process_like_its_file(monkeypatch):
