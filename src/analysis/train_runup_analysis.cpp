@@ -32,7 +32,8 @@ constexpr double kInertiaTorqueWarning = 0.05;
 
 /// What is tracked: a mesh's dynamic force [N] or a DOF's displacement [m, rad].
 struct Channel {
-  std::string name, unit;
+  std::string name;
+  const char* unit;  // a literal: "N", "m" or "rad"
   int mesh = -1, dof = -1;
 };
 
@@ -116,7 +117,7 @@ Json addOrderTracks(const std::vector<Channel>& channels, const Orders& orders,
     const OrderTrack& track = tracks[c];
     std::vector<double> best(orders.column.size(), -1.0), best_speed(orders.column.size(), 0.0);
     for (std::size_t w = 0; w < track.time.size(); ++w) {
-      std::vector<io::CsvCell> row{channels[c].name, channels[c].unit, track.time[w],
+      std::vector<io::CsvCell> row{channels[c].name, std::string(channels[c].unit), track.time[w],
                                    track.speed[w] / kRpm};
       for (std::size_t j = 0; j < orders.column.size(); ++j) {
         const double a = track.amplitude[orders.column_order[j]][w];
