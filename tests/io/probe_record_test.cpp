@@ -28,11 +28,21 @@ ProbeRecord sample() {
   return r;
 }
 
-fs::path folder() {
-  const fs::path p =
+/// This process's scratch folder, removed when the process ends (each test runs in its own
+/// process: one folder each was left in /tmp before).
+struct ScratchFolder {
+  fs::path path =
       fs::temp_directory_path() / ("geardyn_probe_record_" + std::to_string(::getpid()));
-  fs::create_directories(p);
-  return p;
+  ScratchFolder() { fs::create_directories(path); }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+fs::path folder() {
+  static const ScratchFolder scratch;
+  return scratch.path;
 }
 
 RecordReadOptions options(std::optional<double> rate = std::nullopt) {
