@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace geardyn::io {
 namespace {
@@ -32,9 +33,24 @@ std::set<std::string> entries(const fs::path& folder) {
   return names;
 }
 
+/// The folders this test process made, removed when it ends (they were left in /tmp, and two
+/// builds testing at once shared them).
+struct ScratchFolders {
+  std::vector<fs::path> folders;
+  ~ScratchFolders() {
+    for (const auto& folder : folders) {
+      std::error_code ignored;
+      fs::remove_all(folder, ignored);
+    }
+  }
+};
+
 fs::path freshFolder(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / ("geardyn_result_writer_" + name);
+  static ScratchFolders scratch;
+  const fs::path folder = fs::temp_directory_path() /
+                          ("geardyn_result_writer_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(folder);
+  scratch.folders.push_back(folder);
   return folder;
 }
 
