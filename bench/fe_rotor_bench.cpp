@@ -30,17 +30,22 @@ FeGearedRotorSpec rotorSpec(int elements, double start_rpm, double end_rpm, doub
   return spec;
 }
 
-void BM_FeNewmarkStep(benchmark::State& state) {
-  const FeGearedRotor model(rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0));
-  FeTimeOptions o;
-  FeNewmarkStepper stepper(model, o);
-  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
-                Eigen::VectorXd::Zero(model.dofCount()));
+/// Steps `stepper` from rest, one step per benchmark iteration.
+template <class Stepper>
+void timeSteps(benchmark::State& state, Stepper& stepper, int dofs) {
+  stepper.reset(0.0, Eigen::VectorXd::Zero(dofs), Eigen::VectorXd::Zero(dofs));
   for (auto _ : state) {
     stepper.step();
     benchmark::DoNotOptimize(stepper.displacement().data());
   }
-  state.counters["dofs"] = model.dofCount();
+  state.counters["dofs"] = dofs;
+}
+
+void BM_FeNewmarkStep(benchmark::State& state) {
+  const FeGearedRotor model(rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0));
+  FeTimeOptions o;
+  FeNewmarkStepper stepper(model, o);
+  timeSteps(state, stepper, model.dofCount());
 }
 BENCHMARK(BM_FeNewmarkStep)
     ->ArgName("elements_per_shaft")
@@ -55,15 +60,9 @@ BENCHMARK(BM_FeNewmarkStep)
 void BM_FeRotorTrainNewmarkStep(benchmark::State& state) {
   const FeGearedRotorSpec spec = rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0);
   const GearTrainModel model(gearTrainFromFeRotor(spec, testing::visnadiPairSpec(0.0)));
-  TrainNewmarkStepper stepper(model, spec.speed.start, 1e-5,
+  TrainNewmarkStepper stepper(model, spec.speed.start, FeTimeOptions{}.time_step,
                               NewmarkParameters::averageAcceleration(), false);
-  stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
-                Eigen::VectorXd::Zero(model.dofCount()));
-  for (auto _ : state) {
-    stepper.step();
-    benchmark::DoNotOptimize(stepper.displacement().data());
-  }
-  state.counters["dofs"] = model.dofCount();
+  timeSteps(state, stepper, model.dofCount());
 }
 BENCHMARK(BM_FeRotorTrainNewmarkStep)
     ->ArgName("elements_per_shaft")

@@ -10,6 +10,7 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/damped_modes.h"
 #include "geardyn/solvers/detail/mode_tracking.h"
+#include "geardyn/solvers/detail/whirl_shares.h"
 
 namespace geardyn {
 namespace {
@@ -18,42 +19,25 @@ constexpr double kTwoPi = 6.283185307179586;
 
 void classify(const FeGearedRotor& model, RotorMode& mode) {
   const Eigen::VectorXd& md = model.mass().diagonal();
-  double lateral = 0, torsional = 0, axial = 0, forward = 0, backward = 0;
+  detail::WhirlShares shares;
   const int n = model.dofCount();
   for (int i = 0; i < n; ++i) {
     const double e = md(i) * std::norm(mode.shape(i));
     switch (model.typeOf(i)) {
       case kUx:
-        axial += e;
+        shares.axial += e;
         break;
       case kRx:
-        torsional += e;
+        shares.torsional += e;
         break;
       default:
-        lateral += e;
+        shares.lateral += e;
     }
     if (model.typeOf(i) != kUy) continue;
     const int iz = model.dofIndex(model.shaftOf(i), model.nodeOf(i), kUz);
-    const std::complex<double> Y = mode.shape(i), Z = mode.shape(iz), I(0.0, 1.0);
-    double f = std::norm(Y + I * Z), b = std::norm(Y - I * Z);
-    if (model.spinRatio(model.shaftOf(i)) < 0) std::swap(f, b);
-    forward += md(i) * f;
-    backward += md(i) * b;
+    shares.addWhirl(md(i), mode.shape(i), mode.shape(iz), model.spinRatio(model.shaftOf(i)));
   }
-  const double total = lateral + torsional + axial;
-  mode.lateral_fraction = lateral / total;
-  mode.torsional_fraction = torsional / total;
-  mode.axial_fraction = axial / total;
-  mode.forward_fraction = forward + backward > 0 ? forward / (forward + backward) : 0.5;
-  if (mode.torsional_fraction > 0.5) {
-    mode.whirl = "torsional";
-  } else if (mode.axial_fraction > 0.5) {
-    mode.whirl = "axial";
-  } else {
-    mode.whirl = mode.forward_fraction > 0.75   ? "forward"
-                 : mode.forward_fraction < 0.25 ? "backward"
-                                                : "mixed";
-  }
+  shares.describe(mode);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "geardyn/solvers/detail/damped_modes.h"
 #include "geardyn/solvers/detail/mode_tracking.h"
 #include "geardyn/solvers/detail/shift_invert_modes.h"
+#include "geardyn/solvers/detail/whirl_shares.h"
 #include "geardyn/system/detail/train_building.h"
 
 namespace geardyn {
@@ -33,42 +34,25 @@ void classifyWhirl(const GearTrainModel& model, TrainMode& mode,
   const Eigen::VectorXd md = sparse_mass ? Eigen::VectorXd(sparse_mass->diagonal())
                                          : Eigen::VectorXd(model.mass().diagonal());
   const int per = model.dofsPerBody();
-  double lateral = 0.0, torsional = 0.0, axial = 0.0, forward = 0.0, backward = 0.0;
+  detail::WhirlShares shares;
   for (std::size_t b = 0; b < model.bodies().size(); ++b) {
     const TrainBody& body = model.bodies()[b];
     const int r = model.rotationDof(static_cast<int>(b));
     for (int d = body.first_dof; d < body.first_dof + per; ++d) {
       const double e = md(d) * std::norm(mode.shape(d));
       if (d == r) {
-        torsional += e;
+        shares.torsional += e;
       } else if (per == 6 && d == body.first_dof + 3) {
-        axial += e;
+        shares.axial += e;
       } else {
-        lateral += e;
+        shares.lateral += e;
       }
     }
     if (per == 1) continue;
-    const std::complex<double> Y = mode.shape(body.first_dof), Z = mode.shape(body.first_dof + 1);
-    const std::complex<double> I(0.0, 1.0);
-    double f = std::norm(Y + I * Z), bw = std::norm(Y - I * Z);
-    if (body.speed_ratio < 0.0) std::swap(f, bw);
-    forward += md(body.first_dof) * f;
-    backward += md(body.first_dof) * bw;
+    shares.addWhirl(md(body.first_dof), mode.shape(body.first_dof), mode.shape(body.first_dof + 1),
+                    body.speed_ratio);
   }
-  const double total = lateral + torsional + axial;
-  mode.lateral_fraction = total > 0.0 ? lateral / total : 0.0;
-  mode.torsional_fraction = total > 0.0 ? torsional / total : 0.0;
-  mode.axial_fraction = total > 0.0 ? axial / total : 0.0;
-  mode.forward_fraction = forward + backward > 0.0 ? forward / (forward + backward) : 0.5;
-  if (mode.torsional_fraction > 0.5) {
-    mode.whirl = "torsional";
-  } else if (mode.axial_fraction > 0.5) {
-    mode.whirl = "axial";
-  } else {
-    mode.whirl = mode.forward_fraction > 0.75   ? "forward"
-                 : mode.forward_fraction < 0.25 ? "backward"
-                                                : "mixed";
-  }
+  shares.describe(mode);
 }
 
 /// Energy fractions and the planetary mode type (Lin & Parker 1999: rotational modes move the

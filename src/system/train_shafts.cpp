@@ -253,4 +253,16 @@ void GearTrainModel::addBeamElements() {
   }
 }
 
+double GearTrainModel::rotatingInertia(int body) const {
+  // A node of a flexible shaft: its lumped inertia and half of its beams'.
+  double inertia = bodies_[body].polar_inertia;
+  for (const BeamElement& beam : beams_) {
+    if (beam.body_a == body || beam.body_b == body) {
+      inertia +=
+          0.5 * beam.segment.density * beam.segment.polarMomentOfArea() * beam.segment.length;
+    }
+  }
+  return inertia;
+}
+
 }  // namespace geardyn
