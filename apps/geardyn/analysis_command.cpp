@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -34,6 +35,10 @@ int runLibraryResult(const std::string& name, const std::string& plot_kind, bool
   context.config_source = options.config_file.string();
   context.threads = options.threads;
   context.warn = [](const std::string& text) { warn(text); };
+  context.print = [&options](const std::string& text) { report(options, text); };
+  context.inform = [&options](const std::string& text) {
+    if (!options.quiet) std::cerr << text << std::flush;
+  };
   context.progress = [&](const std::string& label, const std::string& unit) {
     stage.reset();  // the previous stage has finished
     stage = std::make_unique<ProgressReporter>(label, unit, show_progress);
@@ -56,7 +61,8 @@ int runLibraryResult(const std::string& name, const std::string& plot_kind, bool
     path = writer.writeSummary(result.summary);
   }
   for (const auto& error : result.errors) std::cerr << "geardyn " << name << ": " << error << "\n";
-  report(options, result.report + fmt::format("results: {}\n", path.string()));
+  report(options, result.report.substr(std::min(result.printed, result.report.size())) +
+                      fmt::format("results: {}\n", path.string()));
   return result.numerical_failure ? kExitNumericalFailure : kExitOk;
 }
 

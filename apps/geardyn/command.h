@@ -29,7 +29,7 @@ struct CommandOptions {
   std::vector<std::string> overrides;
   int threads = 0;  ///< 0: all hardware threads
   bool quiet = false;
-  bool progress = false;   ///< progress lines on stderr even when it is not a terminal
+  bool progress = true;    ///< progress lines on stderr for runs over ~2 s (--no-progress: off)
   bool resume = false;     ///< sweep: continue from the journal of an interrupted run
   bool overwrite = false;  ///< sweep: discard the journal of a previous run in the folder
   /// Write the gearbox TOML the file translates into to stdout and stop (no analysis); a

@@ -145,9 +145,9 @@ int main(int argc, char** argv) {
                      : "--threads = " + value + ": must be an integer in [1, 4096]";
         });
     sub->add_flag("--quiet,-q", o.quiet, "print nothing but warnings and errors");
-    sub->add_flag("--progress", o.progress,
-                  "progress lines with an ETA on stderr for runs over ~2 s (default: only when "
-                  "stderr is a terminal)");
+    sub->add_flag("--progress,!--no-progress", o.progress,
+                  "progress lines with an ETA on stderr for runs over ~2 s (the default; "
+                  "--no-progress: none)");
     if (command.has_gearbox) {
       sub->add_flag("--print-gearbox", o.print_gearbox,
                     "write the gearbox description (TOML) the file translates into to stdout and "

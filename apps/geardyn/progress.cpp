@@ -3,7 +3,6 @@
 #include "progress.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +30,7 @@ ProgressReporter::~ProgressReporter() {
 }
 
 bool ProgressReporter::enabledFor(const CommandOptions& options) {
-  return !options.quiet && (options.progress || ::isatty(STDERR_FILENO) == 1);
+  return !options.quiet && options.progress;
 }
 
 double ProgressReporter::elapsed() const {

@@ -6,18 +6,22 @@
 #include "geardyn/config/train_analysis.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
 #include <filesystem>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string_view>
 
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/analysis/run_budget.h"
+#include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/error.h"
@@ -29,17 +33,17 @@
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
 #include "train_stats_analysis.h"
+#include "train_time_analysis.h"
+#include "train_undamped_modes.h"
+#include "wall_clock.h"
 
 namespace geardyn::analysis {
 namespace {
 
 using geardyn::units::kRpm;
 using Json = nlohmann::ordered_json;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::secondsSince;
 
 std::string stageTypes(const TrainMode& mode) {
   std::string out;
@@ -175,6 +179,13 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
         "statically unstable at this speed (a negative stiffness, e.g. centripetal softening of a "
         "member in a carrier frame beyond its support); a time response grows as e^(rate t)",
         speed / kRpm, divergent, rate));
+  }
+  // A model without any damping is a conservative system analysed on purpose (Lin & Parker's
+  // modes); some undamped modes among damped ones are what a user overlooks.
+  if (!model.dampingAt(speed).isZero(0.0)) {
+    const std::string undamped =
+        detail::undampedModesWarning(model, trainUndampedModes(model, modes), speed / kRpm);
+    if (!undamped.empty()) summary.warnings.push_back(undamped);
   }
   result.addTable("modes.csv", table);
   result.addTable("mode_shapes.csv", shapes);
@@ -322,99 +333,6 @@ void runForced(const GearTrainModel& model, const config::Config& analysis, Anal
 }
 
 /// `record`: receives the Newmark record (for `stats` after `time`).
-int runTime(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
-            io::RunSummary& summary, std::string& text, std::optional<TrainTimeResponse>& record) {
-  const auto start = Clock::now();
-  const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
-  detail::checkTrainProbes(model, analysis, speed);
-  const TrainTimeResponse r =
-      solveTrainTimeResponse(model, speed, config::trainTimeOptionsFromConfig(analysis));
-  const double seconds = secondsSince(start);
-  if (r.status != "completed") {
-    summary.warnings.push_back(r.message);
-    summary.results["time"] = {{"status", r.status}, {"steps", r.steps}};
-    return 1;
-  }
-  // The frequency-domain steady state on the same window, for the comparison a user would make.
-  TrainSteadyOptions steady;
-  steady.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
-  steady.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
-  Json comparison = nullptr;
-  std::vector<std::string> header{"t_s"};
-  for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
-  bool compare = true;
-  TrainSteadyState s;
-  try {
-    s = solveTrainSteadyState(model, speed, steady);
-  } catch (const InputError& e) {
-    compare = false;
-    summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
-  }
-  if (compare) {
-    for (const TrainMesh& m : model.meshes())
-      header.push_back("steady_mesh_force_" + m.name + "_normal_n");
-  }
-  io::CsvTable table(header);
-  Eigen::MatrixXd q;
-  if (compare) q = s.displacement(r.t);
-  Json differences = Json::object();
-  std::vector<double> worst(model.meshes().size(), 0.0);
-  for (Eigen::Index k = 0; k < r.t.size(); ++k) {
-    std::vector<io::CsvCell> row{r.t(k)};
-    for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) row.push_back(r.mesh_force(k, m));
-    if (compare) {
-      for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-        const double f = model.meshes()[m].force(r.t(k), speed, q.row(k).transpose());
-        worst[m] = std::max(worst[m], std::abs(f - r.mesh_force(k, static_cast<Eigen::Index>(m))));
-        row.push_back(f);
-      }
-    }
-    table.addRow(row);
-  }
-  result.addTable("time_history.csv", table);
-  // Mesh-force harmonics of the Newmark window (whole common periods) against the balance's:
-  // pointwise values near a stiffness jump converge slowly in both methods (Gibbs, step size),
-  // the harmonics at the mesh orders quickly.
-  Json harmonics = Json::object();
-  if (compare) {
-    const int periods = static_cast<int>(analysis.integer("time.record_periods"));
-    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-      const double p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
-      differences[model.meshes()[m].name] = p2p > 0 ? worst[m] / p2p : 0.0;
-      const Eigen::VectorXd f = r.mesh_force.col(static_cast<Eigen::Index>(m));
-      const double scale = s.mesh_force_harmonics[m][0];
-      Json orders = Json::array();
-      for (int l = 1; l <= 3 && l <= static_cast<int>(s.mesh_force_harmonics[m].size()); ++l) {
-        const double step = 2.0 * std::numbers::pi * l * s.mesh_multiple[m] * periods /
-                            static_cast<double>(f.size());
-        std::complex<double> sum = 0.0;
-        for (Eigen::Index k = 0; k < f.size(); ++k) sum += f(k) * std::polar(1.0, -step * k);
-        const double newmark = 2.0 * std::abs(sum) / static_cast<double>(f.size());
-        const double hbm = s.mesh_force_harmonics[m][l - 1];
-        orders.push_back({{"order", l},
-                          {"newmark_n", newmark},
-                          {"steady_state_n", hbm},
-                          {"difference_relative_to_order_1",
-                           scale > 0 ? std::abs(newmark - hbm) / scale : 0.0}});
-      }
-      harmonics[model.meshes()[m].name] = orders;
-    }
-  }
-  summary.results["time"] = {{"status", r.status},
-                             {"speed_rpm", speed / kRpm},
-                             {"time_step_s", r.time_step},
-                             {"steps", r.steps},
-                             {"wall_time_s", seconds},
-                             {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
-                             {"max_difference_to_steady_state_relative_to_p2p", differences},
-                             {"mesh_force_harmonics", harmonics}};
-  text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s\n", r.steps, r.time_step,
-                      seconds);
-  detail::writeTrainProbes(model, analysis, speed, r, compare ? &s : nullptr, result, text);
-  record = r;
-  return 0;
-}
-
 /// The gearbox file an analysis file names: its gearbox.file, or the last --set of it (a sweep
 /// over gearbox files); "" when the gearbox is inline.
 std::string gearboxFileOf(std::string_view text, const std::string& source,
@@ -525,16 +443,32 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
       model.spec().name.empty() ? loaded.gearbox_source : model.spec().name, model.bodies().size(),
       model.meshes().size(), model.dofCount(), toString(model.spec().dofs));
   writeKinematics(model, result, summary, text);
+  // What has finished is shown at once (warnings, then the report's new lines): a run of
+  // several analyses may take minutes.
+  std::size_t warned = 0;
+  std::set<std::string> shown;  // one line per warning: modal and time find the same modes
+  const auto flush = [&] {
+    for (; warned < summary.warnings.size(); ++warned) {
+      if (shown.insert(summary.warnings[warned]).second) context.warning(summary.warnings[warned]);
+    }
+    if (context.print && text.size() > result.printed) {
+      context.print(text.substr(result.printed));
+      result.printed = text.size();
+    }
+  };
+  flush();
   int code = 0;
   std::string status = "ok";
   std::optional<TrainTimeResponse> time_record;  // `time`'s Newmark run, reused by `stats`
   for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
+    flush();
     if (analysis == "static") runStatic(model, result, summary, text);
     if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
     if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text, context);
     if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
-      code = std::max(code, runTime(model, loaded.analysis, result, summary, text, time_record));
+      code = std::max(
+          code, detail::runTrainTime(model, loaded.analysis, result, text, time_record, context));
     if (analysis == "runup") {
       code = std::max(code, detail::runTrainRunUp(model, loaded.analysis, result, text, context));
     }
@@ -551,7 +485,12 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   if (status == "ok" && code != 0) status = "diverged";
   summary.status = status;
   summary.results["wall_time_s"] = secondsSince(start);
-  for (const auto& w : summary.warnings) context.warning(w);
+  flush();
+  std::vector<std::string> once;
+  for (const auto& w : summary.warnings) {
+    if (std::find(once.begin(), once.end(), w) == once.end()) once.push_back(w);
+  }
+  summary.warnings = once;
   result.report = text;
   result.numerical_failure = code != 0;
   result.wall_time_s = secondsSince(start);

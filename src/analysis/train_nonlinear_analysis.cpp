@@ -22,6 +22,8 @@
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/units.h"
+#include "train_undamped_modes.h"
+#include "wall_clock.h"
 
 namespace geardyn::analysis::detail {
 namespace {
@@ -33,11 +35,6 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// the meshes do not excite it, and it does not set the continuation steps.
 constexpr double kExcitedMeshEnergy = 1e-3;
 using Json = nlohmann::ordered_json;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// What one continuation point reports (per mesh: p2p of δ and of the contact force, the
 /// largest force, whether the teeth separate and whether they hit the back flank; per clearance
@@ -438,6 +435,15 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
   TrainModalOptions modal;
   modal.keep_rigid = false;
   const auto modes = trainModes(model, hbm.inputSpeed(0.5 * (sweep.start + sweep.stop)), modal);
+  const std::string undamped =
+      undampedModesWarning(model, trainUndampedModes(model, modes),
+                           hbm.inputSpeed(0.5 * (sweep.start + sweep.stop)) / kRpm);
+  if (!undamped.empty()) {
+    summary.warnings.push_back(fmt::format(
+        "{} (their Floquet multipliers lie on the unit circle: within {:g} of it a point counts "
+        "as stable, not as a bifurcation)",
+        undamped, kNeutralMultiplier));
+  }
   const Json step_source = deriveTrainSteps(sweep, modes, options.harmonics, scale);
   checkSteps(sweep, scale);
   if (step_source["narrowest_resonance"].is_null()) {

@@ -207,8 +207,7 @@ int runTrainRunUp(const GearTrainModel& model, const config::Config& analysis,
       steps, model.dofCount(), static_cast<int>(channels.size()),
       static_cast<int>(model.meshes().size()), "runup.duration",
       fmt::format("{:g} s{}", options.ramp.duration, derived_duration ? " (derived)" : ""));
-  if (const std::string note = checkRunEstimate(estimate, "train runup"); !note.empty())
-    context.warning(note);
+  context.note(checkRunEstimate(estimate, "train runup"));
   if (!derived_duration && options.ramp.duration < defaults.duration) {
     summary.warnings.push_back(fmt::format(
         "runup: duration {:.3g} s is shorter than the quasi-stationary {:.3g} s the resonances "

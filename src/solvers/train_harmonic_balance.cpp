@@ -504,7 +504,7 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
     }
   }
   point.max_floquet_real = std::log(largest) / T;
-  point.stable = largest < 1.0 + 1e-9;
+  point.stable = largest <= 1.0 + kNeutralMultiplier;
 }
 
 }  // namespace geardyn

@@ -243,8 +243,8 @@ void TrainHarmonicBalance::classifyHill(HarmonicBalancePoint& point, bool sample
   const double T = 2.0 * std::numbers::pi / point.omega;
   point.max_floquet_real = critical.real();
   point.critical_multiplier = detail::floquetMultiplier(critical, point.omega);
-  // The monodromy's threshold |μ| < 1 + 1e-9, as an exponent.
-  point.stable = point.max_floquet_real < 1e-9 / T;
+  // The monodromy's threshold |μ| <= 1 + kNeutralMultiplier, as an exponent.
+  point.stable = point.max_floquet_real <= kNeutralMultiplier / T;
 }
 
 }  // namespace geardyn

@@ -3,8 +3,10 @@
 #include "geardyn/solvers/train_time.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
+#include <limits>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_modal.h"
@@ -213,8 +215,8 @@ double TrainNewmarkStepper::meshForce(int mesh) const {
   return k_(mesh) * m.contactDeflection(m.deflection(q_) - e_(mesh));
 }
 
-TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
-                                         const TrainTimeOptions& options) {
+TrainTimePlan planTrainTimeResponse(const GearTrainModel& model, double input_speed,
+                                    const TrainTimeOptions& options) {
   options.validate();
   if (model.meshes().empty()) throw InputError("meshes", "", "a train with at least one mesh");
   if (!(std::abs(input_speed) > 0.0)) {
@@ -223,37 +225,68 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
   double fastest = 0.0;
   for (const TrainMesh& m : model.meshes()) fastest = std::max(fastest, m.frequency_ratio);
   fastest *= std::abs(input_speed);
+  TrainTimePlan plan;
   // The common period of all meshes (1e9 base harmonics: no limit for the time domain).
-  const double base = trainBaseFrequency(model, 1, 1000000000).ratio * std::abs(input_speed);
-  const double period = 1.0 / base;
-  double dt =
+  plan.period = 1.0 / (trainBaseFrequency(model, 1, 1000000000).ratio * std::abs(input_speed));
+  const double dt =
       options.time_step > 0 ? options.time_step : 1.0 / (fastest * options.steps_per_mesh_period);
-  const long long per_period = static_cast<long long>(std::ceil(period / dt - 1e-9));
-  dt = period / static_cast<double>(per_period);  // whole steps per common period
-
-  double duration = options.duration;
-  if (duration == 0.0) {
-    // Long enough for the slowest-decaying elastic mode to fall by 1e-6, then the window.
-    double decay = HUGE_VAL;
-    for (const TrainMode& mode : trainModes(model, input_speed, {0, -1.0, false})) {
-      if (mode.eigenvalue.real() < 0.0) decay = std::min(decay, -mode.eigenvalue.real());
+  plan.steps_per_period = static_cast<long long>(std::ceil(plan.period / dt - 1e-9));
+  plan.time_step = plan.period / static_cast<double>(plan.steps_per_period);  // whole steps
+  plan.duration = options.duration;
+  if (plan.duration == 0.0) {
+    plan.transient = trainTransient(model, input_speed);
+    if (!std::isfinite(plan.transient->decay_time)) {
+      plan.duration = HUGE_VAL;
+      plan.steps = std::numeric_limits<long long>::max();
+      return plan;  // solveTrainTimeResponse refuses it; the caller may name the keys first
     }
-    if (!std::isfinite(decay) || decay <= 0.0) {
-      throw InputError("time.duration", "0 (derived)",
-                       "a duration > 0 s: the train has an undamped mode, so no transient decays "
-                       "(add mesh or bearing damping, or give the duration)");
-    }
-    duration = std::log(1e6) / decay + options.record_periods * period;
+    plan.duration = plan.transient->decay_time + options.record_periods * plan.period;
   }
-  const long long periods = std::max<long long>(
-      options.record_periods, static_cast<long long>(std::ceil(duration / period)));
-  const long long steps = periods * per_period;
-  if (steps > 200000000LL) {
+  const double periods =
+      std::max<double>(options.record_periods, std::ceil(plan.duration / plan.period));
+  plan.steps = periods * static_cast<double>(plan.steps_per_period) > 9e18
+                   ? std::numeric_limits<long long>::max()
+                   : static_cast<long long>(periods) * plan.steps_per_period;
+  return plan;
+}
+
+TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
+                                         const TrainTimeOptions& options,
+                                         const ProgressCallback& progress) {
+  return solveTrainTimeResponse(model, input_speed, options,
+                                planTrainTimeResponse(model, input_speed, options), progress);
+}
+
+TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
+                                         const TrainTimeOptions& options, const TrainTimePlan& plan,
+                                         const ProgressCallback& progress) {
+  const std::optional<TrainTransient>& transient = plan.transient;
+  if (transient && !std::isfinite(transient->decay_time)) {
+    const auto excited = std::find_if(transient->undamped.begin(), transient->undamped.end(),
+                                      [](const TrainUndampedMode& m) { return m.excited; });
+    throw InputError("time.duration", "0 (derived)",
+                     fmt::format("a duration > 0 s: the mode at {:.4g} Hz has no damping and the "
+                                 "meshes excite it, so its transient never decays (damp it, or "
+                                 "give time.duration)",
+                                 excited->frequency));
+  }
+  const double dt = plan.time_step;
+  const long long per_period = plan.steps_per_period;
+  const long long steps = plan.steps;
+  if (steps > kMaxTrainTimeSteps) {
+    const std::string given =
+        transient
+            ? fmt::format(
+                  "0 (derived: {:.4g} s for the mode at {:.4g} Hz with damping "
+                  "ratio {:.3g} to decay)",
+                  plan.duration, transient->slowest_frequency, transient->slowest_damping_ratio)
+            : fmt::format("{:g} s", plan.duration);
     throw InputError(
-        "time.duration", fmt::format("{:g} s", duration),
-        fmt::format("fewer than 2e8 steps of {:.3g} s (this run needs {:.3g}); shorten "
-                    "it or coarsen time.steps_per_mesh_period",
-                    dt, static_cast<double>(steps)));
+        "time.duration", given,
+        fmt::format("fewer than {:.0e} steps of {:.3g} s (this run needs {:.3g}); {}",
+                    static_cast<double>(kMaxTrainTimeSteps), dt, static_cast<double>(steps),
+                    transient ? "damp that mode or give a shorter time.duration"
+                              : "shorten it or coarsen time.steps_per_mesh_period"));
   }
   TrainNewmarkStepper stepper(model, input_speed, dt, options.newmark);
   const int n = model.dofCount();
@@ -263,6 +296,7 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
 
   TrainTimeResponse r;
   r.time_step = dt;
+  r.transient = transient;
   const long long recorded = options.record_periods * per_period;
   const long long first = steps - recorded;
   r.t.resize(recorded);
@@ -274,6 +308,8 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
   }
   for (long long k = 1; k <= steps; ++k) {
     stepper.step();
+    if (k % per_period == 0 && progress)
+      progress(static_cast<double>(k), static_cast<double>(steps));
     if (k % per_period == 0 && !stepper.displacement().allFinite()) {
       r.status = "diverged";
       r.message = fmt::format("Newmark diverged at t = {:.6g} s", stepper.time());

@@ -87,8 +87,12 @@ def test_long_runs_show_progress_with_eta_unless_quiet(tmp_path):
     quiet = run_env("simulate", SIMULATE, "--out", tmp_path / "b", "--progress", "--quiet",
                     *LONG_SIMULATE, env=PROGRESS_NOW)
     assert "ETA" not in quiet.stderr
+    # Issue #33 item 1: on by default, also when stderr is not a terminal; --no-progress: off.
     piped = run_env("simulate", SIMULATE, "--out", tmp_path / "c", *LONG_SIMULATE, env=PROGRESS_NOW)
-    assert "ETA" not in piped.stderr  # stderr is not a terminal and no --progress
+    assert "ETA" in piped.stderr
+    off = run_env("simulate", SIMULATE, "--out", tmp_path / "d", "--no-progress", *LONG_SIMULATE,
+                  env=PROGRESS_NOW)
+    assert "ETA" not in off.stderr
     # The same reporter in the other long commands.
     for command, config, extra, label in [
             ("stats", STATS_MC, ["--set", "monte_carlo.samples=400"], "stats: Monte Carlo: "),

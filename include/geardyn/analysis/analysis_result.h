@@ -30,6 +30,13 @@ struct AnalysisContext {
   /// Called with each design or numerical warning as it arises (they are also in
   /// summary.warnings). Unset: not called.
   std::function<void(const std::string&)> warn;
+  /// Called with each finished part of the report (whole lines) as the analysis goes, so a long
+  /// run shows what it has done; AnalysisResult::printed counts what was passed. Unset: the
+  /// report is only in AnalysisResult::report.
+  std::function<void(const std::string&)> print;
+  /// Called with notes for the person running it (what a long run is estimated to need, from
+  /// analysis::checkRunEstimate); the CLI prints them on stderr unless --quiet. Unset: dropped.
+  std::function<void(const std::string&)> inform;
 
   /// Called before a stage that allocates or runs in proportion to its configuration
   /// ("simulate", "hbm", "rotor_time", "rotor_fe_time" with `size` = DOFs, "stats_monte_carlo",
@@ -44,6 +51,9 @@ struct AnalysisContext {
   }
   void warning(const std::string& text) const {
     if (warn) warn(text);
+  }
+  void note(const std::string& text) const {
+    if (inform && !text.empty()) inform(text);
   }
 };
 
@@ -67,6 +77,8 @@ struct AnalysisResult {
   std::vector<ResultFile> files;         ///< written after the tables
   /// Headline lines for a person (the CLI prints them; Python's repr shows them).
   std::string report;
+  /// The leading characters of `report` already passed to AnalysisContext::print.
+  std::size_t printed = 0;
   /// Non-convergence and similar messages (the CLI prints them on stderr).
   std::vector<std::string> errors;
   /// The numerical method failed (summary.status says how): the CLI exits with code 1.

@@ -28,6 +28,10 @@ RunEstimate estimateFeRotorTime(const config::Config& config, int dofs);
 /// `value` name what drives the size (runup.duration).
 RunEstimate estimateTrainRunUp(double steps, int dofs, int channels, int meshes,
                                const std::string& key, const std::string& value);
+/// train time: `steps` Newmark steps of a train of `dofs` DOFs, `recorded` steps kept (the DOFs,
+/// with their rates when `rates`, and the mesh forces).
+RunEstimate estimateTrainTime(double steps, int dofs, double recorded, bool rates, int meshes,
+                              const std::string& key, const std::string& value);
 /// The estimate of a stage an analysis reports through AnalysisContext::check_budget
 /// ("simulate", "stats_time", "hbm", "rotor_time", "rotor_fe_time" with `size` = DOFs,
 /// "stats_monte_carlo" with `size` = threads); {} for other stages.

@@ -23,6 +23,14 @@ namespace geardyn {
 
 enum class StabilityMethod { kHill, kMonodromy };
 
+/// Floquet multipliers within this of the unit circle (|μ| <= 1 + kNeutralMultiplier, or an
+/// exponent's Re λ T <= kNeutralMultiplier) are neutral, not unstable: an undamped mode of a
+/// train (a bearing without damping, a shaft mode the meshes do not drive) has |μ| = 1, and
+/// the monodromy matrix's round-off puts it 1e-9 to 1e-8 above (Newmark's product over N steps,
+/// then a non-symmetric eigenproblem whose error on a near-double eigenvalue is O(√ε)). A
+/// growth of 1e-6 per period e-folds only after 1e6 periods.
+inline constexpr double kNeutralMultiplier = 1e-6;
+
 /// One periodic solution.
 struct HarmonicBalancePoint {
   double omega = 0.0;  ///< base angular frequency ω [rad/s] (nondimensional models: Ω)

@@ -35,8 +35,10 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/progress.h"
 #include "geardyn/solvers/detail/sparse_lu_factors.h"
 #include "geardyn/solvers/newmark.h"
+#include "geardyn/solvers/train_transient.h"
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {
@@ -66,6 +68,8 @@ struct TrainTimeResponse {
   long long steps = 0;
   std::string status = "completed";  ///< or "diverged"
   std::string message;
+  /// The transient estimate the derived duration came from (TrainTimeOptions::duration = 0).
+  std::optional<TrainTransient> transient;
 };
 
 /// DOF count from which the Newmark stepper works with sparse matrices.
@@ -130,7 +134,30 @@ class TrainNewmarkStepper {
   Eigen::VectorXd q_, v_, a_, f_, rhs_, y_, w_, w_solved_, dk_, ke_, k_, e_;
 };
 
+/// Steps beyond which a time run is refused (InputError naming time.duration).
+inline constexpr long long kMaxTrainTimeSteps = 200000000LL;
+
+/// What a time run will do, before it allocates: the step (whole steps per common period), the
+/// duration (derived from the transient when TrainTimeOptions::duration = 0) and the steps.
+struct TrainTimePlan {
+  double period = 0.0;     ///< the common period of the meshes [s]
+  double time_step = 0.0;  ///< Δt [s]
+  long long steps_per_period = 0;
+  double duration = 0.0;  ///< [s]; +inf when a mode the meshes excite has no damping
+  long long steps = 0;    ///< saturates at the largest long long
+  std::optional<TrainTransient> transient;  ///< when the duration is derived
+};
+TrainTimePlan planTrainTimeResponse(const GearTrainModel& model, double input_speed,
+                                    const TrainTimeOptions& options);
+
+/// The run `plan` describes (InputError when it has no finite duration or more than
+/// kMaxTrainTimeSteps steps). `progress` (steps done, all) is called once per common period.
 TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
-                                         const TrainTimeOptions& options);
+                                         const TrainTimeOptions& options, const TrainTimePlan& plan,
+                                         const ProgressCallback& progress = {});
+/// planTrainTimeResponse, then the run.
+TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double input_speed,
+                                         const TrainTimeOptions& options,
+                                         const ProgressCallback& progress = {});
 
 }  // namespace geardyn

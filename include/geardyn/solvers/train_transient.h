@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// How long a gear train's transient lasts and which of its modes have no damping: the derived
+/// duration of a time run (train_time.h) and the warnings about undamped modes.
+
+#include <string>
+#include <vector>
+
+#include "geardyn/solvers/train_modal.h"
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+
+/// A mode with no damping: |ζ| within round-off of 0 (1e-9), so its free vibration never decays.
+struct TrainUndampedMode {
+  double frequency = 0.0;  ///< [Hz]
+  /// The meshes excite it: its share of strain energy in the meshes is above round-off, so
+  /// its modal force from the mesh excitation is not zero (see TrainTransient).
+  bool excited = false;
+  /// The elements (TrainElement::name) and meshes holding 10 % or more of its strain energy:
+  /// where damping would act on it (neither: its strain is in flexible shafts).
+  std::vector<std::string> elements, meshes;
+};
+
+/// The transient of a time run at constant speed started from the mean static deflection.
+/// The excitation (stiffness variation and transmission error) acts through the mesh
+/// deflections v_mᵀq only, so mode j starts with an amplitude proportional to its modal force
+/// Σ_m v_mᵀφ_j (…), and (v_mᵀφ_j)² = s_mj φ_jᴴK̄φ_j / k̄_m with s_mj its strain-energy share in
+/// mesh m: relative to the modes the meshes drive, mode j starts at about √s_j (s_j = Σ_m
+/// s_mj). It has decayed to 1e-6 of the response after ln(√s_j / 1e-6) / σ_j (σ_j = −Re λ_j);
+/// modes with √s_j ≤ 1e-6 start below that and are not waited for.
+struct TrainTransient {
+  /// The longest of those times [s]; +inf when a mode the meshes excite has no damping, 0 when
+  /// no mode needs one.
+  double decay_time = 0.0;
+  double slowest_frequency = 0.0;      ///< [Hz] of the mode that sets decay_time
+  double slowest_damping_ratio = 0.0;  ///< [-]
+  std::vector<TrainUndampedMode> undamped;
+};
+
+/// The undamped elastic modes among `modes` (rigid-body and divergent modes left out).
+std::vector<TrainUndampedMode> trainUndampedModes(const GearTrainModel& model,
+                                                  const std::vector<TrainMode>& modes);
+
+/// The transient estimate from the damped modes at input speed Ω [rad/s].
+TrainTransient trainTransient(const GearTrainModel& model, double input_speed);
+
+}  // namespace geardyn

@@ -1,0 +1,223 @@
+/// The `time` analysis of `geardyn train` (see train_time_analysis.h).
+
+#include "train_time_analysis.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "geardyn/analysis/run_budget.h"
+#include "geardyn/analysis/run_estimates.h"
+#include "geardyn/config/train_analysis.h"
+#include "geardyn/error.h"
+#include "geardyn/io/csv_table.h"
+#include "geardyn/solvers/train_response.h"
+#include "geardyn/units.h"
+#include "train_probes_analysis.h"
+#include "train_undamped_modes.h"
+#include "wall_clock.h"
+
+namespace geardyn::analysis::detail {
+namespace {
+
+using geardyn::units::kRpm;
+using Json = nlohmann::ordered_json;
+
+/// How the derived duration came about (null when time.duration was given).
+Json transientJson(const TrainTimeResponse& r) {
+  if (!r.transient) return nullptr;
+  return {{"decay_time_s", r.transient->decay_time},
+          {"slowest_mode_frequency_hz", r.transient->slowest_frequency},
+          {"slowest_mode_damping_ratio", r.transient->slowest_damping_ratio},
+          {"undamped_modes_hz", [&] {
+             Json list = Json::array();
+             for (const TrainUndampedMode& m : r.transient->undamped) list.push_back(m.frequency);
+             return list;
+           }()}};
+}
+
+/// The plan of the time run, refused before it allocates when a mode the meshes drive has no
+/// damping (naming the keys that would damp it) or when it would not fit in memory.
+TrainTimePlan planTime(const GearTrainModel& model, double speed, const TrainTimeOptions& options,
+                       const AnalysisContext& context) {
+  const TrainTimePlan plan = planTrainTimeResponse(model, speed, options);
+  if (plan.transient) {
+    for (const TrainUndampedMode& mode : plan.transient->undamped) {
+      if (!mode.excited) continue;
+      std::vector<std::string> keys = dampingKeysOf(model, mode);
+      keys.push_back("gearbox.mass_proportional_damping");
+      throw InputError("time.duration", "0 (derived)",
+                       fmt::format("a duration > 0 s: the mode at {:.4g} Hz has no damping and the "
+                                   "meshes excite it, so its transient never decays; damp it with "
+                                   "{} or give time.duration",
+                                   mode.frequency, fmt::join(keys, ", ")));
+    }
+  }
+  if (plan.steps <= kMaxTrainTimeSteps) {
+    RunEstimate estimate = estimateTrainTime(
+        static_cast<double>(plan.steps), model.dofCount(),
+        static_cast<double>(options.record_periods * plan.steps_per_period), options.record_rates,
+        static_cast<int>(model.meshes().size()), "time.duration",
+        options.duration > 0.0 ? fmt::format("{:g} s", options.duration)
+                               : fmt::format("0 (derived: {:.4g} s)", plan.duration));
+    if (estimate.bytes > memoryLimitBytes()) {  // the kept window, not the duration, is large
+      estimate.key = "time.record_periods";
+      estimate.value = std::to_string(options.record_periods);
+    }
+    context.note(checkRunEstimate(estimate, "train time"));
+  }
+  return plan;
+}
+
+}  // namespace
+
+int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
+                 AnalysisResult& result, std::string& text,
+                 std::optional<TrainTimeResponse>& record, const AnalysisContext& context) {
+  io::RunSummary& summary = result.summary;
+  const auto start = Clock::now();
+  const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
+  checkTrainProbes(model, analysis, speed);
+  const TrainTimeOptions options = config::trainTimeOptionsFromConfig(analysis);
+  const TrainTimePlan plan = planTime(model, speed, options, context);
+  const TrainTimeResponse r = solveTrainTimeResponse(
+      model, speed, options, plan, context.progressFor("train: time", "Newmark steps"));
+  const double seconds = secondsSince(start);
+  if (r.status != "completed") {
+    summary.warnings.push_back(r.message);
+    summary.results["time"] = {{"status", r.status}, {"steps", r.steps}};
+    return 1;
+  }
+  // The frequency-domain steady state on the same window, for the comparison a user would make.
+  TrainSteadyOptions steady;
+  steady.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
+  steady.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
+  Json comparison = nullptr;
+  std::vector<std::string> header{"t_s"};
+  for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
+  bool compare = true;
+  TrainSteadyState s;
+  const auto steady_start = Clock::now();
+  // The comparison is a check, not the result: it is skipped when the common period needs
+  // more base harmonics than this (memory and time grow with their number times the DOFs).
+  constexpr int kComparisonHarmonics = 512;
+  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1000000000);
+  const int multiple = *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end());
+  if (static_cast<long long>(multiple) * steady.mesh_harmonics > kComparisonHarmonics) {
+    compare = false;
+    summary.warnings.push_back(fmt::format(
+        "time: no frequency-domain comparison: the meshes repeat only every {} periods of the "
+        "fastest mesh, so time.mesh_harmonics = {} needs {} harmonics of the common period "
+        "(more than {} for a check)",
+        multiple, steady.mesh_harmonics, static_cast<long long>(multiple) * steady.mesh_harmonics,
+        kComparisonHarmonics));
+  }
+  try {
+    if (compare) s = solveTrainSteadyState(model, speed, steady);
+  } catch (const InputError& e) {
+    compare = false;
+    summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
+  }
+  if (compare) {
+    for (const TrainMesh& m : model.meshes())
+      header.push_back("steady_mesh_force_" + m.name + "_normal_n");
+  }
+  io::CsvTable table(header);
+  Eigen::MatrixXd q;
+  if (compare) q = s.displacement(r.t);
+  Json differences = Json::object();
+  std::vector<double> worst(model.meshes().size(), 0.0);
+  for (Eigen::Index k = 0; k < r.t.size(); ++k) {
+    std::vector<io::CsvCell> row{r.t(k)};
+    for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) row.push_back(r.mesh_force(k, m));
+    if (compare) {
+      for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+        const double f = model.meshes()[m].force(r.t(k), speed, q.row(k).transpose());
+        worst[m] = std::max(worst[m], std::abs(f - r.mesh_force(k, static_cast<Eigen::Index>(m))));
+        row.push_back(f);
+      }
+    }
+    table.addRow(row);
+  }
+  result.addTable("time_history.csv", table);
+  // Mesh-force harmonics of the Newmark window (whole common periods) against the balance's:
+  // pointwise values near a stiffness jump converge slowly in both methods (Gibbs, step size),
+  // the harmonics at the mesh orders quickly.
+  Json harmonics = Json::object();
+  if (compare) {
+    const int periods = static_cast<int>(analysis.integer("time.record_periods"));
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      const double p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
+      differences[model.meshes()[m].name] = p2p > 0 ? worst[m] / p2p : 0.0;
+      const Eigen::VectorXd f = r.mesh_force.col(static_cast<Eigen::Index>(m));
+      const double scale = s.mesh_force_harmonics[m][0];
+      Json orders = Json::array();
+      for (int l = 1; l <= 3 && l <= static_cast<int>(s.mesh_force_harmonics[m].size()); ++l) {
+        const double step = 2.0 * std::numbers::pi * l * s.mesh_multiple[m] * periods /
+                            static_cast<double>(f.size());
+        std::complex<double> sum = 0.0;
+        for (Eigen::Index k = 0; k < f.size(); ++k) sum += f(k) * std::polar(1.0, -step * k);
+        const double newmark = 2.0 * std::abs(sum) / static_cast<double>(f.size());
+        const double hbm = s.mesh_force_harmonics[m][l - 1];
+        orders.push_back({{"order", l},
+                          {"newmark_n", newmark},
+                          {"steady_state_n", hbm},
+                          {"difference_relative_to_order_1",
+                           scale > 0 ? std::abs(newmark - hbm) / scale : 0.0}});
+      }
+      harmonics[model.meshes()[m].name] = orders;
+    }
+  }
+  // Newmark from the static state and the balance are two solutions of one periodic problem:
+  // beyond 5 % of p2p one of them has not converged (a transient that has not decayed, a step
+  // too coarse for the stiffness jumps, too few harmonics).
+  constexpr double kAgreement = 0.05;
+  std::string status = r.status;
+  std::vector<std::string> disagreeing;
+  for (const auto& [mesh, difference] : differences.items()) {
+    if (difference.get<double>() > kAgreement) {
+      disagreeing.push_back(fmt::format("{} {:.3g} %", mesh, 100.0 * difference.get<double>()));
+    }
+  }
+  if (!disagreeing.empty()) {
+    status = "differs_from_steady_state";
+    summary.warnings.push_back(fmt::format(
+        "time: Newmark and the frequency-domain steady state differ by more than {:g} % of the "
+        "mesh force's p2p ({}): one has not converged; raise time.steps_per_mesh_period and "
+        "time.mesh_harmonics, or give a longer time.duration",
+        100.0 * kAgreement, fmt::join(disagreeing, ", ")));
+  }
+  const double steady_seconds = compare ? secondsSince(steady_start) : 0.0;
+  summary.results["time"] = {{"status", status},
+                             {"speed_rpm", speed / kRpm},
+                             {"time_step_s", r.time_step},
+                             {"steps", r.steps},
+                             {"wall_time_s", seconds},
+                             {"steady_state_wall_time_s", steady_seconds},
+                             {"duration_s", static_cast<double>(r.steps) * r.time_step},
+                             {"transient", transientJson(r)},
+                             {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
+                             {"max_difference_to_steady_state_relative_to_p2p", differences},
+                             {"mesh_force_harmonics", harmonics}};
+  if (r.transient) {
+    const std::string undamped = undampedModesWarning(model, r.transient->undamped, speed / kRpm);
+    if (!undamped.empty()) summary.warnings.push_back(undamped);
+  }
+  text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s{}\n", r.steps, r.time_step,
+                      seconds,
+                      compare ? fmt::format("; steady state for the comparison ({} base "
+                                            "harmonics) in {:.2f} s",
+                                            s.harmonics, steady_seconds)
+                              : std::string());
+  writeTrainProbes(model, analysis, speed, r, compare ? &s : nullptr, result, text);
+  record = r;
+  return 0;
+}
+
+}  // namespace geardyn::analysis::detail
