@@ -290,15 +290,6 @@ std::string gearsAndShafts(const Config& config, const GearPairKeys& k, const Ge
 
 }  // namespace
 
-std::string gearPairGearboxObstacle(const Config& config) {
-  if (config.string("model.type") == "gear_pair_ltca" && helical(config)) {
-    return "pinion.helix_angle_deg: a helical pair's tooth-pair contact elements act along the "
-           "contact normal in the gearbox, the gear-pair model's along the transverse line of "
-           "action";
-  }
-  return "";
-}
-
 std::string gearPairGearboxToml(const Config& config, const GearPairKeys& k) {
   GearPairSpec pair_spec;
   if (k.pair) {
@@ -341,17 +332,10 @@ std::string gearPairGearbox(const Config& config) {
                      "\"model\" for --print-gearbox: only a [model] describes a gear pair");
   }
   const GearPairKeys keys = readGearPairKeys(config, false);
-  std::string why = gearPairGearboxObstacle(config);
-  if (why.empty() && !keys.extra_forces.empty()) {
-    why =
-        "model.extra_force_amplitudes: the gearbox has no extra harmonic force (the gear-pair "
-        "commands add them to the reduced model)";
-  }
-  if (!why.empty()) {
-    const auto colon = why.find(':');
-    throw InputError(why.substr(0, why.find_first_of(" :")), "(given)",
-                     "no gearbox translation for --print-gearbox yet" +
-                         (colon == std::string::npos ? std::string() : why.substr(colon)));
+  if (!keys.extra_forces.empty()) {
+    throw InputError("model.extra_force_amplitudes", "(given)",
+                     "no gearbox translation for --print-gearbox yet: the gearbox has no extra "
+                     "harmonic force (the gear-pair commands add them to the reduced model)");
   }
   return gearPairGearboxToml(config, keys);
 }

@@ -168,8 +168,9 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .choices({"normal", "transverse"})
       .defaultValue("normal")
       .doc(
-          "the plane of the stiffness model's k, and of the dashpot, transmission error and "
-          "backlash given: normal (along the contact normal, where the mesh acts) or transverse "
+          "the plane of the stiffness model's k, and of the dashpot, transmission error, "
+          "backlash and tooth-pair elements given: normal (along the contact normal, where the "
+          "mesh acts) or transverse "
           "(along the transverse line of action, as the gear-pair commands read every model: "
           "a helical mesh then acts with k / cos^2 beta_b along the normal; "
           "docs/theory/mesh_stiffness.md)");

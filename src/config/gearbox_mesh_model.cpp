@@ -11,6 +11,7 @@
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
+#include "geardyn/models/scaled_contact_elements.h"
 #include "geardyn/stiffness/api_stiffness.h"
 #include "geardyn/stiffness/scaled_stiffness.h"
 #include "geardyn/stiffness/tabulated_stiffness.h"
@@ -268,9 +269,7 @@ void transverseToNormal(TrainMeshSpec& mesh, double base_helix, const std::strin
   const double cb = std::cos(base_helix);
   if (cb == 1.0) return;  // spur: the planes agree
   if (mesh.contact.tooth_pairs) {
-    throw InputError(prefix + "stiffness_plane", "\"transverse\"",
-                     "\"normal\" with contact = \"tooth_pairs\" on a helical mesh: the "
-                     "tooth-pair elements are written along the contact normal");
+    mesh.contact.tooth_pairs = scaledContactElements(mesh.contact.tooth_pairs, 1.0 / (cb * cb), cb);
   }
   mesh.stiffness = scaledMeshStiffness(mesh.stiffness, 1.0 / (cb * cb));
   if (mesh.damping) *mesh.damping /= cb * cb;  // a ratio ζ is the same in both planes

@@ -52,16 +52,12 @@ GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed) 
   GearPairModelBuild b;
   b.nondimensional = keys.nondimensional;
   b.warnings = std::move(keys.warnings);
-  if (gearPairGearboxObstacle(config).empty()) {
-    // The file's gearbox, read by the gearbox reader and reduced: the gear-pair solvers are
-    // the one-pair train's fast path (system/sdof_reduction.h).
-    b.spec = gearPairFromGearbox(gearPairGearboxToml(config, keys), config.source() + " (gearbox)",
-                                 &b.warnings);
-    // The gearbox has no harmonic load yet: the file's extra forces act on the reduced model.
-    b.spec.extra_forces = keys.extra_forces;
-  } else {
-    b.spec = directGearPairModel(config, keys, b.warnings);
-  }
+  // The file's gearbox, read by the gearbox reader and reduced: the gear-pair solvers are the
+  // one-pair train's fast path (system/sdof_reduction.h).
+  b.spec = gearPairFromGearbox(gearPairGearboxToml(config, keys), config.source() + " (gearbox)",
+                               &b.warnings);
+  // The gearbox has no harmonic load yet: the file's extra forces act on the reduced model.
+  b.spec.extra_forces = keys.extra_forces;
   GearPairModel{b.spec};  // bad values named by the gear-pair model, in the file's terms
   deriveFromModel(config, b);
   return b;

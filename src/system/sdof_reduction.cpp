@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "geardyn/error.h"
+#include "geardyn/models/scaled_contact_elements.h"
 #include "geardyn/stiffness/scaled_stiffness.h"
 
 namespace geardyn {
@@ -29,12 +30,6 @@ std::string sdofReductionObstacle(const GearTrainModel& train) {
   if (train.bodies().size() != 2) {
     return fmt::format("{} bodies: the gear-pair model has the two gears' rigid shafts",
                        train.bodies().size());
-  }
-  if (m.base_helix_angle != 0.0 && m.contact.tooth_pairs) {
-    return fmt::format(
-        "meshes.{} is helical (β_b = {:g} rad) with tooth-pair contact elements: they act along "
-        "the contact normal, the gear-pair model along the transverse line of action",
-        m.name, m.base_helix_angle);
   }
   for (const auto& b : spec.bearings) {
     if (b.k_torsion != 0.0 || b.c_torsion != 0.0) {
@@ -90,7 +85,7 @@ GearPairModelSpec sdofReduction(const GearTrainModel& train) {
   s.transmission_error = cb == 1.0 ? m.transmission_error : m.transmission_error.scaled(1.0 / cb);
   if (m.contact.tooth_pairs) {
     s.contact = ContactLaw::kOneSided;
-    s.contact_elements = m.contact.tooth_pairs;
+    s.contact_elements = scaledContactElements(m.contact.tooth_pairs, cb2, 1.0 / cb);
   } else {
     s.contact = m.contact.law;
     // Full normal clearance j (free play −j ≤ δ − e ≤ 0) → the SDOF half clearance b = j / 2.

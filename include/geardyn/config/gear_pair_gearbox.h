@@ -17,12 +17,6 @@
 
 namespace geardyn::config {
 
-/// Why the model of `config` has no gearbox form yet, as "key: reason" (empty: it has one):
-/// helical tooth-pair contact elements (model.type = "gear_pair_ltca"; the gearbox's act along
-/// the contact normal). Such files are read by the same steps (config/gear_pair_keys.h) into the
-/// gear-pair model directly.
-std::string gearPairGearboxObstacle(const Config& config);
-
 /// The gearbox TOML text of the keys read from `config`: the equivalent mass as the two
 /// shafts' polar inertias I = 2 m_e r_b² (gear bodies off), the mean force as the input torque
 /// F r_b, the mesh frequency as the pinion speed 60 f_m / z [rpm], the stiffness, damping (the
@@ -35,8 +29,8 @@ std::string gearPairGearboxObstacle(const Config& config);
 std::string gearPairGearboxToml(const Config& config, const GearPairKeys& keys);
 
 /// `geardyn simulate|hbm|stats FILE --print-gearbox`: the translated gearbox text. InputError
-/// naming the key when the file's form has no translation (gearPairGearboxObstacle, extra
-/// harmonic forces) or holds no gear-pair model (stats with source = "moments" or "csv").
+/// naming the key when the file has extra harmonic forces (no gearbox form yet) or holds no
+/// gear-pair model (stats with source = "moments" or "csv").
 std::string gearPairGearbox(const Config& config);
 
 /// The gear-pair model of a gearbox text: read with gearboxSchema(), assembled as a train and

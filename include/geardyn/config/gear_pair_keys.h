@@ -56,9 +56,9 @@ GearPairKeys readGearPairKeys(const Config& config, bool require_speed);
 
 /// The gear-pair model assembled from the keys directly (the stiffness model named by
 /// model.stiffness.type computed from the gears, for gear_pair_ltca with the tooth-pair contact
-/// elements; c = 2ζ√(k̄ m)): the model of the forms the gearbox cannot express yet
-/// (config/gear_pair_gearbox.h, gearPairGearboxObstacle), and the independent check of the
-/// translation (tests/config/gear_pair_gearbox_test.cpp). Appends the stiffness model's warnings.
+/// elements; c = 2ζ√(k̄ m)): without the gearbox: the independent check of the
+/// translation and reduction (tests/config/gear_pair_gearbox_test.cpp). Appends the stiffness
+/// model's warnings.
 GearPairModelSpec directGearPairModel(const Config& config, const GearPairKeys& keys,
                                       std::vector<std::string>& warnings);
 

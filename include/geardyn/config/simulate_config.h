@@ -41,8 +41,7 @@ struct GearPairModelBuild {
 /// `require_speed` false: [excitation] may be left out (harmonic balance sweeps the frequency).
 /// The file is read once (config/gear_pair_keys.h) and translated into its gearbox
 /// (config/gear_pair_gearbox.h); the model is the gearbox's one-pair train reduced
-/// (system/sdof_reduction.h), with the file's extra harmonic forces added. The forms without a
-/// gearbox translation yet (gearPairGearboxObstacle) are assembled from the same reading. k̄, ζ,
+/// (system/sdof_reduction.h), with the file's extra harmonic forces added. k̄, ζ,
 /// ω_n and the warnings about the time step are derived from that model.
 GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed = true);
 

@@ -16,7 +16,7 @@
 /// transverse line of action, δ_n = δ_t cos β_b (docs/theory/mesh_stiffness.md, "Which plane"):
 /// m_t = m_n cos² β_b (= 1 / (r_a²/I_a + r_b²/I_b) again), k_t = k_n cos² β_b,
 /// c_t = c_n cos² β_b, F_t = F_n cos β_b (= T / r_a), e_t = e_n / cos β_b, j_t = j_n / cos β_b.
-/// A helical mesh with tooth-pair contact elements has no such reduction yet.
+/// Tooth-pair contact elements: k_t = k_n cos² β_b, g_t = g_n / cos β_b.
 
 #include <string>
 
