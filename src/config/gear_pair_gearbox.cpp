@@ -7,12 +7,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "geardyn/config/gear_pair_keys.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/stiffness/tabulated_stiffness.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/sdof_reduction.h"
 #include "geardyn/units.h"
@@ -109,6 +111,12 @@ std::string meshStiffnessTables(const Config& config, const std::string& prefix)
   return s;
 }
 
+/// A helical pair: its gearbox mesh acts along the contact normal.
+bool helical(const Config& config) {
+  return hasGearPair(config) && (config.real("pinion.helix_angle_deg") != 0.0 ||
+                                 config.real("gear.helix_angle_deg") != 0.0);
+}
+
 GearSpec nominalGear() {
   GearSpec g;
   g.teeth = kNominalTeeth;
@@ -118,30 +126,11 @@ GearSpec nominalGear() {
   return g;
 }
 
-/// The tooth-pair contact elements of the loaded tooth contact (model.type = "gear_pair_ltca"):
-/// the gearbox mesh's contact = "tooth_pairs".
-bool toothPairs(const Config& config) {
-  return config.string("model.type") == "gear_pair_ltca";
-}
-
-/// The mesh linearised about the mean force (model.stiffness.type = "ltca"): its tangent
-/// stiffness and error tables, the mesh's stiffness = "table" and te_table_*.
-bool linearisedContact(const Config& config) {
-  return config.string("model.type") == "gear_pair" &&
-         config.string("model.stiffness.type") == "ltca";
-}
-
-/// The stiffness is computed from the gears (copied [mesh_stiffness.*]).
-bool fromGears(const Config& config) {
-  const std::string type = config.string("model.stiffness.type");
-  return toothPairs(config) || (config.string("model.type") == "gear_pair" &&
-                                (type == "potential_energy" || type == "api" || type == "iso6336"));
-}
-
 /// The mesh's stiffness keys; the [mesh_stiffness.*] tables they need go to `tables`.
-std::string stiffnessKeys(const Config& config, const GearPairModelSpec& s, std::string& tables) {
+std::string stiffnessKeys(const Config& config, const GearPairKeys& k, std::string& tables) {
   std::string t;
-  if (const auto* f = dynamic_cast<const FourierMeshStiffness*>(s.stiffness.get())) {
+  const MeshStiffness* given = k.numeric_stiffness.get();
+  if (const auto* f = dynamic_cast<const FourierMeshStiffness*>(given)) {
     std::vector<double> phases_deg;
     for (double p : f->phases()) phases_deg.push_back(p / kDeg);
     t += "stiffness = \"fourier\"  # k = k0 (1 + sum s_i cos(2 pi i phi - phi_i))\n";
@@ -150,36 +139,45 @@ std::string stiffnessKeys(const Config& config, const GearPairModelSpec& s, std:
         "[N/m]\namplitudes = {}\nphases_deg = {}\ncontact_ratio = {}\n",
         real(f->mean()), realList(f->relativeAmplitudes()), realList(phases_deg),
         real(f->contactRatio()));
-  } else if (linearisedContact(config)) {
+  } else if (const auto* step = dynamic_cast<const StepMeshStiffness*>(given)) {
+    t += "stiffness = \"step\"\n";
+    tables = fmt::format(
+        "\n[mesh_stiffness.step]\nlevels = \"given\"\nk_min = {}  # [N/m]\nk_max = {}  # "
+        "[N/m]\ncontact_ratio = {}\n",
+        real(step->kMin()), real(step->kMax()), real(step->contactRatio()));
+  } else if (k.linearised) {
     // Tabulated at the loaded contact's positions: the table reads back its values there.
-    const std::vector<double> phases = s.stiffness->discontinuities();
+    const TabulatedMeshStiffness table(k.linearised->phases, k.linearised->tangent,
+                                       k.linearised->contact_ratio, "ltca");
+    const std::vector<double> phases = table.discontinuities();
     std::vector<double> values;
-    for (double p : phases) values.push_back(s.stiffness->stiffness(p));
+    for (double p : phases) values.push_back(table.stiffness(p));
     t += fmt::format(
         "stiffness = \"table\"  # the file's model.stiffness.type = \"ltca\": the loaded "
         "contact's\n# tangent stiffness K(phi) at the mean force F = {} N, at {} positions\n"
         "stiffness_table_source = \"ltca\"\nstiffness_table_phases = {}\n"
         "stiffness_table_values = {}  # [N/m]\n",
-        real(s.mean_force), phases.size(), realList(phases), realList(values));
-  } else if (const auto* k = dynamic_cast<const StepMeshStiffness*>(s.stiffness.get())) {
-    t += "stiffness = \"step\"\n";
-    tables = fmt::format(
-        "\n[mesh_stiffness.step]\nlevels = \"given\"\nk_min = {}  # [N/m]\nk_max = {}  # "
-        "[N/m]\ncontact_ratio = {}\n",
-        real(k->kMin()), real(k->kMax()), real(k->contactRatio()));
+        real(k.mean_force), phases.size(), realList(phases), realList(values));
   } else {
     // gear_pair_ltca: k(φ) is the unmodified potential-energy stiffness (scales, k̄, linear
     // analyses); the tooth-pair elements carry the modifications.
     t += "stiffness = " +
-         quoted(toothPairs(config) ? "potential_energy" : config.string("model.stiffness.type")) +
-         "\n";
+         quoted(k.tooth_pairs ? "potential_energy" : config.string("model.stiffness.type")) + "\n";
     tables = meshStiffnessTables(config, "mesh_stiffness");
   }
   return t;
 }
 
+/// The mesh's damping: the file's dashpot c, or its ratio ζ (the same c = 2ζ√(k̄ m_e) on the
+/// train's mean stiffness and equivalent mass).
+std::string dampingKeys(const GearPairKeys& k) {
+  if (k.damping) return fmt::format("damping = {}  # [N s/m]\n", real(*k.damping));
+  return fmt::format("damping_ratio = {}  # on m_e and the mean stiffness\n",
+                     real(k.damping_ratio));
+}
+
 /// The mesh's transmission-error keys.
-std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
+std::string errorKeys(const Config& config, const GearPairKeys& k) {
   std::string t;
   const auto te_amplitudes = config.realList("model.transmission_error.amplitudes");
   if (!te_amplitudes.empty()) {
@@ -198,21 +196,15 @@ std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
       !config.realList(te + "table_values").empty()) {
     t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
     t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
-  } else if (linearisedContact(config)) {
-    // E = δ − F/K of the loaded contact at its positions: the model's error there less the
-    // file's series and rectangular wave (exact when the file gives none).
-    TransmissionError given;
-    std::vector<double> te_phases = config.realList(te + "phases_deg");
-    for (double& p : te_phases) p *= kDeg;
-    given.addFourier(config.realList(te + "amplitudes"), te_phases, te);
-    if (config.real(te + "rectangular_amplitude") != 0.0) {
-      given.addRectangular(config.real(te + "rectangular_amplitude"),
-                           config.real(te + "rectangular_duty"),
-                           config.real(te + "rectangular_start"), te);
-    }
-    const std::vector<double> phases = s.stiffness->discontinuities();
+  } else if (k.linearised) {
+    // E = δ − F/K of the loaded contact, read back at the stiffness table's positions.
+    TransmissionError table;
+    table.addTable(k.linearised->phases, k.linearised->error, te + "table_phases");
+    const TabulatedMeshStiffness stiffness(k.linearised->phases, k.linearised->tangent,
+                                           k.linearised->contact_ratio, "ltca");
+    const std::vector<double> phases = stiffness.discontinuities();
     std::vector<double> values;
-    for (double p : phases) values.push_back(s.transmission_error.value(p) - given.value(p));
+    for (double p : phases) values.push_back(table.value(p));
     t += "te_table_phases = " + realList(phases) +
          "  # the loaded contact's error delta - F/K (model.stiffness.type = \"ltca\")\n";
     t += "te_table_values = " + realList(values) + "  # [m]\n";
@@ -221,95 +213,51 @@ std::string errorKeys(const Config& config, const GearPairModelSpec& s) {
 }
 
 /// The mesh's contact keys; the tooth pairs' [meshes.mesh.modifications] go before `tables`.
-std::string contactKeys(const Config& config, const GearPairModelSpec& s, std::string& tables) {
-  std::string t;
-  switch (s.contact) {
+std::string contactKeys(const Config& config, const GearPairKeys& k, std::string& tables) {
+  if (k.tooth_pairs) {
+    // The file's [modifications], the gaps of the tooth-pair elements.
+    if (const Json* m = tableAt(config, "modifications")) {
+      tables = "\n[meshes.mesh.modifications]\n" + keys(*m) + tables;
+    }
+    return fmt::format(
+        "contact = \"tooth_pairs\"  # the file's model.type = \"gear_pair_ltca\"\n"
+        "tooth_pair_slices = {}  # model.stiffness.ltca_slices\n",
+        config.integer("model.stiffness.ltca_slices"));
+  }
+  switch (k.contact) {
     case ContactLaw::kLinear:
-      t += "contact = \"linear\"\n";
-      break;
+      return "contact = \"linear\"\n";
     case ContactLaw::kOneSided:
-      if (toothPairs(config)) {
-        t += fmt::format(
-            "contact = \"tooth_pairs\"  # the file's model.type = \"gear_pair_ltca\"\n"
-            "tooth_pair_slices = {}  # model.stiffness.ltca_slices\n",
-            config.integer("model.stiffness.ltca_slices"));
-        // The file's [modifications], the gaps of the tooth-pair elements.
-        if (const Json* m = tableAt(config, "modifications")) {
-          tables = "\n[meshes.mesh.modifications]\n" + keys(*m) + tables;
-        }
-      } else {
-        t += "contact = \"one_sided\"\n";
-      }
-      break;
+      return "contact = \"one_sided\"\n";
     case ContactLaw::kBacklash:
-      t += fmt::format(
-          "contact = \"backlash\"\nbacklash = {}  # [m] the file's model.normal_backlash: "
-          "the full clearance j\n",
-          real(2.0 * s.backlash));
       break;
   }
-  return t;
+  return fmt::format(
+      "contact = \"backlash\"\nbacklash = {}  # [m] the file's model.normal_backlash: "
+      "the full clearance j\n",
+      real(k.backlash));
 }
 
-}  // namespace
-
-std::string gearPairGearboxObstacle(const Config& config, const GearPairModelBuild& build) {
-  const std::string type = config.string("model.type");
-  if (build.spec.contact_elements && !toothPairs(config)) {
-    return "model.type = \"" + type + "\": its contact elements have no gearbox form";
-  }
-  const std::string stiffness = config.string("model.stiffness.type");
-  if (!config.realList("model.extra_force_amplitudes").empty()) {
-    return "model.extra_force_amplitudes: the gearbox has no extra harmonic force";
-  }
-  if (hasGearPair(config) && (config.real("pinion.helix_angle_deg") != 0.0 ||
-                              config.real("gear.helix_angle_deg") != 0.0)) {
-    return "pinion.helix_angle_deg: a helical pair's gearbox mesh acts along the contact normal, "
-           "the gear-pair model along the transverse line of action";
-  }
-  const bool numeric = dynamic_cast<const FourierMeshStiffness*>(build.spec.stiffness.get()) ||
-                       dynamic_cast<const StepMeshStiffness*>(build.spec.stiffness.get()) ||
-                       linearisedContact(config);
-  if (!numeric && !fromGears(config)) {
-    return "model.stiffness.type = \"" + stiffness + "\": no gearbox form";
-  }
-  if (fromGears(config) && config.string("pair.driver") != "pinion") {
-    return "pair.driver = \"gear\": the gearbox's first gear of a mesh drives it";
-  }
-  return "";
-}
-
-std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& build) {
-  const GearPairModelSpec& s = build.spec;
-  const bool pair_given = hasGearPair(config);
-  GearPairSpec pair_spec;
-  if (pair_given) {
-    pair_spec = gearPairSpecFromConfig(config);
-  } else {
-    pair_spec.pinion = pair_spec.gear = nominalGear();
-  }
-  const GearPair pair = makeGearPair(pair_spec, "pinion", "gear", "pair");
+/// The header comment, [gearbox], the shafts and the gears.
+std::string gearsAndShafts(const Config& config, const GearPairKeys& k, const GearPair& pair) {
   const double r_a = pair.pinion().base_radius, r_b = pair.gear().base_radius;
-  const int z_a = pair.spec().pinion.teeth;
   // I = 2 m_e r_b² on each shaft: 1 / (r_a²/I_a + r_b²/I_b) = m_e.
-  const double inertia_a = 2.0 * s.mass * r_a * r_a, inertia_b = 2.0 * s.mass * r_b * r_b;
-
-  std::string t;
-  t += fmt::format(
+  const double inertia_a = 2.0 * k.mass * r_a * r_a, inertia_b = 2.0 * k.mass * r_b * r_b;
+  std::string t = fmt::format(
       "# The gearbox of {}, written by geardyn --print-gearbox.\n"
       "# The gear-pair model is a train of two rigid shafts with torsional DOFs and one\n"
       "# external spur mesh (docs/design.md, system/sdof_reduction.h):\n"
       "#   m_e = 1 / (r_a^2/I_a + r_b^2/I_b),  F = T / r_a,  f_m = z_a n / 60.\n",
       config.source().empty() ? std::string("the gear-pair file") : config.source());
-  if (build.nondimensional) {
+  if (k.nondimensional) {
     t += "# The file is nondimensional (Gelman's form): its numbers are taken in SI units,\n"
          "# m_e = 1 kg, mean k = 1 N/m, F = a N, time omega_n t in s, mesh frequency Omega / 2 pi "
          "Hz.\n";
   }
-  if (pair_given) {
+  if (k.pair) {
     t += "# The gears are the file's [pinion] and [gear]; their bodies are off and each shaft\n"
          "# carries I = 2 m_e r_b^2, so that the equivalent mass is the file's m_e = " +
-         real(s.mass) + " kg.\n";
+         real(k.mass) + " kg.\n";
   } else {
     t += fmt::format(
         "# The file gives no gear geometry: a nominal spur pair carries the model (z = {},\n"
@@ -318,7 +266,7 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
         "# I = 2 m_e r_b^2 (so that the equivalent mass is the file's m_e = {} kg), the torque\n"
         "# is F r_b and the speed 60 f_m / z.\n",
         kNominalTeeth, kNominalModule * 1e3, kNominalPressureAngleDeg, kNominalFaceWidth * 1e3,
-        real(r_a), real(s.mass));
+        real(r_a), real(k.mass));
   }
   t += "\n[gearbox]\n";
   const Json* title = tableAt(config, "title");
@@ -329,7 +277,7 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
   t += fmt::format("\n[shafts.gear_shaft]\npolar_inertia = {}  # [kg m^2]\n", real(inertia_b));
   for (const char* gear : {"pinion", "gear"}) {
     t += fmt::format("\n[gears.{}]\nshaft = \"{}_shaft\"\nbody = false\n", gear, gear);
-    if (pair_given) {
+    if (k.pair) {
       t += keys(*tableAt(config, gear));
     } else {
       t += fmt::format("teeth = {}\nmodule = {}\npressure_angle_deg = {}\nface_width = {}\n",
@@ -337,26 +285,44 @@ std::string gearPairGearboxToml(const Config& config, const GearPairModelBuild& 
                        real(kNominalFaceWidth));
     }
   }
+  return t;
+}
 
+}  // namespace
+
+std::string gearPairGearboxToml(const Config& config, const GearPairKeys& k) {
+  GearPairSpec pair_spec;
+  if (k.pair) {
+    pair_spec = k.pair->spec();
+  } else {
+    pair_spec.pinion = pair_spec.gear = nominalGear();
+  }
+  const GearPair pair = makeGearPair(pair_spec, "pinion", "gear", "pair");
+  const double r_a = pair.pinion().base_radius;
+  const int z_a = pair.spec().pinion.teeth;
+  std::string t = gearsAndShafts(config, k, pair);
   t += "\n[meshes.mesh]\ngears = [\"pinion\", \"gear\"]\n";
-  if (pair_given && config.has("pair.centre_distance")) {
+  if (k.pair && config.has("pair.centre_distance")) {
     t += "centre_distance = " + real(config.real("pair.centre_distance")) + "\n";
   }
+  if (k.pair && k.pair->spec().driver == Driver::kGear) t += "driver = \"gear\"  # pair.driver\n";
   std::string tables;
-  t += stiffnessKeys(config, s, tables);
-  t += fmt::format("damping = {}  # [N s/m]: zeta = {} on m_e and the mean stiffness\n",
-                   real(s.damping), real(build.damping_ratio));
-  t += "phase = " + real(s.initial_phase) + "  # mesh phase at t = 0 [mesh periods]\n";
-  t += errorKeys(config, s);
-  t += contactKeys(config, s, tables);
+  t += stiffnessKeys(config, k, tables);
+  if (helical(config)) {
+    t += "stiffness_plane = \"transverse\"  # k, c, e and j of the gear-pair file are transverse\n";
+  }
+  t += dampingKeys(k);
+  t += "phase = " + real(k.initial_phase) + "  # mesh phase at t = 0 [mesh periods]\n";
+  t += errorKeys(config, k);
+  t += contactKeys(config, k, tables);
   t += tables;
-  const double speed_rpm = 60.0 * s.mesh_frequency / z_a;
+  const double speed_rpm = 60.0 * k.mesh_frequency / z_a;
   t += fmt::format(
       "\n[operating_point]\ninput = \"pinion_shaft\"\noutput = \"gear_shaft\"\n"
       "speed_rpm = {}  # f_m = {} Hz{}\ntorque = {}  # [N m]: F = {} N on r_b = {} m\n",
-      real(speed_rpm), real(s.mesh_frequency),
-      s.mesh_frequency == 0.0 ? " (the file leaves the speed to the analysis)" : "",
-      real(s.mean_force * r_a), real(s.mean_force), real(r_a));
+      real(speed_rpm), real(k.mesh_frequency),
+      k.mesh_frequency == 0.0 ? " (the file leaves the speed to the analysis)" : "",
+      real(k.mean_force * r_a), real(k.mean_force), real(r_a));
   return t;
 }
 
@@ -365,21 +331,31 @@ std::string gearPairGearbox(const Config& config) {
     throw InputError("stats.source", quoted(config.string("stats.source")),
                      "\"model\" for --print-gearbox: only a [model] describes a gear pair");
   }
-  const GearPairModelBuild build = readGearPairModel(config, false);
-  GearPairModel{build.spec};  // bad values named by the gear-pair model, in the file's terms
-  if (const std::string why = gearPairGearboxObstacle(config, build); !why.empty()) {
-    const auto colon = why.find(':');
-    throw InputError(why.substr(0, why.find_first_of(" :")), "(given)",
-                     "no gearbox translation for --print-gearbox yet" +
-                         (colon == std::string::npos ? std::string() : why.substr(colon)));
+  const GearPairKeys keys = readGearPairKeys(config, false);
+  if (!keys.extra_forces.empty()) {
+    throw InputError("model.extra_force_amplitudes", "(given)",
+                     "no gearbox translation for --print-gearbox yet: the gearbox has no extra "
+                     "harmonic force (the gear-pair commands add them to the reduced model)");
   }
-  return gearPairGearboxToml(config, build);
+  return gearPairGearboxToml(config, keys);
 }
 
-GearPairModelSpec gearPairFromGearbox(const std::string& toml, const std::string& source) {
+GearPairModelSpec gearPairFromGearbox(const std::string& toml, const std::string& source,
+                                      std::vector<std::string>* warnings) {
   const Config gearbox = parseConfig(toml, source, gearboxSchema());
-  std::vector<std::string> warnings;  // about the nominal description, not the user's file
-  return sdofReduction(GearTrainModel(gearTrainFromConfig(gearbox, warnings)));
+  std::vector<std::string> notes;
+  GearPairModelSpec s = sdofReduction(GearTrainModel(gearTrainFromConfig(gearbox, notes)));
+  if (warnings) {
+    // The stiffness models' warnings are about the user's gears; the gears' plausibility and
+    // the speed notes are said in the file's terms by the reading (or are about the nominal
+    // pair of a file without gears).
+    for (auto& note : notes) {
+      if (note.rfind("gears.", 0) != 0 && note.rfind("operating_point.", 0) != 0) {
+        warnings->push_back(std::move(note));
+      }
+    }
+  }
+  return s;
 }
 
 }  // namespace geardyn::config

@@ -158,6 +158,22 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .min(0.0)
       .optional()
       .doc("mesh dashpot along the line of action (replaces damping_ratio)");
+  schema.string("meshes.*.driver")
+      .optional()
+      .doc(
+          "external meshes: the gear of `gears` that drives (default: the first); the stiffness "
+          "model's and the loaded contact's path of contact runs from the driven gear's tip to "
+          "the driver's (a gear-pair file's pair.driver)");
+  schema.string("meshes.*.stiffness_plane")
+      .choices({"normal", "transverse"})
+      .defaultValue("normal")
+      .doc(
+          "the plane of the stiffness model's k, and of the dashpot, transmission error, "
+          "backlash and tooth-pair elements given: normal (along the contact normal, where the "
+          "mesh acts) or transverse "
+          "(along the transverse line of action, as the gear-pair commands read every model: "
+          "a helical mesh then acts with k / cos^2 beta_b along the normal; "
+          "docs/theory/mesh_stiffness.md)");
 
   schema.collection("bearings",
                     "Bearings from a shaft to the housing or to another shaft, linear or with a "
@@ -354,6 +370,20 @@ config::ConfigSchema gearboxSchema() {
   return schema;
 }
 
+namespace {
+
+/// meshes.*.driver: the first gear of the mesh (the pair's pinion) or the second.
+Driver meshDriver(const config::Config& config, const std::string& p, const TrainMeshSpec& m) {
+  if (!config.has(p + "driver")) return Driver::kPinion;
+  const std::string driver = config.string(p + "driver");
+  if (driver == m.gear_a) return Driver::kPinion;
+  if (driver == m.gear_b) return Driver::kGear;
+  throw InputError(p + "driver", "\"" + driver + "\"",
+                   fmt::format("one of the mesh's gears, \"{}\" or \"{}\"", m.gear_a, m.gear_b));
+}
+
+}  // namespace
+
 GearTrainSpec gearTrainFromConfig(const config::Config& config,
                                   std::vector<std::string>& warnings) {
   GearTrainSpec spec;
@@ -413,6 +443,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     const TrainGearSpec& a = gear_named(m.gear_a, p + "gears");
     const TrainGearSpec& b = gear_named(m.gear_b, p + "gears");
     const double width = std::min(a.gear.face_width, b.gear.face_width);
+    double base_helix = 0.0;  // β_b [rad]
     if (a.internal || b.internal) {
       const InternalGearPair pair(a.internal ? b.gear : a.gear, a.internal ? a.gear : b.gear,
                                   m.centre_distance, "meshes." + name);
@@ -420,16 +451,26 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
           stiffnessFromConfig(config, p, nullptr, width, a.gear.helix_angle,
                               pair.contactRatioTransverse() + pair.overlapRatio(), warnings);
       m.contact = contactFromConfig(config, p, nullptr);
+      base_helix = pair.baseHelixAngle();
+      if (config.has(p + "driver")) {
+        throw InputError(p + "driver", "\"" + config.string(p + "driver") + "\"",
+                         "external meshes only (a ring mesh's stiffness has no path of contact)");
+      }
     } else {
       GearPairSpec pair_spec;
       pair_spec.pinion = a.gear;
       pair_spec.gear = b.gear;
       pair_spec.centre_distance = m.centre_distance;
+      pair_spec.driver = meshDriver(config, p, m);
       const GearPair pair =
           makeGearPair(pair_spec, "gears." + a.name, "gears." + b.name, "meshes." + name);
       m.stiffness = stiffnessFromConfig(config, p, &pair, width, a.gear.helix_angle,
                                         pair.contactRatioTotal(), warnings);
       m.contact = contactFromConfig(config, p, &pair);
+      base_helix = pair.baseHelixAngle();
+    }
+    if (config.string(p + "stiffness_plane") == "transverse") {
+      detail::transverseToNormal(m, base_helix, p);
     }
     spec.meshes.push_back(std::move(m));
   }

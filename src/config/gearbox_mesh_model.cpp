@@ -4,13 +4,16 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "geardyn/config/ltca_config.h"
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
+#include "geardyn/models/scaled_contact_elements.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/stiffness/scaled_stiffness.h"
 #include "geardyn/stiffness/tabulated_stiffness.h"
 #include "geardyn/units.h"
 
@@ -61,9 +64,10 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
   schema.real(prefix + "damping_ratio")
       .unit("-")
       .min(0.0)
-      .max(1.0)
       .defaultValue(0.05)
-      .doc("damping ratio of the mesh on its equivalent torsional mass");
+      .doc(
+          "damping ratio of the mesh on its equivalent torsional mass and mean stiffness, "
+          "c = 2 zeta sqrt(k m_e) (typical gear meshes: 0.02-0.1; >= 1: overdamped)");
   schema.realList(prefix + "te_amplitudes")
       .unit("m")
       .defaultValue(Json::array())
@@ -259,6 +263,18 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& c
   const std::string where = prefix.substr(0, prefix.size() - 1);
   for (const auto& w : own) warnings.push_back(where + " (" + model + " model): " + w);
   return k;
+}
+
+void transverseToNormal(TrainMeshSpec& mesh, double base_helix, const std::string& prefix) {
+  const double cb = std::cos(base_helix);
+  if (cb == 1.0) return;  // spur: the planes agree
+  if (mesh.contact.tooth_pairs) {
+    mesh.contact.tooth_pairs = scaledContactElements(mesh.contact.tooth_pairs, 1.0 / (cb * cb), cb);
+  }
+  mesh.stiffness = scaledMeshStiffness(mesh.stiffness, 1.0 / (cb * cb));
+  if (mesh.damping) *mesh.damping /= cb * cb;  // a ratio ζ is the same in both planes
+  mesh.transmission_error = mesh.transmission_error.scaled(cb);
+  mesh.contact.backlash *= cb;
 }
 
 }  // namespace geardyn::config::detail

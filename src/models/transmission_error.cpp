@@ -84,6 +84,14 @@ void TransmissionError::addTable(std::vector<double> phases, std::vector<double>
   table_values_ = std::move(values);
 }
 
+TransmissionError TransmissionError::scaled(double factor) const {
+  TransmissionError e = *this;
+  for (double& a : e.amplitudes_) a *= factor;
+  e.rect_amplitude_ *= factor;
+  for (double& v : e.table_values_) v *= factor;
+  return e;
+}
+
 bool TransmissionError::isZero() const noexcept {
   for (double a : amplitudes_) {
     if (a != 0.0) return false;

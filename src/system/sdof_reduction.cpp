@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "geardyn/error.h"
+#include "geardyn/models/scaled_contact_elements.h"
+#include "geardyn/stiffness/scaled_stiffness.h"
 
 namespace geardyn {
 
@@ -28,11 +30,6 @@ std::string sdofReductionObstacle(const GearTrainModel& train) {
   if (train.bodies().size() != 2) {
     return fmt::format("{} bodies: the gear-pair model has the two gears' rigid shafts",
                        train.bodies().size());
-  }
-  if (m.base_helix_angle != 0.0) {
-    return fmt::format(
-        "meshes.{} is helical (β_b = {:g} rad): the gear-pair model's k is the transverse one",
-        m.name, m.base_helix_angle);
   }
   for (const auto& b : spec.bearings) {
     if (b.k_torsion != 0.0 || b.c_torsion != 0.0) {
@@ -60,9 +57,14 @@ GearPairModelSpec sdofReduction(const GearTrainModel& train) {
                          why);
   }
   const TrainMesh& m = train.meshes()[0];
+  // The mesh acts along the contact normal, the gear-pair model along the transverse line of
+  // action: δ_n = δ_t cos β_b, so m_t = m_n cos² β_b, k_t = k_n cos² β_b, c_t = c_n cos² β_b,
+  // F_t = F_n cos β_b, e_t = e_n / cos β_b, j_t = j_n / cos β_b (docs/theory/mesh_stiffness.md,
+  // "Which plane"). Spur: cos β_b = 1, nothing changes.
+  const double cb = std::cos(m.base_helix_angle), cb2 = cb * cb;
   GearPairModelSpec s;
-  s.mass = m.equivalent_mass;  // 1 / Σ v_θ²/I = 1 / (r_a²/I_a + r_b²/I_b) for a spur pair
-  s.damping = m.damping;
+  s.mass = m.equivalent_mass * cb2;  // 1 / (r_a²/I_a + r_b²/I_b)
+  s.damping = m.damping * cb2;
   // Static balance of the input shaft: T_in = F ∂δ/∂θ_in, with ∂δ/∂θ_in = ±r_b of its gear.
   const auto& shafts = train.spec().shafts;
   int input_body = 0;
@@ -76,18 +78,18 @@ GearPairModelSpec sdofReduction(const GearTrainModel& train) {
   for (std::size_t d = 0; d < m.dofs.size(); ++d) {
     if (m.dofs[d] == input_dof) lever = m.gradient[d];
   }
-  s.mean_force = lever != 0.0 ? train.spec().operating.input_torque / lever : 0.0;
-  s.stiffness = m.stiffness;
+  s.mean_force = lever != 0.0 ? cb * train.spec().operating.input_torque / lever : 0.0;
+  s.stiffness = scaledMeshStiffness(m.stiffness, cb2);
   s.mesh_frequency = m.frequency_ratio * std::abs(train.inputSpeed());
   s.initial_phase = m.phase;
-  s.transmission_error = m.transmission_error;
+  s.transmission_error = cb == 1.0 ? m.transmission_error : m.transmission_error.scaled(1.0 / cb);
   if (m.contact.tooth_pairs) {
     s.contact = ContactLaw::kOneSided;
-    s.contact_elements = m.contact.tooth_pairs;
+    s.contact_elements = scaledContactElements(m.contact.tooth_pairs, cb2, 1.0 / cb);
   } else {
     s.contact = m.contact.law;
     // Full normal clearance j (free play −j ≤ δ − e ≤ 0) → the SDOF half clearance b = j / 2.
-    s.backlash = m.contact.law == ContactLaw::kBacklash ? 0.5 * m.contact.backlash : 0.0;
+    s.backlash = m.contact.law == ContactLaw::kBacklash ? 0.5 * m.contact.backlash / cb : 0.0;
   }
   return s;
 }

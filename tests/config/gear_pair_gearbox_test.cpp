@@ -1,12 +1,15 @@
 // The gearbox of a gear-pair file (config/gear_pair_gearbox.h) reduced back to the gear-pair
-// model (system/sdof_reduction.h) is the model the file's keys describe.
+// model (system/sdof_reduction.h) is the model the file's keys describe: the same keys
+// assembled directly into the gear-pair model (config/gear_pair_keys.h, directGearPairModel)
+// are the independent reference.
 
 #include "geardyn/config/gear_pair_gearbox.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
-#include <set>
+#include <numbers>
 #include <string>
 
 #include "geardyn/config/gearbox_config.h"
@@ -15,6 +18,7 @@
 #include "geardyn/config/stats_config.h"
 #include "geardyn/config/translated_gearbox.h"
 #include "geardyn/error.h"
+#include "geardyn/stiffness/step_stiffness.h"
 #include "geardyn/system/sdof_reduction.h"
 #include "support/numeric_assertions.h"
 
@@ -83,9 +87,6 @@ config::ConfigSchema schemaOf(const std::string& stem) {
 }
 
 TEST(GearPairGearbox, EveryExampleReducesToItsModel) {
-  // Examples whose form keeps the direct reading (no gearbox key yet), listed so that a new one
-  // fails: none at present (extra harmonic forces and helical pairs are not in the examples).
-  const std::set<std::string> untranslated = {};
   int translated = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(GEARDYN_SOURCE_DIR) / "examples")) {
     const std::string stem = entry.path().stem().string();
@@ -100,18 +101,13 @@ TEST(GearPairGearbox, EveryExampleReducesToItsModel) {
       EXPECT_THROW(config::gearPairGearbox(config), InputError);  // no [model]: no gear pair
       continue;
     }
-    const config::GearPairModelBuild old = config::readGearPairModel(config, false);
-    const std::string obstacle = config::gearPairGearboxObstacle(config, old);
-    if (untranslated.count(stem)) {
-      EXPECT_FALSE(obstacle.empty());
-      EXPECT_THROW(config::gearPairGearbox(config), InputError);
-      continue;
-    }
-    ASSERT_EQ(obstacle, "");
+    const config::GearPairKeys keys = config::readGearPairKeys(config, false);
+    std::vector<std::string> warnings;
+    const GearPairModelSpec direct = config::directGearPairModel(config, keys, warnings);
     const std::string toml = config::gearPairGearbox(config);
-    expectSameModel(config::gearPairFromGearbox(toml, stem), old.spec, stem);
+    expectSameModel(config::gearPairFromGearbox(toml, stem), direct, stem);
     // What the commands run on is the reduction.
-    expectSameModel(config::buildGearPairModel(config, false).spec, old.spec, stem + " (build)");
+    expectSameModel(config::buildGearPairModel(config, false).spec, direct, stem + " (build)");
     ++translated;
   }
   EXPECT_GE(translated, 5);
@@ -120,9 +116,10 @@ TEST(GearPairGearbox, EveryExampleReducesToItsModel) {
 /// Forms the examples do not show, written inline.
 GearPairModelSpec reducedOf(const std::string& toml, GearPairModelSpec* old_spec = nullptr) {
   const config::Config config = config::parseConfig(toml, "inline", config::simulateSchema());
-  const config::GearPairModelBuild old = config::readGearPairModel(config, false);
-  EXPECT_EQ(config::gearPairGearboxObstacle(config, old), "");
-  if (old_spec) *old_spec = old.spec;
+  std::vector<std::string> warnings;
+  const GearPairModelSpec direct =
+      config::directGearPairModel(config, config::readGearPairKeys(config, false), warnings);
+  if (old_spec) *old_spec = direct;
   return config::gearPairFromGearbox(config::gearPairGearbox(config), "inline");
 }
 
@@ -290,41 +287,209 @@ mesh_frequency = 500.0
     EXPECT_NE(std::string(error.what()).find("model.extra_force_amplitudes"), std::string::npos)
         << error.what();
   }
-  // buildGearPairModel keeps the direct reading for it.
-  EXPECT_EQ(config::buildGearPairModel(config).spec.extra_forces.size(), 1u);
+  // The gear-pair commands add them to the gearbox's reduced model.
+  const config::GearPairModelBuild build = config::buildGearPairModel(config);
+  ASSERT_EQ(build.spec.extra_forces.size(), 1u);
+  EXPECT_EQ(build.spec.extra_forces[0].amplitude, 1.0);
   EXPECT_FALSE(config::translatedGearbox("geometry", config).has_value());
   EXPECT_THROW(config::translatedGearbox("simulate", config), InputError);
 }
 
-TEST(GearPairGearbox, HelicalPairsKeepTheDirectReading) {
-  // The gearbox mesh acts along the contact normal, the gear-pair model along the transverse
-  // line of action: not translated yet, and the command still runs on the file's keys.
-  const config::Config config = config::parseConfig(R"(
-[model]
-damping_ratio = 0.05
-torque = 60.0
-[model.stiffness]
-mean = 5e8
-cos = [-0.1]
-[excitation]
-speed_rpm = 1200.0
+/// A helical pair (β = ±15°), optionally with more [model] keys and pair keys.
+std::string helicalPair(const std::string& model, const std::string& more_pair = "") {
+  return model + R"(
 [pinion]
 teeth = 23
 module = 0.004
 face_width = 0.025
 helix_angle_deg = 15.0
+bore_diameter = 0.03
 [gear]
 teeth = 41
 module = 0.004
 face_width = 0.025
 helix_angle_deg = -15.0
-)",
+bore_diameter = 0.05
+)" + more_pair;
+}
+
+/// The same pair, spur.
+std::string spurPair(const std::string& model, const std::string& more_pair = "") {
+  std::string toml = helicalPair(model, more_pair);
+  for (const char* line : {"helix_angle_deg = 15.0\n", "helix_angle_deg = -15.0\n"}) {
+    toml.erase(toml.find(line), std::string(line).size());
+  }
+  return toml;
+}
+
+TEST(GearPairGearbox, HelicalPairsReduceToTheirTransverseModel) {
+  // The gearbox mesh acts along the contact normal; with stiffness_plane = "transverse" it
+  // takes the file's k, c, e, j as transverse (k_n = k_t / cos² β_b, ...) and the reduction
+  // projects back (k_t = k_n cos² β_b, ...): the direct gear-pair model up to the round-off of
+  // cos² β_b times its inverse, within kTranslationTolerance.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"Fourier, damping value, backlash, series and rectangular TE", R"(
+[model]
+damping = 900.0
+torque = 60.0
+contact = "backlash"
+normal_backlash = 6e-5
+[model.stiffness]
+mean = 5e8
+cos = [-0.1, 0.02]
+[model.transmission_error]
+amplitudes = [2e-6]
+phases_deg = [30.0]
+rectangular_amplitude = 1e-6
+[excitation]
+speed_rpm = 1200.0
+)"},
+      {"potential-energy stiffness, table TE, one-sided", R"(
+[model]
+damping_ratio = 0.05
+torque = 80.0
+contact = "one_sided"
+[model.stiffness]
+type = "potential_energy"
+[model.transmission_error]
+table_phases = [0.0, 0.5]
+table_values = [1e-6, -1e-6]
+[excitation]
+speed_rpm = 900.0
+)"},
+      {"ISO 6336 stiffness", R"(
+[model]
+damping_ratio = 0.05
+torque = 80.0
+[model.stiffness]
+type = "iso6336"
+[excitation]
+speed_rpm = 900.0
+)"},
+  };
+  for (const auto& [what, model] : cases) {
+    GearPairModelSpec direct;
+    const std::string toml = helicalPair(model);
+    const GearPairModelSpec reduced = reducedOf(toml, &direct);
+    expectSameModel(reduced, direct, what);
+    const config::Config config = config::parseConfig(toml, "inline", config::simulateSchema());
+    EXPECT_NE(config::gearPairGearbox(config).find("stiffness_plane = \"transverse\""),
+              std::string::npos);
+  }
+}
+
+TEST(GearPairGearbox, HelicalNormalPlaneMeshIsCosSquaredSofterInTorsion) {
+  // docs/theory/mesh_stiffness.md: the same k read along the contact normal (the gearbox's
+  // default plane) is k_t = k cos² β_b on the transverse line of action, with
+  // tan β_b = tan β cos α_t and tan α_t = tan α_n / cos β (closed form). m_e = 1/(r_a²/I_a +
+  // r_b²/I_b) and F = T / r_a are those of the transverse model in both planes.
+  const config::Config config = config::parseConfig(helicalPair(R"(
+[model]
+damping_ratio = 0.05
+torque = 60.0
+[model.stiffness]
+type = "step"
+k_min = 4e8
+k_max = 6e8
+contact_ratio = 2.3
+[excitation]
+speed_rpm = 1200.0
+)"),
                                                     "inline", config::simulateSchema());
-  const config::GearPairModelBuild old = config::readGearPairModel(config);
-  EXPECT_NE(config::gearPairGearboxObstacle(config, old).find("helix_angle_deg"),
-            std::string::npos);
-  EXPECT_THROW(config::gearPairGearbox(config), InputError);
-  EXPECT_EQ(config::buildGearPairModel(config).spec.mass, old.spec.mass);
+  std::string text = config::gearPairGearbox(config);
+  const GearPairModelSpec transverse = config::gearPairFromGearbox(text, "transverse");
+  const std::string transverse_key = "stiffness_plane = \"transverse\"";
+  text.replace(text.find(transverse_key), transverse_key.size(), "stiffness_plane = \"normal\"");
+  const GearPairModelSpec normal = config::gearPairFromGearbox(text, "normal");
+  const double beta = 15.0 * std::numbers::pi / 180.0, alpha_n = 20.0 * std::numbers::pi / 180.0;
+  const double alpha_t = std::atan(std::tan(alpha_n) / std::cos(beta));
+  const double beta_b = std::atan(std::tan(beta) * std::cos(alpha_t));
+  const double cb2 = std::cos(beta_b) * std::cos(beta_b);
+  for (const double phi : {0.1, 0.5, 0.9}) {
+    EXPECT_CLOSE(transverse.stiffness->stiffness(phi),
+                 StepMeshStiffness(4e8, 6e8, 2.3).stiffness(phi), kTranslationTolerance);
+    EXPECT_CLOSE(normal.stiffness->stiffness(phi), cb2 * transverse.stiffness->stiffness(phi),
+                 kTranslationTolerance);
+  }
+  EXPECT_CLOSE(normal.mass, transverse.mass, kTranslationTolerance);
+  EXPECT_CLOSE(normal.mean_force, transverse.mean_force, kTranslationTolerance);
+  EXPECT_CLOSE(transverse.mean_force,
+               60.0 / config::readGearPairKeys(config, true).pinion_base_radius,
+               kTranslationTolerance);
+}
+
+TEST(GearPairGearbox, DrivingGearIsTheMeshDriver) {
+  // pair.driver = "gear" reverses the path of contact of the potential-energy model; the
+  // gearbox's meshes.mesh.driver = "gear" does the same (the direct model is the reference), and
+  // the curve differs from the pinion-driven one (the key is not ignored).
+  const std::string model = R"(
+[model]
+damping_ratio = 0.05
+torque = 80.0
+[model.stiffness]
+type = "potential_energy"
+[excitation]
+speed_rpm = 900.0
+)";
+  GearPairModelSpec direct;
+  for (const auto& toml : {spurPair(model, "[pair]\ndriver = \"gear\"\n"),
+                           helicalPair(model, "[pair]\ndriver = \"gear\"\n")}) {
+    expectSameModel(reducedOf(toml, &direct), direct, "driving gear");
+  }
+  const GearPairModelSpec reduced = reducedOf(spurPair(model, "[pair]\ndriver = \"gear\"\n"));
+  const GearPairModelSpec pinion_driven = reducedOf(spurPair(model));
+  double largest = 0.0;
+  for (int i = 0; i < 50; ++i) {
+    largest = std::max(largest, std::abs(reduced.stiffness->stiffness(i / 50.0) -
+                                         pinion_driven.stiffness->stiffness(i / 50.0)));
+  }
+  EXPECT_GT(largest, 1e-3 * pinion_driven.stiffness->stiffness(0.0));
+}
+
+TEST(GearPairGearbox, HelicalToothPairsReduceToTheirTransverseModel) {
+  // The gearbox's tooth-pair elements act along the contact normal: with stiffness_plane =
+  // "transverse" their stiffnesses are k/cos² β_b and their gaps g cos β_b, and the reduction
+  // projects them back (k cos² β_b, g / cos β_b): the direct gear-pair elements, element by
+  // element, within kTranslationTolerance (expectSameModel).
+  GearPairModelSpec direct;
+  const GearPairModelSpec reduced = reducedOf(helicalPair(R"(
+[model]
+type = "gear_pair_ltca"
+damping_ratio = 0.05
+torque = 60.0
+[model.stiffness]
+ltca_slices = 4
+[modifications]
+pinion_tip_relief = 5e-6
+pinion_tip_relief_length = 2e-3
+[excitation]
+speed_rpm = 1200.0
+)"),
+                                              &direct);
+  ASSERT_TRUE(reduced.contact_elements != nullptr);
+  expectSameModel(reduced, direct, "helical tooth pairs");
+}
+
+TEST(GearPairGearbox, MeshDriverAndPlaneAreChecked) {
+  const config::Config config = config::parseConfig(helicalPair(R"(
+[model]
+damping_ratio = 0.05
+torque = 60.0
+[model.stiffness]
+mean = 5e8
+[excitation]
+speed_rpm = 1200.0
+)"),
+                                                    "inline", config::simulateSchema());
+  std::string text = config::gearPairGearbox(config);
+  text.insert(text.find("stiffness_plane"), "driver = \"idler\"\n");
+  try {
+    config::gearPairFromGearbox(text, "bad driver");
+    ADD_FAILURE() << "a driver that is not a gear of the mesh";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("meshes.mesh.driver"), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(SdofReduction, RefusesWhatIsNotOneTorsionalPair) {

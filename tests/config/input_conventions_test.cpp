@@ -73,11 +73,13 @@ TEST(InputConventions, HalfBacklashInTheFileIsConverted) {
 
 TEST(InputConventions, RadianPhasesAreReadAsDegrees) {
   const std::string te = "\n[model.transmission_error]\namplitudes = [1e-6, 2e-6]\n";
-  const Config old_key = parseConfig(std::string(kPair) + te + "phases = [0.5, -1]\n", "old",
-                                     simulateSchema(), {"model.extra_force_phases=[0.25]"});
+  const Config old_key =
+      parseConfig(std::string(kPair) + te + "phases = [0.5, -1]\n", "old", simulateSchema(),
+                  {"model.extra_force_phases=[0.25]", "model.normal_backlash=2e-4"});
   const Config new_key = parseConfig(
       std::string(kPair) + te + "phases_deg = [28.64788975654116, -57.29577951308232]\n", "new",
-      simulateSchema(), {"model.extra_force_phases_deg=[14.32394487827058]"});
+      simulateSchema(),
+      {"model.extra_force_phases_deg=[14.32394487827058]", "model.normal_backlash=2e-4"});
   EXPECT_TRUE(hasNote(old_key, "model.transmission_error.phases_deg"));
   EXPECT_TRUE(hasNote(old_key, "model.extra_force_phases_deg"));
   const auto a = buildGearPairModel(old_key).spec, b = buildGearPairModel(new_key).spec;

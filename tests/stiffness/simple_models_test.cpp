@@ -6,9 +6,11 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/models/transmission_error.h"
 #include "geardyn/stiffness/api_stiffness.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "geardyn/stiffness/scaled_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
 #include "support/numeric_assertions.h"
 
@@ -122,6 +124,40 @@ TEST(FourierStiffness, RejectsAmplitudesThatMakeStiffnessNegative) {
   EXPECT_THROW(FourierMeshStiffness(3e8, {0.7, 0.4}, {0.0, 0.0}, 1.5), InputError);
   EXPECT_THROW(FourierMeshStiffness(3e8, {0.2}, {}, 1.5), InputError);
   EXPECT_THROW(FourierMeshStiffness(-3e8, {0.2}, {0.0}, 1.5), InputError);
+}
+
+TEST(ScaledStiffness, IsTheModelTimesTheFactorWithItsJumpsAndName) {
+  // k_n = k_t / cos² β_b of a helical mesh and back: the product of two factors, exact but for
+  // the round-off of their product (a few ulps).
+  const auto step = std::make_shared<StepMeshStiffness>(4e8, 6e8, 1.6);
+  const double cb2 = std::pow(std::cos(0.25), 2);
+  const auto normal = scaledMeshStiffness(step, 1.0 / cb2);
+  const auto back = scaledMeshStiffness(normal, cb2);
+  EXPECT_EQ(scaledMeshStiffness(step, 1.0), step);  // a factor of exactly 1 is the model
+  EXPECT_EQ(normal->model(), "step");
+  EXPECT_EQ(normal->discontinuities(), step->discontinuities());
+  EXPECT_EQ(normal->contactRatio(), step->contactRatio());
+  for (const double phi : {0.0, 0.3, 0.7, 1.45}) {
+    EXPECT_CLOSE(normal->stiffness(phi), step->stiffness(phi) / cb2, 1e-15);
+    EXPECT_CLOSE(back->stiffness(phi), step->stiffness(phi), 1e-15);
+  }
+  // One wrapper: the factors are multiplied, not nested.
+  ASSERT_NE(dynamic_cast<const ScaledMeshStiffness*>(back.get()), nullptr);
+  EXPECT_EQ(&dynamic_cast<const ScaledMeshStiffness&>(*back).unscaled(), step.get());
+  EXPECT_THROW(ScaledMeshStiffness(step, 0.0), InputError);
+  EXPECT_THROW(ScaledMeshStiffness(nullptr, 1.0), InputError);
+}
+
+TEST(TransmissionError, ScaledScalesEveryPart) {
+  TransmissionError e;
+  e.addFourier({2e-6, -1e-6}, {0.3, 1.1});
+  e.addRectangular(1e-6, 0.4, 0.2);
+  e.addTable({0.0, 0.5}, {1e-6, -3e-6});
+  const TransmissionError half = e.scaled(0.5);
+  for (const double phi : {0.05, 0.25, 0.55, 0.9}) {
+    EXPECT_CLOSE(half.value(phi), 0.5 * e.value(phi), 1e-15, 1e-22);
+    EXPECT_CLOSE(half.derivative(phi), 0.5 * e.derivative(phi), 1e-15, 1e-22);
+  }
 }
 
 TEST(MeshStiffnessSummary, ConstantHasNoFluctuation) {

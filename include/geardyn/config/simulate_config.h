@@ -39,15 +39,11 @@ struct GearPairModelBuild {
   std::vector<std::string> warnings;
 };
 /// `require_speed` false: [excitation] may be left out (harmonic balance sweeps the frequency).
-/// The model is that of the file's gearbox (config/gear_pair_gearbox.h): the keys are read
-/// (readGearPairModel), translated into gearbox TOML, read back by the gearbox reader and
-/// reduced from the one-pair train (system/sdof_reduction.h); the forms without a gearbox
-/// translation yet (gearPairGearboxObstacle) keep the direct reading.
+/// The file is read once (config/gear_pair_keys.h) and translated into its gearbox
+/// (config/gear_pair_gearbox.h); the model is the gearbox's one-pair train reduced
+/// (system/sdof_reduction.h), with the file's extra harmonic forces added. k̄, ζ,
+/// ω_n and the warnings about the time step are derived from that model.
 GearPairModelBuild buildGearPairModel(const Config& config, bool require_speed = true);
-
-/// The model the gear-pair keys describe, read directly (with the checks, warnings and derived
-/// quantities): the translator's input.
-GearPairModelBuild readGearPairModel(const Config& config, bool require_speed = true);
 
 TimeResponseOptions timeResponseOptionsFromConfig(const Config& config);
 

@@ -33,6 +33,9 @@ class TransmissionError {
   /// point, where the table's slope jumps, the mean of the slopes on either side).
   double derivative(double phase) const;
   bool isZero() const noexcept;
+  /// The same excitation times `factor` (e.g. a transverse error e_t as the normal one
+  /// e_t cos β_b of a helical pair).
+  TransmissionError scaled(double factor) const;
 
  private:
   struct TableSegment {

@@ -43,4 +43,12 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const Config& config,
                                                          double helix, double contact_ratio,
                                                          std::vector<std::string>& warnings);
 
+/// meshes.*.stiffness_plane = "transverse": the mesh's stiffness model, dashpot, transmission
+/// error and backlash were given along the transverse line of action (the gear-pair commands'
+/// reading); the mesh acts along the contact normal, inclined by the base helix angle β_b:
+/// k_n = k_t / cos² β_b, c_n = c_t / cos² β_b, e_n = e_t cos β_b, j_n = j_t cos β_b (the same
+/// work F_n δ_n = F_t δ_t; docs/theory/mesh_stiffness.md, "Which plane"), and so do the
+/// tooth-pair contact elements' stiffnesses and gaps. Spur meshes are unchanged.
+void transverseToNormal(TrainMeshSpec& mesh, double base_helix, const std::string& prefix);
+
 }  // namespace geardyn::config::detail
