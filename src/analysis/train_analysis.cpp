@@ -25,6 +25,7 @@
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/units.h"
+#include "train_bearings_analysis.h"
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
@@ -126,6 +127,7 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                                {"mesh_force_n", meshes},
                                {"element_force", elements},
                                {"load_sharing", sharing},
+                               {"newton_iterations", r.iterations},
                                {"wall_time_s", secondsSince(start)}};
   if (r.status != "ok") summary.warnings.push_back(r.message);
   text += fmt::format("static: {} ({} rigid-body modes)\n", r.status, r.rigid_modes);
@@ -525,26 +527,31 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
       model.spec().name.empty() ? loaded.gearbox_source : model.spec().name, model.bodies().size(),
       model.meshes().size(), model.dofCount(), toString(model.spec().dofs));
   writeKinematics(model, result, summary, text);
+  // Bearings from their geometry: the static deflection is nonlinear; every other analysis
+  // takes them linearised there (summary.results.bearings says so).
+  const std::optional<GearTrainModel> linearised = detail::linearModelOf(model, result, text);
+  const GearTrainModel& linear = linearised ? *linearised : model;
   int code = 0;
   std::string status = "ok";
   std::optional<TrainTimeResponse> time_record;  // `time`'s Newmark run, reused by `stats`
   for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
     if (analysis == "static") runStatic(model, result, summary, text);
-    if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
-    if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text, context);
-    if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
+    if (analysis == "modal") runModal(linear, loaded.analysis, result, summary, text);
+    if (analysis == "campbell")
+      runCampbell(linear, loaded.analysis, result, summary, text, context);
+    if (analysis == "forced") runForced(linear, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
-      code = std::max(code, runTime(model, loaded.analysis, result, summary, text, time_record));
+      code = std::max(code, runTime(linear, loaded.analysis, result, summary, text, time_record));
     if (analysis == "runup") {
-      code = std::max(code, detail::runTrainRunUp(model, loaded.analysis, result, text, context));
+      code = std::max(code, detail::runTrainRunUp(linear, loaded.analysis, result, text, context));
     }
     if (analysis == "stats") {
-      code = std::max(code, detail::runTrainStats(model, loaded.analysis, result, text,
+      code = std::max(code, detail::runTrainStats(linear, loaded.analysis, result, text,
                                                   time_record ? &*time_record : nullptr));
     }
     if (analysis == "nonlinear") {
       const std::string s =
-          detail::runTrainNonlinear(model, loaded.analysis, result, text, context);
+          detail::runTrainNonlinear(linear, loaded.analysis, result, text, context);
       if (s != "ok") status = s, code = std::max(code, 1);
     }
   }
