@@ -29,6 +29,7 @@
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/units.h"
+#include "train_bearings_analysis.h"
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
@@ -130,6 +131,7 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                                {"mesh_force_n", meshes},
                                {"element_force", elements},
                                {"load_sharing", sharing},
+                               {"newton_iterations", r.iterations},
                                {"wall_time_s", secondsSince(start)}};
   if (r.status != "ok") summary.warnings.push_back(r.message);
   text += fmt::format("static: {} ({} rigid-body modes)\n", r.status, r.rigid_modes);
@@ -443,6 +445,10 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
       model.spec().name.empty() ? loaded.gearbox_source : model.spec().name, model.bodies().size(),
       model.meshes().size(), model.dofCount(), toString(model.spec().dofs));
   writeKinematics(model, result, summary, text);
+  // Bearings from their geometry: the static deflection is nonlinear; every other analysis
+  // takes them linearised there (summary.results.bearings says so).
+  const std::optional<GearTrainModel> linearised = detail::linearModelOf(model, result, text);
+  const GearTrainModel& linear = linearised ? *linearised : model;
   // What has finished is shown at once (warnings, then the report's new lines): a run of
   // several analyses may take minutes.
   std::size_t warned = 0;
@@ -463,22 +469,23 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
     flush();
     if (analysis == "static") runStatic(model, result, summary, text);
-    if (analysis == "modal") runModal(model, loaded.analysis, result, summary, text);
-    if (analysis == "campbell") runCampbell(model, loaded.analysis, result, summary, text, context);
-    if (analysis == "forced") runForced(model, loaded.analysis, result, summary, text, context);
+    if (analysis == "modal") runModal(linear, loaded.analysis, result, summary, text);
+    if (analysis == "campbell")
+      runCampbell(linear, loaded.analysis, result, summary, text, context);
+    if (analysis == "forced") runForced(linear, loaded.analysis, result, summary, text, context);
     if (analysis == "time")
       code = std::max(
-          code, detail::runTrainTime(model, loaded.analysis, result, text, time_record, context));
+          code, detail::runTrainTime(linear, loaded.analysis, result, text, time_record, context));
     if (analysis == "runup") {
-      code = std::max(code, detail::runTrainRunUp(model, loaded.analysis, result, text, context));
+      code = std::max(code, detail::runTrainRunUp(linear, loaded.analysis, result, text, context));
     }
     if (analysis == "stats") {
-      code = std::max(code, detail::runTrainStats(model, loaded.analysis, result, text,
+      code = std::max(code, detail::runTrainStats(linear, loaded.analysis, result, text,
                                                   time_record ? &*time_record : nullptr));
     }
     if (analysis == "nonlinear") {
       const std::string s =
-          detail::runTrainNonlinear(model, loaded.analysis, result, text, context);
+          detail::runTrainNonlinear(linear, loaded.analysis, result, text, context);
       if (s != "ok") status = s, code = std::max(code, 1);
     }
   }

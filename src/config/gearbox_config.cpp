@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geardyn/config/detail/gearbox_bearing.h"
 #include "geardyn/config/detail/gearbox_mesh_model.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
@@ -213,12 +214,14 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .doc("position along `other_shaft`");
   schema.real("bearings.*.radial_clearance")
       .unit("m")
-      .min(0.0)
       .defaultValue(0.0)
       .doc(
-          "radial clearance c: the radial stiffness (kyy = kzz, no cross terms) acts only "
-          "beyond it, f = k (|u| - c) u/|u|; damping stays linear; planar/full DOFs; only the "
-          "train nonlinear analysis uses it (0: linear bearing)");
+          "radial clearance c, the radial play from the centred position: with the stiffness "
+          "keys (c >= 0) the radial stiffness (kyy = kzz, no cross terms) acts only beyond it, "
+          "f = k (|u| - c) u/|u|, damping stays linear, only the train nonlinear analysis uses "
+          "it (0: linear bearing); with a `type` from the geometry, half ISO/TS 16281's "
+          "operating clearance s_r (< 0: a preload)");
+  detail::addRollingBearingKeys(schema, "bearings.*.");
 
   schema.collection("disks", "Rigid disks (inertias) on shafts: flywheels, motor rotors.");
   schema.section("disks.*", "One disk.");
@@ -490,6 +493,8 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     b.position = config.real(p + "position");
     b.other_position = config.real(p + "other_position");
     b.radial_clearance = config.real(p + "radial_clearance");
+    b.rolling = detail::rollingBearingFromConfig(config, p, b.radial_clearance);
+    if (b.rolling) b.radial_clearance = 0.0;  // in the geometry
     spec.bearings.push_back(b);
   }
   for (const std::string& name : config.names("disks")) {

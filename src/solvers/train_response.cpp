@@ -10,6 +10,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
+#include "geardyn/solvers/detail/train_static_bearings.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {
@@ -74,7 +75,10 @@ TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_spe
   r.rigid_modes = static_cast<int>(K.rows() - cod.rank());
   const double scale = std::max(F.norm(), 1e-300);
   r.residual = (K * r.displacement - F).norm() / scale;
-  if (F.norm() > 0.0 && r.residual > 1e-8) {
+  if (!model.rollingBearings().empty()) {
+    detail::solveRollingBearingStatics(model, K, F, r);
+  }
+  if (r.status == "ok" && F.norm() > 0.0 && r.residual > 1e-8) {
     r.status = "unbalanced";
     r.message = fmt::format(
         "the static loads act on a rigid-body mode of the train ({} rigid "

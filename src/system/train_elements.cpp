@@ -70,6 +70,15 @@ void GearTrainModel::buildElements() {
     element_damping_.push_back(c * s * s.transpose());
   };
 
+  auto addTorsion = [&](const TrainBearingSpec& b, const std::string&, int body, int other,
+                        auto& add_torsion_fn) {
+    if (!(b.k_torsion > 0 || b.c_torsion > 0)) return;
+    std::vector<int> dofs{rotationDof(body)};
+    std::vector<double> signs{1.0};
+    if (other >= 0) dofs.push_back(rotationDof(other)), signs.push_back(-1.0);
+    add_torsion_fn(b.name + ".torsion", other >= 0 ? "coupling" : "support", dofs, signs,
+                   b.k_torsion, b.c_torsion);
+  };
   for (const auto& b : spec_.bearings) {
     const std::string key = "bearings." + b.name;
     const int shaft = detail::shaftIndexOf(spec_, b.shaft, key + ".shaft");
@@ -84,6 +93,11 @@ void GearTrainModel::buildElements() {
     if (other_shaft == shaft) {
       throw InputError(key + ".other_shaft", "\"" + b.other_shaft + "\"",
                        "another shaft than `shaft` (or empty for the housing)");
+    }
+    if (b.rolling || b.stiffness_matrix) {
+      addRollingBearing(b, key, body, other, dx, other_dx);
+      addTorsion(b, key, body, other, add_torsion);
+      continue;
     }
     for (auto [v, n] : {std::pair{b.kyy, "kyy"},
                         {b.kzz, "kzz"},
@@ -146,13 +160,7 @@ void GearTrainModel::buildElements() {
       add_torsion(b.name + ".tilt_y", "bearing", relative(4), signs, b.k_tilt, b.c_tilt);
       add_torsion(b.name + ".tilt_z", "bearing", relative(5), signs, b.k_tilt, b.c_tilt);
     }
-    if (b.k_torsion > 0 || b.c_torsion > 0) {
-      std::vector<int> dofs{rotationDof(body)};
-      std::vector<double> signs{1.0};
-      if (other >= 0) dofs.push_back(rotationDof(other)), signs.push_back(-1.0);
-      add_torsion(b.name + ".torsion", other >= 0 ? "coupling" : "support", dofs, signs,
-                  b.k_torsion, b.c_torsion);
-    }
+    addTorsion(b, key, body, other, add_torsion);
   }
   for (const auto& c : spec_.couplings) {
     const std::string key = "couplings." + c.name;

@@ -4,7 +4,10 @@
 ///
 /// Statics: (K + Ω² K_Ω + Σ k̄ v vᵀ) q = F₀ + Σ k̄ ē v, solved for the minimum-norm q when the
 /// train has rigid-body modes (the loads are balanced: lossless torques), with the residual
-/// checked; mesh forces, bearing forces, coupling torques and planet load sharing.
+/// checked; mesh forces, bearing forces, coupling torques and planet load sharing. With
+/// bearings from their geometry (GearTrainModel::rollingBearings) it is a nonlinear system
+/// deflection: K̄ q + Σ_b J_bᵀ F_b(J_b q) = F by Newton on all DOFs (meshes at their mean
+/// stiffness), damped (Levenberg–Marquardt) where a bearing's contacts have no stiffness yet.
 ///
 /// Steady state: the exact periodic solution of the linear time-periodic equations of
 /// gear_train_model.h by harmonic balance over the train's common period. Every mesh
@@ -47,8 +50,12 @@ struct TrainStaticResult {
   std::vector<TrainStageLoadSharing> load_sharing;
   int rigid_modes = 0;        ///< dimension of the null space of the stiffness
   double residual = 0.0;      ///< ‖K q − F‖ / ‖F‖
-  std::string status = "ok";  ///< "ok" or "unbalanced" (loads on a rigid-body mode)
+  std::string status = "ok";  ///< "ok", "unbalanced" (loads on a rigid-body mode), "max_iterations"
   std::string message;
+  /// Bearings from their geometry, in model.rollingBearings() order: deflection, load,
+  /// tangent stiffness, element loads, largest contact pressure, L10r.
+  std::vector<RollingBearingState> rolling_bearings;
+  int iterations = 0;  ///< Newton iterations (0: linear)
 };
 
 TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_speed);

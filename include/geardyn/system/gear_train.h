@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/contact/rolling_bearing.h"
 #include "geardyn/geometry/gear.h"
 #include "geardyn/models/gear_pair_model.h"
 #include "geardyn/models/transmission_error.h"
@@ -139,6 +140,15 @@ struct TrainBearingSpec {
   /// u = (u_y, u_z) (isotropic: needs kyy = kzz, no cross terms). The damping stays linear. Only
   /// the nonlinear analyses see it; the linear ones take the bearing as linear. 0: linear.
   double radial_clearance = 0.0;
+  /// A rolling-element bearing from its geometry (issue 35; contact/rolling_bearing.h),
+  /// instead of the stiffness keys: nonlinear, coupled over (u_y, u_z, u_x, θ_y, θ_z) of the
+  /// shaft relative to the housing or `other_shaft`. The static analysis solves for its
+  /// deflection; the linear analyses take it linearised there (GearTrainModel::linearisedAt).
+  /// The damping keys still apply; the stiffness keys must be 0.
+  std::shared_ptr<const RollingBearing> rolling;
+  /// A linearised bearing: its 5×5 tangent stiffness over (u_y, u_z, u_x, θ_y, θ_z) [N/m,
+  /// N/rad, N m/m, N m/rad], replacing the stiffness keys (GearTrainModel::linearisedAt).
+  std::optional<Eigen::Matrix<double, 5, 5>> stiffness_matrix;
 };
 
 /// A coupling between two coaxial shafts (motor to input, output to load): torsional and

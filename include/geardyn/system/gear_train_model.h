@@ -111,6 +111,20 @@ struct TrainElement {
   Eigen::MatrixXd jacobian, local_stiffness;
 };
 
+/// A rolling bearing from its geometry (TrainBearingSpec::rolling) in the assembled train: its
+/// relative displacement q_b = J q[dofs] = (u_y, u_z, u_x, θ_y, θ_z) [m, rad] of the shaft's
+/// bearing point against the housing or the other shaft (rows u_x, θ_y, θ_z are 0 unless the
+/// DOFs are full). The train's internal force is Jᵀ F_b(q_b), its tangent Jᵀ K_b J.
+struct TrainRollingBearing {
+  std::string name;
+  int spec_index = 0;  ///< in spec().bearings
+  std::shared_ptr<const RollingBearing> bearing;
+  std::vector<int> dofs;
+  Eigen::Matrix<double, 5, Eigen::Dynamic> jacobian;
+  /// q_b of the train's state q.
+  Eigen::Matrix<double, 5, 1> displacement(const Eigen::Ref<const Eigen::VectorXd>& q) const;
+};
+
 class GearTrainModel {
  public:
   /// The dense n×n matrices a model of n DOFs holds (M, K, C, G, K_Ω, mean mesh stiffness),
@@ -146,6 +160,14 @@ class GearTrainModel {
   /// deflections δ, then (u_y, u_z) of every clearance bearing [m].
   Eigen::MatrixXd nonlinearVectors() const;
   const std::vector<TrainElement>& elements() const noexcept { return elements_; }
+  /// The bearings described by their geometry (nonlinear; not in K): the static analysis
+  /// solves for their deflection, the linear analyses use linearisedAt.
+  const std::vector<TrainRollingBearing>& rollingBearings() const noexcept {
+    return rolling_bearings_;
+  }
+  /// This train with every rolling bearing replaced by its tangent stiffness at the state q
+  /// (TrainBearingSpec::stiffness_matrix): the linear model about a static deflection.
+  GearTrainModel linearisedAt(const Eigen::Ref<const Eigen::VectorXd>& q) const;
   int bodyIndex(const std::string& name) const;  ///< −1 when absent
   /// "input.y", "stage1.planet2.theta", … for DOF i.
   std::string dofName(int i) const;
@@ -223,6 +245,10 @@ class GearTrainModel {
   void buildElements();
   /// InputError on a bad bearings.<name>.radial_clearance (< 0, torsional DOFs, anisotropic k).
   void checkClearance(const TrainBearingSpec& bearing, const std::string& key) const;
+  /// A bearing given by its geometry or its 5×5 matrix (train_rolling_bearings.cpp): body and
+  /// other (−1: the housing) at axial offsets dx, other_dx from their reference points.
+  void addRollingBearing(const TrainBearingSpec& bearing, const std::string& key, int body,
+                         int other, double dx, double other_dx);
   void assemble();
 
   GearTrainSpec spec_;
@@ -231,6 +257,7 @@ class GearTrainModel {
   std::vector<TrainMesh> meshes_;
   std::vector<TrainElement> elements_;
   std::vector<TrainClearanceBearing> clearance_bearings_;
+  std::vector<TrainRollingBearing> rolling_bearings_;
   std::vector<Eigen::MatrixXd> element_damping_;  // over each element's DOFs
   std::vector<int> shaft_body_;                   // spec shaft index → body index
   std::vector<std::vector<int>> shaft_nodes_;     // spec shaft index → its bodies by x
