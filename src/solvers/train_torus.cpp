@@ -14,6 +14,7 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
 #include "geardyn/solvers/detail/preconditioned_gmres.h"
+#include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 
 namespace geardyn {
@@ -215,14 +216,30 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
   long long points = 1;
   for (int j = 0; j < k; ++j) {
     samples_.push_back(options.samples > 0 ? options.samples : std::max(32, 8 * N[j]));
+    if (samples_.back() < 2 * N[j] + 2) {
+      throw InputError("forced.torus_samples", std::to_string(options.samples),
+                       fmt::format(">= {} (2 × the {} harmonics of generator {} + 2)", 2 * N[j] + 2,
+                                   N[j], j + 1));
+    }
     points *= samples_.back();
   }
-  while (points > (1LL << 20)) {
-    const auto largest = std::max_element(samples_.begin(), samples_.end());
-    points = points / *largest * (*largest / 2);
-    *largest /= 2;
+  while (points > (1LL << 20)) {  // halve the finest axis that keeps 2 N_j + 2 points
+    int finest = -1;
+    for (int j = 0; j < k; ++j) {
+      if (samples_[j] / 2 >= 2 * N[j] + 2 && (finest < 0 || samples_[j] > samples_[finest])) {
+        finest = j;
+      }
+    }
+    if (finest < 0) break;
+    points = points / samples_[finest] * (samples_[finest] / 2);
+    samples_[finest] /= 2;
   }
+  int fields = r;
+  for (const TrainElement& e : model.elements()) fields += static_cast<int>(e.jacobian.rows());
+  if (k > 0) fft_ = std::make_unique<detail::TorusFft>(samples_, fields, r);
 }
+
+TrainTorusSolver::~TrainTorusSolver() = default;
 
 TrainTorusState TrainTorusSolver::solve(double input_speed) const {
   if (!(std::abs(input_speed) > 0.0) || !std::isfinite(input_speed)) {

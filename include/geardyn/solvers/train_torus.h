@@ -21,12 +21,16 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {
+namespace detail {
+class TorusFft;
+}
 
 enum class TorusTruncation { kBox, kDiamond };
 
@@ -91,6 +95,9 @@ struct TrainTorusState {
 class TrainTorusSolver {
  public:
   TrainTorusSolver(const GearTrainModel& model, const TrainTorusOptions& options = {});
+  ~TrainTorusSolver();
+  TrainTorusSolver(const TrainTorusSolver&) = delete;
+  TrainTorusSolver& operator=(const TrainTorusSolver&) = delete;
   TrainTorusState solve(double input_speed) const;
   const TrainTorusGenerators& generators() const noexcept { return generators_; }
   int toneCount() const noexcept { return static_cast<int>(tones_.cols()); }
@@ -122,7 +129,8 @@ class TrainTorusSolver {
   std::vector<int> line_of_, local_of_;  // unknown → its line and its place in it
   Eigen::MatrixXd rigid_;
   bool rigid_at_every_speed_ = false;
-  std::vector<int> samples_;  // grid points per generator
+  std::vector<int> samples_;               // grid points per generator
+  std::unique_ptr<detail::TorusFft> fft_;  // the grid's transforms, planned once
 };
 
 }  // namespace geardyn
