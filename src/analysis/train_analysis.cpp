@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -288,8 +289,30 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
   for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
   bool compare = true;
   TrainSteadyState s;
+  Eigen::MatrixXd q;
+  // A long common period (more than forced.torus_above harmonics) is compared on the torus of
+  // the mesh phases: its peaks, orders and q(t) stand in for the common-period balance's.
+  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1 << 30);
+  const int common_harmonics =
+      steady.mesh_harmonics *
+      (base.mesh_multiple.empty()
+           ? 1
+           : *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end()));
+  const bool torus = common_harmonics > analysis.integer("forced.torus_above");
   try {
-    s = solveTrainSteadyState(model, speed, steady);
+    if (torus) {
+      TrainTorusOptions options = config::trainTorusOptionsFromConfig(analysis);
+      options.mesh_harmonics = steady.mesh_harmonics;
+      options.group_harmonics = std::max(options.group_harmonics, options.mesh_harmonics);
+      TrainTorusState t = TrainTorusSolver(model, options).solve(speed);
+      q = t.displacement(r.t);
+      s.mesh_force_max = t.mesh_force_max, s.mesh_force_min = t.mesh_force_min;
+      s.mesh_force_harmonics = t.mesh_force_harmonics;
+      s.mesh_multiple = base.mesh_multiple;
+    } else {
+      s = solveTrainSteadyState(model, speed, steady);
+      q = s.displacement(r.t);
+    }
   } catch (const InputError& e) {
     compare = false;
     summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
@@ -299,8 +322,6 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
       header.push_back("steady_mesh_force_" + m.name + "_normal_n");
   }
   io::CsvTable table(header);
-  Eigen::MatrixXd q;
-  if (compare) q = s.displacement(r.t);
   Json differences = Json::object();
   std::vector<double> worst(model.meshes().size(), 0.0);
   for (Eigen::Index k = 0; k < r.t.size(); ++k) {
@@ -350,11 +371,13 @@ int runTime(const GearTrainModel& model, const config::Config& analysis, Analysi
                              {"steps", r.steps},
                              {"wall_time_s", seconds},
                              {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
+                             {"steady_state_method", torus ? "torus" : "common_period"},
                              {"max_difference_to_steady_state_relative_to_p2p", differences},
                              {"mesh_force_harmonics", harmonics}};
   text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s\n", r.steps, r.time_step,
                       seconds);
-  detail::writeTrainProbes(model, analysis, speed, r, compare ? &s : nullptr, result, text);
+  detail::writeTrainProbes(model, analysis, speed, r, compare && !torus ? &s : nullptr, result,
+                           text);
   record = r;
   return 0;
 }
