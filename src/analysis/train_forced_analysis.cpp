@@ -113,7 +113,7 @@ void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
   io::CsvTable orders_table({"speed_rpm", "mesh", "order", "frequency_hz", "amplitude_n"});
   std::vector<std::string> tone_header{"speed_rpm", "mesh"};
   const int k = torus ? static_cast<int>(torus_solver->generators().ratio.size()) : 0;
-  for (int j = 0; j < k; ++j) tone_header.push_back(fmt::format("n_{}", j + 1));
+  for (int j = 0; j < k; ++j) tone_header.push_back(fmt::format("harmonic_g{}", j + 1));
   for (const char* column : {"tone", "frequency_hz", "amplitude_n", "relative_amplitude"}) {
     tone_header.push_back(column);
   }
