@@ -12,6 +12,7 @@ from ._tables import log_floor
 from .plot_train_nonlinear import train_nonlinear_figure
 from .plot_train_runup import train_runup_figure, train_waterfall_figure
 from .plot_train_stats import train_stats_figure
+from .plot_train_tones import train_tones_figure
 
 _TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
                  "mixed": "tab:purple", "outside": "0.3", "": "0.3"}
@@ -252,7 +253,8 @@ def _train_title(summary):
 
 
 def plot_train(result_dir, save=False):
-    """{file name: Figure}: modes.png, campbell.png, forced_response.png, time_history.png,
+    """{file name: Figure}: modes.png, campbell.png, forced_response.png (and forced_tones.png
+    on the torus, plot_train_tones.py), time_history.png,
     runup.png and waterfall.png (plot_train_runup.py), mesh_statistics.png
     (plot_train_stats.py), and nonlinear_response.png of the analyses run; written into the folder when `save`."""
     folder = pathlib.Path(result_dir)
@@ -266,6 +268,8 @@ def plot_train(result_dir, save=False):
         figures["campbell.png"] = _campbell(folder, summary, title)
     if "forced" in results:
         figures["forced_response.png"] = _forced(folder, summary, title)
+        if (folder / "forced_tones.csv").exists():
+            figures["forced_tones.png"] = train_tones_figure(folder, summary, title)
     if "time" in results and (folder / "time_history.csv").exists():
         figures["time_history.png"] = _time(folder, summary, title)
     if "runup" in results and (folder / "runup.csv").exists():

@@ -30,6 +30,7 @@
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/units.h"
 #include "train_bearings_analysis.h"
+#include "train_forced_analysis.h"
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
@@ -277,64 +278,6 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
                       d.critical_speeds.size());
 }
 
-void runForced(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
-               io::RunSummary& summary, std::string& text, const AnalysisContext& context) {
-  const auto start = Clock::now();
-  const auto speeds = config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1);
-  const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
-  std::vector<std::string> header{"speed_rpm"};
-  for (const TrainMesh& m : model.meshes()) {
-    header.push_back("dynamic_factor_" + m.name);
-    header.push_back("p2p_" + m.name + "_normal_n");  // mesh force along the contact normal
-    header.push_back("h1_" + m.name + "_normal_n");
-  }
-  for (const TrainElement& e : model.elements()) {
-    header.push_back(
-        fmt::format("dynamic_{}_{}", e.name, e.local_stiffness.rows() == 1 ? "n_m" : "n"));
-  }
-  io::CsvTable table(header);
-  // Per mesh: the largest dynamic factor and the largest peak-to-peak mesh force over the
-  // speeds, each with its speed (the headline numbers a sweep over `train` names).
-  std::vector<double> worst(model.meshes().size(), 0.0), worst_speed(model.meshes().size(), 0.0);
-  std::vector<double> p2p(model.meshes().size(), 0.0), p2p_speed(model.meshes().size(), 0.0);
-  const TrainSteadySolver solver(model, steady);
-  const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
-  for (std::size_t i = 0; i < speeds.size(); ++i) {
-    if (progress) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
-    if (speeds[i] == 0.0) continue;
-    const TrainSteadyState s = solver.solve(speeds[i]);
-    std::vector<io::CsvCell> row{speeds[i] / kRpm};
-    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-      row.push_back(s.dynamic_factor[m]);
-      const double force_p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
-      row.push_back(force_p2p);
-      row.push_back(s.mesh_force_harmonics[m][0]);
-      if (s.dynamic_factor[m] > worst[m])
-        worst[m] = s.dynamic_factor[m], worst_speed[m] = speeds[i];
-      if (force_p2p > p2p[m]) p2p[m] = force_p2p, p2p_speed[m] = speeds[i];
-    }
-    for (double f : s.element_dynamic_force) row.push_back(f);
-    table.addRow(row);
-  }
-  result.addTable("forced_response.csv", table);
-  Json peaks = Json::object();
-  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-    peaks[model.meshes()[m].name] = {{"max_dynamic_factor", worst[m]},
-                                     {"at_speed_rpm", worst_speed[m] / kRpm},
-                                     {"max_p2p_force_n", p2p[m]},
-                                     {"max_p2p_force_at_speed_rpm", p2p_speed[m] / kRpm}};
-    text += fmt::format("  {}: max dynamic factor {:.3f} [-] at {:.0f} rpm\n",
-                        model.meshes()[m].name, worst[m], worst_speed[m] / kRpm);
-  }
-  summary.results["forced"] = {{"speeds", speeds.size()},
-                               {"mesh_harmonics", steady.mesh_harmonics},
-                               {"meshes", peaks},
-                               {"wall_time_s", secondsSince(start)}};
-  text +=
-      fmt::format("forced response: {} speeds in {:.2f} s\n", speeds.size(), secondsSince(start));
-}
-
-/// `record`: receives the Newmark record (for `stats` after `time`).
 /// The gearbox file an analysis file names: its gearbox.file, or the last --set of it (a sweep
 /// over gearbox files); "" when the gearbox is inline.
 std::string gearboxFileOf(std::string_view text, const std::string& source,
@@ -472,7 +415,9 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
     if (analysis == "modal") runModal(linear, loaded.analysis, result, summary, text);
     if (analysis == "campbell")
       runCampbell(linear, loaded.analysis, result, summary, text, context);
-    if (analysis == "forced") runForced(linear, loaded.analysis, result, summary, text, context);
+    if (analysis == "forced") {
+      detail::runTrainForced(linear, loaded.analysis, result, summary, text, context);
+    }
     if (analysis == "time")
       code = std::max(
           code, detail::runTrainTime(linear, loaded.analysis, result, text, time_record, context));

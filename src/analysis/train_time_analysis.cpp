@@ -18,6 +18,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/csv_table.h"
 #include "geardyn/solvers/train_response.h"
+#include "geardyn/solvers/train_torus.h"
 #include "geardyn/units.h"
 #include "train_probes_analysis.h"
 #include "train_undamped_modes.h"
@@ -103,23 +104,34 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
   bool compare = true;
   TrainSteadyState s;
+  Eigen::MatrixXd q;
   const auto steady_start = Clock::now();
-  // The comparison is a check, not the result: it is skipped when the common period needs
-  // more base harmonics than this (memory and time grow with their number times the DOFs).
-  constexpr int kComparisonHarmonics = 512;
-  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1000000000);
-  const int multiple = *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end());
-  if (static_cast<long long>(multiple) * steady.mesh_harmonics > kComparisonHarmonics) {
-    compare = false;
-    summary.warnings.push_back(fmt::format(
-        "time: no frequency-domain comparison: the meshes repeat only every {} periods of the "
-        "fastest mesh, so time.mesh_harmonics = {} needs {} harmonics of the common period "
-        "(more than {} for a check)",
-        multiple, steady.mesh_harmonics, static_cast<long long>(multiple) * steady.mesh_harmonics,
-        kComparisonHarmonics));
-  }
+  // A long common period (more than forced.torus_above harmonics) is compared on the torus of
+  // the mesh phases (train_torus.h): its peaks, orders and q(t) stand in for the common-period
+  // balance's, which would need thousands of harmonics.
+  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1 << 30);
+  const int common_harmonics =
+      steady.mesh_harmonics *
+      (base.mesh_multiple.empty()
+           ? 1
+           : *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end()));
+  const bool torus = common_harmonics > analysis.integer("forced.torus_above");
+  int harmonics = common_harmonics;
   try {
-    if (compare) s = solveTrainSteadyState(model, speed, steady);
+    if (torus) {
+      TrainTorusOptions options = config::trainTorusOptionsFromConfig(analysis);
+      options.mesh_harmonics = steady.mesh_harmonics;
+      options.group_harmonics = std::max(options.group_harmonics, options.mesh_harmonics);
+      TrainTorusState t = TrainTorusSolver(model, options).solve(speed);
+      q = t.displacement(r.t);
+      s.mesh_force_max = t.mesh_force_max, s.mesh_force_min = t.mesh_force_min;
+      s.mesh_force_harmonics = t.mesh_force_harmonics;
+      s.mesh_multiple = base.mesh_multiple;
+    } else {
+      s = solveTrainSteadyState(model, speed, steady);
+      q = s.displacement(r.t);
+      harmonics = s.harmonics;
+    }
   } catch (const InputError& e) {
     compare = false;
     summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
@@ -129,8 +141,6 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
       header.push_back("steady_mesh_force_" + m.name + "_normal_n");
   }
   io::CsvTable table(header);
-  Eigen::MatrixXd q;
-  if (compare) q = s.displacement(r.t);
   Json differences = Json::object();
   std::vector<double> worst(model.meshes().size(), 0.0);
   for (Eigen::Index k = 0; k < r.t.size(); ++k) {
@@ -203,19 +213,21 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
                              {"duration_s", static_cast<double>(r.steps) * r.time_step},
                              {"transient", transientJson(r)},
                              {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
+                             {"steady_state_method", torus ? "torus" : "common_period"},
                              {"max_difference_to_steady_state_relative_to_p2p", differences},
                              {"mesh_force_harmonics", harmonics}};
   if (r.transient) {
     const std::string undamped = undampedModesWarning(model, r.transient->undamped, speed / kRpm);
     if (!undamped.empty()) summary.warnings.push_back(undamped);
   }
-  text += fmt::format("time: {} Newmark steps of {:.3g} s in {:.2f} s{}\n", r.steps, r.time_step,
-                      seconds,
-                      compare ? fmt::format("; steady state for the comparison ({} base "
-                                            "harmonics) in {:.2f} s",
-                                            s.harmonics, steady_seconds)
-                              : std::string());
-  writeTrainProbes(model, analysis, speed, r, compare ? &s : nullptr, result, text);
+  text += fmt::format(
+      "time: {} Newmark steps of {:.3g} s in {:.2f} s{}\n", r.steps, r.time_step, seconds,
+      compare
+          ? fmt::format("; steady state for the comparison ({}) in {:.2f} s",
+                        torus ? std::string("torus") : fmt::format("{} base harmonics", harmonics),
+                        steady_seconds)
+          : std::string());
+  writeTrainProbes(model, analysis, speed, r, compare && !torus ? &s : nullptr, result, text);
   record = r;
   return 0;
 }

@@ -338,6 +338,25 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .min(1)
       .defaultValue(4000)
       .doc("refuse trains whose common period needs more harmonics (use time)");
+  schema.string("forced.method")
+      .choices({"auto", "common_period", "torus"})
+      .defaultValue("auto")
+      .doc(
+          "balance over the meshes' common period, or on the torus of their phases (one "
+          "generator per group of meshes with a short common period); auto: the torus when the "
+          "common period needs more than forced.torus_above harmonics");
+  schema.integer("forced.torus_above")
+      .min(1)
+      .defaultValue(100)
+      .doc(
+          "base harmonics (mesh_harmonics × the largest mesh multiple of the base) above which "
+          "auto uses the torus; also the most one generator's group of meshes may need");
+  schema.string("forced.torus_truncation")
+      .choices({"box", "diamond"})
+      .defaultValue("box")
+      .doc(
+          "torus tones kept: box |n_j| <= N_j (every sideband of every kept mesh order), or "
+          "diamond Σ|n_j|/N_j <= 1 (fewer tones for three or more generators)");
   schema.section("time", "Newmark time response at one speed to the periodic steady state.");
   schema.real("time.speed_rpm").unit("rpm").optional().doc("input speed (default: operating)");
   schema.real("time.duration")
@@ -399,6 +418,16 @@ TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis) 
   TrainSteadyOptions o;
   o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
   o.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
+  return o;
+}
+
+TrainTorusOptions trainTorusOptionsFromConfig(const config::Config& analysis) {
+  TrainTorusOptions o;
+  o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  o.group_harmonics = static_cast<int>(analysis.integer("forced.torus_above"));
+  o.truncation = analysis.string("forced.torus_truncation") == "diamond" ? TorusTruncation::kDiamond
+                                                                         : TorusTruncation::kBox;
+  o.validate();
   return o;
 }
 

@@ -10,16 +10,18 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/signal/detail/fftw_planner.h"
 
 namespace geardyn {
-namespace {
 
-/// FFTW's planner is not thread-safe (only fftw_execute is): plans are made and destroyed under
-/// this lock so that analyses may run on several threads (e.g. noise studies).
-std::mutex& fftwPlannerMutex() {
+std::mutex& detail::fftwPlannerMutex() {
   static std::mutex m;
   return m;
 }
+
+namespace {
+
+using detail::fftwPlannerMutex;
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 

@@ -35,13 +35,13 @@ HarmonicBlocks::~HarmonicBlocks() = default;
 void HarmonicBlocks::factorize(int h, double w) {
   if (!sparse_) {
     Eigen::MatrixXcd D = (K_ - w * w * M_).cast<Complex>() + Complex(0.0, w) * C_.cast<Complex>();
-    if (h == 0 && MR_.cols() > 0) D += (penalty_ * MR_ * MR_.transpose()).cast<Complex>();
+    if (w == 0.0 && MR_.cols() > 0) D += (penalty_ * MR_ * MR_.transpose()).cast<Complex>();
     dense_.resize(std::max<std::size_t>(dense_.size(), h + 1));
     dense_[h].compute(D);
     return;
   }
   SparseMatrixC D = Ks_ - (w * w) * Ms_ + Complex(0.0, w) * Cs_;
-  if (h == 0 && MR_.cols() > 0) {
+  if (w == 0.0 && MR_.cols() > 0) {
     // [D(0) MR; (MR)ᵀ 0]: the border's nonzeros appended to D's.
     const int k = static_cast<int>(MR_.cols());
     std::vector<Eigen::Triplet<Complex>> entries;

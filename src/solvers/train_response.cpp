@@ -11,6 +11,7 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
 #include "geardyn/solvers/detail/train_static_bearings.h"
+#include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {
@@ -19,40 +20,8 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 using Complex = std::complex<double>;
 
-/// x ≈ p/q by continued fractions (q <= 10⁶, |x − p/q| <= 1e-9 x).
-std::pair<long long, long long> rational(double x) {
-  long long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
-  double r = x;
-  for (int i = 0; i < 40; ++i) {
-    const long long a = static_cast<long long>(std::floor(r));
-    const long long p2 = a * p1 + p0, q2 = a * q1 + q0;
-    if (q2 > 1000000) break;
-    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
-    if (std::abs(x - static_cast<double>(p1) / q1) <= 1e-9 * x) break;
-    const double frac = r - a;
-    if (frac < 1e-12) break;
-    r = 1.0 / frac;
-  }
-  return {p1, q1};
-}
-
-/// Element deformation d = J q[dofs].
-Eigen::VectorXd deformation(const TrainElement& e, const Eigen::VectorXd& q) {
-  Eigen::VectorXd local(e.dofs.size());
-  for (std::size_t i = 0; i < e.dofs.size(); ++i) local(i) = q(e.dofs[i]);
-  return e.jacobian * local;
-}
-
-/// Mass-normalised rigid-body modes of (K, M): eigenvalues below 1e-10 of the largest.
-Eigen::MatrixXd rigidModes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (K + K.transpose()),
-                                                                         M);
-  const Eigen::VectorXd& w2 = solver.eigenvalues();
-  const double largest = std::max(std::abs(w2(w2.size() - 1)), 1e-300);
-  int count = 0;
-  while (count < w2.size() && std::abs(w2(count)) < 1e-10 * largest) ++count;
-  return solver.eigenvectors().leftCols(count);
-}
+using detail::elementDeformation;
+using detail::rigidModes;
 
 }  // namespace
 
@@ -91,7 +60,7 @@ TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_spe
     r.mesh_force.push_back(mesh.mean_stiffness * (mesh.deflection(r.displacement) - mean_error[m]));
   }
   for (const TrainElement& e : model.elements()) {
-    r.element_force.push_back((e.local_stiffness * deformation(e, r.displacement)).norm());
+    r.element_force.push_back((e.local_stiffness * elementDeformation(e, r.displacement)).norm());
   }
   for (std::size_t s = 0; s < model.spec().stages.size(); ++s) {
     TrainStageLoadSharing share;
@@ -137,7 +106,7 @@ TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harm
   std::vector<std::pair<long long, long long>> fractions;
   for (const TrainMesh& m : model.meshes()) {
     // Mesh events per input revolution: z |ω/Ω|, a ratio of tooth counts.
-    const auto [p, q] = rational(m.frequency_ratio * kTwoPi);
+    const auto [p, q] = detail::rationalApproximation(m.frequency_ratio * kTwoPi);
     fractions.push_back({p, q});
     g = std::gcd(g, p);
     l = std::lcm(l, q);
@@ -189,43 +158,11 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
   const int L = options.mesh_harmonics;
   for (int p : base_.mesh_multiple) harmonics_ = std::max(harmonics_, p * L);
   // Fourier coefficients of every mesh's k and k·e over its own period, with its phase.
-  const auto& meshes = model.meshes();
-  k_hat_.resize(meshes.size());
-  ke_hat_.resize(meshes.size());
-  e_hat_.resize(meshes.size());
-  for (std::size_t m = 0; m < meshes.size(); ++m) {
-    const TrainMesh& mesh = meshes[m];
-    const MeshStiffnessSummary summary = summarizeMeshStiffness(*mesh.stiffness, L);
-    const auto breaks = mesh.stiffness->discontinuities();
-    k_hat_[m].assign(2 * L + 1, 0.0);
-    ke_hat_[m].assign(2 * L + 1, 0.0);
-    e_hat_[m].assign(2 * L + 1, 0.0);
-    const bool has_error = !mesh.transmission_error.isZero();
-    for (int l = 0; l <= L; ++l) {
-      Complex c = l == 0 ? Complex(summary.mean)
-                         : 0.5 * Complex(summary.cosine[l - 1], -summary.sine[l - 1]);
-      const Complex shift = std::polar(1.0, kTwoPi * l * mesh.phase);
-      k_hat_[m][L + l] = c * shift;
-      k_hat_[m][L - l] = std::conj(c * shift);
-      if (has_error) {
-        const auto ke = [&](double phi) {
-          return mesh.stiffness->stiffness(phi) * mesh.transmission_error.value(phi);
-        };
-        const double re = integrateOverPeriod(
-            [&](double phi) { return ke(phi) * std::cos(kTwoPi * l * phi); }, breaks);
-        const double im = integrateOverPeriod(
-            [&](double phi) { return -ke(phi) * std::sin(kTwoPi * l * phi); }, breaks);
-        ke_hat_[m][L + l] = Complex(re, im) * shift;
-        ke_hat_[m][L - l] = std::conj(ke_hat_[m][L + l]);
-        const auto& e = mesh.transmission_error;
-        const double e_re = integrateOverPeriod(
-            [&](double phi) { return e.value(phi) * std::cos(kTwoPi * l * phi); }, breaks);
-        const double e_im = integrateOverPeriod(
-            [&](double phi) { return -e.value(phi) * std::sin(kTwoPi * l * phi); }, breaks);
-        e_hat_[m][L + l] = Complex(e_re, e_im) * shift;
-        e_hat_[m][L - l] = std::conj(e_hat_[m][L + l]);
-      }
-    }
+  for (const TrainMesh& mesh : model.meshes()) {
+    detail::MeshFourier fourier = detail::meshFourier(mesh, L);
+    k_hat_.push_back(std::move(fourier.k));
+    ke_hat_.push_back(std::move(fourier.ke));
+    e_hat_.push_back(std::move(fourier.e));
   }
 }
 
@@ -362,7 +299,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   for (const TrainElement& e : model.elements()) {
     Eigen::MatrixXd forces(samples, e.local_stiffness.rows());
     for (int k = 0; k < samples; ++k) {
-      forces.row(k) = (e.local_stiffness * deformation(e, q.row(k).transpose())).transpose();
+      forces.row(k) = (e.local_stiffness * elementDeformation(e, q.row(k).transpose())).transpose();
     }
     const Eigen::RowVectorXd mean = forces.colwise().mean();
     double peak = 0.0;

@@ -405,7 +405,7 @@ DIMENSIONLESS = re.compile(
     r"^(.*ratio.*|.*fraction.*|.*relative.*|.*factor.*|share_pair_\d+|order|mode|case|count|"
     r"teeth|teeth_[ab]|undercut|steady|stable|divergent|branch|newton_iterations|contact_loss|multiplicity|strain_.*|"
     r"point|solution|step_cuts|critical_multiplier_abs|contact_loss_.*|back_flank_.*|"
-    r"sample|seed|harmonic|identifiable|a|m1_k|m1_ef|d_k|d_e|r_ke|delta_m1_ef|variable_term_v|"
+    r"sample|seed|harmonic|harmonic_g\d+|identifiable|a|m1_k|m1_ef|d_k|d_e|r_ke|delta_m1_ef|variable_term_v|"
     r"dynamic_mean_excitation)$")
 MODE_SHAPES = {"re", "im", "amplitude", "real", "imag"}  # normalised shapes
 # A unit written in capitals, at the end or between underscores: "_Hz", "_N_m", "p2p_N_stage1".

@@ -15,6 +15,7 @@
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_runup.h"
 #include "geardyn/solvers/train_time.h"
+#include "geardyn/solvers/train_torus.h"
 
 namespace geardyn::config {
 
@@ -27,6 +28,8 @@ double analysisSpeed(const config::Config& analysis, const std::string& section,
 TrainModalOptions trainModalOptionsFromConfig(const config::Config& analysis,
                                               const std::string& section);
 TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis);
+/// [forced] mesh_harmonics, torus_above, torus_truncation (validated).
+TrainTorusOptions trainTorusOptionsFromConfig(const config::Config& analysis);
 TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis);
 /// [nonlinear] harmonics, samples, tolerance, max_iterations (validated: InputError naming the
 /// key, e.g. nonlinear.samples <= 2 × harmonics, which aliases).

@@ -28,7 +28,8 @@ class HarmonicBlocks {
                  const Eigen::MatrixXd& R, int sparse_dofs);
   ~HarmonicBlocks();
 
-  /// Factorises D(h) at the angular frequency w = hω₀ [rad/s], for h = 0..H in order.
+  /// Factorises block h at the angular frequency w [rad/s] (hω₀ over a common period, n·ω of a
+  /// torus tone), for h = 0..H in order; the rigid-body modes are fixed in a block at w = 0.
   void factorize(int h, double w);
   /// D(h)⁻¹ rhs for h ≥ 0 (factorised), and for h < 0 through conj(D(|h|)⁻¹ conj rhs).
   Eigen::MatrixXcd solve(int h, const Eigen::MatrixXcd& rhs) const;

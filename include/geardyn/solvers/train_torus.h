@@ -1,0 +1,136 @@
+#pragma once
+/// \file
+/// Steady state of a linear time-varying gear train on the torus of its mesh phases
+/// (multi-frequency harmonic balance; docs/theory/torus_harmonic_balance.md).
+///
+/// The meshes are grouped so that the mesh frequencies of a group share a base g_j with a
+/// short common period (f_m = P_m g_{j(m)}, P_m integer); the k groups' bases are the
+/// generators. The response is written as a function of the generator phases,
+/// q(t) = u(θ₁, …, θ_k) at θ_j = 2π g_j t, u(θ) = Σ_{n∈T} X_n e^{i n·θ}, with
+/// d/dt = Σ_j 2π g_j ∂/∂θ_j (Kim & Noah 1996, eq. 9; Guskov, Sinou & Thouverez 2008, eq. 4).
+/// Mesh m's stiffness depends on θ_{j(m)} only, k_m = Σ_l k̂_{m,l} e^{i l P_m θ_{j(m)}}, so
+///
+///   D(n·ω) X_n + Σ_m v_m Σ_{l≠0} k̂_{m,l} δ_{m, n − l P_m e_{j(m)}} = F_n,   δ_{m,n} = v_mᵀ X_n,
+///
+/// D(ω) = K̄ + iω(C + ΩG₁) − ω²M as in train_response.h. It is condensed exactly onto the mesh
+/// deflections (r |T| unknowns, sparse: a tone couples only along its meshes' own generator),
+/// solved by GMRES preconditioned with the exact solve of every mesh group's line of tones
+/// (a direct sparse LU when GMRES stalls). With one generator the tone set is that of the
+/// common-period balance and the two solvers solve the same equations. The index set T is the
+/// box |n_j| <= N_j = L max_{m∈j} P_m (default) or the diamond Σ_j |n_j| / N_j <= 1.
+
+#include <Eigen/Dense>
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn {
+namespace detail {
+class TorusFft;
+}
+
+enum class TorusTruncation { kBox, kDiamond };
+
+struct TrainTorusOptions {
+  int mesh_harmonics = 10;  ///< L: harmonics of each mesh frequency kept (>= 1)
+  /// The most base harmonics (L × the largest multiple P_m of the group's base) a group of
+  /// meshes sharing one generator may need; a mesh that would exceed it starts a new generator.
+  int group_harmonics = 100;
+  TorusTruncation truncation = TorusTruncation::kBox;
+  /// Grid points per generator period for the mesh forces' peaks and spectra; 0: derived,
+  /// 8 per highest harmonic of that generator and >= 32, the grid capped at 2^20 points.
+  int samples = 0;
+  int sparse_dofs = 64;      ///< as TrainSteadyOptions::sparse_dofs
+  double tolerance = 1e-13;  ///< GMRES: ‖b − A x‖ <= tolerance ‖b‖ on the condensed system
+  void validate() const;
+};
+
+/// The generators of a train's mesh frequencies: groups of meshes with a short common period.
+struct TrainTorusGenerators {
+  std::vector<double> ratio;        ///< g_j / |Ω| [Hz per rad/s]
+  std::vector<int> mesh_generator;  ///< j(m)
+  std::vector<int> mesh_multiple;   ///< P_m: f_m = P_m g_{j(m)}
+  std::vector<int> harmonics;       ///< N_j = L max_{m∈j} P_m
+};
+TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_harmonics,
+                                          int group_harmonics);
+
+/// One spectral line of a mesh force: the tone n (the frequency n·g) and its amplitude.
+struct TorusLine {
+  std::vector<int> tone;
+  double frequency = 0.0;  ///< n·g [Hz] (> 0)
+  double amplitude = 0.0;  ///< 2 |c_n| [N]
+};
+
+struct TrainTorusState {
+  double input_speed = 0.0;                 ///< Ω [rad/s]
+  std::vector<double> generator_frequency;  ///< g_j [Hz]
+  std::vector<int> mesh_generator, mesh_multiple;
+  Eigen::MatrixXi tones;           ///< k × |T|: n of every tone (symmetric set)
+  Eigen::VectorXd tone_frequency;  ///< n·g [Hz]
+  /// X_n (column per tone); q(t) = Σ_n X_n e^{i 2π n·g t} (real: X_{−n} = conj X_n).
+  Eigen::MatrixXcd harmonic;
+  /// Over the torus grid (every phase relation of the generators; the actual trajectory is a
+  /// line on it): mean, largest and smallest elastic mesh force k(φ)(vᵀq − e) [N].
+  std::vector<double> mesh_force_mean, mesh_force_max, mesh_force_min;
+  std::vector<double> dynamic_factor;  ///< max |F| / |mean F| per mesh [-]
+  /// Amplitude of the mesh force at orders 1..L of each mesh's own frequency [N].
+  std::vector<std::vector<double>> mesh_force_harmonics;
+  /// Per mesh: its force's lines above 1e-9 of its largest, ascending frequency.
+  std::vector<std::vector<TorusLine>> mesh_force_lines;
+  std::vector<double> element_dynamic_force;  ///< as TrainSteadyState [N, N m]
+  int iterations = 0;                         ///< GMRES iterations (0: direct)
+  double residual = 0.0;      ///< ‖b − A δ‖ / ‖b‖ of the condensed system
+  std::string linear_solver;  ///< "gmres" or "direct"
+  /// q(t) at the times (rows: times, cols: DOFs).
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& times) const;
+};
+
+/// The torus solver of one model: generators, tone set and the meshes' Fourier coefficients
+/// once; per speed one factorisation of D(n·ω) per tone pair ±n and the condensed solve.
+/// Thread-safe for concurrent solve() calls.
+class TrainTorusSolver {
+ public:
+  TrainTorusSolver(const GearTrainModel& model, const TrainTorusOptions& options = {});
+  ~TrainTorusSolver();
+  TrainTorusSolver(const TrainTorusSolver&) = delete;
+  TrainTorusSolver& operator=(const TrainTorusSolver&) = delete;
+  TrainTorusState solve(double input_speed) const;
+  const TrainTorusGenerators& generators() const noexcept { return generators_; }
+  int toneCount() const noexcept { return static_cast<int>(tones_.cols()); }
+
+ private:
+  /// y = A x for the condensed matrix A (B[t] = B_n of tone t), matrix-free.
+  void applyCondensed(const std::vector<Eigen::MatrixXcd>& B, const Eigen::VectorXcd& x,
+                      Eigen::VectorXcd& y) const;
+  /// δ from the condensed system A δ = rhs: preconditioned GMRES, else a sparse LU.
+  Eigen::VectorXcd solveCondensed(const std::vector<Eigen::MatrixXcd>& B,
+                                  const Eigen::VectorXcd& rhs, TrainTorusState& s) const;
+  /// X_n from δ (DinvV[block]: D(n·ω)⁻¹ V; DinvF0: D(0)⁻¹ F₀; phi: the mesh loads φ_n).
+  void recover(TrainTorusState& s, const std::vector<Eigen::MatrixXcd>& DinvV,
+               const Eigen::VectorXcd& DinvF0, const Eigen::MatrixXcd& phi,
+               const Eigen::VectorXcd& delta) const;
+  /// Mesh forces, element forces and spectra on the torus grid (train_torus_grid.cpp).
+  void postProcess(TrainTorusState& s) const;
+
+  const GearTrainModel& model_;
+  TrainTorusOptions options_;
+  TrainTorusGenerators generators_;
+  Eigen::MatrixXi tones_;      // k × |T|, zero tone first, then ±n in pairs
+  std::vector<int> negative_;  // index of −n
+  std::vector<int> block_;     // HarmonicBlocks index of n (>0: n itself, <0: conj of −n)
+  // [tone * r + m][L + l]: index of the tone n − l P_m e_{j(m)} (−1: outside T).
+  std::vector<std::vector<int>> neighbour_;
+  std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
+  std::vector<std::vector<int>> lines_;  // preconditioner blocks: unknown indices t r + m
+  std::vector<int> line_of_, local_of_;  // unknown → its line and its place in it
+  Eigen::MatrixXd rigid_;
+  bool rigid_at_every_speed_ = false;
+  std::vector<int> samples_;               // grid points per generator
+  std::unique_ptr<detail::TorusFft> fft_;  // the grid's transforms, planned once
+};
+
+}  // namespace geardyn

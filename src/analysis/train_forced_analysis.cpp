@@ -1,0 +1,209 @@
+/// `train` [forced]: the linear steady state over a speed range (train_forced_analysis.h).
+/// Balanced over the meshes' common period (train_response.h) when it is short, else on the
+/// torus of the mesh phases (train_torus.h); forced.method forces either.
+
+#include "train_forced_analysis.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "geardyn/config/train_analysis.h"
+#include "geardyn/error.h"
+#include "geardyn/solvers/train_response.h"
+#include "geardyn/solvers/train_torus.h"
+#include "geardyn/units.h"
+
+namespace geardyn::analysis::detail {
+namespace {
+
+using geardyn::units::kRpm;
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+/// forced_tones.csv lists a mesh's lines down to this fraction of its largest line: the
+/// sidebands an analyst reads off a spectrum (60 dB below the strongest line).
+constexpr double kToneTableFloor = 1e-3;
+
+/// What one speed's steady state gives the tables, from either solver.
+struct ForcedPoint {
+  std::vector<double> dynamic_factor, p2p, element_force;
+  std::vector<std::vector<double>> orders;  // per mesh, orders 1..L [N]
+  std::vector<std::vector<TorusLine>> lines;
+  int iterations = 0;
+  bool direct = false;
+};
+
+ForcedPoint pointOf(const TrainSteadyState& s) {
+  ForcedPoint p;
+  p.dynamic_factor = s.dynamic_factor;
+  for (std::size_t m = 0; m < s.mesh_force_max.size(); ++m) {
+    p.p2p.push_back(s.mesh_force_max[m] - s.mesh_force_min[m]);
+  }
+  p.orders = s.mesh_force_harmonics;
+  p.element_force = s.element_dynamic_force;
+  return p;
+}
+
+ForcedPoint pointOf(TrainTorusState&& s) {
+  ForcedPoint p;
+  p.dynamic_factor = s.dynamic_factor;
+  for (std::size_t m = 0; m < s.mesh_force_max.size(); ++m) {
+    p.p2p.push_back(s.mesh_force_max[m] - s.mesh_force_min[m]);
+  }
+  p.orders = std::move(s.mesh_force_harmonics);
+  p.element_force = s.element_dynamic_force;
+  p.lines = std::move(s.mesh_force_lines);
+  p.iterations = s.iterations;
+  p.direct = s.linear_solver == "direct";
+  return p;
+}
+
+/// "2g1-g2": the tone n as a combination of the generators.
+std::string toneName(const std::vector<int>& n) {
+  std::string out;
+  for (std::size_t j = 0; j < n.size(); ++j) {
+    if (n[j] == 0) continue;
+    out += n[j] < 0 ? "-" : (out.empty() ? "" : "+");
+    if (std::abs(n[j]) != 1) out += std::to_string(std::abs(n[j]));
+    out += fmt::format("g{}", j + 1);
+  }
+  return out;
+}
+
+}  // namespace
+
+void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
+                    AnalysisResult& result, io::RunSummary& summary, std::string& text,
+                    const AnalysisContext& context) {
+  const auto start = Clock::now();
+  const auto speeds = config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1);
+  const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
+  const TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
+  // Base harmonics the common period needs: L × the largest multiple of its base.
+  int common_harmonics = 0;
+  for (int p : trainBaseFrequency(model, 1, std::numeric_limits<int>::max()).mesh_multiple) {
+    common_harmonics = std::max(common_harmonics, p * steady.mesh_harmonics);
+  }
+  const std::string requested = analysis.string("forced.method");
+  const bool torus = requested == "torus" ||
+                     (requested == "auto" && common_harmonics > torus_options.group_harmonics);
+  std::optional<TrainSteadySolver> common;
+  std::optional<TrainTorusSolver> torus_solver;
+  if (torus) {
+    torus_solver.emplace(model, torus_options);
+  } else {
+    common.emplace(model, steady);
+  }
+  const auto& meshes = model.meshes();
+  std::vector<std::string> header{"speed_rpm"};
+  for (const TrainMesh& m : meshes) {
+    header.push_back("dynamic_factor_" + m.name);
+    header.push_back("p2p_" + m.name + "_normal_n");  // mesh force along the contact normal
+    header.push_back("h1_" + m.name + "_normal_n");
+  }
+  for (const TrainElement& e : model.elements()) {
+    header.push_back(
+        fmt::format("dynamic_{}_{}", e.name, e.local_stiffness.rows() == 1 ? "n_m" : "n"));
+  }
+  io::CsvTable table(header);
+  io::CsvTable orders_table({"speed_rpm", "mesh", "order", "frequency_hz", "amplitude_n"});
+  std::vector<std::string> tone_header{"speed_rpm", "mesh"};
+  const int k = torus ? static_cast<int>(torus_solver->generators().ratio.size()) : 0;
+  for (int j = 0; j < k; ++j) tone_header.push_back(fmt::format("harmonic_g{}", j + 1));
+  for (const char* column : {"tone", "frequency_hz", "amplitude_n", "relative_amplitude"}) {
+    tone_header.push_back(column);
+  }
+  io::CsvTable tones_table(tone_header);
+  // Per mesh: the largest dynamic factor and the largest peak-to-peak mesh force over the
+  // speeds, each with its speed (the headline numbers a sweep over `train` names).
+  std::vector<double> worst(meshes.size(), 0.0), worst_speed(meshes.size(), 0.0);
+  std::vector<double> p2p(meshes.size(), 0.0), p2p_speed(meshes.size(), 0.0);
+  int max_iterations = 0, direct = 0;
+  const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    if (progress) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
+    if (speeds[i] == 0.0) continue;
+    const double speed = speeds[i];
+    const ForcedPoint s =
+        torus ? pointOf(torus_solver->solve(speed)) : pointOf(common->solve(speed));
+    max_iterations = std::max(max_iterations, s.iterations);
+    direct += s.direct ? 1 : 0;
+    std::vector<io::CsvCell> row{speed / kRpm};
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      row.push_back(s.dynamic_factor[m]);
+      row.push_back(s.p2p[m]);
+      row.push_back(s.orders[m][0]);
+      if (s.dynamic_factor[m] > worst[m]) worst[m] = s.dynamic_factor[m], worst_speed[m] = speed;
+      if (s.p2p[m] > p2p[m]) p2p[m] = s.p2p[m], p2p_speed[m] = speed;
+      const double f_m = meshes[m].frequency_ratio * std::abs(speed);
+      for (std::size_t l = 0; l < s.orders[m].size(); ++l) {
+        orders_table.addRow({speed / kRpm, meshes[m].name, static_cast<int>(l + 1), (l + 1.0) * f_m,
+                             s.orders[m][l]});
+      }
+      if (!torus) continue;
+      double largest = 0.0;
+      for (const TorusLine& line : s.lines[m]) largest = std::max(largest, line.amplitude);
+      for (const TorusLine& line : s.lines[m]) {
+        if (line.amplitude < kToneTableFloor * largest) continue;
+        std::vector<io::CsvCell> tone_row{speed / kRpm, meshes[m].name};
+        for (int n : line.tone) tone_row.push_back(n);
+        tone_row.push_back(toneName(line.tone));
+        tone_row.push_back(line.frequency);
+        tone_row.push_back(line.amplitude);
+        tone_row.push_back(line.amplitude / largest);
+        tones_table.addRow(tone_row);
+      }
+    }
+    for (double f : s.element_force) row.push_back(f);
+    table.addRow(row);
+  }
+  result.addTable("forced_response.csv", table);
+  result.addTable("forced_mesh_orders.csv", orders_table);
+  if (torus) result.addTable("forced_tones.csv", tones_table);
+  Json peaks = Json::object();
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    peaks[meshes[m].name] = {{"max_dynamic_factor", worst[m]},
+                             {"at_speed_rpm", worst_speed[m] / kRpm},
+                             {"max_p2p_force_n", p2p[m]},
+                             {"max_p2p_force_at_speed_rpm", p2p_speed[m] / kRpm}};
+    text += fmt::format("  {}: max dynamic factor {:.3f} [-] at {:.0f} rpm\n", meshes[m].name,
+                        worst[m], worst_speed[m] / kRpm);
+  }
+  Json forced = {{"speeds", speeds.size()},
+                 {"mesh_harmonics", steady.mesh_harmonics},
+                 {"method", torus ? "torus" : "common_period"},
+                 {"common_period_harmonics", common_harmonics}};
+  if (torus) {
+    const TrainTorusGenerators& g = torus_solver->generators();
+    Json generators = Json::array();
+    for (std::size_t j = 0; j < g.ratio.size(); ++j) {
+      Json members = Json::array();
+      for (std::size_t m = 0; m < meshes.size(); ++m) {
+        if (g.mesh_generator[m] == static_cast<int>(j)) {
+          members.push_back({{"mesh", meshes[m].name}, {"multiple", g.mesh_multiple[m]}});
+        }
+      }
+      // g_j per input revolution: the generator's events per turn of the input shaft.
+      generators.push_back({{"order", g.ratio[j] * 2.0 * std::numbers::pi},
+                            {"harmonics", g.harmonics[j]},
+                            {"meshes", members}});
+    }
+    forced["torus"] = {{"generators", generators},
+                       {"truncation", analysis.string("forced.torus_truncation")},
+                       {"tones", torus_solver->toneCount()},
+                       {"max_gmres_iterations", max_iterations},
+                       {"direct_solves", direct}};
+  }
+  forced["meshes"] = peaks;
+  forced["wall_time_s"] = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.results["forced"] = forced;
+  text += fmt::format("forced response ({}): {} speeds in {:.2f} s\n",
+                      torus ? fmt::format("torus, {} generators", k) : "common period",
+                      speeds.size(), forced["wall_time_s"].get<double>());
+}
+
+}  // namespace geardyn::analysis::detail

@@ -1,0 +1,22 @@
+#pragma once
+/// \file
+/// The `forced` analysis of `geardyn train` (train_forced_analysis.cpp), called by
+/// trainAnalysis: the linear steady state over a speed range, balanced over the common period
+/// of the meshes or on the torus of their phases (forced.method).
+
+#include <string>
+
+#include "geardyn/analysis/analysis_result.h"
+#include "geardyn/config/config.h"
+#include "geardyn/io/result_writer.h"
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn::analysis::detail {
+
+/// Runs [forced] on `model`: forced_response.csv, forced_mesh_orders.csv, forced_tones.csv
+/// (torus), summary.results["forced"] with the method, and report lines in `text`.
+void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
+                    AnalysisResult& result, io::RunSummary& summary, std::string& text,
+                    const AnalysisContext& context);
+
+}  // namespace geardyn::analysis::detail

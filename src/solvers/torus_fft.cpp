@@ -1,0 +1,67 @@
+/// FFTW transforms between the torus grid and its Fourier coefficients (detail/torus_fft.h).
+
+#include "geardyn/solvers/detail/torus_fft.h"
+
+#include <mutex>
+
+#include "geardyn/signal/detail/fftw_planner.h"
+
+namespace geardyn::detail {
+
+TorusFft::TorusFft(std::vector<int> samples, int fields, int spectra)
+    : M_(std::move(samples)), fields_(fields), spectra_(spectra) {
+  const int k = static_cast<int>(M_.size());
+  // FFTW's dimensions are row-major (last fastest): axis 0 is the last and the halved one.
+  std::vector<int> dims(M_.rbegin(), M_.rend());
+  for (int m : M_) points_ *= m;
+  half_ = points_ / M_[0] * (M_[0] / 2 + 1);
+  const std::lock_guard<std::mutex> lock(fftwPlannerMutex());
+  // FFTW_ESTIMATE does not touch the arrays; FFTW_UNALIGNED lets solve() pass its own buffers.
+  Eigen::MatrixXcd half(half_, std::max(fields, spectra));
+  Eigen::MatrixXd grid(points_, std::max(fields, spectra));
+  auto* c = reinterpret_cast<fftw_complex*>(half.data());
+  const int h = static_cast<int>(half_), p = static_cast<int>(points_);
+  to_grid_ = fftw_plan_many_dft_c2r(k, dims.data(), fields, c, nullptr, 1, h, grid.data(), nullptr,
+                                    1, p, FFTW_ESTIMATE | FFTW_UNALIGNED);
+  to_spectrum_ = fftw_plan_many_dft_r2c(k, dims.data(), spectra, grid.data(), nullptr, 1, p, c,
+                                        nullptr, 1, h, FFTW_ESTIMATE | FFTW_UNALIGNED);
+}
+
+TorusFft::~TorusFft() {
+  const std::lock_guard<std::mutex> lock(fftwPlannerMutex());
+  fftw_destroy_plan(to_grid_);
+  fftw_destroy_plan(to_spectrum_);
+}
+
+long long TorusFft::halfIndex(const Eigen::Ref<const Eigen::VectorXi>& n) const {
+  long long index = n(0), stride = M_[0] / 2 + 1;
+  for (std::size_t j = 1; j < M_.size(); ++j) {
+    index += ((n(j) % M_[j] + M_[j]) % M_[j]) * stride;
+    stride *= M_[j];
+  }
+  return index;
+}
+
+void TorusFft::toneAt(long long i, Eigen::VectorXi& n) const {
+  n.resize(static_cast<int>(M_.size()));
+  n(0) = static_cast<int>(i % (M_[0] / 2 + 1));
+  i /= M_[0] / 2 + 1;
+  for (std::size_t j = 1; j < M_.size(); ++j) {
+    const int s = static_cast<int>(i % M_[j]);
+    n(j) = s > M_[j] / 2 ? s - M_[j] : s;
+    i /= M_[j];
+  }
+}
+
+void TorusFft::toGrid(Eigen::MatrixXcd& half, Eigen::MatrixXd& grid) const {
+  grid.resize(points_, fields_);
+  fftw_execute_dft_c2r(to_grid_, reinterpret_cast<fftw_complex*>(half.data()), grid.data());
+}
+
+void TorusFft::toSpectrum(Eigen::MatrixXd& grid, Eigen::MatrixXcd& half) const {
+  half.resize(half_, spectra_);
+  fftw_execute_dft_r2c(to_spectrum_, grid.data(), reinterpret_cast<fftw_complex*>(half.data()));
+  half /= static_cast<double>(points_);
+}
+
+}  // namespace geardyn::detail

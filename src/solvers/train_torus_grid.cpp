@@ -1,0 +1,143 @@
+/// The torus steady state on its k-dimensional grid of generator phases (train_torus.h): mesh
+/// forces and their peaks, per-tone spectra, element forces (FFTW's real multi-dimensional
+/// transforms, detail/torus_fft.h); and q(t) along the trajectory.
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geardyn/solvers/detail/torus_fft.h"
+#include "geardyn/solvers/train_torus.h"
+
+namespace geardyn {
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+/// Lines below this fraction of a mesh force's largest line are not listed (round-off).
+constexpr double kLineFloor = 1e-9;
+
+/// The lines of one mesh force's spectrum (column of `half`) at positive frequencies, tones
+/// |n_j| <= K_j: n or −n of every entry of the half spectrum (at n_0 = 0 both are in it).
+std::vector<TorusLine> linesOf(const Eigen::MatrixXcd& half, Eigen::Index column,
+                               const detail::TorusFft& fft, const std::vector<int>& K,
+                               const std::vector<double>& g) {
+  std::vector<TorusLine> lines;
+  const int k = static_cast<int>(K.size());
+  Eigen::VectorXi n(k);
+  for (long long i = 0; i < fft.halfSize(); ++i) {
+    fft.toneAt(i, n);
+    bool inside = true;
+    double frequency = 0.0;
+    for (int j = 0; j < k; ++j) {
+      inside = inside && std::abs(n(j)) <= K[j];
+      frequency += n(j) * g[j];
+    }
+    if (!inside || std::abs(frequency) <= 1e-9 * g[0] || (n(0) == 0 && frequency < 0.0)) continue;
+    if (frequency < 0.0) n = -n, frequency = -frequency;
+    lines.push_back(
+        {std::vector<int>(n.data(), n.data() + k), frequency, 2.0 * std::abs(half(i, column))});
+  }
+  double largest = 0.0;
+  for (const TorusLine& line : lines) largest = std::max(largest, line.amplitude);
+  std::erase_if(lines,
+                [&](const TorusLine& line) { return line.amplitude < kLineFloor * largest; });
+  std::sort(lines.begin(), lines.end(),
+            [](const TorusLine& a, const TorusLine& b) { return a.frequency < b.frequency; });
+  return lines;
+}
+
+}  // namespace
+
+void TrainTorusSolver::postProcess(TrainTorusState& s) const {
+  const auto& meshes = model_.meshes();
+  const int r = static_cast<int>(meshes.size());
+  const int L = options_.mesh_harmonics;
+  const detail::TorusFft& fft = *fft_;
+  const std::vector<int>& M = fft.samples();
+  // Every field on the grid in one transform: the mesh deflections, then the element
+  // deformations (rows of S: vᵀ, then J over each element's DOFs).
+  Eigen::Index rows = r;
+  for (const TrainElement& e : model_.elements()) rows += e.jacobian.rows();
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows, model_.dofCount());
+  for (int m = 0; m < r; ++m) S.row(m) = model_.meshVector(m).transpose();
+  Eigen::Index row = r;
+  for (const TrainElement& e : model_.elements()) {
+    for (std::size_t i = 0; i < e.dofs.size(); ++i) {
+      S.block(row, e.dofs[i], e.jacobian.rows(), 1) += e.jacobian.col(i);
+    }
+    row += e.jacobian.rows();
+  }
+  const Eigen::MatrixXcd C = (S.cast<Complex>() * s.harmonic).transpose();  // tones × fields
+  Eigen::MatrixXcd half = Eigen::MatrixXcd::Zero(fft.halfSize(), rows);
+  for (Eigen::Index t = 0; t < s.tones.cols(); ++t) {
+    if (s.tones(0, t) >= 0) half.row(fft.halfIndex(s.tones.col(t))) = C.row(t);
+  }
+  Eigen::MatrixXd fields;
+  fft.toGrid(half, fields);
+  Eigen::MatrixXd force(fft.points(), r);
+  for (int m = 0; m < r; ++m) {
+    const TrainMesh& mesh = meshes[m];
+    const int j = generators_.mesh_generator[m], P = generators_.mesh_multiple[m];
+    // k and e along the mesh's own generator: φ = P_m s / M_j + φ_m0 [mesh periods].
+    Eigen::VectorXd k_axis(M[j]), e_axis(M[j]);
+    for (int i = 0; i < M[j]; ++i) {
+      const double phase = static_cast<double>(P) * i / M[j] + mesh.phase;
+      k_axis(i) = mesh.stiffness->stiffness(phase);
+      e_axis(i) = mesh.transmission_error.value(phase);
+    }
+    long long stride = 1;
+    for (int a = 0; a < j; ++a) stride *= M[a];
+    for (long long p = 0; p < fft.points(); ++p) {
+      const int i = static_cast<int>((p / stride) % M[j]);
+      force(p, m) = k_axis(i) * mesh.contactDeflection(fields(p, m) - e_axis(i));
+    }
+    const double mean = force.col(m).mean();
+    s.mesh_force_mean.push_back(mean);
+    s.mesh_force_max.push_back(force.col(m).maxCoeff());
+    s.mesh_force_min.push_back(force.col(m).minCoeff());
+    s.dynamic_factor.push_back(
+        std::abs(mean) > 0.0 ? force.col(m).cwiseAbs().maxCoeff() / std::abs(mean) : 0.0);
+  }
+  row = r;
+  for (const TrainElement& e : model_.elements()) {
+    const Eigen::MatrixXd forces =
+        e.local_stiffness * fields.middleCols(row, e.jacobian.rows()).transpose();
+    row += e.jacobian.rows();
+    const Eigen::VectorXd mean = forces.rowwise().mean();
+    s.element_dynamic_force.push_back((forces.colwise() - mean).colwise().norm().maxCoeff());
+  }
+  // The spectra: lines up to twice the kept harmonics (the products k δ) that the grid resolves.
+  std::vector<int> K;
+  for (std::size_t j = 0; j < M.size(); ++j) {
+    K.push_back(std::min((M[j] - 1) / 2, 2 * generators_.harmonics[j]));
+  }
+  Eigen::MatrixXcd spectrum;
+  fft.toSpectrum(force, spectrum);
+  Eigen::VectorXi n = Eigen::VectorXi::Zero(static_cast<int>(M.size()));
+  for (int m = 0; m < r; ++m) {
+    const int j = generators_.mesh_generator[m], P = generators_.mesh_multiple[m];
+    std::vector<double> orders;
+    n.setZero();
+    for (int l = 1; l <= L; ++l) {
+      n(j) = l * P;
+      orders.push_back(n(j) <= K[j] ? 2.0 * std::abs(spectrum(fft.halfIndex(n), m)) : 0.0);
+    }
+    s.mesh_force_harmonics.push_back(std::move(orders));
+    s.mesh_force_lines.push_back(linesOf(spectrum, m, fft, K, s.generator_frequency));
+  }
+}
+
+Eigen::MatrixXd TrainTorusState::displacement(const Eigen::VectorXd& times) const {
+  Eigen::MatrixXd q(times.size(), harmonic.rows());
+  for (Eigen::Index k = 0; k < times.size(); ++k) {
+    Eigen::VectorXcd sum = Eigen::VectorXcd::Zero(harmonic.rows());
+    for (Eigen::Index t = 0; t < harmonic.cols(); ++t) {
+      sum += harmonic.col(t) * std::polar(1.0, kTwoPi * tone_frequency(t) * times(k));
+    }
+    q.row(k) = sum.real().transpose();
+  }
+  return q;
+}
+
+}  // namespace geardyn
