@@ -17,6 +17,10 @@ namespace geardyn {
 
 using units::kRpm;
 
+/// Plain steps per DOF on new factors before the dense step switches to the precomputed
+/// products (TrainNewmarkStepper: their cost is paid back after about 2n steps).
+constexpr Eigen::Index kPlainSteps = 4;
+
 void TrainTimeOptions::validate() const {
   newmark.validate();
   if (!(time_step >= 0.0) || !std::isfinite(time_step)) {
@@ -170,16 +174,22 @@ void TrainNewmarkStepper::factorise(double speed) {
       y_ = lu_.solve(rhs_);
       Z_.col(c) = y_;
     }
-    // The step's solve as products: A⁻¹ b = A⁻¹F₀ + Z ke + [A⁻¹M  A⁻¹(C + ΩG₁)] [p; c].
-    const Eigen::Index n = A_.rows();
-    PQ_.leftCols(n) = lu_.solve(M());
-    PQ_.rightCols(n) = lu_.solve(Cg_);
-    rhs_ = F0_;
-    g0_ = lu_.solve(rhs_);
   }
   S_.noalias() = V_.transpose() * Z_;  // W = Vᵀ A⁻¹ V; the step's matrix is I + D W
   speed_factorised_ = speed;
   ++factorisations_;
+  products_ = false;
+  steps_on_factors_ = 0;
+}
+
+void TrainNewmarkStepper::precomputeProducts() {
+  // The step's solve as products: A⁻¹ b = A⁻¹F₀ + Z ke + [A⁻¹M  A⁻¹(C + ΩG₁)] [p; c].
+  const Eigen::Index n = A_.rows();
+  PQ_.leftCols(n) = lu_.solve(M());
+  PQ_.rightCols(n) = lu_.solve(Cg_);
+  rhs_ = F0_;
+  g0_ = lu_.solve(rhs_);
+  products_ = true;
 }
 
 void TrainNewmarkStepper::meshState(double t) {
@@ -224,13 +234,9 @@ Eigen::VectorXd TrainNewmarkStepper::staticDeflection(double t) {
   // K + Ω² K_Ω + Σ k_m(t) v_m v_mᵀ.
   Eigen::MatrixXd Kt = K() + Kmesh() + speed * speed * Kc();
   Kt.noalias() += V_ * (dk_.asDiagonal() * V_.transpose());
-  // The loads and the meshes' k e (no dashpot force at rest).
-  Eigen::VectorXd f = F0_ + V_ * k_.cwiseProduct(e_);
-  if (force_) {
-    fx_.setZero();
-    force_(t, fx_);
-    f += fx_;
-  }
+  // The constant loads and the meshes' k e (no dashpot force at rest; the time-dependent force
+  // is an excitation, not a load the rotor rests under).
+  const Eigen::VectorXd f = F0_ + V_ * k_.cwiseProduct(e_);
   return Kt.completeOrthogonalDecomposition().solve(f);
 }
 
@@ -255,9 +261,22 @@ void TrainNewmarkStepper::step() {
     y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
     rhs_.noalias() += Cgsp_ * y_;
     slu_.solve(rhs_, y_);
+  } else if (!products_ && ++steps_on_factors_ <= kPlainSteps * q_.size()) {
+    // The first 4n steps on new factors: two products and two triangular solves (4n²), while
+    // the products below (2n³ in triangular solves, ~100 plain steps of the 60-DOF rotor)
+    // would not yet have paid for themselves (a run-up refactorises every ~100 steps).
+    rhs_.noalias() = F0_;
+    rhs_.noalias() += V_ * ke_;
+    if (force_) rhs_ += fx_;
+    y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
+    rhs_.noalias() += M() * y_;
+    y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
+    rhs_.noalias() += Cg_ * y_;
+    y_ = lu_.solve(rhs_);
   } else {
-    // One product with the precomputed [A⁻¹M  A⁻¹(C + ΩG₁)] instead of two products and two
-    // triangular solves (factorise()).
+    // One product with the precomputed [A⁻¹M  A⁻¹(C + ΩG₁)] (2n²) instead of two products and
+    // two triangular solves.
+    if (!products_) precomputeProducts();
     const Eigen::Index n = q_.size();
     pc_.head(n) = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
     pc_.tail(n) = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;

@@ -105,10 +105,13 @@ struct TrainStepperSetup {
 
 /// One Newmark step at a time (for benchmarks, and the building block of the solvers).
 ///
-/// Dense path: the step's solve is the product with the precomputed [A⁻¹M  A⁻¹(C + ΩG₁)]
-/// (n × 2n) plus A⁻¹F₀ and Z ke (one matrix–vector product of 2n² instead of two products
-/// and two triangular solves); with one mesh the Woodbury correction is Sherman–Morrison,
-/// with no r × r factorisation. bench/fe_rotor_bench.cpp has the timings.
+/// Dense path: once 4n steps have run on the same factors (a fast path chosen automatically:
+/// computing the products costs about 100 plain steps of the 60-DOF rotor, which ~2n faster
+/// steps pay back, so a run-up that refactorises every ~100 steps keeps the plain step), the
+/// step's solve is the product with
+/// the precomputed [A⁻¹M  A⁻¹(C + ΩG₁)] (n × 2n) plus A⁻¹F₀ and Z ke: 2n² instead of two
+/// products and two triangular solves (4n²). With one mesh the Woodbury correction is
+/// Sherman–Morrison, with no r × r factorisation. bench/fe_rotor_bench.cpp has the timings.
 class TrainNewmarkStepper {
  public:
   /// `sparse`: force the sparse (true) or dense (false) path; absent: sparse from
@@ -134,9 +137,9 @@ class TrainNewmarkStepper {
   double meshForce(int mesh) const;
   /// k_m(φ_m) [N/m] at the current time.
   double meshStiffness(int mesh) const { return k_(mesh); }
-  /// The static deflection under the loads at time t with every mesh's stiffness and
-  /// transmission error at its phase at t (minimum norm: rigid-body modes left at zero); over
-  /// the integrated DOFs. Allocates.
+  /// The static deflection under the constant loads (F₀ or TrainStepperSetup::static_load, not
+  /// the time-dependent force) with every mesh's stiffness and transmission error at its phase
+  /// at t (minimum norm: rigid-body modes left at zero); over the integrated DOFs. Allocates.
   Eigen::VectorXd staticDeflection(double t);
   /// Factorisations of the Newmark matrix so far (1 at constant speed).
   int factorisations() const noexcept { return factorisations_; }
@@ -145,6 +148,7 @@ class TrainNewmarkStepper {
  private:
   void meshState(double t);  // fills dk_ (k − k̄) and ke_ (k e + c ė) of every mesh at t
   void factorise(double speed);
+  void precomputeProducts();
   void restrict(const std::vector<int>& dofs);
 
   const GearTrainModel& model_;
@@ -171,6 +175,8 @@ class TrainNewmarkStepper {
   Eigen::MatrixXd Cg_, K0_, A_, V_, Z_, S_, small_matrix_;
   Eigen::MatrixXd PQ_;       // dense path: [A⁻¹M  A⁻¹(C + ΩG₁)], n × 2n
   Eigen::VectorXd g0_, pc_;  // dense path: A⁻¹F₀; the step's [p; c]
+  bool products_ = false;    // PQ_ and g0_ are those of the current factors
+  Eigen::Index steps_on_factors_ = 0;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_, small_;
   Eigen::SparseMatrix<double> Msp_, Cgsp_;
   detail::SparseLuFactors slu_;
