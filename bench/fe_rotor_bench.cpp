@@ -1,8 +1,8 @@
-// The finite-element geared rotor (issue #8): one Newmark step of the ~60-DOF rotor with the
-// potential-energy TVMS evaluated every step (ROSS, the Python peer, takes 2.5 ms per step on
-// this machine for its 60-DOF TVMS two-shaft rotor: target ≤ 10 µs), the same step refactorising
-// the effective matrix every step (what the rank-1 update saves), and a run-up against the same
-// run at constant speed (target ≤ 1.2×).
+// The finite-element geared rotor (issue #8): one Newmark step of the ~60-DOF rotor (the train's
+// stepper, issue #31) with the potential-energy TVMS evaluated every step (ROSS, the Python peer,
+// takes 2.5 ms per step on this machine for its 60-DOF TVMS two-shaft rotor: target ≤ 10 µs), the
+// same step refactorising the effective matrix every step (what the rank-1 update saves), and a
+// run-up against the same run at constant speed (target ≤ 1.2×).
 
 #include <benchmark/benchmark.h>
 
@@ -41,10 +41,12 @@ void timeSteps(benchmark::State& state, Stepper& stepper, int dofs) {
   state.counters["dofs"] = dofs;
 }
 
+/// The FE rotor's time response step: the train's stepper over the rotor's own DOFs (60 for 5
+/// elements per shaft: the train's axial DOFs held), fe_rotor_response.h.
 void BM_FeNewmarkStep(benchmark::State& state) {
   const FeGearedRotor model(rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0));
-  FeTimeOptions o;
-  FeNewmarkStepper stepper(model, o);
+  const GearTrainModel train(feRotorTimeTrain(model, testing::visnadiPairSpec(0.0)));
+  TrainNewmarkStepper stepper = feRotorStepper(model, train, FeTimeOptions{});
   timeSteps(state, stepper, model.dofCount());
 }
 BENCHMARK(BM_FeNewmarkStep)
@@ -54,9 +56,9 @@ BENCHMARK(BM_FeNewmarkStep)
     ->Arg(10)
     ->Unit(benchmark::kMicrosecond);
 
-/// The same rotor as a gear train (system/fe_rotor_train.h: full DOFs, so 72 DOFs for 60, the
-/// axial ones kept) stepped by the train's Newmark stepper (dense path, Woodbury on the mesh),
-/// against BM_FeNewmarkStep in the same run (issue #31: ≤ 2.1 µs for the 60-DOF rotor).
+/// The same rotor as a whole gear train (system/fe_rotor_train.h: full DOFs, so 72 DOFs for 60,
+/// the axial ones integrated too) stepped by the train's Newmark stepper (dense path), against
+/// BM_FeNewmarkStep in the same run (issue #31: ≤ 2.1 µs for the 60-DOF rotor).
 void BM_FeRotorTrainNewmarkStep(benchmark::State& state) {
   const FeGearedRotorSpec spec = rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0);
   const GearTrainModel model(gearTrainFromFeRotor(spec, testing::visnadiPairSpec(0.0)));
@@ -110,7 +112,7 @@ void BM_FeRun(benchmark::State& state) {
   o.duration = 0.5;
   o.channels = {0};
   for (auto _ : state) {
-    const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
+    const FeTimeResponse r = solveFeRotorTimeResponse(model, testing::visnadiPairSpec(0.0), o);
     benchmark::DoNotOptimize(r.displacement.data());
     state.counters["factorisations"] = r.factorisations;
   }

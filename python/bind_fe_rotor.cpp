@@ -1,5 +1,6 @@
 /// Python bindings of the finite-element geared rotor (models/fe_geared_rotor.h), its Newmark
-/// response, modal analysis and Campbell diagram. The model is built from a `geardyn rotor`
+/// response, modal analysis and Campbell diagram (all three by the gear train's solvers, as
+/// `geardyn rotor`). The model is built from a `geardyn rotor`
 /// configuration file (with `[model] type = "fe_geared_rotor"`) and overrides with the same
 /// keys; SI units; numpy arrays out (the response matrices without copies: they are handed to
 /// numpy with the response as owner).
@@ -9,14 +10,16 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <complex>
 #include <memory>
 #include <numbers>
 
+#include "geardyn/analysis/fe_rotor_modes.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/error.h"
 #include "geardyn/solvers/fe_rotor_response.h"
-#include "geardyn/solvers/rotor_modal.h"
 #include "geardyn/units.h"
 
 namespace py = pybind11;
@@ -34,7 +37,8 @@ py::array matrixView(const Eigen::MatrixXd& m, py::handle owner) {
                              m.data(), owner);
 }
 
-py::dict modeDict(const RotorMode& m) {
+/// A mode of the train reported on the FE rotor's DOFs (shape over its active DOFs).
+py::dict modeDict(const TrainMode& m, const std::vector<int>& train_dof) {
   py::dict d;
   d["frequency_hz"] = m.frequency;
   d["damping_ratio"] = m.damping_ratio;
@@ -44,9 +48,30 @@ py::dict modeDict(const RotorMode& m) {
   d["lateral_fraction"] = m.lateral_fraction;
   d["torsional_fraction"] = m.torsional_fraction;
   d["axial_fraction"] = m.axial_fraction;
-  d["shape"] = py::array_t<std::complex<double>>(m.shape.size(), m.shape.data());
+  py::array_t<std::complex<double>> shape(static_cast<py::ssize_t>(train_dof.size()));
+  auto x = shape.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < train_dof.size(); ++i) x(i) = m.shape(train_dof[i]);
+  d["shape"] = shape;
   return d;
 }
+
+/// The Python FeGearedRotor: the FE model, its configuration (the gearbox it is, for the
+/// train's modal solver) and its gear pair (the train the time response steps).
+struct FeRotorHandle {
+  config::Config config;
+  GearPairSpec pair;
+  std::shared_ptr<FeGearedRotor> model;
+  std::shared_ptr<analysis::FeRotorTrain> train;  // built on first use by modal / campbell
+
+  const analysis::FeRotorTrain& gearTrain() {
+    if (!train) {
+      std::vector<std::string> notes;  // the file's own build reported its warnings
+      train =
+          std::make_shared<analysis::FeRotorTrain>(analysis::feRotorTrain(config, *model, notes));
+    }
+    return *train;
+  }
+};
 
 }  // namespace
 
@@ -81,41 +106,76 @@ void bindFeRotor(py::module_& m) {
       .def_readonly("message", &FeTimeResponse::message)
       .def_property_readonly("status", [](const FeTimeResponse& r) { return toString(r.status); });
 
-  py::class_<FeGearedRotor, std::shared_ptr<FeGearedRotor>>(
+  using Handle = FeRotorHandle;
+  py::class_<Handle, std::shared_ptr<Handle>>(
       m, "FeGearedRotor",
       "The finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3): build it from a "
-      "`geardyn rotor` configuration with [model] type = \"fe_geared_rotor\".")
-      .def(py::init([](const std::string& config, const std::vector<std::string>& overrides,
+      "`geardyn rotor` configuration with [model] type = \"fe_geared_rotor\". Its time response, "
+      "modes and Campbell diagram come from the gear train it is (the solvers of `geardyn "
+      "rotor`).")
+      .def(py::init([](const std::string& config, std::vector<std::string> overrides,
                        const std::string& stiffness) {
-             const auto c = config::loadConfigFile(config, config::feRotorSchema(), overrides);
-             return std::make_shared<FeGearedRotor>(
-                 config::feRotorSpecFromConfig(c, stiffness).spec);
+             // The gearbox the modes come from has the chosen model as its mesh stiffness.
+             if (!stiffness.empty()) overrides.push_back("mesh.stiffness=" + stiffness);
+             auto h = std::make_shared<Handle>(
+                 Handle{config::loadConfigFile(config, config::feRotorSchema(), overrides),
+                        {},
+                        nullptr,
+                        nullptr});
+             h->pair = config::gearPairSpecFromConfig(h->config);
+             h->model = std::make_shared<FeGearedRotor>(
+                 config::feRotorSpecFromConfig(h->config, stiffness).spec);
+             return h;
            }),
            py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
            py::arg("stiffness") = "",
            "config: path of the TOML file; overrides: [\"key=value\", ...] as --set; stiffness: "
            "a [mesh_stiffness] model name (default: mesh.stiffness)")
-      .def_property_readonly("dof_count", &FeGearedRotor::dofCount)
+      .def_property_readonly("dof_count", [](const Handle& h) { return h.model->dofCount(); })
       .def_property_readonly("dof_names",
-                             [](const FeGearedRotor& r) {
+                             [](const Handle& h) {
                                std::vector<std::string> names;
-                               for (int i = 0; i < r.dofCount(); ++i) names.push_back(r.dofName(i));
+                               for (int i = 0; i < h.model->dofCount(); ++i)
+                                 names.push_back(h.model->dofName(i));
                                return names;
                              })
-      .def("dof_index", &FeGearedRotor::dofIndex, py::arg("shaft"), py::arg("node"), py::arg("dof"),
-           "active index of (shaft 0/1, node, dof 0-5 = ux uy uz rx ry rz), -1 if removed")
-      .def_property_readonly("mass", &FeGearedRotor::mass, "M [kg, kg m, kg m²]")
-      .def_property_readonly("stiffness", &FeGearedRotor::stiffness, "K without the mesh")
-      .def_property_readonly("damping", &FeGearedRotor::damping, "C without gyroscopics")
-      .def_property_readonly("gyroscopic", &FeGearedRotor::gyroscopic,
-                             "G₁ per rad/s of pinion speed")
-      .def_property_readonly("mesh_vector", &FeGearedRotor::meshVector, "v = ∂δ/∂q")
-      .def_property_readonly("static_load", &FeGearedRotor::staticLoad, "F [N, N m]")
-      .def_property_readonly("mean_mesh_stiffness", &FeGearedRotor::meanMeshStiffness, "[N/m]")
+      .def(
+          "dof_index",
+          [](const Handle& h, int shaft, int node, int dof) {
+            return h.model->dofIndex(shaft, node, dof);
+          },
+          py::arg("shaft"), py::arg("node"), py::arg("dof"),
+          "active index of (shaft 0/1, node, dof 0-5 = ux uy uz rx ry rz), -1 if removed")
+      .def_property_readonly(
+          "mass", [](const Handle& h) -> const Eigen::MatrixXd& { return h.model->mass(); },
+          py::return_value_policy::reference_internal, "M [kg, kg m, kg m²]")
+      .def_property_readonly(
+          "stiffness",
+          [](const Handle& h) -> const Eigen::MatrixXd& { return h.model->stiffness(); },
+          py::return_value_policy::reference_internal, "K without the mesh")
+      .def_property_readonly(
+          "damping", [](const Handle& h) -> const Eigen::MatrixXd& { return h.model->damping(); },
+          py::return_value_policy::reference_internal, "C without gyroscopics")
+      .def_property_readonly(
+          "gyroscopic",
+          [](const Handle& h) -> const Eigen::MatrixXd& { return h.model->gyroscopic(); },
+          py::return_value_policy::reference_internal, "G₁ per rad/s of pinion speed")
+      .def_property_readonly(
+          "mesh_vector",
+          [](const Handle& h) -> const Eigen::VectorXd& { return h.model->meshVector(); },
+          py::return_value_policy::reference_internal, "v = ∂δ/∂q")
+      .def_property_readonly(
+          "static_load",
+          [](const Handle& h) -> const Eigen::VectorXd& { return h.model->staticLoad(); },
+          py::return_value_policy::reference_internal, "F [N, N m]")
+      .def_property_readonly(
+          "mean_mesh_stiffness", [](const Handle& h) { return h.model->meanMeshStiffness(); },
+          "[N/m]")
       .def(
           "time_response",
-          [](const FeGearedRotor& r, double duration, double time_step,
-             std::vector<std::string> channels, bool start_from_static) {
+          [](const Handle& h, double duration, double time_step, std::vector<std::string> channels,
+             bool start_from_static) {
+            const FeGearedRotor& r = *h.model;
             FeTimeOptions o;
             o.duration = duration;
             o.time_step = time_step;
@@ -130,7 +190,7 @@ void bindFeRotor(py::module_& m) {
             auto response = std::make_shared<FeTimeResponse>();
             {
               py::gil_scoped_release release;
-              *response = solveFeRotorTimeResponse(r, o);
+              *response = solveFeRotorTimeResponse(r, h.pair, o);
             }
             return response;
           },
@@ -140,25 +200,25 @@ void bindFeRotor(py::module_& m) {
           "configured speed profile; channels: DOF names (default all).")
       .def(
           "modal",
-          [](const FeGearedRotor& r, double speed_rpm, int modes) {
-            ModalOptions o;
-            o.modes = modes;
+          [](Handle& h, double speed_rpm, int modes) {
+            const analysis::FeRotorTrain& train = h.gearTrain();
             py::list out;
-            for (const auto& mode : modalAnalysis(r, speed_rpm * kRpm, o))
-              out.append(modeDict(mode));
+            for (const auto& mode : analysis::feRotorModes(
+                     train, speed_rpm * kRpm, modes, h.config.real("modal.max_damping_ratio")))
+              out.append(modeDict(mode, train.train_dof));
             return out;
           },
           py::arg("speed_rpm"), py::arg("modes") = 12,
-          "Damped modes at a pinion speed [rpm], ascending: frequency_hz, damping_ratio, whirl, "
-          "energy fractions, complex shape.")
+          "Damped modes at a pinion speed [rpm], ascending (the train's modal solver, as "
+          "`geardyn rotor` modal): frequency_hz, damping_ratio, whirl, energy fractions, complex "
+          "shape over the active DOFs.")
       .def(
           "campbell",
-          [](const FeGearedRotor& r, const std::vector<double>& speeds_rpm, int modes) {
+          [](Handle& h, const std::vector<double>& speeds_rpm, int modes) {
             std::vector<double> speeds;
             for (double s : speeds_rpm) speeds.push_back(s * kRpm);
-            ModalOptions o;
-            o.modes = modes;
-            const CampbellDiagram d = campbellDiagram(r, speeds, o, standardOrderLines(r));
+            const TrainCampbell d = analysis::feRotorCampbell(
+                h.gearTrain(), *h.model, speeds, modes, h.config.real("modal.max_damping_ratio"));
             py::array_t<double> freq(
                 {static_cast<py::ssize_t>(speeds.size()), static_cast<py::ssize_t>(modes)});
             std::vector<std::vector<std::string>> whirl(speeds.size());
@@ -180,7 +240,9 @@ void bindFeRotor(py::module_& m) {
               x["whirl"] = c.whirl;
               critical.append(x);
             }
-            for (const auto& l : d.lines) lines.append(py::make_tuple(l.name, l.order));
+            // The order of a line: its slope [Hz per rad/s] × 2π, multiples of the pinion speed.
+            for (const auto& l : d.lines)
+              lines.append(py::make_tuple(l.name, l.slope * 2.0 * std::numbers::pi));
             py::dict out;
             out["speeds_rpm"] = speeds_rpm;
             out["frequency_hz"] = freq;
@@ -190,8 +252,8 @@ void bindFeRotor(py::module_& m) {
             return out;
           },
           py::arg("speeds_rpm"), py::arg("modes") = 8,
-          "Campbell diagram: tracked modes over pinion speeds [rpm] (frequency_hz: speeds × "
-          "modes), the order lines and the critical speeds.");
+          "Campbell diagram (the train's, as `geardyn rotor` campbell): tracked modes over pinion "
+          "speeds [rpm] (frequency_hz: speeds × modes), the order lines and the critical speeds.");
 }
 
 }  // namespace geardyn::python

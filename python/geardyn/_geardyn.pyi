@@ -43,12 +43,12 @@ class ConstantMeshStiffness:
     def __init__(self: ConstantMeshStiffness, name: str, value: float, contact_ratio: float) -> None: ...
 
 class FeGearedRotor:
-    """The finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3): build it from a `geardyn rotor` configuration with [model] type = "fe_geared_rotor"."""
+    """The finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3): build it from a `geardyn rotor` configuration with [model] type = "fe_geared_rotor". Its time response, modes and Campbell diagram come from the gear train it is (the solvers of `geardyn rotor`)."""
     def __init__(self: FeGearedRotor, config: str, overrides: list[str] = [], stiffness: str = '') -> None:
         """config: path of the TOML file; overrides: ["key=value", ...] as --set; stiffness: a [mesh_stiffness] model name (default: mesh.stiffness)"""
         ...
     def campbell(self: FeGearedRotor, speeds_rpm: list[float], modes: int = 8) -> dict:
-        """Campbell diagram: tracked modes over pinion speeds [rpm] (frequency_hz: speeds × modes), the order lines and the critical speeds."""
+        """Campbell diagram (the train's, as `geardyn rotor` campbell): tracked modes over pinion speeds [rpm] (frequency_hz: speeds × modes), the order lines and the critical speeds."""
         ...
     @property
     def damping(self) -> numpy.ndarray: ...
@@ -68,7 +68,7 @@ class FeGearedRotor:
     @property
     def mesh_vector(self) -> numpy.ndarray: ...
     def modal(self: FeGearedRotor, speed_rpm: float, modes: int = 12) -> list:
-        """Damped modes at a pinion speed [rpm], ascending: frequency_hz, damping_ratio, whirl, energy fractions, complex shape."""
+        """Damped modes at a pinion speed [rpm], ascending (the train's modal solver, as `geardyn rotor` modal): frequency_hz, damping_ratio, whirl, energy fractions, complex shape over the active DOFs."""
         ...
     @property
     def static_load(self) -> numpy.ndarray: ...

@@ -13,9 +13,10 @@
 #include <numbers>
 #include <thread>
 
-#include "fe_rotor_modes.h"
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/fe_rotor_modes.h"
 #include "geardyn/config/fe_rotor_config.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/error.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
@@ -234,10 +235,10 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
   nlohmann::ordered_json predicted = nlohmann::ordered_json::array();
   if (hi > lo) {
     std::vector<std::string> notes;  // the time run has reported the file's warnings
-    const detail::FeRotorTrain train = detail::feRotorTrain(config, model, notes);
-    const TrainCampbell d = detail::feRotorCampbell(
-        train, model, speeds, static_cast<int>(config.integer("campbell.modes")),
-        config.real("modal.max_damping_ratio"));
+    const FeRotorTrain train = feRotorTrain(config, model, notes);
+    const TrainCampbell d =
+        feRotorCampbell(train, model, speeds, static_cast<int>(config.integer("campbell.modes")),
+                        config.real("modal.max_damping_ratio"));
     for (const auto& cs : d.critical_speeds) {
       if (cs.line != "mesh") continue;
       predicted.push_back({{"mode", cs.mode},
@@ -271,7 +272,8 @@ int runTime(const config::Config& config, const AnalysisContext& context, io::Ru
   context.checkBudget("rotor_fe_time", model.dofCount());
   FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.progress = context.progressFor("rotor: Newmark", "steps");
-  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
+  const FeTimeResponse r =
+      solveFeRotorTimeResponse(model, config::gearPairSpecFromConfig(config), o);
   reportDivergence(r, summary.warnings);
   summary.results["model"] = modelJson(model, build.stiffness_model);
   summary.results["time"] = {{"status", toString(r.status)},
@@ -333,7 +335,7 @@ nlohmann::ordered_json modeJson(const TrainMode& m) {
 struct FeRotorModels {
   config::FeRotorBuild build;
   std::unique_ptr<FeGearedRotor> model;
-  detail::FeRotorTrain train;
+  FeRotorTrain train;
 };
 
 FeRotorModels buildModels(const config::Config& config, io::RunSummary& summary) {
@@ -344,7 +346,7 @@ FeRotorModels buildModels(const config::Config& config, io::RunSummary& summary)
   // The gearbox reader's warnings are about the same gears and mesh-stiffness model, which the
   // file's own build has just reported in the file's keys.
   std::vector<std::string> same_warnings;
-  m.train = detail::feRotorTrain(config, *m.model, same_warnings);
+  m.train = feRotorTrain(config, *m.model, same_warnings);
   return m;
 }
 
@@ -357,8 +359,8 @@ int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResu
                                                       : config.real("speed.speed_rpm")) *
                        kRpm;
   const auto modes =
-      detail::feRotorModes(models.train, speed, static_cast<int>(config.integer("modal.modes")),
-                           config.real("modal.max_damping_ratio"));
+      feRotorModes(models.train, speed, static_cast<int>(config.integer("modal.modes")),
+                   config.real("modal.max_damping_ratio"));
   io::CsvTable table({"mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction",
                       "lateral_fraction", "torsional_fraction", "axial_fraction"});
   io::CsvTable shapes({"mode", "dof", "re", "im", "amplitude"});
@@ -389,9 +391,9 @@ int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisR
   const FeRotorModels models = buildModels(config, summary);
   const FeGearedRotor& model = *models.model;
   const auto speeds = config::campbellSpeedsFromConfig(config);
-  const TrainCampbell d = detail::feRotorCampbell(
-      models.train, model, speeds, static_cast<int>(config.integer("campbell.modes")),
-      config.real("modal.max_damping_ratio"));
+  const TrainCampbell d = feRotorCampbell(models.train, model, speeds,
+                                          static_cast<int>(config.integer("campbell.modes")),
+                                          config.real("modal.max_damping_ratio"));
   io::CsvTable table(
       {"speed_rpm", "mode", "frequency_hz", "damping_ratio", "whirl", "forward_fraction"});
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -464,6 +466,7 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
   std::vector<FeTimeOptions> time_options;
   for (const Case& c : cases)
     time_options.push_back(config::feTimeOptionsFromConfig(config, *c.model));
+  const GearPairSpec pair = config::gearPairSpecFromConfig(config);
   const unsigned threads =
       context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
@@ -473,7 +476,7 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
     pool.emplace_back([&] {
       for (std::size_t i; (i = next++) < cases.size();) {
         try {
-          cases[i].response = solveFeRotorTimeResponse(*cases[i].model, time_options[i]);
+          cases[i].response = solveFeRotorTimeResponse(*cases[i].model, pair, time_options[i]);
         } catch (...) {
           errors[i] = std::current_exception();
         }

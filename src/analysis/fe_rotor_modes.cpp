@@ -1,20 +1,17 @@
 /// The FE rotor file's modes through the gear train's modal solver (fe_rotor_modes.h).
 
-#include "fe_rotor_modes.h"
+#include "geardyn/analysis/fe_rotor_modes.h"
 
 #include <algorithm>
 #include <numbers>
 
 #include "geardyn/config/fe_rotor_gearbox.h"
+#include "geardyn/system/fe_rotor_train.h"
 
-namespace geardyn::analysis::detail {
+namespace geardyn::analysis {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-/// Node DOF order of the FE rotor [u_x, u_y, u_z, θ_x, θ_y, θ_z] → the train's (y, z, θ_x, x,
-/// θ_y, θ_z) (gear_train_model.h).
-constexpr int kTrainOffset[kNodeDofs] = {3, 0, 1, 2, 4, 5};
-
 bool axialMode(const FeRotorTrain& train, const TrainMode& mode) {
   return train.without_axial && mode.axial_fraction > 0.5;
 }
@@ -40,11 +37,7 @@ FeRotorTrain feRotorTrain(const config::Config& config, const FeGearedRotor& fe,
   t.model = std::make_unique<GearTrainModel>(
       config::feRotorGearTrain(config, warnings, config::FeUnbalances::kOmit));
   t.without_axial = !fe.spec().axial;
-  t.train_dof.resize(fe.dofCount());
-  for (int i = 0; i < fe.dofCount(); ++i) {
-    const int body = t.model->shaftNodes(fe.shaftOf(i))[fe.nodeOf(i)];
-    t.train_dof[i] = t.model->bodies()[body].first_dof + kTrainOffset[fe.typeOf(i)];
-  }
+  t.train_dof = feRotorTrainDofs(fe, *t.model);
   return t;
 }
 
@@ -106,4 +99,4 @@ TrainCampbell feRotorCampbell(const FeRotorTrain& train, const FeGearedRotor& fe
   return d;
 }
 
-}  // namespace geardyn::analysis::detail
+}  // namespace geardyn::analysis

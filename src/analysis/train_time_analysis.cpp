@@ -116,7 +116,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
            ? 1
            : *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end()));
   const bool torus = common_harmonics > analysis.integer("forced.torus_above");
-  int harmonics = common_harmonics;
+  int base_harmonics = common_harmonics;
   try {
     if (torus) {
       TrainTorusOptions options = config::trainTorusOptionsFromConfig(analysis);
@@ -130,7 +130,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
     } else {
       s = solveTrainSteadyState(model, speed, steady);
       q = s.displacement(r.t);
-      harmonics = s.harmonics;
+      base_harmonics = s.harmonics;
     }
   } catch (const InputError& e) {
     compare = false;
@@ -222,11 +222,11 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   }
   text += fmt::format(
       "time: {} Newmark steps of {:.3g} s in {:.2f} s{}\n", r.steps, r.time_step, seconds,
-      compare
-          ? fmt::format("; steady state for the comparison ({}) in {:.2f} s",
-                        torus ? std::string("torus") : fmt::format("{} base harmonics", harmonics),
-                        steady_seconds)
-          : std::string());
+      compare ? fmt::format(
+                    "; steady state for the comparison ({}) in {:.2f} s",
+                    torus ? std::string("torus") : fmt::format("{} base harmonics", base_harmonics),
+                    steady_seconds)
+              : std::string());
   writeTrainProbes(model, analysis, speed, r, compare && !torus ? &s : nullptr, result, text);
   record = r;
   return 0;

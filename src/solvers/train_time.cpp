@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_modal.h"
@@ -16,6 +18,10 @@
 namespace geardyn {
 
 using units::kRpm;
+
+/// Plain steps per DOF on new factors before the dense step switches to the precomputed
+/// products (TrainNewmarkStepper: their cost is paid back after about 2n steps).
+constexpr Eigen::Index kPlainSteps = 4;
 
 void TrainTimeOptions::validate() const {
   newmark.validate();
@@ -46,45 +52,62 @@ void TrainSpeedRamp::validate() const {
   if (!(duration > 0.0) || !std::isfinite(duration)) {
     throw InputError("runup.duration", fmt::format("{:g} s", duration), "a duration > 0 s");
   }
+  if (!(begin >= 0.0) || !std::isfinite(begin)) {
+    throw InputError("speed.ramp_start", fmt::format("{:g} s", begin), "a time >= 0 s");
+  }
 }
 
 double TrainSpeedRamp::speed(double t) const noexcept {
-  return t >= duration ? end : start + (end - start) * (t / duration);
+  if (t <= begin) return start;
+  const double s = t - begin;
+  return s >= duration ? end : start + (end - start) * (s / duration);
 }
 
 double TrainSpeedRamp::angle(double t) const noexcept {
   const double a = std::abs(start), b = std::abs(end);
-  if (t <= duration) return a * t + 0.5 * (b - a) * (t * t / duration);
-  return 0.5 * (a + b) * duration + b * (t - duration);
+  if (t <= begin) return a * t;
+  const double s = t - begin;
+  if (s <= duration) return a * begin + (a * s + 0.5 * (b - a) * (s * s / duration));
+  return a * begin + (0.5 * (a + b) * duration + b * (s - duration));
 }
 
 TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double input_speed,
                                          double time_step, NewmarkParameters newmark,
-                                         std::optional<bool> sparse)
+                                         std::optional<bool> sparse, TrainStepperSetup setup)
     : model_(model),
       speed_(input_speed),
       dt_(time_step),
       gamma_(newmark.gamma),
-      nm_(newmark, time_step) {
+      nm_(newmark, time_step),
+      force_(std::move(setup.force)) {
   newmark.validate();
-  const int n = model.dofCount();
   const int r = static_cast<int>(model.meshes().size());
-  V_.resize(n, r);
+  V_.resize(model.dofCount(), r);
   for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
+  F0_ = model.staticLoad();
+  if (!setup.dofs.empty()) restrict(setup.dofs);
+  const int n = static_cast<int>(V_.rows());
+  if (setup.static_load.size() > 0) {
+    if (setup.static_load.size() != n) {
+      throw std::invalid_argument(fmt::format(
+          "TrainStepperSetup::static_load: {} entries for {} DOFs", setup.static_load.size(), n));
+    }
+    F0_ = setup.static_load;
+  }
   sparse_ = sparse.value_or(n >= kSparseTrainDofs);
   if (sparse_) {
     // Entries below 1e-14 of the largest are round-off of cancelling sums, not couplings.
-    Msp_ = model.mass().sparseView(1.0, 1e-14 * model.mass().cwiseAbs().maxCoeff());
+    Msp_ = M().sparseView(1.0, 1e-14 * M().cwiseAbs().maxCoeff());
   }
-  speed_dependent_ = model.gyroscopic().cwiseAbs().maxCoeff() > 0.0 ||
-                     model.centripetal().cwiseAbs().maxCoeff() > 0.0;
+  speed_dependent_ = G().cwiseAbs().maxCoeff() > 0.0 || Kc().cwiseAbs().maxCoeff() > 0.0;
   Cg_.resize(n, n);
   K0_.resize(n, n);
   A_.resize(n, n);
   Z_.resize(n, r);
   S_.resize(r, r);
   lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
-  q_ = v_ = a_ = f_ = rhs_ = y_ = Eigen::VectorXd::Zero(n);
+  q_ = v_ = a_ = f_ = fx_ = rhs_ = y_ = g0_ = Eigen::VectorXd::Zero(n);
+  if (!sparse_) PQ_.resize(n, 2 * n), pc_.setZero(2 * n);
   factorise(speed_);
   small_ = Eigen::PartialPivLU<Eigen::MatrixXd>(r);
   small_matrix_ = Eigen::MatrixXd::Zero(r, r);
@@ -93,8 +116,10 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
 
 TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, const TrainSpeedRamp& ramp,
                                          double time_step, NewmarkParameters newmark,
-                                         double speed_tolerance, std::optional<bool> sparse)
-    : TrainNewmarkStepper(model, (ramp.validate(), ramp.start), time_step, newmark, sparse) {
+                                         double speed_tolerance, std::optional<bool> sparse,
+                                         TrainStepperSetup setup)
+    : TrainNewmarkStepper(model, (ramp.validate(), ramp.start), time_step, newmark, sparse,
+                          std::move(setup)) {
   if (!(speed_tolerance > 0.0 && speed_tolerance < 1.0)) {
     throw InputError("runup.speed_tolerance", fmt::format("{:g}", speed_tolerance),
                      "a relative tolerance in (0, 1)");
@@ -103,13 +128,36 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, const Trai
   tolerance_ = speed_tolerance;
 }
 
+void TrainNewmarkStepper::restrict(const std::vector<int>& dofs) {
+  const int n = static_cast<int>(dofs.size());
+  for (int i : dofs) {
+    if (i < 0 || i >= model_.dofCount()) {
+      throw std::invalid_argument(
+          fmt::format("TrainStepperSetup::dofs: DOF {} of a train of {}", i, model_.dofCount()));
+    }
+  }
+  auto sub = [&](const Eigen::MatrixXd& A, Eigen::MatrixXd& out) {
+    out.resize(n, n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) out(i, j) = A(dofs[i], dofs[j]);
+  };
+  sub(model_.mass(), Mr_), sub(model_.stiffness(), Kr_), sub(model_.damping(), Cr_);
+  sub(model_.gyroscopic(), Gr_), sub(model_.centripetal(), Kcr_);
+  sub(model_.meanMeshStiffness(), Kmeshr_);
+  restricted_ = true;
+  const Eigen::MatrixXd V = V_;
+  const Eigen::VectorXd F0 = F0_;
+  V_.resize(n, V.cols());
+  F0_.resize(n);
+  for (int i = 0; i < n; ++i) V_.row(i) = V.row(dofs[i]), F0_(i) = F0(dofs[i]);
+}
+
 void TrainNewmarkStepper::factorise(double speed) {
-  const GearTrainModel& m = model_;
   // The expressions of GearTrainModel::dampingAt and meanStiffnessAt, written into the
   // preallocated matrices (coefficient-wise: no temporaries).
-  Cg_ = m.damping() + speed * m.gyroscopic();
-  K0_ = m.stiffness() + m.meanMeshStiffness() + speed * speed * m.centripetal();
-  A_ = K0_ + nm_.a0 * m.mass() + nm_.a1 * Cg_;
+  Cg_ = C() + speed * G();
+  K0_ = K() + Kmesh() + speed * speed * Kc();
+  A_ = K0_ + nm_.a0 * M() + nm_.a1 * Cg_;
   if (sparse_) {
     Cgsp_ = Cg_.sparseView(1.0, 1e-14 * std::max(Cg_.cwiseAbs().maxCoeff(), 1e-300));
     const Eigen::SparseMatrix<double> Asp = A_.sparseView(1.0, 1e-14 * A_.cwiseAbs().maxCoeff());
@@ -132,6 +180,18 @@ void TrainNewmarkStepper::factorise(double speed) {
   S_.noalias() = V_.transpose() * Z_;  // W = Vᵀ A⁻¹ V; the step's matrix is I + D W
   speed_factorised_ = speed;
   ++factorisations_;
+  products_ = false;
+  steps_on_factors_ = 0;
+}
+
+void TrainNewmarkStepper::precomputeProducts() {
+  // The step's solve as products: A⁻¹ b = A⁻¹F₀ + Z ke + [A⁻¹M  A⁻¹(C + ΩG₁)] [p; c].
+  const Eigen::Index n = A_.rows();
+  PQ_.leftCols(n) = lu_.solve(M());
+  PQ_.rightCols(n) = lu_.solve(Cg_);
+  rhs_ = F0_;
+  g0_ = lu_.solve(rhs_);
+  products_ = true;
 }
 
 void TrainNewmarkStepper::meshState(double t) {
@@ -161,9 +221,25 @@ void TrainNewmarkStepper::reset(double t, const Eigen::VectorXd& q, const Eigen:
   }
   meshState(t);
   // M a = F − C v − K(t) q.
-  f_ = model_.staticLoad() + V_ * ke_ - Cg_ * v_ - K0_ * q_ -
-       V_ * (dk_.asDiagonal() * (V_.transpose() * q_));
-  a_ = model_.mass().llt().solve(f_);
+  f_ = F0_ + V_ * ke_ - Cg_ * v_ - K0_ * q_ - V_ * (dk_.asDiagonal() * (V_.transpose() * q_));
+  if (force_) {
+    fx_.setZero();
+    force_(t, fx_);
+    f_ += fx_;
+  }
+  a_ = M().llt().solve(f_);
+}
+
+Eigen::VectorXd TrainNewmarkStepper::staticDeflection(double t) {
+  meshState(t);
+  const double speed = ramp_ ? ramp_->speed(t) : speed_;
+  // K + Ω² K_Ω + Σ k_m(t) v_m v_mᵀ.
+  Eigen::MatrixXd Kt = K() + Kmesh() + speed * speed * Kc();
+  Kt.noalias() += V_ * (dk_.asDiagonal() * V_.transpose());
+  // The constant loads and the meshes' k e (no dashpot force at rest; the time-dependent force
+  // is an excitation, not a load the rotor rests under).
+  const Eigen::VectorXd f = F0_ + V_ * k_.cwiseProduct(e_);
+  return Kt.completeOrthogonalDecomposition().solve(f);
 }
 
 void TrainNewmarkStepper::step() {
@@ -174,23 +250,51 @@ void TrainNewmarkStepper::step() {
       factorise(speed_);
   }
   meshState(t1);
-  rhs_.noalias() = model_.staticLoad();
-  rhs_.noalias() += V_ * ke_;
-  y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
-  if (sparse_) {
-    rhs_.noalias() += Msp_ * y_;
-  } else {
-    rhs_.noalias() += model_.mass() * y_;
+  if (force_) {
+    fx_.setZero();
+    force_(t1, fx_);
   }
-  y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
   if (sparse_) {
+    rhs_.noalias() = F0_;
+    rhs_.noalias() += V_ * ke_;
+    if (force_) rhs_ += fx_;
+    y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
+    rhs_.noalias() += Msp_ * y_;
+    y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
     rhs_.noalias() += Cgsp_ * y_;
     slu_.solve(rhs_, y_);
-  } else {
+  } else if (!products_ && ++steps_on_factors_ <= kPlainSteps * q_.size()) {
+    // The first 4n steps on new factors: two products and two triangular solves (4n²), while
+    // the products below (2n³ in triangular solves, ~100 plain steps of the 60-DOF rotor)
+    // would not yet have paid for themselves (a run-up refactorises every ~100 steps).
+    rhs_.noalias() = F0_;
+    rhs_.noalias() += V_ * ke_;
+    if (force_) rhs_ += fx_;
+    y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
+    rhs_.noalias() += M() * y_;
+    y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
     rhs_.noalias() += Cg_ * y_;
     y_ = lu_.solve(rhs_);
+  } else {
+    // One product with the precomputed [A⁻¹M  A⁻¹(C + ΩG₁)] (2n²) instead of two products and
+    // two triangular solves.
+    if (!products_) precomputeProducts();
+    const Eigen::Index n = q_.size();
+    pc_.head(n) = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
+    pc_.tail(n) = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
+    y_ = g0_;
+    y_.noalias() += PQ_ * pc_;
+    y_.noalias() += Z_ * ke_;
+    if (force_) {
+      rhs_ = lu_.solve(fx_);
+      y_ += rhs_;
+    }
   }
-  if (dk_.size() > 0) {
+  if (dk_.size() == 1) {
+    // One mesh: Woodbury is Sherman–Morrison, (A + d v vᵀ)⁻¹ b = y − z d (vᵀy) / (1 + d vᵀz).
+    const double d = dk_(0);
+    y_.noalias() -= (d * V_.col(0).dot(y_) / (1.0 + d * S_(0, 0))) * Z_.col(0);
+  } else if (dk_.size() > 1) {
     // Woodbury: (A + V D Vᵀ)⁻¹ b = y − Z (I + D W)⁻¹ D Vᵀ y.
     w_.noalias() = V_.transpose() * y_;
     w_.array() *= dk_.array();
@@ -212,7 +316,7 @@ void TrainNewmarkStepper::step() {
 double TrainNewmarkStepper::meshForce(int mesh) const {
   // k(φ) g(vᵀq − e(φ)) at the phase of the last step (TrainMesh::force at constant speed).
   const TrainMesh& m = model_.meshes()[mesh];
-  return k_(mesh) * m.contactDeflection(m.deflection(q_) - e_(mesh));
+  return k_(mesh) * m.contactDeflection(V_.col(mesh).dot(q_) - e_(mesh));
 }
 
 TrainTimePlan planTrainTimeResponse(const GearTrainModel& model, double input_speed,

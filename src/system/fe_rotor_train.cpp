@@ -100,4 +100,15 @@ GearTrainSpec gearTrainFromFeRotor(const FeGearedRotorSpec& rotor, const GearPai
   return spec;
 }
 
+std::vector<int> feRotorTrainDofs(const FeGearedRotor& fe, const GearTrainModel& train) {
+  // FE node DOF type (NodeDof) → offset in the train's node order.
+  constexpr int kTrainOffset[kNodeDofs] = {3, 0, 1, 2, 4, 5};
+  std::vector<int> map(fe.dofCount());
+  for (int i = 0; i < fe.dofCount(); ++i) {
+    const int body = train.shaftNodes(fe.shaftOf(i))[fe.nodeOf(i)];
+    map[i] = train.bodies()[body].first_dof + kTrainOffset[fe.typeOf(i)];
+  }
+  return map;
+}
+
 }  // namespace geardyn

@@ -14,9 +14,9 @@
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/error.h"
-#include "geardyn/solvers/rotor_modal.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/system/gear_train_model.h"
+#include "support/fe_rotor_modes.h"
 
 namespace geardyn {
 namespace {
@@ -95,9 +95,7 @@ TEST(FeRotorGearbox, AHelicalRotorWithAxialDofsHasTheFeRotorsMatrices) {
 TEST(FeRotorGearbox, TheTrainsModesAreTheFeRotorsModes) {
   const Translated t = translate(example("rotor_visnadi2021_modal.toml"));
   const double speed = 500.0 * std::numbers::pi / 30.0;
-  ModalOptions fe_options;
-  fe_options.modes = 16;
-  const auto fe_modes = modalAnalysis(*t.fe, speed, fe_options);
+  const auto fe_modes = testing::feReferenceModes(*t.fe, speed, 16);
   TrainModalOptions options;
   options.keep_rigid = false;
   std::vector<TrainMode> train_modes;

@@ -12,6 +12,7 @@
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/fe_rotor_gearbox.h"
+#include "geardyn/config/geometry_config.h"
 #include "geardyn/signal/order_analysis.h"
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/solvers/train_modal.h"
@@ -42,7 +43,8 @@ Response respond(const config::Config& config, const std::string& stiffness) {
   o.channels.clear();
   for (int s = 0; s < 2; ++s)
     for (int d : {kUy, kUz}) o.channels.push_back(model.dofIndex(s, 0, d));
-  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
+  const FeTimeResponse r =
+      solveFeRotorTimeResponse(model, config::gearPairSpecFromConfig(config), o);
   EXPECT_TRUE(r.converged());
   const double f_mesh = 500.0 / 60.0 * 25.0, fs = 1.0 / o.time_step;
   const long long period = std::llround(fs / f_mesh), n = 40 * period;
@@ -143,7 +145,8 @@ TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
   FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.channels = {model.dofIndex(1, 1, kRx)};
   o.start_from_static = true;  // no start-up transient in the first windows
-  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
+  const FeTimeResponse r =
+      solveFeRotorTimeResponse(model, config::gearPairSpecFromConfig(config), o);
   ASSERT_TRUE(r.converged());
   const OrderTrack track =
       trackOrders(r.acceleration.col(0), 1.0 / o.time_step, r.speed, {25.0}, 2000);

@@ -1,11 +1,11 @@
 /// Reduction of the gear-train model to the two-shaft FE geared rotor (issue #16 acceptance):
 /// the Visnadi & de Castro (2021) rotor described as a gear train with flexible shafts and
-/// full DOFs gives FeGearedRotor's matrices, modes and Newmark response.
+/// full DOFs gives FeGearedRotor's matrices and modes (its Newmark response is the train's
+/// stepper's: tests/solvers/fe_rotor_response_test.cpp).
 ///
 /// Tolerances: the matrices are assembled from the same element routines in another order,
-/// so they agree to round-off (1e-12 of the largest entry); the eigenvalues and the Newmark
-/// states of identical matrices agree to the solvers' round-off amplified by the conditioning
-/// (1e-9 relative).
+/// so they agree to round-off (1e-12 of the largest entry); the eigenvalues of identical
+/// matrices agree to the solvers' round-off amplified by the conditioning (1e-9 relative).
 
 #include <gtest/gtest.h>
 
@@ -13,14 +13,11 @@
 #include <numbers>
 
 #include "geardyn/error.h"
-#include "geardyn/solvers/fe_rotor_response.h"
-#include "geardyn/solvers/rotor_modal.h"
 #include "geardyn/solvers/train_modal.h"
-#include "geardyn/solvers/train_time.h"
-#include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/system/fe_rotor_train.h"
 #include "geardyn/system/gear_train_model.h"
 #include "support/fe_rotor_cases.h"
+#include "support/fe_rotor_modes.h"
 
 namespace geardyn {
 namespace {
@@ -150,9 +147,7 @@ TEST(FeRotorReduction, ModesAtSpeedMatchTheFeRotor) {
   const FeGearedRotor fe(p.fe);
   const GearTrainModel train(gearTrainFromFeRotor(p.fe, p.gears));
   const double speed = 3000.0 * std::numbers::pi / 30.0;
-  ModalOptions fe_options;
-  fe_options.modes = 16;
-  const auto fe_modes = modalAnalysis(fe, speed, fe_options);
+  const auto fe_modes = testing::feReferenceModes(fe, speed, 16);
   TrainModalOptions options;
   options.modes = 16;
   const auto train_modes = trainModes(train, speed, options);
@@ -163,36 +158,6 @@ TEST(FeRotorReduction, ModesAtSpeedMatchTheFeRotor) {
         << "mode " << j;
     EXPECT_NEAR(train_modes[j].damping_ratio, fe_modes[j].damping_ratio, 1e-9) << "mode " << j;
   }
-}
-
-TEST(FeRotorReduction, NewmarkResponseWithVaryingMeshMatchesTheFeRotor) {
-  auto k = std::make_shared<FourierMeshStiffness>(2.5e8, std::vector<double>{0.2, 0.05},
-                                                  std::vector<double>{0.3, 1.1}, 1.6);
-  Pair p = visnadi(20.0, 4, true, k);
-  const FeGearedRotor fe(p.fe);
-  const GearTrainModel train(gearTrainFromFeRotor(p.fe, p.gears));
-  const double speed = p.fe.speed.start;
-  const double dt = 1.0 / (train.meshes()[0].frequency_ratio * speed * 64.0);
-  FeTimeOptions fe_options;
-  fe_options.time_step = dt;
-  FeNewmarkStepper fe_stepper(fe, fe_options);
-  TrainNewmarkStepper train_stepper(train, speed, dt, NewmarkParameters::averageAcceleration());
-  fe_stepper.reset(0.0, Eigen::VectorXd::Zero(fe.dofCount()), Eigen::VectorXd::Zero(fe.dofCount()));
-  train_stepper.reset(0.0, Eigen::VectorXd::Zero(train.dofCount()),
-                      Eigen::VectorXd::Zero(train.dofCount()));
-  const auto map = trainIndexOf(fe, train);
-  for (int step = 0; step < 640; ++step) fe_stepper.step(), train_stepper.step();
-  Eigen::VectorXd q(map.size());
-  for (std::size_t i = 0; i < map.size(); ++i) q(i) = train_stepper.displacement()(map[i]);
-  // Ten mesh periods from rest. The mesh force (elastic, free of the rolling rigid-body mode)
-  // agrees to 1e-9; the whole state to 1.3e-9 of its norm as measured, dominated by the
-  // undamped rolling mode that integrates the round-off of two different factorisations
-  // (LU + Sherman–Morrison vs LU + Woodbury) over 640 steps: bound 1e-8.
-  const double scale = fe_stepper.displacement().norm();
-  ASSERT_GT(scale, 0.0);
-  EXPECT_LT((q - fe_stepper.displacement()).norm(), 1e-8 * scale);
-  EXPECT_NEAR(train_stepper.meshForce(0), fe_stepper.meshForce(),
-              1e-9 * std::abs(fe_stepper.meshForce()));
 }
 
 }  // namespace

@@ -1,24 +1,29 @@
 #pragma once
 /// \file
-/// Newmark time integration of the finite-element geared rotor (Visnadi 2021 §4: γ = 1/2,
+/// Time response of the finite-element geared rotor (Visnadi 2021 §4: Newmark γ = 1/2,
 /// β = 1/4, Δt = 1e-5 s) with the mesh stiffness updated at every step, at constant speed or
 /// along a speed profile (run-up / run-down: mesh angle integrated from the speed).
 ///
-/// Cost: the effective matrix A = K + k̄ v vᵀ + M/(βΔt²) + γ/(βΔt) (C + Ω G₁) is factorised once
-/// (LU; G₁ makes it unsymmetric) and the time-varying mesh enters as the rank-1 correction
-/// (k(φ) − k̄) v vᵀ by Sherman–Morrison, so a step costs one LU back-substitution and two
-/// matrix–vector products, with no allocation. Along a speed profile the gyroscopic term is
-/// refactorised whenever the speed has moved by more than `gyro_speed_tolerance` × the largest
-/// speed since the last factorisation (the gyroscopic matrix is then within that tolerance of
-/// its exact value; the mesh phase and unbalance forces use the exact speed).
+/// There is no FE-rotor stepper: the rotor is translated into its gear train
+/// (system/fe_rotor_train.h) and integrated by the train's TrainNewmarkStepper (train_time.h)
+/// over the FE rotor's own DOFs (TrainStepperSetup::dofs: the axial DOFs a rotor without
+/// `axial` lacks are held at zero, as the FE rotor's removal of them does), with the FE rotor's
+/// own load vector (TrainStepperSetup::static_load: drive and load torques, gravity as the FE
+/// rotor assembles it) and its unbalance forces as the stepper's time-dependent force. The train's
+/// mesh dashpot acts on (δ − e)˙, so with a transmission error and mesh damping the force
+/// includes c_m ė (docs/theory/fe_geared_rotor.md).
 
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
 
+#include "geardyn/geometry/gear_pair.h"
 #include "geardyn/models/fe_geared_rotor.h"
 #include "geardyn/progress.h"
 #include "geardyn/solvers/newmark.h"
+#include "geardyn/solvers/train_time.h"
+#include "geardyn/system/gear_train.h"
+#include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {
 
@@ -53,44 +58,21 @@ struct FeTimeResponse {
   bool converged() const { return status == FeTimeStatus::kCompleted; }
 };
 
-/// One Newmark step at a time: for benchmarks, and the building block of the solver.
-class FeNewmarkStepper {
- public:
-  FeNewmarkStepper(const FeGearedRotor& model, const FeTimeOptions& options);
+/// The gear train the rotor's time response steps: gearTrainFromFeRotor of its spec without
+/// the unbalances (the stepper applies them as its force). `pair`: the gear pair the rotor was
+/// built from.
+GearTrainSpec feRotorTimeTrain(const FeGearedRotor& model, const GearPairSpec& pair);
 
-  /// Sets the state at time t and computes the consistent acceleration.
-  void reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot);
-  /// Advances by one time step; allocation-free.
-  void step();
-
-  double time() const noexcept { return t_; }
-  const Eigen::VectorXd& displacement() const noexcept { return q_; }
-  const Eigen::VectorXd& velocity() const noexcept { return v_; }
-  const Eigen::VectorXd& acceleration() const noexcept { return a_; }
-  double meshStiffness() const noexcept { return k_; }
-  double meshForce() const;
-  int factorisations() const noexcept { return factorisations_; }
-
- private:
-  void factorise(double speed);
-  void force(double t, Eigen::VectorXd& f);
-
-  const FeGearedRotor& model_;
-  double dt_, gamma_, gyro_tolerance_;
-  NewmarkCoefficients nm_;
-  double t_ = 0.0, k_ = 0.0, e_ = 0.0, speed_factorised_ = 0.0, k_ref_ = 0.0, s_ = 0.0;
-  int factorisations_ = 0;
-  Eigen::MatrixXd A_, Cg_, K0_;  // effective, C + ΩG₁, K + k̄ v vᵀ
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  Eigen::VectorXd q_, v_, a_, z_, rhs_, y_, p_, c_, f_;
-};
+/// The train's Newmark stepper over the rotor's DOFs (its state in the rotor's DOF order) with
+/// the rotor's loads and unbalances, at its speed profile; `train` assembled from
+/// feRotorTimeTrain. One step at a time: the building block of solveFeRotorTimeResponse, for
+/// benchmarks and tests.
+TrainNewmarkStepper feRotorStepper(const FeGearedRotor& model, const GearTrainModel& train,
+                                   const FeTimeOptions& options);
 
 /// Integrates from t = 0 to `duration`, recording every `record_every` steps (t = 0 included).
-FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const FeTimeOptions& options);
-
-/// The static deflection under the constant loads with the mesh stiffness k and TE e [m]
-/// (minimum-norm: rigid-body modes left at zero).
-Eigen::VectorXd feStaticDeflection(const FeGearedRotor& model, double mesh_stiffness,
-                                   double transmission_error = 0.0);
+/// `pair` is the gear pair the rotor was built from (its gear train's gears).
+FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const GearPairSpec& pair,
+                                        const FeTimeOptions& options);
 
 }  // namespace geardyn

@@ -12,13 +12,21 @@
 /// disks (the FE rotor weighs its disks only), so F₀ differs by the shafts' own weight when
 /// gravity ≠ 0 — the modes and the Campbell diagram do not depend on it.
 
+#include <vector>
+
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/models/fe_geared_rotor.h"
 #include "geardyn/system/gear_train.h"
+#include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {
 
 /// `pair` is the gear pair the FE rotor was built from (teeth, modules, widths, hands).
 GearTrainSpec gearTrainFromFeRotor(const FeGearedRotorSpec& rotor, const GearPairSpec& pair);
+
+/// The train DOF of each of `fe`'s active DOFs, in `fe`'s order (`train` assembled from
+/// gearTrainFromFeRotor of fe's spec): the node DOFs [u_x, u_y, u_z, θ_x, θ_y, θ_z] of the FE
+/// rotor are the train's (y, z, θ_x, x, θ_y, θ_z) order (gear_train_model.h) at the same node.
+std::vector<int> feRotorTrainDofs(const FeGearedRotor& fe, const GearTrainModel& train);
 
 }  // namespace geardyn

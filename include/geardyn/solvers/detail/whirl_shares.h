@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// What the modal solvers (rotor_modal.cpp, train_modal.cpp) share to describe a mode: its
+/// What the modal solver (train_modal.cpp) and the FE rotor's reference modes of the tests
+/// (tests/support/fe_rotor_modes.h) share to describe a mode: its
 /// kinetic-energy shares (lateral, torsional, axial, from the diagonal mass) and its whirl.
 /// A node's lateral motion (Y, Z) = F e^{iΩt} + B e^{−iΩt} splits into forward and backward
 /// circles, |F|² ∝ |Y + iZ|², |B|² ∝ |Y − iZ|², forward meaning with the shaft's spin.

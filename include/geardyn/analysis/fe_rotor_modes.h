@@ -4,6 +4,7 @@
 /// modal solver (train_modal.h, issue #31): the file is translated into its gearbox
 /// (config/fe_rotor_gearbox.h), read by the gearbox reader and assembled as a GearTrainModel;
 /// the train's modes and Campbell diagram are reported on the FE rotor's DOFs and order lines.
+/// `geardyn rotor` and the Python `FeGearedRotor.modal` / `.campbell` use these.
 
 #include <memory>
 #include <string>
@@ -14,7 +15,7 @@
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/system/gear_train_model.h"
 
-namespace geardyn::analysis::detail {
+namespace geardyn::analysis {
 
 /// The train of an FE rotor file and where each of the FE rotor's active DOFs is in it.
 struct FeRotorTrain {
@@ -43,4 +44,4 @@ TrainCampbell feRotorCampbell(const FeRotorTrain& train, const FeGearedRotor& fe
                               const std::vector<double>& speeds, int modes,
                               double max_damping_ratio);
 
-}  // namespace geardyn::analysis::detail
+}  // namespace geardyn::analysis
