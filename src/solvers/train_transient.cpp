@@ -54,7 +54,7 @@ TrainTransient trainTransient(const GearTrainModel& model, double input_speed) {
         !(sigma > 0.0)) {
       continue;
     }
-    const double time = std::log(start / kDecay) / sigma;
+    const double time = -std::log(kDecay) / sigma;
     if (time > t.decay_time) {
       t.decay_time = time;
       t.slowest_frequency = mode.frequency;

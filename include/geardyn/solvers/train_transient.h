@@ -27,8 +27,11 @@ struct TrainUndampedMode {
 /// deflections v_mᵀq only, so mode j starts with an amplitude proportional to its modal force
 /// Σ_m v_mᵀφ_j (…), and (v_mᵀφ_j)² = s_mj φ_jᴴK̄φ_j / k̄_m with s_mj its strain-energy share in
 /// mesh m: relative to the modes the meshes drive, mode j starts at about √s_j (s_j = Σ_m
-/// s_mj). It has decayed to 1e-6 of the response after ln(√s_j / 1e-6) / σ_j (σ_j = −Re λ_j);
-/// modes with √s_j ≤ 1e-6 start below that and are not waited for.
+/// s_mj). Modes with √s_j ≤ 1e-6 start below the 1e-6 the transient must fall to and are not
+/// waited for (a shaft's lateral mode between undamped bearings, orthogonal to every line of
+/// action, has s_j at round-off). Every other mode is waited for until it has decayed by 1e-6,
+/// ln(1e6) / σ_j (σ_j = −Re λ_j): √s_j is only the modal amplitude, and a probe's velocity or
+/// acceleration weights a high mode by its frequency, so its start is not discounted.
 struct TrainTransient {
   /// The longest of those times [s]; +inf when a mode the meshes excite has no damping, 0 when
   /// no mode needs one.
