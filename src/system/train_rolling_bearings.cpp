@@ -61,13 +61,18 @@ void GearTrainModel::addRollingBearing(const TrainBearingSpec& b, const std::str
                                    b.name, type));
     }
   }
-  for (auto [v, n] : {std::pair{b.cyy, "cyy"},
-                      {b.czz, "czz"},
-                      {b.c_axial, "c_axial"},
-                      {b.c_tilt, "c_tilt"},
-                      {b.k_torsion, "k_torsion"},
-                      {b.c_torsion, "c_torsion"}}) {
-    detail::requireNonNegative(v, key + "." + n, n[0] == 'k' ? "N m/rad" : "N s/m");
+  struct Value {
+    double value;
+    const char* name;
+    const char* unit;
+  };
+  for (const Value& v : {Value{b.cyy, "cyy", "N s/m"},
+                         {b.czz, "czz", "N s/m"},
+                         {b.c_axial, "c_axial", "N s/m"},
+                         {b.c_tilt, "c_tilt", "N m s/rad"},
+                         {b.k_torsion, "k_torsion", "N m/rad"},
+                         {b.c_torsion, "c_torsion", "N m s/rad"}}) {
+    detail::requireNonNegative(v.value, key + "." + v.name, v.unit);
   }
   if (spec_.dofs == TrainDofs::kTorsional) {
     warnings_.push_back(fmt::format(
