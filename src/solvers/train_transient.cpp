@@ -9,7 +9,9 @@ namespace geardyn {
 
 namespace {
 constexpr double kUndamped = 1e-9;  // |ζ| below this is round-off of an undamped mode
-constexpr double kDecay = 1e-6;     // what the transient falls to, relative to the response
+// Each mode the meshes excite decays by this; a mode whose relative start √s_j is below it is
+// not excited (train_transient.h).
+constexpr double kDecay = 1e-6;
 
 /// √s_j: mode j's starting amplitude relative to the modes the meshes drive (TrainTransient).
 double meshExcitation(const TrainMode& mode) {
