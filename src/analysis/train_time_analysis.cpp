@@ -99,7 +99,6 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   TrainSteadyOptions steady;
   steady.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
   steady.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
-  Json comparison = nullptr;
   std::vector<std::string> header{"t_s"};
   for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
   bool compare = true;
