@@ -15,6 +15,7 @@
 
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/analysis/run_estimates.h"
+#include "geardyn/analysis/warning_groups.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/ltca_config.h"
@@ -201,6 +202,10 @@ void bindAnalysis(py::module_& m) {
         "the GIL is released while it runs. `progress(label, unit, done, total)` is called at "
         "most every 0.1 s; Ctrl-C raises KeyboardInterrupt. Returns an AnalysisResult.");
   m.def("analysis_names", &analysis::analysisNames, "The analyses geardyn.run runs in-process.");
+  m.def("grouped_warnings", &analysis::groupedWarnings, py::arg("warnings"),
+        py::arg("max_named") = 8,
+        "One line per kind of warning, as the command line prints them (summary.json and "
+        "Result.warnings keep each).");
 }
 
 }  // namespace geardyn::python

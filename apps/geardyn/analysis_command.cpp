@@ -34,7 +34,7 @@ int runLibraryResult(const std::string& name, const std::string& plot_kind, bool
   analysis::AnalysisContext context;
   context.config_source = options.config_file.string();
   context.threads = options.threads;
-  context.warn = [](const std::string& text) { warn(text); };
+  context.warn = [&options](const std::string& text) { warn(text, options.quiet); };
   context.print = [&options](const std::string& text) { report(options, text); };
   context.inform = [&options](const std::string& text) {
     if (!options.quiet) std::cerr << text << std::flush;

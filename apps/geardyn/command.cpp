@@ -6,6 +6,8 @@
 #include <mutex>
 #include <set>
 
+#include "geardyn/analysis/warning_groups.h"
+
 namespace geardyn::cli {
 
 std::filesystem::path CommandOptions::resultFolder() const {
@@ -17,11 +19,17 @@ void report(const CommandOptions& options, const std::string& text) {
   if (!options.quiet) std::cout << text << std::flush;
 }
 
-void warn(const std::string& text) {
+void warn(const std::string& text, bool quiet) {
   static std::mutex mutex;
   static std::set<std::string> shown;
+  const bool note = isNote(text);
+  if (note && quiet) return;
   const std::lock_guard<std::mutex> lock(mutex);
-  if (shown.insert(text).second) std::cerr << "warning: " << text << "\n";
+  if (shown.insert(text).second) std::cerr << (note ? "" : "warning: ") << text << "\n";
+}
+
+void warnAll(const std::vector<std::string>& texts, bool quiet) {
+  for (const auto& line : analysis::groupedWarnings(texts)) warn(line, quiet);
 }
 
 std::string exitCodesText() {

@@ -95,8 +95,11 @@ config::Config loadCommandConfig(const Command& command, const CommandOptions& o
 void report(const CommandOptions& options, const std::string& text);
 
 /// Prints "warning: TEXT" on stderr, once per distinct text in this process (a sweep's cases
-/// do not repeat the warning they share). Thread-safe.
-void warn(const std::string& text);
+/// do not repeat the warning they share); a note (analysis::isNote: it changes no number) is
+/// printed as it is, and not at all when `quiet` (geardyn/notes.h). Thread-safe.
+void warn(const std::string& text, bool quiet = false);
+/// warn() for a batch, one line per kind of warning (analysis::groupedWarnings).
+void warnAll(const std::vector<std::string>& texts, bool quiet = false);
 
 /// The exit codes with their meaning, as `geardyn --help` and docs/cli.md list them.
 std::string exitCodesText();

@@ -70,8 +70,9 @@ int RexsCommands::runImport() const {
       import_out_.empty() ? std::filesystem::path(import_file_.stem().string() + ".toml")
                           : import_out_;
   io::writeFileAtomic(out, imported.toml);
-  for (const auto& w : imported.warnings) warn(w);
-  for (const auto& w : model_warnings) warn(w);
+  std::vector<std::string> all = imported.warnings;
+  all.insert(all.end(), model_warnings.begin(), model_warnings.end());
+  warnAll(all, quiet_);
   if (!quiet_) {
     std::cout << "imported " << import_file_.filename().string() << ": "
               << config.names("shafts").size() << " shafts, " << config.names("gears").size()
@@ -92,7 +93,7 @@ int RexsCommands::runExport() const {
   warnings.clear();
   const std::string json = io::rexs::exportRexsJson(config, warnings);
   io::writeFileAtomic(export_out_, json);
-  for (const auto& w : warnings) warn(w);
+  warnAll(warnings, quiet_);
   if (!quiet_)
     std::cout << "REXS " << io::rexs::kRexsExportVersion << " JSON: " << export_out_.string()
               << "\n";

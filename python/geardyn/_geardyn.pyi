@@ -362,6 +362,10 @@ def gear_whirl_peaks(x1: numpy.ndarray, y1: numpy.ndarray, x2: numpy.ndarray, y2
     """Whirl peaks of both shafts (static, mesh_i_fwd/bwd, pinion/gear_1x_fwd/bwd) with each shaft's peak noise: the input of identify_dte."""
     ...
 
+def grouped_warnings(warnings: list[str], max_named: int = 8) -> list[str]:
+    """One line per kind of warning, as the command line prints them (summary.json and Result.warnings keep each)."""
+    ...
+
 def harris_map(pair: GearPair, forces: list[float], *, relief: str = 'none', design_load: Optional[float] = None, shape: str = 'linear', positions: int = 200, slices: int = 1) -> numpy.ndarray:
     """Peak-to-peak loaded STE [m] at each force (a Harris map)."""
     ...

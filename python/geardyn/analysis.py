@@ -148,17 +148,23 @@ def run(command, config=None, *, out=None, overrides=None, threads=None, check=T
         model_type = str((document.get("model") or {}).get("type", ""))
         text = to_toml(document)
     display = _Progress() if progress else None
+    shown = set()  # each text once: a note raised while loading may be in result.warnings too
+
+    def warn_once(text, stacklevel):
+        if text not in shown:
+            shown.add(text)
+            warnings.warn(text, stacklevel=stacklevel + 1)
+
     try:
         native = _geardyn.analyze(command, path=path, text=text, model_type=model_type,
                                   overrides=_overrides(overrides), threads=int(threads or 0),
-                                  progress=display,
-                                  warn=lambda note: warnings.warn(note, stacklevel=3))
+                                  progress=display, warn=lambda note: warn_once(note, 3))
     finally:
         if display is not None:
             display.close()
     result = Result(native)
-    for warning in result.warnings:
-        warnings.warn(warning, stacklevel=2)
+    for warning in _geardyn.grouped_warnings(result.warnings):  # one line per kind, as the CLI
+        warn_once(warning, 2)
     if out is not None:
         if plots is None:
             plots = bool((result.summary.get("config", {}).get("output") or {}).get("plots"))

@@ -12,6 +12,7 @@ from ._tables import log_floor
 from .plot_train_nonlinear import train_nonlinear_figure
 from .plot_train_runup import train_runup_figure, train_waterfall_figure
 from .plot_train_stats import train_stats_figure
+from .plot_train_time import train_time_figure
 from .plot_train_tones import train_tones_figure
 
 _TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
@@ -224,29 +225,6 @@ def _forced(folder, summary, title, axes=None):
     return figure
 
 
-def _time(folder, summary, title):
-    table = _read_columns(folder / "time_history.csv")
-    t_ms = [1e3 * (t - table["t_s"][0]) for t in table["t_s"]]
-    meshes = [n[len("mesh_force_"):-len("_normal_n")] for n in table
-              if n.startswith("mesh_force_") and n.endswith("_normal_n")]
-    shown = meshes[:4]
-    figure, axes = plt.subplots(len(shown), 1, figsize=(10.5, 2.2 * len(shown) + 0.6), sharex=True,
-                                squeeze=False, layout="constrained")
-    for ax, name in zip(axes[:, 0], shown):
-        ax.plot(t_ms, [1e-3 * f for f in table["mesh_force_" + name + "_normal_n"]], lw=1.4, label="Newmark")
-        steady = table.get("steady_mesh_force_" + name + "_normal_n")
-        if steady:
-            ax.plot(t_ms, [1e-3 * f for f in steady], "--", lw=1.0, color="k",
-                    label="frequency-domain steady state")
-        ax.set_ylabel(f"{name}\nmesh force [kN]", fontsize=8)
-        ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
-    axes[-1, 0].set_xlabel("time in the steady-state window [ms]")
-    speed = summary["results"]["time"]["speed_rpm"]
-    figure.suptitle(f"{title}: dynamic mesh forces at {speed:g} rpm", fontsize=9)
-    return figure
-
-
 def _train_title(summary):
     return summary["config"].get("gearbox", {}).get("name") or \
         summary["config"].get("gearbox_description", {}).get("gearbox", {}).get("name") or "gear train"
@@ -271,7 +249,7 @@ def plot_train(result_dir, save=False):
         if (folder / "forced_tones.csv").exists():
             figures["forced_tones.png"] = train_tones_figure(folder, summary, title)
     if "time" in results and (folder / "time_history.csv").exists():
-        figures["time_history.png"] = _time(folder, summary, title)
+        figures["time_history.png"] = train_time_figure(folder, summary, title)
     if "runup" in results and (folder / "runup.csv").exists():
         figures["runup.png"] = train_runup_figure(folder, title)
         figures["waterfall.png"] = train_waterfall_figure(folder, title)

@@ -11,7 +11,7 @@ namespace geardyn::analysis {
 
 AnalysisResult geometryAnalysis(const config::Config& config, const AnalysisContext& context) {
   const GearPair pair(config::gearPairSpecFromConfig(config));
-  for (const auto& warning : pair.warnings()) context.warning(warning);
+  context.warnings(pair.warnings());
 
   AnalysisResult result("geometry", config, context);
   io::RunSummary& summary = result.summary;

@@ -225,7 +225,7 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
   }
 
   summary.warnings = warnings;
-  for (const auto& warning : warnings) context.warning(warning);
+  context.warnings(warnings);
   // Printed values carry the unit of the configuration (nondimensional models: [-], the
   // frequency as Ω/ω_n and the deflection in x₀).
   const std::string length_unit = build.nondimensional ? " [-]" : " m";

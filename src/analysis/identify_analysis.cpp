@@ -171,7 +171,7 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
         {"gear_runout_relative_error", r.gear_runout.amplitude.value / truth->gear_runout - 1.0}};
   }
   if (!r.converged) result.errors.push_back(r.message);
-  for (const auto& w : summary.warnings) context.warning(w);
+  context.warnings(summary.warnings);
   const auto ci = [](const IdentifiedValue& v, double scale, const char* unit) {
     return fmt::format("{:.5g} {}, 95 % interval {:.4g} {} to {:.4g} {}{}", v.value * scale, unit,
                        v.low * scale, unit, v.high * scale, unit,

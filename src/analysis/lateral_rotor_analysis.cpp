@@ -430,7 +430,7 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
 
   summary.status = ok ? "ok" : (time.converged() ? "study_incomplete" : toString(time.status));
   summary.warnings = warnings;
-  for (const auto& w : warnings) context.warning(w);
+  context.warnings(warnings);
   for (int sh = 0; sh < 2; ++sh) {
     double mesh1 = 0.0;
     for (const auto& c : exact[sh])

@@ -141,7 +141,7 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
                                      {"mean_tangent_stiffness_at_design_load", k_bar},
                                      {"loads", rows}};
   }
-  for (const auto& w : summary.warnings) context.warning(w);
+  context.warnings(summary.warnings);
   result.report = text;
   return result;
 }

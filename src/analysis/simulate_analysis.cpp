@@ -10,7 +10,7 @@ namespace geardyn::analysis {
 
 AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisContext& context) {
   const config::GearPairModelBuild build = config::buildGearPairModel(config);
-  for (const auto& warning : build.warnings) context.warning(warning);
+  context.warnings(build.warnings);
   const GearPairModel model(build.spec);
   TimeResponseOptions solver = config::timeResponseOptionsFromConfig(config);
   context.checkBudget("simulate");  // before it allocates

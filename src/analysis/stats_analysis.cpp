@@ -73,7 +73,7 @@ AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext
       }
     }
   }
-  for (const auto& warning : summary.warnings) context.warning(warning);
+  context.warnings(summary.warnings);
   summary.results["mean_excitation"] = io::toJson(stats);
 
   for (const auto& [name, table] : monte_carlo_tables) result.addTable(name, table);

@@ -19,7 +19,7 @@ AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisCon
   io::RunSummary& summary = result.summary;
   summary.warnings = pair.warnings();
   summary.warnings.insert(summary.warnings.end(), models.warnings.begin(), models.warnings.end());
-  for (const auto& warning : summary.warnings) context.warning(warning);
+  context.warnings(summary.warnings);
   summary.results = io::stiffnessResultsJson(config, pair, models);
   summary.results["geometry"] = {
       {"contact_ratio_transverse", pair.contactRatioTransverse()},

@@ -102,19 +102,25 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                std::string& text) {
   const auto start = Clock::now();
   const TrainStaticResult r = solveTrainStatic(model, model.inputSpeed());
-  // Mesh forces along the contact normal [N]; elements in N, or N m for torsional ones.
+  // Mesh forces along the contact normal [N]; an element's force resultant [N] and moment
+  // resultant [N m] over its rows (TrainElement::moment_rows), one line each it has.
   io::CsvTable forces({"component", "kind", "unit", "force"});
-  Json meshes = Json::object(), elements = Json::object();
+  Json meshes = Json::object(), element_forces = Json::object(), element_moments = Json::object();
   for (std::size_t m = 0; m < model.meshes().size(); ++m) {
     forces.addRow({model.meshes()[m].name, "mesh_n", "N", r.mesh_force[m]});
     meshes[model.meshes()[m].name] = r.mesh_force[m];
   }
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const TrainElement& el = model.elements()[e];
-    const bool torque = el.local_stiffness.rows() == 1;
-    forces.addRow(
-        {el.name, el.kind + (torque ? "_n_m" : "_n"), torque ? "N m" : "N", r.element_force[e]});
-    elements[el.name] = r.element_force[e];
+    const ElementLoad& load = r.element_load[e];
+    if (load.has_force) {
+      forces.addRow({el.name, el.kind + "_n", "N", load.force});
+      element_forces[el.name] = load.force;
+    }
+    if (load.has_moment) {
+      forces.addRow({el.name, el.kind + "_n_m", "N m", load.moment});
+      element_moments[el.name] = load.moment;
+    }
   }
   result.addTable("static_forces.csv", forces);
   Json sharing = Json::array();
@@ -130,7 +136,8 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                                {"rigid_modes", r.rigid_modes},
                                {"relative_residual", r.residual},
                                {"mesh_force_n", meshes},
-                               {"element_force", elements},
+                               {"element_force_n", element_forces},
+                               {"element_moment_n_m", element_moments},
                                {"load_sharing", sharing},
                                {"newton_iterations", r.iterations},
                                {"wall_time_s", secondsSince(start)}};
@@ -397,9 +404,11 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   std::size_t warned = 0;
   std::set<std::string> shown;  // one line per warning: modal and time find the same modes
   const auto flush = [&] {
+    std::vector<std::string> fresh;
     for (; warned < summary.warnings.size(); ++warned) {
-      if (shown.insert(summary.warnings[warned]).second) context.warning(summary.warnings[warned]);
+      if (shown.insert(summary.warnings[warned]).second) fresh.push_back(summary.warnings[warned]);
     }
+    context.warnings(fresh);
     if (context.print && text.size() > result.printed) {
       context.print(text.substr(result.printed));
       result.printed = text.size();

@@ -242,7 +242,7 @@ ConfigSchema feRotorSchema() {
   schema.realList("mesh.te_phases_deg")
       .unit("deg")
       .defaultValue(nlohmann::ordered_json::array())
-      .doc("phases φ_r of the transmission error");
+      .doc("phases φ_r of the transmission error (one per amplitude; empty: 0)");
   schema.section("mesh_stiffness", "Options of the mesh-stiffness models.");
   addMeshStiffnessModelSections(schema);
   addShaftSections(schema, kShafts[0], "pinion");
@@ -423,7 +423,7 @@ FeRotorBuild feRotorSpecFromConfig(const Config& config, const std::string& stif
   std::vector<double> phases = config.realList("mesh.te_phases_deg");
   for (double& p : phases) p *= kDeg;
   spec.transmission_error.addFourier(config.realList("mesh.te_amplitudes"), phases,
-                                     "mesh.te_amplitudes");
+                                     "mesh.te_amplitudes", "mesh.te_phases_deg");
   spec.mesh_damping = config.real("mesh.damping");
   spec.stiffness_proportional = config.real("damping.stiffness_proportional");
   spec.mass_proportional = config.real("damping.mass_proportional");

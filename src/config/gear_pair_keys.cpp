@@ -269,7 +269,8 @@ void readError(const Config& config, GearPairKeys& k) {
   const std::string te = "model.transmission_error";
   auto te_phases = config.realList(te + ".phases_deg");
   for (double& p : te_phases) p *= kDeg;
-  k.error.addFourier(config.realList(te + ".amplitudes"), te_phases, te);
+  k.error.addFourier(config.realList(te + ".amplitudes"), te_phases, te + ".amplitudes",
+                     te + ".phases_deg");
   if (config.real(te + ".rectangular_amplitude") != 0.0) {
     k.error.addRectangular(config.real(te + ".rectangular_amplitude"),
                            config.real(te + ".rectangular_duty"),

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geardyn/config/detail/gearbox_bearing.h"
+#include "geardyn/config/detail/gearbox_gear_defaults.h"
 #include "geardyn/config/detail/gearbox_mesh_model.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
@@ -22,6 +23,7 @@ namespace {
 
 using detail::addMeshModelKeys;
 using detail::contactFromConfig;
+using detail::defaultBoreDiameter;
 using detail::stiffnessFromConfig;
 using detail::teFromConfig;
 
@@ -123,7 +125,11 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .doc("global x of the first section's start; positions on the shaft count from it");
 
   schema.collection("gears", "Gears on shafts.");
-  config::addGearSection(schema, "gears.*", "gear (internal = true makes it a ring gear)", true);
+  config::addGearSection(schema, "gears.*", "gear (internal = true makes it a ring gear)", true,
+                         "the outer diameter of its shaft's section under the gear when that "
+                         "is below the root diameter (a gear on a shaft), else 0 (solid; a "
+                         "pinion cut into its shaft needs one for the potential-energy tooth "
+                         "model's hub)");
   schema.string("gears.*.shaft").required().doc("the shaft it sits on");
   schema.boolean("gears.*.internal").defaultValue(false).doc("a ring gear with internal teeth");
   schema.boolean("gears.*.body")
@@ -419,6 +425,10 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     spec.gears.push_back({name, config.string(p + ".shaft"), config::gearSpecFromConfig(config, p),
                           config.boolean(p + ".internal"), config.boolean(p + ".body"),
                           config.real(p + ".position")});
+    TrainGearSpec& gear = spec.gears.back();
+    if (!config.has(p + ".bore_diameter") && !gear.internal) {
+      gear.gear.bore_diameter = defaultBoreDiameter(gear, spec.shafts);
+    }
     for (auto& note : plausibilityNotes(spec.gears.back().gear, p)) warnings.push_back(note);
   }
   auto gear_named = [&](const std::string& gear, const std::string& key) -> const TrainGearSpec& {
@@ -448,11 +458,20 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     const double width = std::min(a.gear.face_width, b.gear.face_width);
     double base_helix = 0.0;  // β_b [rad]
     if (a.internal || b.internal) {
-      const InternalGearPair pair(a.internal ? b.gear : a.gear, a.internal ? a.gear : b.gear,
-                                  m.centre_distance, "meshes." + name);
+      const TrainGearSpec& ring = a.internal ? a : b;
+      const TrainGearSpec& pinion = a.internal ? b : a;
+      const InternalGearPair pair(pinion.gear, ring.gear, m.centre_distance, "meshes." + name);
       m.stiffness =
-          stiffnessFromConfig(config, p, nullptr, width, a.gear.helix_angle,
-                              pair.contactRatioTransverse() + pair.overlapRatio(), warnings);
+          stiffnessFromConfig(config, p,
+                              {nullptr,
+                               &pair,
+                               &pinion.gear,
+                               &ring.gear,
+                               width,
+                               a.gear.helix_angle,
+                               pair.contactRatioTransverse() + pair.overlapRatio(),
+                               {"gears." + pinion.name, "gears." + ring.name, "meshes." + name}},
+                              warnings);
       m.contact = contactFromConfig(config, p, nullptr);
       base_helix = pair.baseHelixAngle();
       if (config.has(p + "driver")) {
@@ -467,8 +486,16 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
       pair_spec.driver = meshDriver(config, p, m);
       const GearPair pair =
           makeGearPair(pair_spec, "gears." + a.name, "gears." + b.name, "meshes." + name);
-      m.stiffness = stiffnessFromConfig(config, p, &pair, width, a.gear.helix_angle,
-                                        pair.contactRatioTotal(), warnings);
+      m.stiffness = stiffnessFromConfig(config, p,
+                                        {&pair,
+                                         nullptr,
+                                         nullptr,
+                                         nullptr,
+                                         width,
+                                         a.gear.helix_angle,
+                                         pair.contactRatioTotal(),
+                                         {"gears." + a.name, "gears." + b.name, "meshes." + name}},
+                                        warnings);
       m.contact = contactFromConfig(config, p, &pair);
       base_helix = pair.baseHelixAngle();
     }
@@ -551,13 +578,28 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
         makeGearPair(sp, "gears." + st.sun, p + "planet", "planetary." + name);
     const InternalGearPair ring_pair(st.planet, ring.gear, sun_pair.centreDistance(),
                                      "planetary." + name);
-    st.sun_planet_stiffness = stiffnessFromConfig(
-        config, p + "sun_planet.", &sun_pair, std::min(sun.gear.face_width, st.planet.face_width),
-        sun.gear.helix_angle, sun_pair.contactRatioTotal(), warnings);
-    st.ring_planet_stiffness = stiffnessFromConfig(
-        config, p + "ring_planet.", nullptr, std::min(ring.gear.face_width, st.planet.face_width),
-        ring.gear.helix_angle, ring_pair.contactRatioTransverse() + ring_pair.overlapRatio(),
-        warnings);
+    st.sun_planet_stiffness =
+        stiffnessFromConfig(config, p + "sun_planet.",
+                            {&sun_pair,
+                             nullptr,
+                             nullptr,
+                             nullptr,
+                             std::min(sun.gear.face_width, st.planet.face_width),
+                             sun.gear.helix_angle,
+                             sun_pair.contactRatioTotal(),
+                             {"gears." + st.sun, p + "planet", p + "sun_planet"}},
+                            warnings);
+    st.ring_planet_stiffness =
+        stiffnessFromConfig(config, p + "ring_planet.",
+                            {nullptr,
+                             &ring_pair,
+                             &st.planet,
+                             &ring.gear,
+                             std::min(ring.gear.face_width, st.planet.face_width),
+                             ring.gear.helix_angle,
+                             ring_pair.contactRatioTransverse() + ring_pair.overlapRatio(),
+                             {p + "planet", "gears." + st.ring, p + "ring_planet"}},
+                            warnings);
     st.sun_planet_damping_ratio = config.real(p + "sun_planet.damping_ratio");
     st.ring_planet_damping_ratio = config.real(p + "ring_planet.damping_ratio");
     st.sun_planet_error = teFromConfig(config, p + "sun_planet.");

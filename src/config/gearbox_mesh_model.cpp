@@ -12,7 +12,9 @@
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/error.h"
 #include "geardyn/models/scaled_contact_elements.h"
+#include "geardyn/notes.h"
 #include "geardyn/stiffness/api_stiffness.h"
+#include "geardyn/stiffness/iso6336_stiffness.h"
 #include "geardyn/stiffness/scaled_stiffness.h"
 #include "geardyn/stiffness/tabulated_stiffness.h"
 #include "geardyn/units.h"
@@ -34,9 +36,10 @@ void addMeshModelKeys(config::ConfigSchema& schema, const std::string& prefix,
                       const std::string& what) {
   schema.string(prefix + "stiffness")
       .choices(kStiffnessChoices)
-      .defaultValue("potential_energy")
+      .optional()
       .doc("mesh-stiffness model of " + what +
-           " (options in [mesh_stiffness.<model>]; ring meshes: constant or api)");
+           " (options in [mesh_stiffness.<model>]); default potential_energy on external "
+           "meshes, iso6336 on ring meshes (which take constant, api, iso6336 or table)");
   schema.real(prefix + "stiffness_value")
       .unit("N/m")
       .positive()
@@ -207,9 +210,8 @@ TransmissionError teFromConfig(const config::Config& config, const std::string& 
   TransmissionError te;
   const auto amplitudes = config.realList(prefix + "te_amplitudes");
   auto phases = config.realList(prefix + "te_phases_deg");
-  if (phases.empty()) phases.assign(amplitudes.size(), 0.0);
   for (double& p : phases) p *= kDeg;
-  if (!amplitudes.empty()) te.addFourier(amplitudes, phases, prefix + "te_phases_deg");
+  te.addFourier(amplitudes, phases, prefix + "te_amplitudes", prefix + "te_phases_deg");
   if (config.real(prefix + "te_rectangular_amplitude") != 0.0) {
     te.addRectangular(config.real(prefix + "te_rectangular_amplitude"),
                       config.real(prefix + "te_rectangular_duty"),
@@ -225,10 +227,13 @@ TransmissionError teFromConfig(const config::Config& config, const std::string& 
 
 std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& config,
                                                          const std::string& prefix,
-                                                         const GearPair* pair, double face_width,
-                                                         double helix, double contact_ratio,
+                                                         const MeshStiffnessInputs& inputs,
                                                          std::vector<std::string>& warnings) {
-  const std::string model = config.string(prefix + "stiffness");
+  const GearPair* pair = inputs.external;
+  const double contact_ratio = inputs.contact_ratio;
+  const std::string model = config.has(prefix + "stiffness") ? config.string(prefix + "stiffness")
+                            : pair                           ? "potential_energy"
+                                                             : "iso6336";
   if (model == "constant") {
     if (!config.has(prefix + "stiffness_value")) {
       throw InputError(prefix + "stiffness_value", "",
@@ -250,18 +255,29 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& c
         phases, values, contact_ratio, config.string(prefix + "stiffness_table_source"));
   }
   if (model == "api") {
-    return std::make_shared<ConstantMeshStiffness>("api", apiMeshStiffness(face_width, helix),
-                                                   contact_ratio);
+    return std::make_shared<ConstantMeshStiffness>(
+        "api", apiMeshStiffness(inputs.face_width, inputs.helix), contact_ratio);
+  }
+  if (!pair && model == "iso6336" && inputs.internal) {
+    const double k = iso6336Stiffness(*inputs.internal, *inputs.pinion, *inputs.ring,
+                                      config::iso6336OptionsFromConfig(config))
+                         .meshStiffness();
+    return std::make_shared<ConstantMeshStiffness>("iso6336", k, contact_ratio);
   }
   if (!pair) {
     throw InputError(prefix + "stiffness", "\"" + model + "\"",
-                     "\"constant\" or \"api\" on a ring (internal) mesh: the tooth models are "
-                     "written for external pairs");
+                     "\"constant\", \"api\", \"iso6336\" or \"table\" on a ring (internal) "
+                     "mesh: the other tooth models are written for external pairs");
   }
   std::vector<std::string> own;
-  auto k = config::buildMeshStiffnessModel(model, config, *pair, own);
+  std::shared_ptr<const MeshStiffness> k;
+  try {
+    k = config::buildMeshStiffnessModel(model, config, *pair, own);
+  } catch (const InputError& error) {
+    throw renamedForPair(error, inputs.keys);
+  }
   const std::string where = prefix.substr(0, prefix.size() - 1);
-  for (const auto& w : own) warnings.push_back(where + " (" + model + " model): " + w);
+  for (const auto& w : own) warnings.push_back(inContext(where + " (" + model + " model)", w));
   return k;
 }
 

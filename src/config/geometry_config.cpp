@@ -15,7 +15,7 @@ using geardyn::units::kDegree;
 }  // namespace
 
 void addGearSection(ConfigSchema& schema, const std::string& name, const std::string& role,
-                    bool required) {
+                    bool required, const std::string& bore_default) {
   schema.section(name, "The " + role + ": an external involute cylindrical gear.");
   const auto key = [&](const char* field) { return name + "." + field; };
   // The keys without a default: required, or optional when the gear pair itself is optional.
@@ -65,11 +65,19 @@ void addGearSection(ConfigSchema& schema, const std::string& name, const std::st
       .unit("m")
       .defaultValue(0.0)
       .doc("change of the tip radius Δr_a (< 0: tip shortening, e.g. to keep the tip clearance)");
-  schema.real(key("bore_diameter"))
-      .unit("m")
-      .min(0.0)
-      .defaultValue(0.0)
-      .doc("bore diameter of the body");
+  if (bore_default.empty()) {
+    schema.real(key("bore_diameter"))
+        .unit("m")
+        .min(0.0)
+        .defaultValue(0.0)
+        .doc("bore diameter of the body");
+  } else {
+    schema.real(key("bore_diameter"))
+        .unit("m")
+        .min(0.0)
+        .optional()
+        .doc("bore diameter of the body; absent: " + bore_default);
+  }
   schema.real(key("youngs_modulus"))
       .unit("Pa")
       .positive()
@@ -104,7 +112,7 @@ GearSpec gearSpecFromConfig(const Config& config, const std::string& name) {
   gear.dedendum_coefficient = config.real(key("dedendum_coefficient"));
   gear.root_fillet_coefficient = config.real(key("root_fillet_coefficient"));
   gear.tip_radius_modification = config.real(key("tip_radius_modification"));
-  gear.bore_diameter = config.real(key("bore_diameter"));
+  gear.bore_diameter = config.has(key("bore_diameter")) ? config.real(key("bore_diameter")) : 0.0;
   gear.youngs_modulus = config.real(key("youngs_modulus"));
   gear.poisson_ratio = config.real(key("poisson_ratio"));
   gear.density = config.real(key("density"));

@@ -151,7 +151,7 @@ void addGearPairModelSections(ConfigSchema& schema) {
   schema.realList("model.transmission_error.phases_deg")
       .unit("deg")
       .defaultValue(Json::array())
-      .doc("φ_r (as a gearbox's meshes.*.te_phases_deg)");
+      .doc("φ_r, one per amplitude; empty: 0 (as a gearbox's meshes.*.te_phases_deg)");
   schema.alias("model.transmission_error.phases",
                "model.transmission_error.phases_deg");  // value converted (config/renamed_keys.h)
   schema.real("model.transmission_error.rectangular_amplitude")

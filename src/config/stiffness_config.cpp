@@ -162,7 +162,7 @@ void addMeshStiffnessSections(ConfigSchema& schema) {
   schema.realList("mesh_stiffness.error_phases_deg")
       .unit("deg")
       .defaultValue(nlohmann::ordered_json::array())
-      .doc("phase per mesh order of e(φ) = Σ e_i cos(2π i φ + φ_i)");
+      .doc("phase per mesh order of e(φ) = Σ e_i cos(2π i φ + φ_i) (one per amplitude; empty: 0)");
   schema.realList("mesh_stiffness.error_table_phases")
       .unit("-")
       .min(0.0)
@@ -384,7 +384,7 @@ TransmissionErrorSpec transmissionErrorFromConfig(const Config& config) {
   std::vector<double> phases = config.realList("mesh_stiffness.error_phases_deg");
   for (double& p : phases) p *= kDegree;
   spec.error.addFourier(config.realList("mesh_stiffness.error_amplitudes"), phases,
-                        "mesh_stiffness.error");
+                        "mesh_stiffness.error_amplitudes", "mesh_stiffness.error_phases_deg");
   const auto table_phases = config.realList("mesh_stiffness.error_table_phases");
   if (!table_phases.empty() || !config.realList("mesh_stiffness.error_table_values").empty()) {
     spec.error.addTable(table_phases, config.realList("mesh_stiffness.error_table_values"),

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -373,21 +374,48 @@ GearPair::GearPair(const GearPairSpec& spec) try : spec_(spec) {
   throw InputError(error.key(), error.value(), error.allowed() + "; note: " + notes.front());
 }
 
+namespace {
+
+/// `text` with every path "from.…" that starts a word (not "x.from.…" nor "xfrom.…") renamed.
+std::string renamePaths(const std::string& text, const std::string& from, const std::string& to) {
+  const std::string head = from + ".";
+  std::string out;
+  std::size_t at = 0;
+  for (std::size_t hit = text.find(head); hit != std::string::npos;
+       hit = text.find(head, hit + 1)) {
+    const bool starts_word =
+        hit == 0 || !(std::isalnum(static_cast<unsigned char>(text[hit - 1])) ||
+                      text[hit - 1] == '_' || text[hit - 1] == '.');
+    if (!starts_word) continue;
+    out += text.substr(at, hit - at) + to + ".";
+    at = hit + head.size();
+  }
+  return out + text.substr(at);
+}
+
+std::string renamed(std::string text, const PairKeyNames& names) {
+  if (text == "pinion" || text == "gear" || text == "pair") {
+    return text == "pinion" ? names.pinion : text == "gear" ? names.gear : names.pair;
+  }
+  // One pass per name on the original spellings: a renamed path never contains another's head
+  // at a word start ("gears.z1." does not start with "gear.").
+  text = renamePaths(text, "pinion", names.pinion);
+  text = renamePaths(text, "gear", names.gear);
+  return renamePaths(text, "pair", names.pair);
+}
+
+}  // namespace
+
+InputError renamedForPair(const InputError& error, const PairKeyNames& names) {
+  return InputError(renamed(error.key(), names), error.value(), renamed(error.allowed(), names));
+}
+
 GearPair makeGearPair(const GearPairSpec& spec, const std::string& pinion_key,
                       const std::string& gear_key, const std::string& pair_key) {
   try {
     return GearPair(spec);
   } catch (const InputError& error) {
-    std::string key = error.key();
-    for (const auto& [from, to] : {std::pair{std::string("pinion"), pinion_key},
-                                   {std::string("gear"), gear_key},
-                                   {std::string("pair"), pair_key}}) {
-      if (key == from || key.rfind(from + ".", 0) == 0) {
-        key = to + key.substr(from.size());
-        break;
-      }
-    }
-    throw InputError(key, error.value(), error.allowed());
+    throw renamedForPair(error, {pinion_key, gear_key, pair_key});
   }
 }
 

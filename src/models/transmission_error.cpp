@@ -30,14 +30,16 @@ void requireFinite(const std::vector<double>& values, const std::string& key) {
 }  // namespace
 
 void TransmissionError::addFourier(std::vector<double> amplitudes, std::vector<double> phases,
-                                   const std::string& key) {
+                                   const std::string& amplitudes_key,
+                                   const std::string& phases_key) {
+  if (phases.empty()) phases.assign(amplitudes.size(), 0.0);
   if (amplitudes.size() != phases.size()) {
-    throw InputError(
-        key + ".phases", fmt::format("{} values", phases.size()),
-        fmt::format("need one phase per amplitude ({} amplitudes)", amplitudes.size()));
+    throw InputError(phases_key, fmt::format("{} values", phases.size()),
+                     fmt::format("one phase per amplitude of {} ({} values), or none (all 0)",
+                                 amplitudes_key, amplitudes.size()));
   }
-  requireFinite(amplitudes, key + ".amplitudes");
-  requireFinite(phases, key + ".phases");
+  requireFinite(amplitudes, amplitudes_key);
+  requireFinite(phases, phases_key);
   if (amplitudes.size() > amplitudes_.size()) {
     amplitudes_.resize(amplitudes.size(), 0.0);
     phases_.resize(amplitudes.size(), 0.0);

@@ -25,6 +25,20 @@ using detail::rigidModes;
 
 }  // namespace
 
+ElementLoad elementLoad(const TrainElement& element, const Eigen::VectorXd& local_force) {
+  ElementLoad load;
+  double force2 = 0.0, moment2 = 0.0;
+  for (Eigen::Index i = 0; i < local_force.size(); ++i) {
+    const bool moment = static_cast<std::size_t>(i) < element.moment_rows.size() &&
+                        element.moment_rows[static_cast<std::size_t>(i)];
+    (moment ? moment2 : force2) += local_force(i) * local_force(i);
+    (moment ? load.has_moment : load.has_force) = true;
+  }
+  load.force = std::sqrt(force2);
+  load.moment = std::sqrt(moment2);
+  return load;
+}
+
 TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_speed) {
   TrainStaticResult r;
   const Eigen::MatrixXd K = model.meanStiffnessAt(input_speed);
@@ -60,7 +74,8 @@ TrainStaticResult solveTrainStatic(const GearTrainModel& model, double input_spe
     r.mesh_force.push_back(mesh.mean_stiffness * (mesh.deflection(r.displacement) - mean_error[m]));
   }
   for (const TrainElement& e : model.elements()) {
-    r.element_force.push_back((e.local_stiffness * elementDeformation(e, r.displacement)).norm());
+    r.element_load.push_back(
+        elementLoad(e, e.local_stiffness * elementDeformation(e, r.displacement)));
   }
   for (std::size_t s = 0; s < model.spec().stages.size(); ++s) {
     TrainStageLoadSharing share;

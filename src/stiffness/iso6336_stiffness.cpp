@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "geardyn/error.h"
@@ -19,7 +20,7 @@ constexpr double kSteelModulus = 206e9;  // [Pa], ISO's reference
 
 }  // namespace
 
-Iso6336Stiffness iso6336Stiffness(int z1, int z2, double x1, double x2, double helix_angle,
+Iso6336Stiffness iso6336Stiffness(int z1, double z2, double x1, double x2, double helix_angle,
                                   double base_helix_angle, double pressure_angle,
                                   double dedendum_coefficient, double normal_module,
                                   double face_width, double contact_ratio_transverse,
@@ -63,6 +64,19 @@ Iso6336Stiffness iso6336Stiffness(const GearPair& pair, const Iso6336Options& op
                           g1.normal_module, pair.effectiveFaceWidth(),
                           pair.contactRatioTransverse(), g1.youngs_modulus, g2.youngs_modulus,
                           options);
+}
+
+Iso6336Stiffness iso6336Stiffness(const InternalGearPair& pair, const GearSpec& pinion,
+                                  const GearSpec& ring, const Iso6336Options& options) {
+  if (!(options.c_m > 0.0) || !std::isfinite(options.c_m)) {
+    throw InputError("c_m", fmt::format("{:g}", options.c_m), "must be finite and > 0");
+  }
+  return iso6336Stiffness(
+      pinion.teeth, std::numeric_limits<double>::infinity(), pinion.profile_shift,
+      ring.profile_shift, pinion.helix_angle, pair.baseHelixAngle(), pinion.normal_pressure_angle,
+      pinion.dedendum_coefficient, pinion.normal_module,
+      std::min(pinion.face_width, ring.face_width), pair.contactRatioTransverse(),
+      pinion.youngs_modulus, ring.youngs_modulus, options);
 }
 
 }  // namespace geardyn

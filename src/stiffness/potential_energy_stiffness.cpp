@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "geardyn/error.h"
+#include "geardyn/notes.h"
 
 namespace geardyn {
 namespace {
@@ -145,9 +146,9 @@ void PotentialEnergyMeshStiffness::assessFoundationFit() {
                                      gear.empty() ? "" : "gear: " + gear);
   if (std::abs(foundation_fit_effect_) > kFoundationFitWarning) {
     warnings_.push_back(fmt::format(
-        "Sainsot's (2004) fillet-foundation fit is extrapolated ({}): held at its data range the "
+        "{}Sainsot's (2004) fillet-foundation fit is extrapolated ({}): held at its data range the "
         "mean mesh stiffness changes by {:+.2f} %, so read k̄ as uncertain by about that much",
-        foundation_fit_note_, 100.0 * foundation_fit_effect_));
+        kNotePrefix, foundation_fit_note_, 100.0 * foundation_fit_effect_));
   }
 }
 

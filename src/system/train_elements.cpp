@@ -50,7 +50,7 @@ void GearTrainModel::buildElements() {
   auto add = [&](std::string name, std::string kind, const std::vector<PointJacobian>& parts,
                  const Eigen::Matrix2d& k2, const Eigen::Matrix2d& c2) {
     // Relative displacement d = Σ J_i q: K = Jᵀ k J over the union of the DOFs.
-    TrainElement e{std::move(name), std::move(kind), {}, {}, {}, k2};
+    TrainElement e{std::move(name), std::move(kind), {}, {}, {}, k2, {false, false}};
     Eigen::MatrixXd J;
     detail::stackJacobians(parts, e.dofs, J);
     e.stiffness = J.transpose() * k2 * J;
@@ -59,9 +59,11 @@ void GearTrainModel::buildElements() {
     elements_.push_back(e);
     element_damping_.push_back(c);
   };
+  // One scalar spring on Σ s_i q_i: a rotation (torsion, tilt: a moment) unless `force` (an
+  // axial spring).
   auto add_torsion = [&](std::string name, std::string kind, std::vector<int> dofs,
-                         std::vector<double> signs, double k, double c) {
-    TrainElement e{std::move(name), std::move(kind), std::move(dofs), {}, {}, {}};
+                         std::vector<double> signs, double k, double c, bool force = false) {
+    TrainElement e{std::move(name), std::move(kind), std::move(dofs), {}, {}, {}, {!force}};
     Eigen::VectorXd s = Eigen::Map<Eigen::VectorXd>(signs.data(), signs.size());
     e.stiffness = k * s * s.transpose();
     e.jacobian = s.transpose();
@@ -154,7 +156,7 @@ void GearTrainModel::buildElements() {
     const std::vector<double> signs =
         other >= 0 ? std::vector<double>{1.0, -1.0} : std::vector<double>{1.0};
     if (full && (b.k_axial > 0 || b.c_axial > 0)) {
-      add_torsion(b.name + ".axial", "bearing", relative(3), signs, b.k_axial, b.c_axial);
+      add_torsion(b.name + ".axial", "bearing", relative(3), signs, b.k_axial, b.c_axial, true);
     }
     if (full && (b.k_tilt > 0 || b.c_tilt > 0)) {
       add_torsion(b.name + ".tilt_y", "bearing", relative(4), signs, b.k_tilt, b.c_tilt);
@@ -223,7 +225,7 @@ void GearTrainModel::buildElements() {
       // Axial: u_x,p − (u_x,c + θ_y,c r_z − θ_z,c r_y), the carrier's point at (dx, r_y, r_z).
       const int pd = planet.first_dof, cd = bodies_[carrier].first_dof;
       add_torsion(planet.name + ".pin_axial", "pin", {pd + 3, cd + 3, cd + 4, cd + 5},
-                  {1.0, -1.0, -r.y(), r.x()}, k_axial, st.pin_damping);
+                  {1.0, -1.0, -r.y(), r.x()}, k_axial, st.pin_damping, true);
       add_torsion(planet.name + ".pin_tilt_y", "pin", {pd + 4, cd + 4}, {1.0, -1.0}, k_tilt,
                   st.pin_damping * b * b / 12.0);
       add_torsion(planet.name + ".pin_tilt_z", "pin", {pd + 5, cd + 5}, {1.0, -1.0}, k_tilt,

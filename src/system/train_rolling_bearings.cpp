@@ -103,7 +103,9 @@ void GearTrainModel::addRollingBearing(const TrainBearingSpec& b, const std::str
   const Eigen::Matrix<double, 5, 5> k =
       b.stiffness_matrix ? *b.stiffness_matrix : Eigen::Matrix<double, 5, 5>::Zero();
   if (b.stiffness_matrix || !c.isZero(0.0)) {
-    TrainElement e{b.name, "bearing", dofs, J.transpose() * k * J, J, k};
+    // Rows (u_y, u_z, u_x, θ_y, θ_z): three forces, two moments.
+    TrainElement e{
+        b.name, "bearing", dofs, J.transpose() * k * J, J, k, {false, false, false, true, true}};
     elements_.push_back(e);
     element_damping_.push_back(J.transpose() * c * J);
   }

@@ -246,6 +246,7 @@ void GearTrainModel::addBeamElements() {
     e.stiffness = shaftElementStiffness(beam.segment);
     e.jacobian = Eigen::MatrixXd::Identity(2 * kNodeDofs, 2 * kNodeDofs);
     e.local_stiffness = e.stiffness;
+    for (int dof : e.dofs) e.moment_rows.push_back(dofName(dof).find("theta") != std::string::npos);
     // Material damping β_s K_e of the shaft (Visnadi & de Castro 2021 eq. 10).
     element_damping_.push_back(spec_.shafts[beam.shaft].stiffness_proportional_damping *
                                e.stiffness);

@@ -78,7 +78,7 @@ plots = false
 @pytest.mark.parametrize("override, expected", [
     ("model.mass=-1", "model.mass = -1: must be a number > 0 [kg]"),
     ("model.damping=10", "model.damping_ratio: give damping_ratio or damping, not both"),
-    ("model.transmission_error.phases_deg=[0.0, 57.3]", "need one phase per amplitude"),
+    ("model.transmission_error.phases_deg=[0.0, 57.3]", "model.transmission_error.phases_deg = 2 values: one phase per amplitude of model.transmission_error.amplitudes"),
     ("model.stiffness.type=potential_energy", "computes the stiffness from the gears"),
     ("model.stiffness.mean=nan", "model.stiffness.mean = nan: must be finite"),
     ("solver.output_points_per_period=100", "must be a multiple of solver.output_points_per_period"),

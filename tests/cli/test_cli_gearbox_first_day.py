@@ -158,3 +158,231 @@ def test_a_train_time_run_shows_progress_by_default_and_is_sized_before_it_alloc
     assert big.returncode == 2, big.stderr
     assert "time.record_periods = 100" in big.stderr and "memory limit" in big.stderr
     assert "static: ok" in big.stdout  # printed when it finished, before the refusal
+
+
+# --- item 3: defaults that work, errors that name the gearbox's keys ---------------------------
+
+def test_a_gear_without_a_bore_takes_its_shafts_diameter(tmp_path):
+    """On main: "gear.bore_diameter = 0 m ... set gear.bore_diameter" (no such key)."""
+    path = reducer(tmp_path)
+    path.write_text(path.read_text().replace("bore_diameter = 0.05\n", ""))  # z71 and z21x
+    result = geardyn("train", analysis(tmp_path, ["static", "modal"]), "--out", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    # The bores now default to the 50 mm shaft they sit on: the same model as the given 0.05.
+    (tmp_path / "given").mkdir()
+    reducer(tmp_path / "given")
+    same = geardyn("train", analysis(tmp_path / "given", ["static", "modal"]),
+                   "--out", tmp_path / "given" / "out")
+    assert same.returncode == 0, same.stderr
+    a = json.loads((tmp_path / "out" / "summary.json").read_text())["results"]["modal"]
+    b = json.loads((tmp_path / "given" / "out" / "summary.json").read_text())["results"]["modal"]
+    assert [m["frequency_hz"] for m in a["modes"]] == [m["frequency_hz"] for m in b["modes"]]
+
+
+def test_a_bore_the_tooth_model_needs_is_asked_for_under_the_gears_own_key(tmp_path):
+    path = reducer(tmp_path)
+    # A pinion cut into its shaft (the shaft is as wide as the gear): no bore to derive.
+    path.write_text(path.read_text().replace("bore_diameter = 0.04\n", "")
+                    .replace("outer_diameters = [0.04]", "outer_diameters = [0.07]"))
+    result = geardyn("train", analysis(tmp_path, ["static"]), "--out", tmp_path / "out")
+    assert result.returncode == 2, result.stderr
+    assert "gears.z19.bore_diameter = 0 m" in result.stderr, result.stderr
+    assert "set gears.z19.bore_diameter" in result.stderr
+    assert "pinion" not in result.stderr.replace("pinion_hub_radius", "")
+
+
+def test_mismatched_gears_are_named_by_their_keys(tmp_path):
+    path = reducer(tmp_path)
+    path.write_text(path.read_text().replace("module = 0.004\n", "module = 0.003\n", 1))
+    result = geardyn("train", analysis(tmp_path, ["static"]), "--out", tmp_path / "out")
+    assert result.returncode == 2, result.stderr
+    assert "gears.z59x.module = 0.004: must equal gears.z21x.module = 0.003" in result.stderr, \
+        result.stderr
+
+
+PLANETARY = """[gearbox]
+name = "first-day planetary"
+dofs = "planar"
+[shafts.sun]
+mass = 0.4
+polar_inertia = 3e-4
+[shafts.ring]
+mass = 2.4
+polar_inertia = 2e-2
+[shafts.carrier]
+mass = 5.4
+polar_inertia = 2.3e-2
+[gears.sun_gear]
+shaft = "sun"
+teeth = 30
+module = 2e-3
+face_width = 0.02
+bore_diameter = 0.02
+[gears.ring_gear]
+shaft = "ring"
+teeth = 90
+module = 2e-3
+face_width = 0.02
+internal = true
+[planetary.stage]
+sun = "sun_gear"
+ring = "ring_gear"
+carrier = "carrier"
+planets = 3
+pin_radial_stiffness = 1e8
+pin_tangential_stiffness = 1e8
+[planetary.stage.planet]
+teeth = 30
+module = 2e-3
+face_width = 0.02
+bore_diameter = 0.02
+[bearings.sun_bearing]
+shaft = "sun"
+kyy = 1e8
+kzz = 1e8
+[bearings.ring_support]
+shaft = "ring"
+kyy = 1e8
+kzz = 1e8
+k_torsion = 6.7e6
+[bearings.carrier_bearing]
+shaft = "carrier"
+kyy = 1e8
+kzz = 1e8
+[operating_point]
+input = "sun"
+speed_rpm = 1000.0
+torque = 100.0
+output = "carrier"
+"""
+
+
+def test_a_planetary_stage_with_default_mesh_models_runs(tmp_path):
+    """On main the ring mesh's default, potential_energy, was refused for ring meshes. Ring meshes
+    now default to ISO 6336-1 method B with the ring tooth as a rack tooth (z_n2 -> inf)."""
+    (tmp_path / "reducer.toml").write_text(PLANETARY)
+    result = geardyn("train", analysis(tmp_path, ["static", "modal"]), "--out", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    meshes = {m["mesh"]: m for m in summary["results"]["kinematics"]["meshes"]}
+    ring = [m for name, m in meshes.items() if m["kind"] == "ring_planet"]
+    assert len(ring) == 3
+    # ISO 6336-1 method B by hand for z_p = 30, x = 0, alpha_n = 20 deg, h_fP* = 1.25, spur,
+    # steel: q' = C1 + C2/30 (C3/z_n2 -> 0) = 0.04723 + 0.15551/30 mm um/N, c'_th = 1/q',
+    # C_M = 0.8, C_R = 1, C_B = 1 + 0.5 (1.2 - 1.25) = 0.975, c' = c'_th C_M C_B,
+    # c_gamma_alpha = c' (0.75 eps_alpha + 0.25) per mm of face width.
+    c_prime = 0.8 * 0.975 / (0.04723 + 0.15551 / 30)
+    kinematics = {m["mesh"]: m for m in
+                  __import__("csv").DictReader(open(tmp_path / "out" / "meshes.csv"))}
+    for m in ring:
+        eps = float(kinematics[m["mesh"]]["contact_ratio"])
+        expected = c_prime * (0.75 * eps + 0.25) * 20.0 * 1e6  # N/(mm um) x 20 mm = N/um -> N/m
+        assert m["mean_stiffness_n_per_m"] == pytest.approx(expected, rel=1e-9)
+    # The tooth models stay refused on ring meshes, with the choices that work there.
+    (tmp_path / "reducer.toml").write_text(
+        PLANETARY + '[planetary.stage.ring_planet]\nstiffness = "potential_energy"\n')
+    refused = geardyn("train", analysis(tmp_path, ["static"]), "--out", tmp_path / "bad")
+    assert refused.returncode == 2
+    assert 'planetary.stage.ring_planet.stiffness = "potential_energy"' in refused.stderr
+    assert '"iso6336"' in refused.stderr
+
+
+def test_a_planet_without_a_bore_is_asked_for_under_its_key(tmp_path):
+    (tmp_path / "reducer.toml").write_text(
+        PLANETARY.replace("face_width = 0.02\nbore_diameter = 0.02\n[bearings", "face_width = 0.02\n[bearings"))
+    result = geardyn("train", analysis(tmp_path, ["static"]), "--out", tmp_path / "out")
+    assert result.returncode == 2, result.stderr
+    assert "set planetary.stage.planet.bore_diameter" in result.stderr, result.stderr
+
+
+def test_te_phases_default_to_zero_in_every_command(tmp_path):
+    """One rule: no phases means every phase 0; a wrong count names both keys."""
+    from cli_support import EXAMPLES
+    example = EXAMPLES / "simulate_gear_pair_backlash.toml"
+    ok = geardyn("simulate", example, "--out", tmp_path / "a", "--set",
+                 "model.transmission_error.amplitudes=[1e-6, 5e-7]", "--set",
+                 "model.transmission_error.phases_deg=[]")
+    assert ok.returncode == 0, ok.stderr
+    bad = geardyn("simulate", example, "--out", tmp_path / "b", "--set",
+                  "model.transmission_error.phases_deg=[0, 10, 20]")
+    assert bad.returncode == 2
+    assert ("model.transmission_error.phases_deg = 3 values: one phase per amplitude of "
+            "model.transmission_error.amplitudes (1 values), or none (all 0)") in bad.stderr
+
+
+# --- item 4: one line per kind of warning; --quiet silences notes -------------------------------
+
+def test_a_warning_shared_by_meshes_is_one_line_and_quiet_silences_notes(tmp_path):
+    path = reducer(tmp_path)
+    # Bores that put both pinions below Sainsot's data (r_f / r_int < 1.7).
+    path.write_text(path.read_text().replace("bore_diameter = 0.04\n", "bore_diameter = 0.032\n")
+                    .replace("bore_diameter = 0.05\n", "bore_diameter = 0.05\n"))
+    text = path.read_text()
+    text = text.replace("[gears.z21x]\nshaft = \"inter\"\nteeth = 21\nmodule = 0.004\n"
+                        "face_width = 0.04\nhelix_angle_deg = -15.0\nbore_diameter = 0.05\n",
+                        "[gears.z21x]\nshaft = \"inter\"\nteeth = 21\nmodule = 0.004\n"
+                        "face_width = 0.04\nhelix_angle_deg = -15.0\nbore_diameter = 0.056\n")
+    path.write_text(text)
+    config = analysis(tmp_path, ["static"])
+    result = geardyn("train", config, "--out", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    lines = [l for l in result.stderr.splitlines() if "fillet-foundation fit" in l]
+    assert len(lines) == 1, result.stderr
+    assert lines[0].startswith("note: meshes.stage1"), lines[0]
+    assert "(the same for 1 more: meshes.stage2 (fourier model)" in lines[0], lines[0]
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert sum("fillet-foundation fit" in w for w in summary["warnings"]) == 2
+    quiet = geardyn("train", config, "--out", tmp_path / "quiet", "--quiet")
+    assert quiet.returncode == 0 and "fillet-foundation" not in quiet.stderr, quiet.stderr
+
+
+# --- item 5: outputs with the right units --------------------------------------------------------
+
+def test_static_forces_split_force_and_moment_with_their_units(tmp_path):
+    from cli_support import EXAMPLES
+    import csv
+    result = geardyn("train", EXAMPLES / "train_two_stage_flexible.toml", "--out", tmp_path,
+                     "--set", 'analysis.run=["static"]', "--set", "output.plots=false")
+    assert result.returncode == 0, result.stderr
+    rows = list(csv.DictReader(open(tmp_path / "static_forces.csv")))
+    for row in rows:
+        assert (row["kind"].endswith("_n_m")) == (row["unit"] == "N m"), row
+        assert row["kind"].endswith("_n") or row["kind"].endswith("_n_m"), row
+    axial = [r for r in rows if r["component"].endswith(".axial")]
+    assert axial and all(r["unit"] == "N" for r in axial)
+    beams = [r for r in rows if r["component"].startswith("input.beam")]
+    assert beams and {r["unit"] for r in beams} == {"N", "N m"}
+    # The 200 N m input torque passes through the input shaft's beams between the coupling and
+    # the pinion: their largest moment resultant (torque and bending) is at least that, and it
+    # is a moment in N m (on main the beams' resultant mixed N and N m under "N").
+    moments = {r["component"]: float(r["force"]) for r in beams if r["unit"] == "N m"}
+    assert max(moments.values()) >= 200.0 * (1 - 1e-9)
+    summary = json.loads((tmp_path / "summary.json").read_text())["results"]["static"]
+    assert "element_force" not in summary
+    for name, moment in moments.items():
+        assert summary["element_moment_n_m"][name] == pytest.approx(moment, rel=1e-12)
+
+
+def test_the_steady_state_says_how_far_it_is_from_converged(tmp_path):
+    """Item 5: with the potential-energy stiffness (jumps where pairs enter and leave) the
+    frequency-domain steady state the Newmark run is compared with converges slowly in its
+    harmonics; the result says by how much it changes at twice the harmonics. With the
+    one-order Fourier stiffness (the default fit) the response's harmonics fall geometrically,
+    by about k_1/k_0 ~ 0.1 an order through the parametric coupling: beyond 20 harmonics that is
+    far below 1e-6 of the p2p."""
+    changes = {}
+    for stiffness in ("potential_energy", "fourier"):
+        folder = tmp_path / stiffness
+        folder.mkdir()
+        path = reducer(folder, teeth=(20, 60, 20, 60), bearing_damping=2e3)
+        path.write_text(path.read_text().replace('stiffness = "fourier"',
+                                                 f'stiffness = "{stiffness}"'))
+        result = geardyn("train", analysis(folder, ["time"], "[time]\nmesh_harmonics = 20\n"),
+                         "--out", folder / "out")
+        assert result.returncode == 0, result.stderr
+        time = json.loads((folder / "out" / "summary.json").read_text())["results"]["time"]
+        changes[stiffness] = time["steady_state_truncation_relative_to_p2p"]
+        assert set(changes[stiffness]) == {"stage1", "stage2"}
+    for mesh in ("stage1", "stage2"):
+        assert 1e-4 < changes["potential_energy"][mesh] < 0.5, changes
+        assert changes["fourier"][mesh] < 1e-6, changes

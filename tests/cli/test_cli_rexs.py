@@ -148,3 +148,23 @@ def test_bad_rexs_input_exits_2_naming_the_component(tmp_path):
     assert result.returncode == 2 and "normal_module" in result.stderr and "inch" in result.stderr
     assert not (tmp_path / "bad.toml").exists()
     assert run("import", tmp_path / "absent.rexs").returncode == 3
+
+
+@needs_data
+def test_capped_stiffnesses_are_one_line_per_kind(tmp_path):
+    """Issue #33 item 4: the planetary file gave one warning per capped attribute (19 lines); the
+    worm file's caps said "x the stiffest mesh" with no cylindrical mesh to scale them."""
+    planetary = run("import", REXS / "FVA_Planetary_stage_-_Minus_gearing_1.1_vers2.rexsj",
+                    "-o", tmp_path / "planetary.toml")
+    assert planetary.returncode == 0, planetary.stderr
+    capped = [l for l in planetary.stderr.splitlines() if "treated as rigid" in l]
+    # Kinds: a planet bearing's radial, and the bearings' and couplings' radial, axial,
+    # rotational and bending stiffnesses.
+    assert 1 <= len(capped) <= 5, planetary.stderr
+    radial = next(l for l in capped if ": radial_stiffness" in l)
+    assert "the same for" in radial and "Rolling bearing [60]" in radial, radial
+    worm = run("import", REXS / "FVA_worm_stage_1-4.rexs", "-o", tmp_path / "worm.toml")
+    assert worm.returncode == 0, worm.stderr
+    capped = [l for l in worm.stderr.splitlines() if "treated as rigid" in l]
+    assert capped and all("no cylindrical gear" in l and "stiffest mesh" not in l
+                          for l in capped), worm.stderr

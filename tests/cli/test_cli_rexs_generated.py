@@ -99,6 +99,17 @@ def test_hostile_files_are_refused_before_they_are_read_whole(tmp_path):
     assert bomb.stat().st_size < 2e6
     refused = run("import", bomb, "-o", tmp_path / "bomb.toml")
     assert refused.returncode == 2 and "at most 256 MiB" in refused.stderr, refused.stderr
+    assert "300.0 MiB uncompressed (its declared size)" in refused.stderr, refused.stderr
+    # A zip64 entry's local header holds the placeholder 0xFFFFFFFF: the real size is reported.
+    bomb64 = tmp_path / "bomb64.rexsz"
+    with zipfile.ZipFile(bomb64, "w", zipfile.ZIP_DEFLATED) as archive:
+        with archive.open("model.rexsj", "w", force_zip64=True) as entry:
+            for _ in range(300):
+                entry.write(block)
+    refused = run("import", bomb64, "-o", tmp_path / "bomb64.toml")
+    assert refused.returncode == 2 and "at most 256 MiB" in refused.stderr, refused.stderr
+    assert "4294967295" not in refused.stderr and "4096.0 MiB" not in refused.stderr
+    assert re.search(r"(300\.0|25[67]\.\d) MiB uncompressed", refused.stderr), refused.stderr
 
     deep = tmp_path / "deep.rexsj"
     deep.write_text('{"model": {"version": "1.6", "relations": ' + "[" * 100000 + "]" * 100000 +

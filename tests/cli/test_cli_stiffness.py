@@ -73,7 +73,7 @@ def test_visnadi_helical_mean_above_api(tmp_path):
     ("mesh_stiffness.fourier.amplitudes=[0.5, -0.1]", "must be a list of numbers each >= 0"),
     ("pinion.bore_diameter=0", "fillet-foundation model (Sainsot 2004) needs the radius"),
     ("mesh_stiffness.transmitted_force=-5", "mesh_stiffness.transmitted_force = -5"),
-    ("mesh_stiffness.error_amplitudes=[1e-6]", "mesh_stiffness.error.phases = 0 values: need one phase per amplitude"),
+    ("mesh_stiffness.error_phases_deg=[0.0, 10.0]", "mesh_stiffness.error_phases_deg = 2 values: one phase per amplitude of mesh_stiffness.error_amplitudes (0 values), or none"),
 ])
 def test_bad_input_exits_2(tmp_path, override, expected):
     models = "mesh_stiffness.models=[\"potential_energy\", \"step\"]"

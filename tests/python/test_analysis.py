@@ -280,3 +280,38 @@ def test_a_run_that_would_not_fit_is_refused_before_it_allocates(monkeypatch):
         geardyn.run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml",
                     overrides={"solver.max_periods": 1000000, "solver.output_periods": 100000})
     assert error.value.key.startswith("solver.")
+
+
+def test_warnings_are_raised_once_each_and_one_per_kind(tmp_path):
+    """Issue #33 item 4: Python raised every warning twice (the loading callback and the result),
+    and once per mesh where the command line prints one line per kind. A renamed key (a note
+    raised while loading, also in the result) and the two meshes' foundation-fit notes of the
+    two-stage reducer."""
+    example = EXAMPLES / "train_two_stage_reducer.toml"
+    text = example.read_text().replace('run = ["static", "modal", "campbell", "forced", "time"]',
+                                       'run = ["static"]')
+    config = tmp_path / "reducer.toml"
+    config.write_text(text.replace('file = "gearboxes/', f'file = "{EXAMPLES}/gearboxes/'))
+    with warnings_recorded() as caught:
+        result = geardyn.run("train", config, progress=False)
+    texts = [str(w.message) for w in caught]
+    assert len(texts) == len(set(texts)), texts
+    fits = [t for t in texts if "fillet-foundation fit" in t]
+    in_result = [w for w in result.warnings if "fillet-foundation fit" in w]
+    assert len(in_result) >= 2, result.warnings  # both meshes' notes stay in the result
+    assert len(fits) == 1 and f"the same for {len(in_result) - 1} more" in fits[0], texts
+
+
+def warnings_recorded():
+    import warnings
+    recorder = warnings.catch_warnings(record=True)
+
+    class _Context:
+        def __enter__(self):
+            self.caught = recorder.__enter__()
+            warnings.simplefilter("always")
+            return self.caught
+
+        def __exit__(self, *exc):
+            return recorder.__exit__(*exc)
+    return _Context()

@@ -205,3 +205,34 @@ def test_orbits_have_keyphasor_marks_and_precession(figures):
         assert marks and abs(len(marks[0].get_xdata()) - revolutions) <= 1
         assert "precession" in ax.get_title()
         assert any(getattr(child, "arrow_patch", None) is not None for child in ax.texts)
+
+
+def test_a_long_train_record_is_an_envelope_beside_a_zoom(tmp_path):
+    """Issue #33 item 5: 142 mesh periods drawn as lines were a solid band. A long record is
+    drawn as the extremes per cycle of the fastest mesh (a few points per cycle, not the
+    waveform) beside its last four cycles; a short one as lines."""
+    shapes = {}
+    for periods in (1, 14):
+        folder = tmp_path / f"p{periods}"
+        done = subprocess.run([CLI, "train", str(SOURCE / "examples" / "train_two_stage_reducer.toml"),
+                               "--out", str(folder), "--quiet", "--set", 'analysis.run=["time"]',
+                               "--set", f"time.record_periods={periods}", "--set", "output.plots=false"],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        figure = gplot.PLOTTERS["train"](folder)["time_history.png"]
+        figure.canvas.draw()
+        shapes[periods] = figure
+    assert len(shapes[1].axes) == 2  # two meshes, whole record as lines
+    long = shapes[14]
+    assert len(long.axes) == 4
+    whole, zoom = long.axes[0], long.axes[1]
+    band = [c for c in whole.collections if len(c.get_paths())]
+    assert band, "the envelope is a filled band"
+    # 14 common periods of 3 stage-1 mesh periods: ~42 cycles; the dashed envelope has a point
+    # per cycle, not the ~10^5 samples of the record.
+    dashed = [line for line in whole.get_lines() if line.get_linestyle() == "--"]
+    assert dashed and all(len(line.get_xdata()) < 100 for line in dashed)
+    assert zoom.get_xlim()[1] - zoom.get_xlim()[0] < 0.2 * (whole.get_xlim()[1] - whole.get_xlim()[0])
+    legend = zoom.get_legend()
+    assert legend is not None and _points_under(legend, zoom) == 0
+    plt.close("all")

@@ -9,6 +9,7 @@
 #include "geardyn/models/transmission_error.h"
 #include "geardyn/stiffness/api_stiffness.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/stiffness/iso6336_stiffness.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "geardyn/stiffness/scaled_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
@@ -21,6 +22,31 @@ constexpr double kPi = std::numbers::pi;
 /// Piecewise Gauss–Legendre integration of piecewise-constant or trigonometric curves is exact
 /// to round-off; 1e-12 relative leaves room for a few hundred additions.
 constexpr double kQuadrature = 1e-12;
+
+// ISO 6336-1 method B on a ring mesh: the ring's tooth as a rack's (z_n2 -> inf). By hand for a
+// spur planet z 30 in a ring z 90, x = 0, α_n = 20°, h_fP* = 1.25, steel: q' = C1 + C2/30,
+// c' = C_M C_B / q' with C_M = 0.8, C_B = 1 + 0.5 (1.2 − 1.25), c_γα = c' (0.75 ε_α + 0.25);
+// and the external formula's limit of a huge z2 (C3/z_n2 → 0). Round-off only: 1e-12.
+TEST(Iso6336Stiffness, RingMeshTakesTheRingToothAsARackTooth) {
+  GearSpec planet, ring;
+  planet.teeth = 30;
+  ring.teeth = 90;
+  for (GearSpec* g : {&planet, &ring}) {
+    g->normal_module = 2e-3;
+    g->normal_pressure_angle = 20.0 * kPi / 180.0;
+    g->face_width = 0.02;
+  }
+  const InternalGearPair pair(planet, ring, std::nullopt, "stage");
+  const Iso6336Stiffness s = iso6336Stiffness(pair, planet, ring);
+  const double c_prime = 0.8 * 0.975 / (0.04723 + 0.15551 / 30.0);
+  EXPECT_NEAR(s.c_prime, c_prime, 1e-12 * c_prime);
+  const double c_gamma = c_prime * (0.75 * pair.contactRatioTransverse() + 0.25);
+  EXPECT_NEAR(s.meshStiffness(), c_gamma * 20.0 * 1e6, 1e-12 * c_gamma * 20.0 * 1e6);
+  const Iso6336Stiffness rack =
+      iso6336Stiffness(30, 1e15, 0.0, 0.0, 0.0, 0.0, 20.0 * kPi / 180.0, 1.25, 2e-3, 0.02,
+                       pair.contactRatioTransverse(), 206e9, 206e9);
+  EXPECT_NEAR(s.meshStiffness(), rack.meshStiffness(), 1e-12 * rack.meshStiffness());
+}
 
 TEST(ApiStiffness, ConstantAndDirectionalMatrix) {
   // Visnadi eqs. 1–6 by hand: K′ = 12.057 · 20 · 1e6; γ = 20° + 90° = 110°.

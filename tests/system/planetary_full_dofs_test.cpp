@@ -93,10 +93,10 @@ TEST(PlanetaryFullDofs, HelicalThrustIsTangentialForceTimesTanBetaW) {
   double sun = 0, ring = 0, pins = 0, tilt = 0;
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const std::string& name = model.elements()[e].name;
-    if (name == "sun_bearing.axial") sun = st.element_force[e];
-    if (name == "ring_support.axial") ring = st.element_force[e];
-    if (name.find(".pin_axial") != std::string::npos) pins += std::abs(st.element_force[e]);
-    if (name.find(".pin_tilt") != std::string::npos) tilt += std::abs(st.element_force[e]);
+    if (name == "sun_bearing.axial") sun = st.element_load[e].force;
+    if (name == "ring_support.axial") ring = st.element_load[e].force;
+    if (name.find(".pin_axial") != std::string::npos) pins += st.element_load[e].force;
+    if (name.find(".pin_tilt") != std::string::npos) tilt += st.element_load[e].moment;
   }
   // Element forces are magnitudes; the directions come from the axial displacements, opposite
   // for the sun and the ring.

@@ -79,9 +79,9 @@ TEST(TrainFullDofs, AxialThrustIsTangentialForceTimesTanBetaW) {
   double input_axial = 0, output_axial = 0, intermediate_axial = 0;
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const auto& el = model.elements()[e];
-    if (el.name == "input_a.axial") input_axial = st.element_force[e];
-    if (el.name == "intermediate_a.axial") intermediate_axial = st.element_force[e];
-    if (el.name == "output_a.axial") output_axial = st.element_force[e];
+    if (el.name == "input_a.axial") input_axial = st.element_load[e].force;
+    if (el.name == "intermediate_a.axial") intermediate_axial = st.element_load[e].force;
+    if (el.name == "output_a.axial") output_axial = st.element_load[e].force;
   }
   // Statics of linear springs: exact up to the solve's round-off.
   EXPECT_NEAR(input_axial, fa, 1e-8 * fa);

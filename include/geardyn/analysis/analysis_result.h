@@ -52,6 +52,9 @@ struct AnalysisContext {
   void warning(const std::string& text) const {
     if (warn) warn(text);
   }
+  /// A batch of warnings, one line per kind (groupedWarnings: five meshes sharing a
+  /// condition are one line naming them; summary.warnings keeps each).
+  void warnings(const std::vector<std::string>& texts) const;
   void note(const std::string& text) const {
     if (inform && !text.empty()) inform(text);
   }

@@ -20,9 +20,11 @@ void addGearPairSections(ConfigSchema& schema, bool required = true);
 
 /// Adds the keys of one gear ([pinion], [gear], or a collection item such as "gears.*"):
 /// teeth, module, pressure_angle_deg, helix_angle_deg, face_width, profile shift, rack,
-/// bore and material. Without `required` the keys without a default are optional.
+/// bore and material. Without `required` the keys without a default are optional. A non-empty
+/// `bore_default` makes bore_diameter optional (absent: 0 from gearSpecFromConfig) and says in
+/// its documentation what the reader derives instead.
 void addGearSection(ConfigSchema& schema, const std::string& name, const std::string& role,
-                    bool required);
+                    bool required, const std::string& bore_default = {});
 /// The gear at a section of a configuration (InputError naming the key when teeth, module or
 /// face_width is missing).
 GearSpec gearSpecFromConfig(const Config& config, const std::string& name);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/error.h"
 #include "geardyn/geometry/gear.h"
 
 namespace geardyn {
@@ -108,9 +109,20 @@ class GearPair {
   std::vector<std::string> warnings_;
 };
 
-/// A GearPair whose validation messages name the caller's keys: "pinion.*", "gear.*" and
-/// "pair.*" become `pinion_key.*`, `gear_key.*` and `pair_key.*` (e.g. "gears.z1",
-/// "gears.z2", "meshes.stage1" in a gearbox description).
+/// The configuration paths of a pair's two members and of the pair itself, for messages:
+/// "gears.z19", "gears.z71", "meshes.stage1" in a gearbox description.
+struct PairKeyNames {
+  std::string pinion = "pinion";
+  std::string gear = "gear";
+  std::string pair = "pair";
+};
+
+/// `error` with the pair's own paths "pinion.*", "gear.*" and "pair.*" — in its key and in
+/// its text ("must equal pinion.module", "set gear.bore_diameter") — renamed to `names`'.
+/// A path that continues another ("potential_energy.gear_hub_radius") is left alone.
+InputError renamedForPair(const InputError& error, const PairKeyNames& names);
+
+/// A GearPair whose validation messages name the caller's keys (renamedForPair).
 GearPair makeGearPair(const GearPairSpec& spec, const std::string& pinion_key,
                       const std::string& gear_key, const std::string& pair_key);
 

@@ -15,10 +15,13 @@ class TransmissionError {
   /// Zero everywhere.
   TransmissionError() = default;
 
-  /// Adds Σ a_r cos(2π r φ + φ_r), r = 1, 2, ...: amplitudes [m] (any sign) and phases [rad]
-  /// of equal length. Throws InputError naming `key` for mismatched or non-finite values.
+  /// Adds Σ a_r cos(2π r φ + φ_r), r = 1, 2, ...: amplitudes [m] (any sign) and phases [rad],
+  /// one per amplitude, or none (every φ_r = 0: the one rule of every input that has a
+  /// series, issue #33). Throws InputError naming `amplitudes_key` or `phases_key` (the keys
+  /// as the user wrote them) for mismatched or non-finite values.
   void addFourier(std::vector<double> amplitudes, std::vector<double> phases,
-                  const std::string& key = "transmission_error");
+                  const std::string& amplitudes_key = "transmission_error.amplitudes",
+                  const std::string& phases_key = "transmission_error.phases_deg");
   /// Adds a rectangular wave: `amplitude` for φ in [start, start + duty) (mod 1), 0 elsewhere;
   /// duty in (0, 1).
   void addRectangular(double amplitude, double duty, double start,

@@ -42,11 +42,23 @@ struct TrainStageLoadSharing {
   double load_sharing_factor = 1.0;                         ///< max sun–planet force / mean [-]
 };
 
+/// What an element transmits: the resultant of the forces of its displacement rows [N] and
+/// of the moments of its rotation rows [N m] (TrainElement::moment_rows), each when it has such
+/// rows.
+struct ElementLoad {
+  double force = 0.0;   ///< [N]
+  double moment = 0.0;  ///< [N m]
+  bool has_force = false, has_moment = false;
+};
+
+/// The load of `element` at its deformation d: |k d| over its force rows and its moment rows.
+ElementLoad elementLoad(const TrainElement& element, const Eigen::VectorXd& local_force);
+
 struct TrainStaticResult {
   Eigen::VectorXd displacement;    ///< q [m, rad]
   std::vector<double> mesh_force;  ///< k̄ (vᵀq − ē) along each line of action [N]
-  /// Per element: the force (bearings, pins: |k d| [N]) or torque (torsional elements [N m]).
-  std::vector<double> element_force;
+  /// Per element of model.elements(): its force and moment resultants.
+  std::vector<ElementLoad> element_load;
   std::vector<TrainStageLoadSharing> load_sharing;
   int rigid_modes = 0;        ///< dimension of the null space of the stiffness
   double residual = 0.0;      ///< ‖K q − F‖ / ‖F‖

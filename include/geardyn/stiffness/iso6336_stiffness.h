@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "geardyn/geometry/gear_pair.h"
+#include "geardyn/geometry/internal_gear_pair.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
 
 namespace geardyn {
@@ -42,7 +43,8 @@ struct Iso6336Stiffness {
 /// ISO values for explicit data: teeth, normal profile shifts, helix and base helix angles
 /// [rad], normal pressure angle of the basic rack [rad], its dedendum h_fP/m_n [-], the normal
 /// module [m], the face width [m], the transverse contact ratio, Young's moduli [Pa].
-Iso6336Stiffness iso6336Stiffness(int z1, int z2, double x1, double x2, double helix_angle,
+/// z2 may be infinite (a rack, or a ring gear: see the internal overload).
+Iso6336Stiffness iso6336Stiffness(int z1, double z2, double x1, double x2, double helix_angle,
                                   double base_helix_angle, double pressure_angle,
                                   double dedendum_coefficient, double normal_module,
                                   double face_width, double contact_ratio_transverse,
@@ -51,5 +53,14 @@ Iso6336Stiffness iso6336Stiffness(int z1, int z2, double x1, double x2, double h
 
 /// ISO values for a gear pair (its geometry, contact ratio and materials).
 Iso6336Stiffness iso6336Stiffness(const GearPair& pair, const Iso6336Options& options = {});
+
+/// ISO values for an internal pair: `pinion` (a planet) inside `ring`. Method B's fit of q′
+/// (ISO 6336-1 §9.3.2) is written for external pairs; the ring's concave tooth is taken as a
+/// rack tooth, z_n2 → ∞ (its x₂ terms C₆x₂ + C₉x₂² kept), a lower bound of its stiffness and
+/// the form DIN 3990-1/ISO 6336-1 give for internal gears as we read them (the extract in
+/// shared/reference/mesh_stiffness.md does not cover internal gears). ε_α and β_b are the
+/// internal pair's; the face width is the narrower member's.
+Iso6336Stiffness iso6336Stiffness(const InternalGearPair& pair, const GearSpec& pinion,
+                                  const GearSpec& ring, const Iso6336Options& options = {});
 
 }  // namespace geardyn

@@ -109,6 +109,10 @@ struct TrainElement {
   /// Its deformation d = J q[dofs] (relative displacement (y, z) [m], or relative rotation
   /// [rad]) and the force (or torque) k d it transmits [N, N m].
   Eigen::MatrixXd jacobian, local_stiffness;
+  /// Per row of d: a rotation, whose k d is a moment [N m] (true), or a displacement, whose
+  /// k d is a force [N] (false). An axial spring is one row of force; a torsional or tilt
+  /// spring one of moment; a beam element twelve rows of both.
+  std::vector<bool> moment_rows;
 };
 
 /// A rolling bearing from its geometry (TrainBearingSpec::rolling) in the assembled train: its

@@ -144,7 +144,10 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
     w.relate("stage", {{st, "stage", "cylindrical_stage"},
                        {gear_id.at(m["gears"][0]), "gear_1", ""},
                        {gear_id.at(m["gears"][1]), "gear_2", ""}});
-    if (m["stiffness"] != "potential_energy" || !m["te_amplitudes"].empty() ||
+    // An absent stiffness is the external mesh's default, potential_energy.
+    const bool own_stiffness = m.contains("stiffness") && !m["stiffness"].is_null() &&
+                               m["stiffness"] != "potential_energy";
+    if (own_stiffness || !m["te_amplitudes"].empty() ||
         m.value("te_rectangular_amplitude", 0.0) != 0.0 ||
         !m.value("te_table_phases", Json::array()).empty())
       warnings.push_back("meshes." + name +

@@ -87,6 +87,7 @@ class Model {
  private:
   std::map<int, std::string> names_;
   std::map<int, const Component*> by_id_;
+  bool meshes_cap_ = false;  ///< the caps scale with the model's gears (else the defaults)
 };
 
 /// What the planetary stages take over from the general mapping.

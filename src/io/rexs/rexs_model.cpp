@@ -99,6 +99,7 @@ Model::Model(const Document& d, std::vector<std::string>& w)
     if (z && m) radius = std::max(radius, *m * *z / (2 * std::cos(beta * std::numbers::pi / 180)));
     if (b && *b > 0) k_mesh = std::max(k_mesh, apiMeshStiffness(*b, beta * std::numbers::pi / 180));
   }
+  meshes_cap_ = k_mesh > 0;
   if (k_mesh > 0) translational_cap = kRexsRigidToMeshRatio * k_mesh;
   if (radius > 0) rotational_cap = translational_cap * radius * radius;
 }
@@ -218,11 +219,17 @@ ShaftSections Model::sections(int shaft_id) {
 double Model::capped(double value, bool rotational, const Component& c, const std::string& what) {
   const double cap = rotational ? rotational_cap : translational_cap;
   if (value <= cap) return value;
+  // "<component>: ..." so that one line per kind names every capped component
+  // (analysis/warning_groups.h).
+  const std::string basis =
+      meshes_cap_
+          ? fmt::format("= {} x the stiffest mesh{}", kRexsRigidToMeshRatio,
+                        rotational ? " x the largest gear radius²" : "")
+          : std::string("the default rigid value: the model has no cylindrical gear to scale it");
   read.warn(
-      fmt::format("{} {} {:.3g} {} treated as rigid: written as {:.3g} (= {} x the "
-                  "stiffest mesh{}; docs/guide/rexs.md)",
-                  c.label(), what, value, rotational ? "N m/rad" : "N/m", cap,
-                  kRexsRigidToMeshRatio, rotational ? " x the largest gear radius²" : ""));
+      fmt::format("{}: {} {:.3g} {} treated as rigid: written as {:.3g} ({}; "
+                  "docs/guide/rexs.md)",
+                  c.label(), what, value, rotational ? "N m/rad" : "N/m", cap, basis));
   return cap;
 }
 

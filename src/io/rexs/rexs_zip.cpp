@@ -35,17 +35,23 @@ Document readRexsZip(const std::filesystem::path& file) {
     if (!xml && !json) continue;
     // Neither the declared size nor the ratio is trusted (a zip bomb declares what it likes):
     // the entry is inflated in chunks and refused as soon as it passes kMaxRexsModelBytes.
-    const auto too_large = [&](std::uint64_t bytes) {
-      return InputError(source + ": entry " + entry, fmt::format("{} bytes or more", bytes),
+    // 0xFFFFFFFF is the zip64 placeholder: minizip replaces it by the zip64 extra field's size
+    // when there is one; left as it is, the entry's size is unknown, not 4 GiB.
+    constexpr std::uint64_t kZip64Placeholder = 0xFFFFFFFFu;
+    const bool declared = info.uncompressed_size != kZip64Placeholder;
+    const auto too_large = [&](std::uint64_t bytes, const char* how) {
+      return InputError(source + ": entry " + entry,
+                        fmt::format("{:.1f} MiB uncompressed ({})", bytes / 1048576.0, how),
                         fmt::format("a REXS model of at most {} MiB uncompressed (the largest "
                                     "published gearbox models are a few MiB)",
                                     kMaxRexsModelBytes >> 20));
     };
-    if (info.uncompressed_size > kMaxRexsModelBytes) throw too_large(info.uncompressed_size);
+    if (declared && info.uncompressed_size > kMaxRexsModelBytes)
+      throw too_large(info.uncompressed_size, "its declared size");
     if (unzOpenCurrentFile(zip.get()) != UNZ_OK)
       throw InputError(source + ": entry " + entry, "", "an entry that can be decompressed");
     std::string text;
-    text.reserve(static_cast<std::size_t>(info.uncompressed_size));
+    if (declared) text.reserve(static_cast<std::size_t>(info.uncompressed_size));
     constexpr unsigned kChunk = 1u << 20;
     int read = 0;
     do {
@@ -55,11 +61,11 @@ Document readRexsZip(const std::filesystem::path& file) {
       text.resize(at + static_cast<std::size_t>(std::max(read, 0)));
       if (text.size() > kMaxRexsModelBytes) {
         unzCloseCurrentFile(zip.get());
-        throw too_large(text.size());
+        throw too_large(text.size(), "or more: inflating stopped there");
       }
     } while (read > 0);
     const int closed = unzCloseCurrentFile(zip.get());
-    if (read < 0 || text.size() != info.uncompressed_size || closed != UNZ_OK)
+    if (read < 0 || (declared && text.size() != info.uncompressed_size) || closed != UNZ_OK)
       throw InputError(source + ": entry " + entry, fmt::format("zip status {}", read),
                        "an intact zip entry (CRC or size mismatch: truncated archive?)");
     const std::string where = source + "/" + entry;

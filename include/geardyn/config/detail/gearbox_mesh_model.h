@@ -11,6 +11,7 @@
 #include "geardyn/config/config.h"
 #include "geardyn/config/config_schema.h"
 #include "geardyn/geometry/gear_pair.h"
+#include "geardyn/geometry/internal_gear_pair.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
 #include "geardyn/system/gear_train.h"
 
@@ -35,12 +36,27 @@ TrainMeshContact contactFromConfig(const Config& config, const std::string& pref
 /// The transmission error of a mesh (te_amplitudes [m], te_phases_deg).
 TransmissionError teFromConfig(const Config& config, const std::string& prefix);
 
-/// The stiffness model a mesh asks for. `pair` is null for ring meshes (no model needs more
-/// than the face width and helix angle there); the models' notes go to `warnings`.
+/// What a mesh's stiffness models are computed from: an external pair (every model), or an
+/// internal one with its two members (constant, api, iso6336, table), and the paths of the
+/// members and the mesh for messages.
+struct MeshStiffnessInputs {
+  const GearPair* external = nullptr;
+  const InternalGearPair* internal = nullptr;
+  const GearSpec* pinion = nullptr;  ///< the internal pair's external member (a planet)
+  const GearSpec* ring = nullptr;    ///< the internal pair's ring
+  double face_width = 0.0;           ///< [m]
+  double helix = 0.0;                ///< β of the first member [rad]
+  double contact_ratio = 0.0;        ///< total ε [-]
+  PairKeyNames keys;
+};
+
+/// The stiffness model a mesh asks for (`prefix`stiffness). Absent, it is potential_energy on
+/// an external mesh and iso6336 on a ring mesh (the tooth models are written for external
+/// teeth). An input error of a model names the mesh's gears' keys ("gears.z19.bore_diameter",
+/// not "pinion.bore_diameter"); the models' notes go to `warnings`.
 std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const Config& config,
                                                          const std::string& prefix,
-                                                         const GearPair* pair, double face_width,
-                                                         double helix, double contact_ratio,
+                                                         const MeshStiffnessInputs& inputs,
                                                          std::vector<std::string>& warnings);
 
 /// meshes.*.stiffness_plane = "transverse": the mesh's stiffness model, dashpot, transmission
