@@ -94,7 +94,9 @@ HousedTrain coupleHousing(const GearTrainModel& model, const ReducedHousing& hou
     const double dx = model.axialOffsetOf(body, shaft, b->position);
     const Eigen::Vector3d p(model.bodies()[body].axial + dx, model.bodies()[body].centre.x(),
                             model.bodies()[body].centre.y());
-    const Eigen::Vector3d r = p - housing.centres[static_cast<std::size_t>(s)];
+    Eigen::Vector3d r = p - housing.centres[static_cast<std::size_t>(s)];
+    // Planar and torsional trains have no axial positions: the bearing sits in its seat's plane.
+    if (spec.dofs != TrainDofs::kFull) r.x() = 0.0;
     const int h0 = n + 6 * s;
     for (const TrainElement& e : model.elements()) {
       if (e.name.rfind(b->name, 0) != 0) continue;

@@ -56,15 +56,16 @@ const std::vector<HousingLink> kLinks = {{"pinion_bearing", "SEAT_P"}, {"gear_be
 TEST(HousingCoupling, MatchesAHandBuiltLumpedModel) {
   const GearTrainModel model(pairOnBearings());
   ASSERT_EQ(model.bodies().size(), 2u);
-  // The seats' centres 20 mm along the axis from the bearings: the seat's rotation θ_z moves
-  // the bearing point by θ_z r_x along y, θ_y by −θ_y r_x along z.
-  const double rx = -0.02;
+  // The seats' centres 20 mm below the bearings (r = p − c = (0, 0, r_z)): the seat's rotation
+  // θ_x moves the bearing point by −θ_x r_z along y. They also lie 50 mm along the axis, which a
+  // planar train ignores (its bearings sit in their seats' planes).
+  const double rz = 0.02;
   const double k = 5e9, k_r = 2e6, m = 3.0, j = 0.02, beta = 1e-5;
-  const ReducedHousing h = blocksOnSprings(model, k, k_r, m, j, {-rx, 0.0, 0.0});
+  const ReducedHousing h = blocksOnSprings(model, k, k_r, m, j, {0.05, 0.0, -rz});
   const HousedTrain t = coupleHousing(model, h, kLinks, 0.0, beta);
 
   // By hand: the train's own matrices, the blocks, and for each bearing (k_b, c_b isotropic)
-  // d_y = y_shaft − (u_y + θ_z r_x), d_z = z_shaft − (u_z − θ_y r_x) of its seat.
+  // d_y = y_shaft − (u_y − θ_x r_z), d_z = z_shaft − u_z of its seat.
   const int n = model.dofCount();
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n + 12, n + 12), M = K, C = K;
   K.topLeftCorner(n, n) = model.meanStiffnessAt(0.0);
@@ -76,9 +77,9 @@ TEST(HousingCoupling, MatchesAHandBuiltLumpedModel) {
   const double kb[2] = {1e8, 3e8}, cb[2] = {300.0, 600.0};
   for (int s = 0; s < 2; ++s) {
     const int y = model.translationDof(s), z = y + 1, h0 = n + 6 * s;
-    // Housing-side coefficients of d_y: u_y −1, θ_z −r_x; of d_z: u_z −1, θ_y +r_x.
-    const std::vector<std::pair<int, double>> dy = {{h0 + 1, -1.0}, {h0 + 5, -rx}};
-    const std::vector<std::pair<int, double>> dz = {{h0 + 2, -1.0}, {h0 + 4, rx}};
+    // Housing-side coefficients of d_y: u_y −1, θ_x +r_z; of d_z: u_z −1.
+    const std::vector<std::pair<int, double>> dy = {{h0 + 1, -1.0}, {h0 + 3, rz}};
+    const std::vector<std::pair<int, double>> dz = {{h0 + 2, -1.0}};
     for (auto [A, c] : {std::pair{&K, kb[s]}, std::pair{&C, cb[s]}}) {
       for (const auto& [row, coeffs] : {std::pair{y, dy}, std::pair{z, dz}}) {
         for (const auto& [a, va] : coeffs) {

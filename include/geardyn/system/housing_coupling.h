@@ -7,7 +7,8 @@
 /// d = J q_shaft today) and J_h the seat's rigid motion at the bearing point p,
 ///   d = J q_shaft − J_h q_seat,   J_h rows: u_y = u_cy + θ_z r_x − θ_x r_z,
 ///   u_z = u_cz + θ_x r_y − θ_y r_x, u_x = u_cx + θ_y r_z − θ_z r_y, tilt_y = θ_y, tilt_z = θ_z,
-///   torsion = θ_x,   r = p − c (c: the seat's centre),
+///   torsion = θ_x,   r = p − c (c: the seat's centre; r_x = 0 unless the DOFs are full: a
+///   planar train has no axial positions, its bearings sit in their seats' planes),
 /// so the bearing's stiffness k (and damping c) adds −Jᵀ k J_h, −J_hᵀ k J and J_hᵀ k J_h to the
 /// coupled K (C); the housing's reduced K and M fill the housing block, its damping is
 /// stiffness-proportional (β K_h). Not yet in GearTrainModel: the analyses do not use it.
