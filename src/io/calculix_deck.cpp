@@ -2,12 +2,14 @@
 
 #include "geardyn/io/calculix_deck.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -170,12 +172,16 @@ int runIn(const fs::path& folder, const std::vector<std::string>& args, const fs
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
+  // The child must not flush the parent's pending stdio buffers (they would print twice): flush
+  // them first, and redirect with open/dup2 only.
+  std::fflush(nullptr);
   const pid_t pid = fork();
   if (pid < 0) return -1;
   if (pid == 0) {
     if (chdir(folder.c_str()) != 0) _exit(126);
-    if (std::freopen(log.c_str(), "w", stdout) == nullptr) _exit(126);
-    dup2(fileno(stdout), STDERR_FILENO);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0 || dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(126);
+    close(fd);
     execvp(argv[0], argv.data());
     _exit(127);
   }

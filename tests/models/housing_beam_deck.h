@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// A solid beam meshed with 20-node hexahedra (C3D20, full integration: no hourglass modes on one element through the section) as a CalculiX deck, for the housing
-/// tests: length along x, rectangular section, its x = 0 end face clamped by *BOUNDARY
-/// (optional) and node sets ROOT, TIP (the end faces) and MID (the node nearest the middle of
-/// the beam's axis).
+/// A solid beam meshed with 20-node hexahedra (C3D20, full integration: no hourglass modes on one
+/// element through the section) as a CalculiX deck, for the housing tests: length along x,
+/// rectangular section, its x = 0 end face clamped by *BOUNDARY (optional) and node sets ROOT, TIP
+/// (the end faces) and MID (the node nearest the middle of the beam's axis).
 
 #include <filesystem>
 #include <fstream>
@@ -63,6 +63,7 @@ inline void writeBeamDeck(const BeamDeck& b, const std::filesystem::path& path) 
   face("ROOT", 0);
   face("TIP", gx - 1);
   out << "*NSET, NSET=MID\n" << id(2 * (b.nx / 2), 2 * (b.ny / 2), 2 * (b.nz / 2)) << "\n";
+  out.precision(12);  // ccx reads a number of at most 20 characters: 12 digits, not 17
   out << "*MATERIAL, NAME=STEEL\n*ELASTIC\n"
       << b.E << ", " << b.nu << "\n*DENSITY\n"
       << b.rho << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n";

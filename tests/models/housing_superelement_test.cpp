@@ -11,12 +11,14 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 
+#include "geardyn/config/housing_source.h"
 #include "geardyn/error.h"
 #include "geardyn/io/calculix_deck.h"
 #include "geardyn/io/fe_matrices.h"
@@ -382,6 +384,87 @@ TEST(CraigBampton, NamesTheSetOrKeyOfBadInput) {
   }
   EXPECT_THROW(feUnits("mm", "housing.units"), InputError);
   EXPECT_DOUBLE_EQ(feUnits("mm_t_s", "housing.units").length_m, 1e-3);
+}
+
+}  // namespace
+}  // namespace geardyn
+
+namespace geardyn {
+namespace {
+
+config::HousingSource beamSource(const fs::path& deck, const std::string& units) {
+  config::HousingSource source;
+  source.deck = deck.string();
+  source.units = units;
+  source.seats = {"tip"};
+  source.points = {"MID"};
+  source.reduction.modes = 6;
+  return source;
+}
+
+TEST(HousingSource, CachesTheReductionUnderTheDecksHash) {
+  TempDir dir;
+  const fs::path inp = dir.path / "beam.inp";
+  testing::writeBeamDeck(smallBeam(), inp);
+  const config::LoadedHousing first = config::loadHousing(beamSource(inp, "si"));
+  EXPECT_FALSE(first.from_cache);
+  ASSERT_TRUE(fs::exists(first.cache_file));
+  const auto start = std::chrono::steady_clock::now();
+  const config::LoadedHousing again = config::loadHousing(beamSource(inp, "si"));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("cached housing load: %.3g ms\n", 1e3 * seconds);
+  EXPECT_TRUE(again.from_cache);
+  EXPECT_EQ(again.housing.K, first.housing.K);  // bytes written and read back
+  EXPECT_EQ(again.housing.M, first.housing.M);
+  EXPECT_EQ(again.housing.recovery, first.housing.recovery);
+  EXPECT_EQ(again.housing.seats, first.housing.seats);
+  EXPECT_EQ(again.housing.centres[0], first.housing.centres[0]);
+  // Another cut-off, or an edited deck: another cache file, reduced again.
+  config::HousingSource more = beamSource(inp, "si");
+  more.reduction.modes = 8;
+  EXPECT_FALSE(config::loadHousing(more).from_cache);
+  std::ofstream(inp, std::ios::app) << "** edited\n";
+  const config::LoadedHousing edited = config::loadHousing(beamSource(inp, "si"));
+  EXPECT_FALSE(edited.from_cache);
+  EXPECT_NE(edited.cache_file, first.cache_file);
+}
+
+TEST(HousingSource, AnMmTonneDeckGivesTheSiModel) {
+  // The same beam written in mm, t, s (E in MPa, ρ in t/mm³) and in SI: one reduced model.
+  TempDir dir;
+  BeamDeck si = smallBeam(), mm = smallBeam();
+  mm.length *= 1e3;
+  mm.width *= 1e3;
+  mm.height *= 1e3;
+  mm.E *= 1e-6;
+  mm.rho *= 1e-12;
+  testing::writeBeamDeck(si, dir.path / "si.inp");
+  testing::writeBeamDeck(mm, dir.path / "mm.inp");
+  const ReducedHousing a = config::loadHousing(beamSource(dir.path / "si.inp", "si")).housing;
+  const ReducedHousing b = config::loadHousing(beamSource(dir.path / "mm.inp", "mm_t_s")).housing;
+  // ccx prints 14 significant digits of each entry in either unit system; the reductions then
+  // differ by their round-off, ~1e-10 relative (the beam's condition number ~1e6 × 1e-16 ×
+  // the printed digits' 1e-14 / 1e-16).
+  EXPECT_TRUE(isClose(frequenciesHz(b.K, b.M), frequenciesHz(a.K, a.M), 1e-8));
+  EXPECT_TRUE(isClose(b.centres[0], a.centres[0], 1e-12, 1e-15));
+}
+
+TEST(HousingSource, NamesAnUnknownSetWithASuggestion) {
+  TempDir dir;
+  const fs::path inp = dir.path / "beam.inp";
+  testing::writeBeamDeck(smallBeam(), inp);
+  config::HousingSource source = beamSource(inp, "si");
+  source.seats = {"TIPP"};
+  try {
+    config::loadHousing(source);
+    FAIL() << "an unknown seat set was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "housing.seats");
+    EXPECT_NE(std::string(e.what()).find("did you mean \"TIP\""), std::string::npos) << e.what();
+  }
+  source = beamSource(inp, "inch");
+  EXPECT_THROW(config::loadHousing(source), InputError);
 }
 
 }  // namespace
