@@ -127,6 +127,59 @@ Eigen::Vector3d tieSeat(const HousingNodeSet& seat, int s,
   return c;
 }
 
+/// The fixed-interface modes (mass-normalised shapes, eigenvalues ω² [1/s²]): `options.modes`
+/// of them, or those below the cut-off, counted first by Sylvester's law of inertia.
+void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const Ldlt& ldlt,
+                         const CraigBamptonOptions& options, Eigen::MatrixXd& Phi,
+                         Eigen::VectorXd& lambda) {
+  const Eigen::Index no = Koo.rows();
+  // The number of fixed-interface modes: given, or counted below the cut-off (Sylvester).
+  Eigen::Index m = options.modes;
+  if (m < 0) {
+    const double w = 2.0 * std::numbers::pi * options.cutoff_hz;
+    const SparseMatrix shifted = Koo - w * w * Moo;
+    const Ldlt sturm(shifted);
+    if (sturm.info() != Eigen::Success) {
+      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g}", options.cutoff_hz),
+                       "a cut-off that is not a fixed-interface natural frequency");
+    }
+    m = (sturm.vectorD().array() < 0.0).count();
+    if (m == 0) {
+      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g} Hz", options.cutoff_hz),
+                       "a cut-off above the first fixed-interface mode of the housing (no mode "
+                       "lies below it: raise the cut-off or the analyses' frequency range)");
+    }
+  }
+  m = std::min(m, no);
+  Phi.resize(no, m);
+  lambda.resize(m);
+  if (m > 0 && (no < kDenseModesBelow || 2 * m > no)) {
+    const Eigen::MatrixXd Kd = Koo, Md = Moo;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
+    Phi = dense.eigenvectors().leftCols(m);
+    lambda = dense.eigenvalues().head(m);
+  } else if (m > 0) {
+    InverseOp op(ldlt);
+    Spectra::SparseSymMatProd<double> bop(Moo);
+    const Eigen::Index ncv = std::min<Eigen::Index>(no, std::max<Eigen::Index>(2 * m + 1, 20));
+    Spectra::SymGEigsShiftSolver<InverseOp, Spectra::SparseSymMatProd<double>,
+                                 Spectra::GEigsMode::ShiftInvert>
+        solver(op, bop, m, ncv, 0.0);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
+    if (solver.info() != Spectra::CompInfo::Successful) {
+      throw std::runtime_error(fmt::format(
+          "housing reduction: Lanczos found {} of the {} fixed-interface modes below the "
+          "cut-off",
+          solver.eigenvalues().size(), m));
+    }
+    // Spectra returns them largest first.
+    lambda = solver.eigenvalues().reverse();
+    Phi = solver.eigenvectors().rowwise().reverse();
+  }
+  for (Eigen::Index j = 0; j < m; ++j) Phi.col(j) /= std::sqrt(Phi.col(j).dot(Moo * Phi.col(j)));
+}
+
 }  // namespace
 
 FeUnits feUnits(const std::string& name, const std::string& key) {
@@ -197,51 +250,10 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
   }
   const Eigen::MatrixXd Psi = -ldlt.solve(Kob);
 
-  // The number of fixed-interface modes: given, or counted below the cut-off (Sylvester).
-  Eigen::Index m = options.modes;
-  if (m < 0) {
-    const double w = 2.0 * std::numbers::pi * options.cutoff_hz;
-    const SparseMatrix shifted = Koo - w * w * Moo;
-    const Ldlt sturm(shifted);
-    if (sturm.info() != Eigen::Success) {
-      throw InputError(key + ".cutoff_hz", fmt::format("{:g}", options.cutoff_hz),
-                       "a cut-off that is not a fixed-interface natural frequency");
-    }
-    m = (sturm.vectorD().array() < 0.0).count();
-    if (m == 0) {
-      throw InputError(key + ".cutoff_hz", fmt::format("{:g} Hz", options.cutoff_hz),
-                       "a cut-off above the first fixed-interface mode of the housing (no mode "
-                       "lies below it: raise the cut-off or the analyses' frequency range)");
-    }
-  }
-  m = std::min(m, no);
-  Eigen::MatrixXd Phi(no, m);
-  Eigen::VectorXd lambda(m);
-  if (m > 0 && (no < kDenseModesBelow || 2 * m > no)) {
-    const Eigen::MatrixXd Kd = Koo, Md = Moo;
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
-    Phi = dense.eigenvectors().leftCols(m);
-    lambda = dense.eigenvalues().head(m);
-  } else if (m > 0) {
-    InverseOp op(ldlt);
-    Spectra::SparseSymMatProd<double> bop(Moo);
-    const Eigen::Index ncv = std::min<Eigen::Index>(no, std::max<Eigen::Index>(2 * m + 1, 20));
-    Spectra::SymGEigsShiftSolver<InverseOp, Spectra::SparseSymMatProd<double>,
-                                 Spectra::GEigsMode::ShiftInvert>
-        solver(op, bop, m, ncv, 0.0);
-    solver.init();
-    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
-    if (solver.info() != Spectra::CompInfo::Successful) {
-      throw std::runtime_error(fmt::format(
-          "housing reduction: Lanczos found {} of the {} fixed-interface modes below the "
-          "cut-off",
-          solver.eigenvalues().size(), m));
-    }
-    // Spectra returns them largest first.
-    lambda = solver.eigenvalues().reverse();
-    Phi = solver.eigenvectors().rowwise().reverse();
-  }
-  for (Eigen::Index j = 0; j < m; ++j) Phi.col(j) /= std::sqrt(Phi.col(j).dot(Moo * Phi.col(j)));
+  Eigen::MatrixXd Phi;
+  Eigen::VectorXd lambda;
+  fixedInterfaceModes(Koo, Moo, ldlt, options, Phi, lambda);
+  const Eigen::Index m = Phi.cols();
   red.mode_frequencies_hz = lambda.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
 
   // Craig & Bampton (1968) eqs. (4)-(9), see the file comment.
