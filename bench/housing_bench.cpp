@@ -1,0 +1,136 @@
+/// Housing assembly and reduction (issue #37, "Performance"): the box housing of the two-stage
+/// reducer meshed by examples/housing_box_gmsh.py (GEARDYN_HOUSING_SIZE [m], default 0.03:
+/// about 35 k DOFs; 0.02: about 72 k), assembled by ccx, its six seats tied, reduced by
+/// Craig–Bampton below GEARDYN_HOUSING_CUTOFF_HZ (default 2000 Hz). One iteration each: the
+/// issue's budget is 30 s for 50 k DOFs on 2 cores.
+
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Eigenvalues>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/housing_source.h"
+#include "geardyn/io/calculix_deck.h"
+#include "geardyn/models/housing_superelement.h"
+#include "geardyn/system/housing_coupling.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+double envOr(const char* name, double fallback) {
+  const char* v = std::getenv(name);
+  return v != nullptr ? std::atof(v) : fallback;
+}
+
+const std::string& deckPath() {
+  static const std::string path = [] {
+    const fs::path out = fs::temp_directory_path() / "geardyn-housing-bench.inp";
+    const std::string command =
+        "/usr/bin/python3 " GEARDYN_SOURCE_DIR "/examples/housing_box_gmsh.py " + out.string() +
+        " --size " + std::to_string(envOr("GEARDYN_HOUSING_SIZE", 0.03));
+    if (std::system(command.c_str()) != 0) throw std::runtime_error("gmsh script failed");
+    return out.string();
+  }();
+  return path;
+}
+
+const char* kSeats[] = {"INPUT_A",        "INPUT_B",  "INTERMEDIATE_A",
+                        "INTERMEDIATE_B", "OUTPUT_A", "OUTPUT_B"};
+
+void BM_HousingCcxAssembly(benchmark::State& state) {
+  const std::string& path = deckPath();
+  for (auto _ : state) {
+    const geardyn::io::FeMatrices fe = geardyn::io::runCalculix(path, "housing.deck");
+    state.counters["dofs"] = static_cast<double>(fe.dofs.size());
+    state.counters["k_entries"] = static_cast<double>(fe.K.nonZeros());
+  }
+}
+BENCHMARK(BM_HousingCcxAssembly)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_HousingCraigBampton(benchmark::State& state) {
+  const std::string& path = deckPath();
+  geardyn::io::CalculixDeck deck = geardyn::io::readCalculixDeck(path, "housing.deck");
+  geardyn::io::FeMatrices fe = geardyn::io::runCalculix(path, "housing.deck");
+  std::vector<geardyn::HousingNodeSet> seats, points;
+  for (const char* s : kSeats) seats.push_back({s, deck.nsets.at(s)});
+  points.push_back({"TOP", deck.nsets.at("TOP")});
+  geardyn::CraigBamptonOptions options;
+  options.cutoff_hz = envOr("GEARDYN_HOUSING_CUTOFF_HZ", 2000.0);
+  for (auto _ : state) {
+    const geardyn::ReducedHousing red =
+        geardyn::reduceHousing(fe, deck.nodes, seats, points, options);
+    state.counters["modes"] = static_cast<double>(red.mode_frequencies_hz.size());
+    state.counters["first_mode_hz"] =
+        red.mode_frequencies_hz.size() ? red.mode_frequencies_hz[0] : 0;
+  }
+}
+BENCHMARK(BM_HousingCraigBampton)->Iterations(1)->Unit(benchmark::kSecond);
+
+/// The two-stage reducer (examples/gearboxes/two_stage_reducer.toml) on the box: its modes on the
+/// rigid and on the flexible housing (printed), and the time of one forced-response solve per
+/// frequency, (K − ω²M + iωC) x = f, with and without the housing (the issue's budget: ≤ 2 ×).
+void BM_TwoStageReducerOnTheBox(benchmark::State& state) {
+  std::vector<std::string> warnings;
+  const geardyn::GearTrainModel model(geardyn::config::gearTrainFromConfig(
+      geardyn::config::loadConfigFile(GEARDYN_SOURCE_DIR
+                                      "/examples/gearboxes/two_stage_reducer.toml",
+                                      geardyn::config::gearboxSchema()),
+      warnings));
+  geardyn::config::HousingSource source;
+  source.deck = deckPath();
+  for (const char* s : kSeats) {
+    std::string name = s;
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    source.seats.push_back(name);
+  }
+  source.points = {"TOP", "SIDE"};
+  source.reduction.cutoff_hz = envOr("GEARDYN_HOUSING_CUTOFF_HZ", 2000.0);
+  const geardyn::config::LoadedHousing housing = geardyn::config::loadHousing(source);
+  std::vector<geardyn::HousingLink> links;
+  for (const std::string& s : source.seats) links.push_back({s, s});
+  const double speed = model.inputSpeed();
+  const geardyn::HousedTrain t = geardyn::coupleHousing(model, housing.housing, links, speed);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> rigid(model.meanStiffnessAt(speed),
+                                                                  model.mass());
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> housed(t.K, t.M);
+  std::printf("two-stage reducer: %d train DOFs + %ld housing DOFs (%ld modes)\n", model.dofCount(),
+              static_cast<long>(housing.housing.K.rows()),
+              static_cast<long>(housing.housing.mode_frequencies_hz.size()));
+  for (int i = 0; i < model.dofCount(); ++i) {
+    std::printf("  mode %2d: rigid housing %9.2f Hz, box housing %9.2f Hz\n", i,
+                std::sqrt(std::max(rigid.eigenvalues()[i], 0.0)) / (2 * M_PI),
+                std::sqrt(std::max(housed.eigenvalues()[i], 0.0)) / (2 * M_PI));
+  }
+  const double w = 2 * M_PI * 800.0;
+  auto solveTime = [&](const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
+                       const Eigen::MatrixXd& C) {
+    const Eigen::MatrixXcd D = (K - w * w * M).cast<std::complex<double>>() +
+                               std::complex<double>(0, w) * C.cast<std::complex<double>>();
+    const Eigen::VectorXcd f = Eigen::VectorXcd::Ones(K.rows());
+    const auto start = std::chrono::steady_clock::now();
+    Eigen::VectorXcd x;
+    for (int r = 0; r < 200; ++r) x = D.partialPivLu().solve(f);
+    benchmark::DoNotOptimize(x);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 200;
+  };
+  for (auto _ : state) {
+    const double alone =
+        solveTime(model.meanStiffnessAt(speed), model.mass(), model.dampingAt(speed));
+    const double with = solveTime(t.K, t.M, t.C);
+    state.counters["solve_us_rigid"] = 1e6 * alone;
+    state.counters["solve_us_housed"] = 1e6 * with;
+    state.counters["ratio"] = with / alone;
+  }
+}
+BENCHMARK(BM_TwoStageReducerOnTheBox)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// A housing from its CalculiX deck to its Craig–Bampton model, cached (issue #37): the deck is
+/// read (nodes, sets), checked against the memory limit, assembled by ccx, scaled to SI and
+/// reduced (models/housing_superelement.h). The reduced model is stored next to the deck as
+/// `<deck>.reduced-<hash>.bin`, the hash (FNV-1a, 64 bit) over the deck's bytes (not those of
+/// files it *INCLUDEs: edit the deck, or delete the cache, when only those change), the units, the
+/// seat and point set names, the cut-off and the mode count; a changed deck or setting gives
+/// another hash and is reduced again. A cache file that cannot be written (a read-only folder) is
+/// skipped with the reduction kept in memory.
+
+#include <string>
+#include <vector>
+
+#include "geardyn/models/housing_superelement.h"
+
+namespace geardyn::config {
+
+/// What the [housing] section names.
+struct HousingSource {
+  std::string deck;                 ///< the CalculiX deck (.inp)
+  std::string units = "si";         ///< "si" or "mm_t_s" (FeUnits)
+  std::vector<std::string> seats;   ///< seat node set names (the deck's *NSET names)
+  std::vector<std::string> points;  ///< response point node set names
+  CraigBamptonOptions reduction;    ///< cut-off or mode count; key "housing"
+  double memory_limit_bytes = 0.0;  ///< > 0: refuse a larger mesh before ccx runs
+};
+
+/// The result and where it came from.
+struct LoadedHousing {
+  ReducedHousing housing;
+  std::string cache_file;  ///< the cache file used or written ("" when none could be written)
+  bool from_cache = false;
+};
+
+/// Loads the cached reduction of `source`, or assembles, reduces and caches it. InputError
+/// naming "housing.deck" (deck, ccx), "housing.units", "housing.seats"/"housing.points" (a set the
+/// deck does not define, with did-you-mean), "housing.cutoff_hz" (no mode below it).
+LoadedHousing loadHousing(const HousingSource& source);
+
+/// The cache key of `source` (hex): what loadHousing names its cache file by.
+std::string housingCacheKey(const HousingSource& source);
+
+}  // namespace geardyn::config

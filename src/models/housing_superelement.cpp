@@ -1,0 +1,308 @@
+/// Seat condensation and Craig–Bampton reduction of a housing (housing_superelement.h).
+
+#include "geardyn/models/housing_superelement.h"
+
+#include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymGEigsShiftSolver.h>
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "geardyn/error.h"
+
+namespace geardyn {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Triplet = Eigen::Triplet<double>;
+using Ldlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>>;
+
+/// Below this many interior DOFs, or when more than half of them are asked for, the
+/// fixed-interface modes come from a dense generalised eigensolver (Lanczos needs nev < n).
+constexpr Eigen::Index kDenseModesBelow = 400;
+
+/// y = K_oo⁻¹ x with K_oo factorised once, in Spectra's shift-invert operator interface (the
+/// shift is 0: K_oo is positive definite, its seats held by the interface).
+class InverseOp {
+ public:
+  using Scalar = double;
+  explicit InverseOp(const Ldlt& ldlt) : ldlt_(ldlt) {}
+  Eigen::Index rows() const { return ldlt_.rows(); }
+  Eigen::Index cols() const { return ldlt_.cols(); }
+  void set_shift(const Scalar& sigma) {
+    if (sigma != 0.0) throw std::logic_error("InverseOp: only the shift 0 is factorised");
+  }
+  void perform_op(const Scalar* x_in, Scalar* y_out) const {
+    Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
+    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = ldlt_.solve(x);
+  }
+
+ private:
+  const Ldlt& ldlt_;
+};
+
+/// Where each mesh DOF goes: the interface (seat s, rigid) or interior column j.
+struct DofPartition {
+  std::vector<int> seat_of_node_dof;  ///< per full DOF: seat index or -1
+  std::vector<int> interior;          ///< per full DOF: interior index or -1
+  Eigen::Index n_interior = 0;
+  std::map<int, std::array<int, 3>> dof_of_node;  ///< node -> full DOF per direction (-1: fixed)
+};
+
+DofPartition partition(const io::FeMatrices& fe) {
+  DofPartition p;
+  for (std::size_t i = 0; i < fe.dofs.size(); ++i) {
+    auto [it, inserted] =
+        p.dof_of_node.try_emplace(fe.dofs[i].node, std::array<int, 3>{-1, -1, -1});
+    it->second[static_cast<std::size_t>(fe.dofs[i].direction - 1)] = static_cast<int>(i);
+  }
+  p.seat_of_node_dof.assign(fe.dofs.size(), -1);
+  p.interior.assign(fe.dofs.size(), -1);
+  return p;
+}
+
+/// The rigid-constraint coefficients of a seat node's DOF d on the seat's θ: (θ × r)_d.
+Eigen::Vector3d rotationRow(int d, const Eigen::Vector3d& r) {
+  switch (d) {
+    case 0:
+      return {0.0, r.z(), -r.y()};
+    case 1:
+      return {-r.z(), 0.0, r.x()};
+    default:
+      return {r.y(), -r.x(), 0.0};
+  }
+}
+
+/// Checks a seat and returns its centroid; fills the partition's seat marks.
+Eigen::Vector3d tieSeat(const HousingNodeSet& seat, int s,
+                        const std::map<int, Eigen::Vector3d>& nodes, DofPartition& p,
+                        const std::string& key) {
+  const std::string set_key = key + ".seat." + seat.name;
+  if (seat.nodes.size() < 3) {
+    throw InputError(set_key, std::to_string(seat.nodes.size()) + " node(s)",
+                     "a bearing seat node set (*NSET, NSET=" + seat.name +
+                         ") of at least three nodes not on one line");
+  }
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int n : seat.nodes) {
+    const auto x = nodes.find(n);
+    const auto d = p.dof_of_node.find(n);
+    if (x == nodes.end() || d == p.dof_of_node.end() ||
+        std::find(d->second.begin(), d->second.end(), -1) != d->second.end()) {
+      throw InputError(set_key, fmt::format("node {}", n),
+                       "seat nodes of the mesh, none fixed by *BOUNDARY (the seat moves with "
+                       "the bearing)");
+    }
+    for (int dof : d->second) {
+      if (p.seat_of_node_dof[static_cast<std::size_t>(dof)] >= 0) {
+        throw InputError(set_key, fmt::format("node {}", n),
+                         "nodes of this seat only (the node is in another seat's set too)");
+      }
+      p.seat_of_node_dof[static_cast<std::size_t>(dof)] = s;
+    }
+    c += x->second;
+  }
+  c /= static_cast<double>(seat.nodes.size());
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  double radius = 0.0;
+  for (int n : seat.nodes) {
+    const Eigen::Vector3d r = nodes.at(n) - c;
+    J += r * r.transpose();
+    radius = std::max(radius, r.norm());
+  }
+  const Eigen::Vector3d lambda = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
+  // Collinear nodes: the second moment has one non-zero principal value; 1e-10 of the largest
+  // is round-off of coordinates printed to ~6 digits squared.
+  if (lambda[1] <= 1e-10 * lambda[2]) {
+    throw InputError(set_key, fmt::format("{} nodes on one line", seat.nodes.size()),
+                     "seat nodes spanning a plane or a volume (a rigid tie to nodes on one line "
+                     "leaves the rotation about it free)");
+  }
+  return c;
+}
+
+/// The fixed-interface modes (mass-normalised shapes, eigenvalues ω² [1/s²]): `options.modes`
+/// of them, or those below the cut-off, counted first by Sylvester's law of inertia.
+void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const Ldlt& ldlt,
+                         const CraigBamptonOptions& options, Eigen::MatrixXd& Phi,
+                         Eigen::VectorXd& lambda) {
+  const Eigen::Index no = Koo.rows();
+  // The number of fixed-interface modes: given, or counted below the cut-off (Sylvester).
+  Eigen::Index m = options.modes;
+  if (m < 0) {
+    const double w = 2.0 * std::numbers::pi * options.cutoff_hz;
+    const SparseMatrix shifted = Koo - w * w * Moo;
+    const Ldlt sturm(shifted);
+    if (sturm.info() != Eigen::Success) {
+      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g}", options.cutoff_hz),
+                       "a cut-off that is not a fixed-interface natural frequency");
+    }
+    m = (sturm.vectorD().array() < 0.0).count();
+    if (m == 0) {
+      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g} Hz", options.cutoff_hz),
+                       "a cut-off above the first fixed-interface mode of the housing (no mode "
+                       "lies below it: raise the cut-off or the analyses' frequency range)");
+    }
+  }
+  m = std::min(m, no);
+  Phi.resize(no, m);
+  lambda.resize(m);
+  if (m > 0 && (no < kDenseModesBelow || 2 * m > no)) {
+    const Eigen::MatrixXd Kd = Koo, Md = Moo;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
+    Phi = dense.eigenvectors().leftCols(m);
+    lambda = dense.eigenvalues().head(m);
+  } else if (m > 0) {
+    InverseOp op(ldlt);
+    Spectra::SparseSymMatProd<double> bop(Moo);
+    const Eigen::Index ncv = std::min<Eigen::Index>(no, std::max<Eigen::Index>(2 * m + 1, 20));
+    Spectra::SymGEigsShiftSolver<InverseOp, Spectra::SparseSymMatProd<double>,
+                                 Spectra::GEigsMode::ShiftInvert>
+        solver(op, bop, m, ncv, 0.0);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
+    if (solver.info() != Spectra::CompInfo::Successful) {
+      throw std::runtime_error(fmt::format(
+          "housing reduction: Lanczos found {} of the {} fixed-interface modes below the "
+          "cut-off",
+          solver.eigenvalues().size(), m));
+    }
+    // Spectra returns them largest first.
+    lambda = solver.eigenvalues().reverse();
+    Phi = solver.eigenvectors().rowwise().reverse();
+  }
+  for (Eigen::Index j = 0; j < m; ++j) Phi.col(j) /= std::sqrt(Phi.col(j).dot(Moo * Phi.col(j)));
+}
+
+}  // namespace
+
+FeUnits feUnits(const std::string& name, const std::string& key) {
+  if (name == "si") return {1.0, 1.0};
+  if (name == "mm_t_s") return {1e-3, 1e3};
+  throw InputError(key, name,
+                   "\"si\" (m, kg, s, N) or \"mm_t_s\" (mm, t, s, N: E in MPa, density in "
+                   "t/mm³)");
+}
+
+void scaleToSi(io::FeMatrices& fe, std::map<int, Eigen::Vector3d>& nodes, const FeUnits& units) {
+  // Time is in s in both systems, so a stiffness scales as mass / time²: by mass_kg.
+  fe.K *= units.mass_kg;
+  fe.M *= units.mass_kg;
+  for (auto& [n, x] : nodes) x *= units.length_m;
+}
+
+ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen::Vector3d>& nodes,
+                             const std::vector<HousingNodeSet>& seats,
+                             const std::vector<HousingNodeSet>& points,
+                             const CraigBamptonOptions& options) {
+  const std::string& key = options.key;
+  const Eigen::Index n = static_cast<Eigen::Index>(fe.dofs.size());
+  if (seats.empty()) throw InputError(key, "no seats", "at least one bearing seat node set");
+  DofPartition p = partition(fe);
+  ReducedHousing red;
+  for (std::size_t s = 0; s < seats.size(); ++s) {
+    red.seats.push_back(seats[s].name);
+    red.centres.push_back(tieSeat(seats[s], static_cast<int>(s), nodes, p, key));
+  }
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (p.seat_of_node_dof[static_cast<std::size_t>(i)] < 0) {
+      p.interior[static_cast<std::size_t>(i)] = static_cast<int>(p.n_interior++);
+    }
+  }
+  const Eigen::Index nb = red.interfaceDofs(), no = p.n_interior;
+
+  // T_b (n × nb): the rigid tie of the seat DOFs; T_o (n × no): the interior DOFs' selection.
+  std::vector<Triplet> tb, to;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::size_t iu = static_cast<std::size_t>(i);
+    const int s = p.seat_of_node_dof[iu];
+    if (s < 0) {
+      to.emplace_back(i, p.interior[iu], 1.0);
+      continue;
+    }
+    const int d = fe.dofs[iu].direction - 1;
+    const Eigen::Vector3d r = nodes.at(fe.dofs[iu].node) - red.centres[static_cast<std::size_t>(s)];
+    const Eigen::Vector3d rot = rotationRow(d, r);
+    tb.emplace_back(i, 6 * s + d, 1.0);
+    for (int k = 0; k < 3; ++k) {
+      if (rot[k] != 0.0) tb.emplace_back(i, 6 * s + 3 + k, rot[k]);
+    }
+  }
+  SparseMatrix Tb(n, nb), To(n, no);
+  Tb.setFromTriplets(tb.begin(), tb.end());
+  To.setFromTriplets(to.begin(), to.end());
+  const SparseMatrix Koo = To.transpose() * fe.K * To, Moo = To.transpose() * fe.M * To;
+  const SparseMatrix KTb = fe.K * Tb, MTb = fe.M * Tb;
+  const Eigen::MatrixXd Kob = To.transpose() * KTb, Mob = To.transpose() * MTb;
+  const Eigen::MatrixXd Kbb = Tb.transpose() * KTb, Mbb = Tb.transpose() * MTb;
+
+  Ldlt ldlt(Koo);
+  if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0.0).any()) {
+    throw InputError(key, "the housing with its seats held",
+                     "a housing whose interior is held by its seats (K_oo positive definite): "
+                     "check that every part of the mesh is connected to a seat or a *BOUNDARY");
+  }
+  const Eigen::MatrixXd Psi = -ldlt.solve(Kob);
+
+  Eigen::MatrixXd Phi;
+  Eigen::VectorXd lambda;
+  fixedInterfaceModes(Koo, Moo, ldlt, options, Phi, lambda);
+  const Eigen::Index m = Phi.cols();
+  red.mode_frequencies_hz = lambda.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
+
+  // Craig & Bampton (1968) eqs. (4)-(9), see the file comment.
+  const Eigen::MatrixXd MooPsi = Moo * Psi, MooPhi = Moo * Phi;
+  red.K = Eigen::MatrixXd::Zero(nb + m, nb + m);
+  red.M = Eigen::MatrixXd::Zero(nb + m, nb + m);
+  red.K.topLeftCorner(nb, nb) = Kbb + Kob.transpose() * Psi;
+  red.K.bottomRightCorner(m, m) = Phi.transpose() * (Koo * Phi);
+  red.M.topLeftCorner(nb, nb) =
+      Mbb + Mob.transpose() * Psi + Psi.transpose() * Mob + Psi.transpose() * MooPsi;
+  red.M.topRightCorner(nb, m) = Mob.transpose() * Phi + Psi.transpose() * MooPhi;
+  red.M.bottomLeftCorner(m, nb) = red.M.topRightCorner(nb, m).transpose();
+  red.M.bottomRightCorner(m, m) = Phi.transpose() * MooPhi;
+  red.K = 0.5 * (red.K + red.K.transpose()).eval();
+  red.M = 0.5 * (red.M + red.M.transpose()).eval();
+
+  // Response points: each node's translation from its rigid tie or its interior row.
+  red.recovery = Eigen::MatrixXd::Zero(3 * static_cast<Eigen::Index>(points.size()), nb + m);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const HousingNodeSet& point = points[k];
+    red.points.push_back(point.name);
+    if (point.nodes.empty()) {
+      throw InputError(key + ".points", point.name, "a response point node set with nodes");
+    }
+    for (int node : point.nodes) {
+      const auto dofs = p.dof_of_node.find(node);
+      if (!nodes.count(node)) {
+        throw InputError(key + ".points", fmt::format("{}: node {}", point.name, node),
+                         "nodes of the mesh");
+      }
+      if (dofs == p.dof_of_node.end()) continue;  // fixed by *BOUNDARY: no motion
+      for (int d = 0; d < 3; ++d) {
+        const int dof = dofs->second[static_cast<std::size_t>(d)];
+        if (dof < 0) continue;
+        auto row = red.recovery.row(3 * static_cast<Eigen::Index>(k) + d);
+        const double w = 1.0 / static_cast<double>(point.nodes.size());
+        const std::size_t du = static_cast<std::size_t>(dof);
+        if (const int s = p.seat_of_node_dof[du]; s >= 0) {
+          const Eigen::Vector3d r = nodes.at(node) - red.centres[static_cast<std::size_t>(s)];
+          row(6 * s + d) += w;
+          row.segment(6 * s + 3, 3) += w * rotationRow(d, r).transpose();
+        } else {
+          row.head(nb) += w * Psi.row(p.interior[du]);
+          row.tail(m) += w * Phi.row(p.interior[du]);
+        }
+      }
+    }
+  }
+  return red;
+}
+
+}  // namespace geardyn
