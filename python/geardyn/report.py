@@ -92,6 +92,8 @@ def headline_rows(summary, limit=60):
 
     def walk(prefix, table, depth, parent_unit=""):
         for key, value in table.items():
+            if depth == 0 and key == "geometry":
+                continue  # a train's parts, drawn by its 3-D view: not headline numbers
             name = f"{prefix}{key}"
             if isinstance(value, dict):
                 if depth < 2:

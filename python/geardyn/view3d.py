@@ -190,7 +190,7 @@ def _ods(folder, index, bodies):
     with open(path, newline="") as handle:
         reader = csv.reader(handle)
         next(reader)
-        for speed, mesh, order, frequency, dof, real, imag in reader:
+        for speed, mesh, order, frequency, dof, _unit, real, imag in reader:
             body, _, name = dof.rpartition(".")
             if body not in index or name not in _DOFS:
                 continue

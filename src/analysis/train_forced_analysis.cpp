@@ -81,12 +81,12 @@ constexpr int kOdsOrders = 3;
 
 /// forced_ods.csv: the operating deflection shapes of the common-period steady state, the
 /// complex amplitude of every DOF at each mesh's orders 1..kOdsOrders, q_l(t) = Re[Q e^{i l ω_m
-/// t}] with Q = 2 X_h, h = l × the mesh's multiple of the base frequency (train_response.h:
-/// q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]) [m, rad], at the operating speed and at each mesh's
-/// largest dynamic factor (`speeds`, rad/s; duplicates skipped).
+/// t}] (the unit column: m or rad) with Q = 2 X_h, h = l × the mesh's multiple of the base
+/// frequency (train_response.h: q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]) [m, rad], at the operating
+/// speed and at each mesh's largest dynamic factor (`speeds`, rad/s; duplicates skipped).
 void writeOds(const GearTrainModel& model, const TrainSteadySolver& solver,
               std::vector<double> speeds, AnalysisResult& result) {
-  io::CsvTable ods({"speed_rpm", "mesh", "order", "frequency_hz", "dof", "real", "imag"});
+  io::CsvTable ods({"speed_rpm", "mesh", "order", "frequency_hz", "dof", "unit", "real", "imag"});
   std::sort(speeds.begin(), speeds.end());
   speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
   for (double speed : speeds) {
@@ -99,8 +99,10 @@ void writeOds(const GearTrainModel& model, const TrainSteadySolver& solver,
         if (h > s.harmonics) break;
         for (int i = 0; i < model.dofCount(); ++i) {
           const std::complex<double> q = 2.0 * s.harmonic(i, h);
-          ods.addRow({speed / kRpm, model.meshes()[m].name, l, l * f_m, model.dofName(i), q.real(),
-                      q.imag()});
+          const std::string name = model.dofName(i);
+          const bool angle = name.find("theta") != std::string::npos;
+          ods.addRow({speed / kRpm, model.meshes()[m].name, l, l * f_m, name, angle ? "rad" : "m",
+                      q.real(), q.imag()});
         }
       }
     }

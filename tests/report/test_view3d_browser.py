@@ -218,3 +218,28 @@ def _screenshot(chromium, mode, name):
     shot = chromium.screenshot(OUT / "screenshots" / name, "gd-view3d-0")
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 20_000
     chromium.driver.execute_script("document.getElementById('gd-view3d-0').gdView.setPlaying(true);")
+
+
+def test_python_result_shows_the_view_inline(chromium, tmp_path):
+    """Jupyter: a train Result's _repr_html_ holds the view in an iframe (its page, escaped, in
+    srcdoc); the page alone draws in the browser with a silent console. Other results have no
+    view."""
+    import html
+
+    import geardyn
+
+    train = geardyn.run("train", SOURCE / "examples" / "train_lin_parker1999.toml",
+                        overrides={"planetary.stage.planets": 4})
+    shown = train._repr_html_()
+    assert shown.count("<iframe srcdoc=\"") == 1 and "<table>" in shown
+    page = train.view3d()
+    assert html.escape(page, quote=True) in shown
+    assert 'id="gd-lib-three-module"' in page and 'class="gd-view3d"' in page
+    path = tmp_path / "view.html"
+    path.write_text(page)
+    seen = chromium.open(path)
+    assert seen["views_rendered"] == 1 and seen["console"] == [], seen
+    assert chromium.driver.execute_script(
+        "return document.getElementById('gd-view3d-0').gdView.modes") == len(train.table("modes")["mode"])
+    stiffness = geardyn.run("stiffness", SOURCE / "examples" / "stiffness_visnadi2021_spur.toml")
+    assert stiffness.view3d() is None and "<iframe" not in stiffness._repr_html_()
