@@ -6,8 +6,10 @@ The geometry comes from the train's ``summary.json`` (``results.geometry``, writ
 ``geardyn train``, with the body each part moves with) and ``bodies.csv`` (every body's rest
 position); the modes from ``modes.csv`` (frequency, damping, type, strain-energy fractions) and
 ``mode_shapes.csv`` (complex amplitudes per DOF); the Campbell diagram from ``campbell.csv``.
-The viewer itself is ``view3d.js`` beside this file; the libraries are embedded compressed
-(``_embed.py``), so the page needs no network.
+The viewer itself is JavaScript beside this file (``view3d.js``: the view and its controls;
+``view3d_scene.js``: renderer, camera, moving the bodies; ``view3d_parts.js``: the solids;
+``view3d_panel.js``: mode list, deflection shapes and Campbell diagram; ``view3d.css``); the
+libraries are embedded compressed (``_embed.py``), so the page needs no network.
 
 - ``view_section(folder, summary)``: the HTML fragment the report puts in its page
   (None when the result has no geometry block or no modes)
@@ -266,7 +268,7 @@ def page_parts():
     """What a page with 3-D views needs once: the style, the compressed libraries, the loader
     and the viewer (script elements)."""
     viewer = "".join(f"<script>{(_HERE / name).read_text(encoding='utf-8')}</script>"
-                     for name in ("view3d_parts.js", "view3d_panel.js", "view3d.js"))
+                     for name in ("view3d_parts.js", "view3d_scene.js", "view3d_panel.js", "view3d.js"))
     return (f"<style>{_STYLE.read_text(encoding='utf-8')}</style>" + _embed.library_scripts(["three"])
             + f"<script>{_embed.loader_js()}</script>{viewer}")
 

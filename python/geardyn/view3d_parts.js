@@ -129,8 +129,6 @@ window.geardynParts = (function () {
     return r || shaft.stub_radius;
   }
 
-  window.geardynPartsHelpers = {shaftRadiusAt: shaftRadiusAt};
-
   // Every part as {body: index, object (in the body's frame, origin at the body's rest centre)}
   // and the flexible shafts' elements {a, b, radius} (drawn by view3d.js between moving nodes).
   function build(THREE, data) {
