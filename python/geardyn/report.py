@@ -41,8 +41,10 @@ def find_plotly_js():
         extra.append(pathlib.Path(plotly.__file__).parent / "package_data" / "plotly.min.js")
     except ImportError:
         pass
+    modules = pathlib.Path(".cache/npm/node_modules")
+    relative = _NPM_PATH.relative_to(modules) if _NPM_PATH.is_relative_to(modules) else _NPM_PATH
     return _embed.first_found(
-        "plotly.min.js", "GEARDYN_PLOTLY_JS", _NPM_PATH.relative_to(".cache/npm/node_modules"),
+        "plotly.min.js", "GEARDYN_PLOTLY_JS", relative,
         lambda path: path.is_file() and path.stat().st_size > 100_000,
         "install it with `bash scripts/setup.sh --deps` (npm package plotly.js-dist-min into "
         ".cache/npm) or set GEARDYN_PLOTLY_JS to a copy of plotly.min.js", extra)

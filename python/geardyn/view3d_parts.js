@@ -98,6 +98,18 @@ window.geardynParts = (function () {
     return group;
   }
 
+  function mm(v) {  // a length [m] in mm, three significant digits
+    var s = (1e3 * v).toPrecision(3);
+    return (s.indexOf('.') >= 0 && s.indexOf('e') < 0 ? s.replace(/\.?0+$/, '') : String(Number(s))) + ' mm';
+  }
+  // What hovering a gear says: name, teeth, module, helix and face width, in units.
+  function gearLabel(name, g) {
+    var m = 2 * g.pitch_radius_m * Math.cos(g.helix_angle_deg * Math.PI / 180) / g.teeth;
+    return name + ': ' + (g.internal ? 'ring gear, ' : '') + g.teeth + ' teeth, m_n ' + mm(m) + ', ' +
+           (g.hand === 'spur' ? 'spur' : 'helical ' + Math.abs(g.helix_angle_deg).toPrecision(3) + '°, ' + g.hand + ' hand') +
+           ', b ' + mm(g.face_width_m) + ', d ' + mm(2 * g.pitch_radius_m);
+  }
+
   function gear(THREE, g, colour) {
     var group = new THREE.Group(), b = g.face_width_m, x0 = -b / 2, x1 = b / 2;
     var teeth = Math.min(g.teeth, 240);
@@ -141,8 +153,9 @@ window.geardynParts = (function () {
     geo.gears.concat(geo.planets).forEach(function (g) {
       (gearsOn[g.body] = gearsOn[g.body] || []).push(g);
     });
-    function at(body, object, x, kind) {  // object centred at global x on body
+    function at(body, object, x, kind, label) {  // object centred at global x on body
       kinds[kind] = true;
+      object.userData.label = label || body;
       object.position.x += x - bodies[index[body]].c[0];
       parts.push({body: index[body], object: object});
       return object;
@@ -161,14 +174,16 @@ window.geardynParts = (function () {
         for (var k = 0; k + 1 < s.bodies.length; ++k) {
           var a = index[s.bodies[k]], b = index[s.bodies[k + 1]];
           kinds.shaft = true;
-          elements.push({a: a, b: b, radius: shaftRadiusAt(s, 0.5 * (bodies[a].c[0] + bodies[b].c[0]))});
+          var radius = shaftRadiusAt(s, 0.5 * (bodies[a].c[0] + bodies[b].c[0]));
+          elements.push({a: a, b: b, radius: radius, shaft: s.shaft + ': d ' + mm(2 * radius)});
         }
         return;
       }
       var body = s.bodies[0], x = bodies[index[body]].c[0];
       if (s.sections.length) {
         s.sections.forEach(function (c) {
-          at(body, annulus(THREE, c.inner_radius_m, c.outer_radius_m, c.start_x_m - x, c.start_x_m + c.length_m - x, COLOURS.shaft), x, 'shaft');
+          at(body, annulus(THREE, c.inner_radius_m, c.outer_radius_m, c.start_x_m - x, c.start_x_m + c.length_m - x, COLOURS.shaft), x, 'shaft',
+             'shaft ' + s.shaft + ': d ' + mm(2 * c.outer_radius_m));
         });
         return;
       }
@@ -190,15 +205,16 @@ window.geardynParts = (function () {
       var from = side < 0 ? -gap - len : gap, to = side < 0 ? -gap : gap + len;
       var drum = annulus(THREE, 0, r, from, to, COLOURS.disk);
       drum.add(marker(THREE, 0.3 * r, r, from, to));
-      at(body, drum, x, 'disk');
+      at(body, drum, x, 'disk', 'rotor ' + s.shaft + ': ' + s.mass_kg.toPrecision(3) + ' kg, ' +
+         s.polar_inertia_kg_m2.toPrecision(3) + ' kg m²');
       s.drum = {from: from, to: to, radius: r};
     });
     var colourOf = {};
     geo.gears.forEach(function (g, i) {
       var c = colourOf[g.teeth + ':' + g.face_width_m] = COLOURS.gear[Object.keys(colourOf).length % COLOURS.gear.length];
-      at(g.body, gear(THREE, g, c), g.axial_x_m, g.internal ? 'ring' : 'gear');
+      at(g.body, gear(THREE, g, c), g.axial_x_m, g.internal ? 'ring' : 'gear', gearLabel(g.gear, g));
     });
-    geo.planets.forEach(function (g) { at(g.body, gear(THREE, g, COLOURS.planet), g.axial_x_m, 'planet'); });
+    geo.planets.forEach(function (g) { at(g.body, gear(THREE, g, COLOURS.planet), g.axial_x_m, 'planet', gearLabel(g.planet, g)); });
     geo.carriers.forEach(function (c) {
       var planets = geo.planets.filter(function (p) { return p.carrier_body === c.body; });
       if (!planets.length) return;
@@ -214,7 +230,7 @@ window.geardynParts = (function () {
         plate.add(pin);
       });
       plate.add(marker(THREE, 0.3 * c.orbit_radius_m, c.orbit_radius_m, -1.3 * w, -0.9 * w));
-      at(c.body, plate, x, 'carrier');
+      at(c.body, plate, x, 'carrier', 'carrier ' + c.shaft + ': planet orbit r ' + mm(c.orbit_radius_m));
     });
     geo.bearings.forEach(function (b) {
       var shaft = shaftsByName[bodyShaft(geo, b.body)] || {sections: [], stub_radius: 0.01};
@@ -222,14 +238,15 @@ window.geardynParts = (function () {
       var ring = annulus(THREE, 1.02 * r, 1.02 * r + Math.max(0.6 * r, 0.006), -w / 2, w / 2, COLOURS.bearing);
       ring.add(annulus(THREE, 1.02 * r + Math.max(0.6 * r, 0.006), 1.02 * r + Math.max(0.9 * r, 0.009),
                        -0.35 * w, 0.35 * w, 0x1d3766));
-      at(b.body, ring, b.axial_x_m, 'bearing');
+      at(b.body, ring, b.axial_x_m, 'bearing', 'bearing ' + b.bearing + ' (' + b.type + ')');
     });
     geo.disks.forEach(function (d) {
       var r = d.mass_kg > 0 ? Math.sqrt(2 * d.polar_inertia_kg_m2 / d.mass_kg) : 0.05;
       var w = Math.max(d.mass_kg / (DENSITY * Math.PI * r * r), 0.04 * r);
       var disk = annulus(THREE, 0, r, -w / 2, w / 2, COLOURS.disk);
       disk.add(marker(THREE, 0.15 * r, r, -w / 2, w / 2));
-      at(d.body, disk, d.axial_x_m, 'disk');
+      at(d.body, disk, d.axial_x_m, 'disk', 'disk ' + d.disk + ': ' + d.mass_kg.toPrecision(3) + ' kg, ' +
+         d.polar_inertia_kg_m2.toPrecision(3) + ' kg m²');
     });
     geo.couplings.forEach(function (c) {
       var a = bodies[index[c.body_a]], b = bodies[index[c.body_b]];
@@ -240,6 +257,7 @@ window.geardynParts = (function () {
       if (to - from < 1e-4) { from -= 0.01; to += 0.01; }
       var r = 1.8 * Math.max(shaftRadiusAt(sb || sa, b.c[0]), 0.004);
       var hub = annulus(THREE, 0, r, from - a.c[0], to - a.c[0], COLOURS.coupling);
+      hub.userData.label = 'coupling ' + c.coupling;
       parts.push({body: index[c.body_a], object: hub});
       kinds.coupling = true;
     });

@@ -44,6 +44,7 @@ window.geardynScene = (function () {
     built.elements.forEach(function (e) {
       for (var k = 0; k < SUB; ++k) {
         var m = new THREE.Mesh(unit, shaftMaterial);
+        m.userData.shaft = e.shaft;
         world.add(m); segments.push({mesh: m, e: e, k: k});
       }
     });
@@ -119,17 +120,20 @@ window.geardynScene = (function () {
         ctx.font = 'bold 12px sans-serif'; ctx.fillText(t[0], c + 36 * d.x - 4, c - 36 * d.y + 4);
       });
     }
-    // Hovering a part names its body in `tip`.
+    // Hovering a part names it (with its size) in `tip`.
     function hover(tip) {
       var ray = new THREE.Raycaster(), mouse = new THREE.Vector2();
+      ray.params.Line.threshold = 0;  // the solids name the parts, not the circles on them
       renderer.domElement.addEventListener('mousemove', function (ev) {
         var r = renderer.domElement.getBoundingClientRect(), name = null;
         mouse.set((ev.clientX - r.left) / r.width * 2 - 1, -(ev.clientY - r.top) / r.height * 2 + 1);
         ray.setFromCamera(mouse, camera);
-        var hit = ray.intersectObject(world, true)[0];
+        var hit = ray.intersectObject(world, true).filter(function (h) { return h.object.isMesh; })[0];
         for (var o = hit && hit.object; o && !name; o = o.parent) {
           var i = nodes.indexOf(o);
-          if (i >= 0) name = bodies[i].name;
+          if (o.userData.label) name = o.userData.label;
+          else if (i >= 0) name = bodies[i].name;
+          else if (o.userData.shaft) name = 'shaft ' + o.userData.shaft;
         }
         tip.style.display = name ? 'block' : 'none';
         if (name) {
