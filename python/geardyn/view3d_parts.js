@@ -200,7 +200,7 @@ window.geardynParts = (function () {
       // r = sqrt(2 J / m), length m / (ρ π r²), beside what it is coupled to.
       var r = s.mass_kg > 0 ? Math.sqrt(2 * s.polar_inertia_kg_m2 / s.mass_kg) : 0.05;
       var len = Math.min(Math.max(s.mass_kg / (DENSITY * Math.PI * r * r), 0.2 * r), 4 * r);
-      var side = -1, gap = 0.04 * Math.max(span, 0.1);
+      var side = -1, gap = 0.06 * Math.max(span, 0.1);
       geo.couplings.forEach(function (c) { if (c.body_b === body) side = 1; });
       var from = side < 0 ? -gap - len : gap, to = side < 0 ? -gap : gap + len;
       var drum = annulus(THREE, 0, r, from, to, COLOURS.disk);
@@ -251,17 +251,26 @@ window.geardynParts = (function () {
     geo.couplings.forEach(function (c) {
       var a = bodies[index[c.body_a]], b = bodies[index[c.body_b]];
       var sa = shaftsByName[bodyShaft(geo, c.body_a)], sb = shaftsByName[bodyShaft(geo, c.body_b)];
+      // From the end of shaft a (its last section, its rotor drum, or its node) to the start
+      // of shaft b: a rigid shaft's body sits at its mass centre, not at its ends.
       var from = a.c[0], to = b.c[0];
       if (sa && sa.drum) from = a.c[0] + sa.drum.to;
+      else if (sa && sa.sections.length) from = sectionEnd(sa);
       if (sb && sb.drum) to = b.c[0] + sb.drum.from;
-      if (to - from < 1e-4) { from -= 0.01; to += 0.01; }
-      var r = 1.8 * Math.max(shaftRadiusAt(sb || sa, b.c[0]), 0.004);
+      else if (sb && sb.sections.length) to = sb.sections[0].start_x_m;
+      if (to - from < 1e-4) { var mid = 0.5 * (from + to); from = mid - 0.01; to = mid + 0.01; }
+      var r = 1.8 * Math.max(sb ? shaftRadiusAt(sb, to) : shaftRadiusAt(sa, from), 0.004);
       var hub = annulus(THREE, 0, r, from - a.c[0], to - a.c[0], COLOURS.coupling);
       hub.userData.label = 'coupling ' + c.coupling;
       parts.push({body: index[c.body_a], object: hub});
       kinds.coupling = true;
     });
     return {parts: parts, elements: elements, span: span, kinds: kinds, index: index};
+  }
+
+  function sectionEnd(shaft) {
+    var last = shaft.sections[shaft.sections.length - 1];
+    return last.start_x_m + last.length_m;
   }
 
   function bodyShaft(geo, body) {
