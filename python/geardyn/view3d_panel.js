@@ -89,7 +89,20 @@ window.geardynViewPanel = (function () {
       svg('line', {x1: X(data.speed_rpm), x2: X(data.speed_rpm), y1: T, y2: H - B, stroke: '#888',
                    'stroke-dasharray': '2 2'}, plot);
     }
-    var curves = c.modes_hz.map(function (m, i) {
+    // Curve k is the k-th lowest tracked frequency at each speed: it belongs to the mode whose
+    // frequency is nearest its value at the modal analysis's speed (linear interpolation).
+    function modeOf(m) {
+      var s = data.speed_rpm || 0, k = 1;
+      while (k < c.speed_rpm.length - 1 && c.speed_rpm[k] < s) ++k;
+      var s0 = c.speed_rpm[k - 1], s1 = c.speed_rpm[k], w = s1 > s0 ? Math.min(Math.max((s - s0) / (s1 - s0), 0), 1) : 0;
+      var f = (1 - w) * m[k - 1] + w * m[k], best = 0;
+      data.modes.forEach(function (mode, j) {
+        if (Math.abs(mode.frequency_hz - f) < Math.abs(data.modes[best].frequency_hz - f)) best = j;
+      });
+      return best;
+    }
+    var curves = c.modes_hz.map(function (m) {
+      var i = modeOf(m);
       var d = m.map(function (f, k) { return (k ? 'L' : 'M') + X(c.speed_rpm[k]).toFixed(1) + ' ' + Y(f).toFixed(1); }).join('');
       var hit = svg('path', {d: d, stroke: 'transparent', 'stroke-width': 8, fill: 'none', 'class': 'hit'}, plot);
       var path = svg('path', {d: d, stroke: '#6b7280', 'stroke-width': 1.2, fill: 'none'}, plot);
@@ -98,6 +111,7 @@ window.geardynViewPanel = (function () {
         p.addEventListener('click', function () { onSelect(i); });
         svg('title', {}, p).textContent = 'mode ' + data.modes[i].mode;
       });
+      path.gdMode = i;
       return path;
     });
     svg('rect', {x: L, y: T, width: W - L - R, height: H - B - T, fill: 'none', stroke: '#555'}, box);
@@ -135,10 +149,10 @@ window.geardynViewPanel = (function () {
         if (curves.mark) curves.mark(j >= 0 ? data.ods[j] : null);
         rows.forEach(function (r, k) { r.classList.toggle('selected', k === i); });
         if (rows[i]) rows[i].scrollIntoView({block: 'nearest'});
-        curves.forEach(function (p, k) {
-          p.setAttribute('stroke', k === i ? '#d62728' : '#6b7280');
-          p.setAttribute('stroke-width', k === i ? 2.6 : 1.2);
-          if (k === i) p.parentNode.appendChild(p);
+        curves.forEach(function (p) {
+          p.setAttribute('stroke', p.gdMode === i ? '#d62728' : '#6b7280');
+          p.setAttribute('stroke-width', p.gdMode === i ? 2.6 : 1.2);
+          if (p.gdMode === i) p.parentNode.appendChild(p);
         });
       }
     };
