@@ -61,6 +61,20 @@ if ! grep -qs "plotly.js v$plotly_version" <(head -c 200 "$plotly_js" 2>/dev/nul
     "plotly.js-dist-min@$plotly_version" >/dev/null
 fi
 
+# three.js (MIT) for the report's 3-D view of gear trains (python/geardyn/view3d*.js), from npm
+# like plotly.js: a pinned release that still ships minified ES modules (build/three.core.min.js,
+# build/three.module.min.js); Debian's libjs-three is r111 (2019), before the module layout the
+# view loads. python/geardyn/_embed.py finds it in .cache/npm and embeds it compressed.
+three_version=0.179.1
+three_dir=".cache/npm/node_modules/three"
+if ! grep -qs "\"version\": \"$three_version\"" "$three_dir/package.json" ||
+   [ ! -f "$three_dir/build/three.module.min.js" ]; then
+  echo "setup: installing three@$three_version (npm) into .cache/npm" >&2
+  mkdir -p .cache/npm
+  npm install --prefix .cache/npm --no-save --no-audit --no-fund --no-package-lock --silent \
+    "plotly.js-dist-min@$plotly_version" "three@$three_version" >/dev/null
+fi
+
 [ "${1:-}" = "--deps" ] && exit 0
 
 build_dir="${BUILD_DIR:-build}"

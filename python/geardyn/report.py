@@ -3,9 +3,10 @@
 ``geardyn report RESULT_DIR [--out FILE]`` (the CLI) and ``write_report(result_dir, out=None)``
 (Python) write one HTML file holding the run's headline numbers (summary.json ``results``), the
 resolved configuration (summary.json ``config``) and interactive plotly.js figures of its tables:
-zoom, pan, hover and toggle traces in any browser, with no network. plotly.js (MIT, the npm
-package ``plotly.js-dist-min``, installed by ``scripts/setup.sh`` into ``.cache/npm``) is embedded
-inline, so the file can be mailed on its own (about 5 MB).
+zoom, pan, hover and toggle traces in any browser, with no network; a gear train's report also
+holds its 3-D view with animated modes (view3d.py, three.js). plotly.js (MIT, the npm package
+``plotly.js-dist-min``, installed by ``scripts/setup.sh`` into ``.cache/npm``) and three.js are
+embedded gzip-compressed (_embed.py), so the file can be mailed on its own (about 2-3 MB).
 
 Where plotly.min.js is looked for, first found wins: ``$GEARDYN_PLOTLY_JS``; the package's own
 ``_assets/plotly.min.js``; ``.cache/npm/node_modules/plotly.js-dist-min/plotly.min.js`` in a
@@ -22,7 +23,9 @@ import pathlib
 import sys
 import tempfile
 
+from . import _embed
 from . import _report_figures as _figures
+from . import view3d as _view3d
 from ._units import suffix_unit
 
 _NPM_PATH = pathlib.Path(".cache/npm/node_modules/plotly.js-dist-min/plotly.min.js")
@@ -31,28 +34,20 @@ _NPM_PATH = pathlib.Path(".cache/npm/node_modules/plotly.js-dist-min/plotly.min.
 def find_plotly_js():
     """The path of plotly.min.js (see the module doc for the search order); FileNotFoundError
     naming every place tried and how to install it when none has it."""
-    tried = []
-    if os.environ.get("GEARDYN_PLOTLY_JS"):
-        tried.append(pathlib.Path(os.environ["GEARDYN_PLOTLY_JS"]))
-    here = pathlib.Path(__file__).resolve().parent
-    tried.append(here / "_assets" / "plotly.min.js")
-    for start in (here, pathlib.Path.cwd().resolve()):
-        tried += [parent / _NPM_PATH for parent in start.parents] + [start / _NPM_PATH]
-    tried.append(pathlib.Path("/usr/share/javascript/plotly/plotly.min.js"))
+    extra = [pathlib.Path("/usr/share/javascript/plotly/plotly.min.js")]
     try:  # python3-plotly keeps a copy unless the distribution stripped it
         import plotly  # noqa: F401  (optional)
 
-        tried.append(pathlib.Path(plotly.__file__).parent / "package_data" / "plotly.min.js")
+        extra.append(pathlib.Path(plotly.__file__).parent / "package_data" / "plotly.min.js")
     except ImportError:
         pass
-    for path in tried:
-        if path.is_file() and path.stat().st_size > 100_000:
-            return path
-    raise FileNotFoundError(
-        "plotly.min.js not found (looked in $GEARDYN_PLOTLY_JS, "
-        + ", ".join(dict.fromkeys(str(p) for p in tried[:4]))
-        + ", ...); install it with `bash scripts/setup.sh --deps` (npm package plotly.js-dist-min "
-        "into .cache/npm) or set GEARDYN_PLOTLY_JS to a copy of plotly.min.js")
+    modules = pathlib.Path(".cache/npm/node_modules")
+    relative = _NPM_PATH.relative_to(modules) if _NPM_PATH.is_relative_to(modules) else _NPM_PATH
+    return _embed.first_found(
+        "plotly.min.js", "GEARDYN_PLOTLY_JS", relative,
+        lambda path: path.is_file() and path.stat().st_size > 100_000,
+        "install it with `bash scripts/setup.sh --deps` (npm package plotly.js-dist-min into "
+        ".cache/npm) or set GEARDYN_PLOTLY_JS to a copy of plotly.min.js", extra)
 
 
 def _clean(value):
@@ -99,6 +94,8 @@ def headline_rows(summary, limit=60):
 
     def walk(prefix, table, depth, parent_unit=""):
         for key, value in table.items():
+            if depth == 0 and key == "geometry":
+                continue  # a train's parts, drawn by its 3-D view: not headline numbers
             name = f"{prefix}{key}"
             if isinstance(value, dict):
                 if depth < 2:
@@ -139,27 +136,36 @@ pre{background:#f6f6f6;padding:.8em;font-size:.8em;overflow:auto;max-height:30em
 .warning{color:#a40}
 """
 
+# plotly.js is unpacked and run after the 3-D view (when the page has one) has drawn its first
+# frame, and the view's animation starts when the figures are drawn: the view shows first and
+# its frames do not hold up the figures.
 _RENDER = """
-(function () {
+(window.geardynView3d ? window.geardynView3d.mounted : Promise.resolve()).then(function () {
+  return gdLib.classic('gd-lib-plotly');
+}).then(function () {
   var figures = JSON.parse(document.getElementById('gd-figures').textContent);
-  figures.forEach(function (f, i) {
+  return Promise.all(figures.map(function (f, i) {
     var div = document.getElementById('gd-figure-' + i);
     div.style.height = (f.height || 480) + 'px';
-    Plotly.newPlot(div, f.data, f.layout, {responsive: true, displaylogo: false})
+    return Plotly.newPlot(div, f.data, f.layout, {responsive: true, displaylogo: false})
       .then(function () { div.setAttribute('data-rendered', '1'); });
-  });
-})();
+  }));
+}).then(function () {
+  gdLib.times.figures = performance.now();
+  if (window.geardynView3d) window.geardynView3d.play();
+});
 """
 
 
-def render_html(summary, figures, plotly_js, title=None):
-    """The report as one HTML string: `figures` are dicts with name, caption, data, layout."""
+def render_html(summary, figures, plotly_js, title=None, view=None):
+    """The report as one HTML string: `figures` are dicts with name, caption, data, layout;
+    `view` the 3-D view's HTML fragment (view3d.view_section) or None."""
     title = title or summary.get("config", {}).get("title") or f"geardyn {summary.get('command', '')}"
     esc = html.escape
     parts = [
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">",
         f"<title>{esc(title)}</title><style>{_STYLE}</style>",
-        f"<script>{plotly_js}</script></head><body>",
+        f"<script>{_embed.loader_js()}</script></head><body>",
         f"<h1>{esc(title)}</h1>",
         f"<p class=\"meta\">geardyn {esc(str(summary.get('geardyn_version', '?')))} · "
         f"command <code>{esc(str(summary.get('command', '?')))}</code> · "
@@ -174,6 +180,12 @@ def render_html(summary, figures, plotly_js, title=None):
         parts.append(f"<div><span>{esc(name)}</span><span class=\"num\">{esc(str(value))}</span>"
                      f"<span class=\"unit\">{esc(unit)}</span></div>")
     parts.append("</div>")
+    if view:
+        parts.append("<h2>3-D view</h2><script>window.geardynView3dWait = true;</script>"
+                     + _view3d.page_parts() + view
+                     + "<p class=\"caption\">The train as modelled (x along the shafts, z up): a click on "
+                     "a mode in the list or the Campbell diagram animates it; drag to orbit, wheel to "
+                     "zoom, right-drag to pan; hover a part for its body's name.</p>")
     if figures:
         parts.append("<h2>Figures</h2>")
     for i, figure in enumerate(figures):
@@ -182,9 +194,11 @@ def render_html(summary, figures, plotly_js, title=None):
     parts.append("<h2>Resolved configuration</h2>")
     parts.append(f"<pre>{esc(_config_text(summary.get('config', {})))}</pre>")
     parts.append(f"<p class=\"meta\">written {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M:%S} UTC "
-                 "by geardyn.report; figures drawn with plotly.js (MIT licence), embedded.</p>")
+                 "by geardyn.report; figures drawn with plotly.js (MIT licence)"
+                 + (", the 3-D view with three.js (MIT licence)" if view else "") + ", embedded.</p>")
     payload = [{"data": f["data"], "layout": f["layout"], "height": f.get("height", 480)} for f in figures]
     parts.append(f"<script type=\"application/json\" id=\"gd-figures\">{_script_json(payload)}</script>")
+    parts.append(_embed.packed_text("gd-lib-plotly", plotly_js))
     parts.append(f"<script>{_RENDER}</script></body></html>\n")
     return "".join(parts)
 
@@ -198,7 +212,8 @@ def write_report(results_dir, out=None):
         raise FileNotFoundError(f"{summary_path}: no summary.json; is {folder} a geardyn result folder?")
     summary = json.loads(summary_path.read_text())
     figures = _figures.figures_of(folder, summary)
-    text = render_html(summary, figures, find_plotly_js().read_text(encoding="utf-8"))
+    view = _view3d.view_section(folder, summary) if summary.get("command") == "train" else None
+    text = render_html(summary, figures, find_plotly_js().read_text(encoding="utf-8"), view=view)
     out = pathlib.Path(out) if out is not None else folder / "report.html"
     out.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(prefix="." + out.name + ".tmp-", dir=out.parent)

@@ -68,6 +68,8 @@ class Result:
       ``to_pandas(name=None)``: a DataFrame, units in ``.attrs["units"]``
     - ``report_text``: what the CLI prints; ``save(folder)``: the CLI's result folder;
       ``plot(folder)``: the CLI's PNG plots in ``folder``; ``report(out=None)``: the HTML report
+    - ``view3d()``: a train's 3-D view with animated modes (an HTML page); Jupyter shows it
+      inline (``_repr_html_``)
     """
 
     def __init__(self, native):
@@ -221,12 +223,31 @@ class Result:
         lines += [line for line in self.report_text.splitlines() if line.strip()]
         return "\n".join(lines)
 
+    def view3d(self):
+        """The 3-D view of a gear train's result (geardyn.view3d: its parts, animated modes and
+        Campbell diagram) as a standalone HTML page, or None when the result has nothing to
+        draw (not a train, or no modes)."""
+        if self.command != "train" or "geometry" not in self.results:
+            return None
+        from . import view3d
+
+        with tempfile.TemporaryDirectory(prefix="geardyn-view3d-") as work:
+            self.save(work)
+            return view3d.view_page(work, self.summary)
+
     def _repr_html_(self):
         rows = "".join(f"<tr><td>{html.escape(k)}</td><td>{v:.6g}</td></tr>"
                        for k, v in self.headline.items())
         status = html.escape(self.status)
         colour = "#2a7" if self.ok else "#c33"
+        try:  # a train's 3-D view, in an iframe: its scripts and styles stay its own
+            page = self.view3d()
+        except OSError:  # three.js not installed: the view is left out, the rest is shown
+            page = None
+        view = ("" if page is None else
+                f"<iframe srcdoc=\"{html.escape(page, quote=True)}\" style=\"width:100%;height:640px;"
+                f"border:0\" title=\"geardyn 3-D view\"></iframe>")
         return (f"<div><b>geardyn {html.escape(self.command)}</b> — status "
                 f"<span style='color:{colour}'>{status}</span>, {self.wall_time_s:.3g} s"
-                f"<table>{rows}</table><pre>{html.escape(self.report_text)}</pre>"
+                f"<table>{rows}</table>{view}<pre>{html.escape(self.report_text)}</pre>"
                 f"<small>tables: {html.escape(', '.join(self.tables))}</small></div>")

@@ -31,6 +31,7 @@
 #include "geardyn/units.h"
 #include "train_bearings_analysis.h"
 #include "train_forced_analysis.h"
+#include "train_geometry.h"
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
@@ -96,6 +97,7 @@ void writeKinematics(const GearTrainModel& model, AnalysisResult& result, io::Ru
                                    {"output_torque_n_m", model.outputTorque()},
                                    {"bodies", json},
                                    {"meshes", mj}};
+  summary.results["geometry"] = detail::trainGeometry(model);
 }
 
 void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSummary& summary,

@@ -6,8 +6,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -72,6 +74,40 @@ std::string toneName(const std::vector<int>& n) {
     out += fmt::format("g{}", j + 1);
   }
   return out;
+}
+
+/// Mesh orders the operating deflection shapes are written for (1..this, at most L).
+constexpr int kOdsOrders = 3;
+
+/// forced_ods.csv: the operating deflection shapes of the common-period steady state, the
+/// complex amplitude of every DOF at each mesh's orders 1..kOdsOrders, q_l(t) = Re[Q e^{i l ω_m
+/// t}] (the unit column: m or rad) with Q = 2 X_h, h = l × the mesh's multiple of the base
+/// frequency (train_response.h: q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]) [m, rad], at the operating
+/// speed and at each mesh's largest dynamic factor (`speeds`, rad/s; duplicates skipped).
+void writeOds(const GearTrainModel& model, const TrainSteadySolver& solver,
+              std::vector<double> speeds, AnalysisResult& result) {
+  io::CsvTable ods({"speed_rpm", "mesh", "order", "frequency_hz", "dof", "unit", "real", "imag"});
+  std::sort(speeds.begin(), speeds.end());
+  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  for (double speed : speeds) {
+    if (speed == 0.0) continue;
+    const TrainSteadyState s = solver.solve(speed);
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      const double f_m = model.meshes()[m].frequency_ratio * std::abs(speed);
+      for (int l = 1; l <= kOdsOrders; ++l) {
+        const int h = l * s.mesh_multiple[m];
+        if (h > s.harmonics) break;
+        for (int i = 0; i < model.dofCount(); ++i) {
+          const std::complex<double> q = 2.0 * s.harmonic(i, h);
+          const std::string name = model.dofName(i);
+          const bool angle = name.find("theta") != std::string::npos;
+          ods.addRow({speed / kRpm, model.meshes()[m].name, l, l * f_m, name, angle ? "rad" : "m",
+                      q.real(), q.imag()});
+        }
+      }
+    }
+  }
+  result.addTable("forced_ods.csv", ods);
 }
 
 }  // namespace
@@ -162,6 +198,11 @@ void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
     table.addRow(row);
   }
   result.addTable("forced_response.csv", table);
+  if (!torus) {
+    std::vector<double> ods_speeds = worst_speed;
+    ods_speeds.push_back(model.inputSpeed());
+    writeOds(model, *common, ods_speeds, result);
+  }
   result.addTable("forced_mesh_orders.csv", orders_table);
   if (torus) result.addTable("forced_tones.csv", tones_table);
   Json peaks = Json::object();

@@ -2,7 +2,8 @@
 opened in headless Chromium. A reader must see every figure drawn and the console must stay
 silent; screenshots are kept under the build tree (BUILD/test-results/report/)."""
 
-import os
+import base64
+import gzip
 import pathlib
 import re
 import subprocess
@@ -13,10 +14,7 @@ import pytest
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 import browser  # noqa: E402
 
-CLI = os.environ.get("GEARDYN_CLI", "build/bin/geardyn")
-SOURCE = pathlib.Path(os.environ.get("GEARDYN_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
-BUILD = pathlib.Path(os.environ.get("GEARDYN_BUILD_DIR", pathlib.Path(CLI).resolve().parents[1]))
-OUT = BUILD / "test-results" / "report"
+CLI, SOURCE, OUT = browser.CLI, browser.SOURCE, browser.OUT
 
 # example stem -> the figures its report must draw (by heading), one per command kind the
 # report knows; all run in well under a second each.
@@ -65,13 +63,7 @@ def reports():
 
 @pytest.fixture(scope="module")
 def chromium():
-    why = browser.missing()
-    if why and os.environ.get("GEARDYN_SKIP_BROWSER_TESTS") == "1":
-        pytest.skip(why)
-    assert why is None, why + " (or set GEARDYN_SKIP_BROWSER_TESTS=1)"
-    session = browser.Browser()
-    yield session
-    session.close()
+    yield from browser.session()
 
 
 # Opened in the browser (each page parses 5 MB of plotly.js: 1-3 s on a loaded 2-core machine),
@@ -127,7 +119,9 @@ def test_report_is_self_contained(reports):
     text = reports["hbm_saletti2025_100Nm"].read_text()
     assert not re.search(r"<script[^>]+src=", text), "a script is loaded from elsewhere"
     assert not re.search(r"<link[^>]+href=\"https?:", text)
-    assert "plotly.js v" in text[:20_000]  # the library, inline
+    packed = re.search(r'<script type="application/gzip-base64" id="gd-lib-plotly">([^<]*)</script>', text)
+    assert packed, "plotly.js is not embedded"
+    assert "plotly.js v" in gzip.decompress(base64.b64decode(packed.group(1)))[:2_000].decode()
     assert "Resolved configuration" in text and "contact_stiffness" in text
     assert "Headline numbers" in text and "natural_frequency" in text
 
