@@ -20,6 +20,7 @@
 #include <string_view>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/gear_train_session.h"
 #include "geardyn/analysis/run_budget.h"
 #include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/fe_rotor_config.h"
@@ -372,15 +373,29 @@ config::Config TrainInputs::combined() const {
 
 AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& context) {
   const auto start = Clock::now();
+  std::vector<std::string> warnings;
+  // A train whose dense matrices would not fit is refused before they are allocated.
+  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings),
+                             memoryLimitBytes());
+  AnalysisResult result =
+      trainAnalysis(loaded, model, loaded.analysis.stringList("analysis.run"), context, warnings);
+  result.summary.results["wall_time_s"] = secondsSince(start);
+  result.wall_time_s = secondsSince(start);
+  return result;
+}
+
+AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& model,
+                             const std::vector<std::string>& analyses,
+                             const AnalysisContext& context,
+                             const std::vector<std::string>& spec_warnings) {
+  const auto start = Clock::now();
   AnalysisResult result("train", loaded.analysis, context);
   io::RunSummary& summary = result.summary;
   if (loaded.gearbox_source != loaded.analysis_source) {
     summary.config["gearbox_description"] = loaded.gearbox.resolved();
   }
   std::vector<std::string> warnings = loaded.warnings;
-  // A train whose dense matrices would not fit is refused before they are allocated.
-  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings),
-                             memoryLimitBytes());
+  warnings.insert(warnings.end(), spec_warnings.begin(), spec_warnings.end());
   warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
   summary.warnings = warnings;
   std::string text = fmt::format(
@@ -409,7 +424,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   int code = 0;
   std::string status = "ok";
   std::optional<TrainTimeResponse> time_record;  // `time`'s Newmark run, reused by `stats`
-  for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
+  for (const std::string& analysis : analyses) {
     flush();
     if (analysis == "static") runStatic(model, result, summary, text);
     if (analysis == "modal") runModal(linear, loaded.analysis, result, summary, text);
