@@ -189,7 +189,7 @@ bool GearTrainSession::setParameter(const std::string& key, const std::string& v
     checkRange(*spec, key, *number, value);
     *slot = std::make_shared<ConstantMeshStiffness>("constant", *number, (*slot)->contactRatio());
   }
-  model_.emplace(std::move(train), memoryLimitBytes());
+  model_.emplace(model_->withParameters(std::move(train)));
   return true;
 }
 

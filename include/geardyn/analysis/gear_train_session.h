@@ -10,10 +10,10 @@
 /// depends on it:
 /// - `meshes.<m>.stiffness_value` and `planetary.<s>.sun_planet.stiffness_value` /
 ///   `.ring_planet.stiffness_value` of a constant mesh stiffness, `operating_point.speed_rpm`
-///   and `operating_point.torque`: the value is range-checked against the gearbox schema and
-///   set in the built description (GearTrainSpec), and the train is assembled from it — the
-///   configuration is not read again and the other meshes' stiffness models (a potential-energy
-///   model takes milliseconds to build) are kept;
+///   and `operating_point.torque`: the value is range-checked against the gearbox schema, set
+///   in the built description (GearTrainSpec) and GearTrainModel::withParameters reassembles
+///   only what depends on it (rank-one updates of Σ k̄ v vᵀ and C, F₀; the train built anew
+///   from the description when a mesh changes flank) — the configuration is not read again;
 /// - a key of the analysis options (`modal.speed_rpm`, `forced.points`, …): the options are
 ///   read again, the model is kept;
 /// - any other key: the inputs are read again with every key set so far and the train is
