@@ -3,15 +3,22 @@
 /// timed in C++ over `repeat` runs after one warm-up: the fastest run (the least disturbed by
 /// other processes on a shared machine) and the median, as one JSON line.
 ///
-/// Usage: geardyn_analysis_bench COMMAND FILE REPEAT (COMMAND: any of analysisNames(), train too)
+/// Usage: geardyn_analysis_bench COMMAND FILE REPEAT [KEY] (COMMAND: any of analysisNames(),
+/// train too). For `train` the line also holds, on a GearTrainSession built once from FILE
+/// (Python's geardyn.GearTrain), the fastest and median modal analysis of the built model
+/// (`session_modes_s`) and, with KEY (a constant mesh's stiffness_value, or the operating
+/// speed_rpm or torque), of setting KEY alternately to 1.0 and 1.1 times a value and computing
+/// the modes again (`session_set_modes_s`).
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/gear_train_session.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
 
@@ -30,11 +37,40 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
   return std::chrono::duration<double>(b - a).count();
 }
 
+/// The GearTrainSession timings of a `train` file (see the file comment), appended to the line.
+void sessionTimings(const std::string& file, int repeat, const std::string& key) {
+  using Clock = std::chrono::steady_clock;
+  auto session = geardyn::analysis::GearTrainSession::fromFile(file);
+  const int calls = 50 * repeat;  // a modal analysis of a small train takes microseconds
+  std::vector<double> modes_s;
+  double checksum = 0.0;
+  for (int i = 0; i <= calls; ++i) {
+    const auto t0 = Clock::now();
+    checksum += session.modes().back().frequency;
+    if (i > 0) modes_s.push_back(seconds(t0, Clock::now()));
+  }
+  std::printf(", \"session_modes_s\": %.9g, \"session_modes_median_s\": %.9g", fastest(modes_s),
+              median(modes_s));
+  if (key.empty()) return;
+  const auto& analysis = session.inputs().gearbox;
+  const double value = analysis.real(key);
+  std::vector<double> set_s;
+  for (int i = 0; i <= calls; ++i) {
+    const auto t0 = Clock::now();
+    session.set(key, std::to_string(i % 2 ? 1.1 * value : value));
+    checksum += session.modes().back().frequency;
+    if (i > 0) set_s.push_back(seconds(t0, Clock::now()));
+  }
+  std::printf(", \"session_set_modes_s\": %.9g, \"session_set_modes_median_s\": %.9g",
+              fastest(set_s), median(set_s));
+  if (!(checksum > 0.0)) std::fprintf(stderr, "no modes\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: %s COMMAND FILE REPEAT\n", argv[0]);
+  if (argc != 4 && argc != 5) {
+    std::fprintf(stderr, "usage: %s COMMAND FILE REPEAT [KEY]\n", argv[0]);
     return 2;
   }
   const std::string command = argv[1], file = argv[2];
@@ -45,11 +81,18 @@ int main(int argc, char** argv) {
     const auto schema = geardyn::analysis::analysisSchema(
         command, geardyn::config::peekConfigString(file, "model.type"));
     const auto t1 = std::chrono::steady_clock::now();
-    // `train` reads its analysis file and the gearbox file it names (one configuration).
-    const auto config = command == "train" ? geardyn::analysis::loadAnalysisConfig(command, file)
-                                           : geardyn::config::loadConfigFile(file, schema);
+    // `train` reads its analysis file and the gearbox file it names (TrainInputs), as
+    // geardyn.run('train', file) does; the others one configuration.
+    std::optional<geardyn::analysis::TrainInputs> train;
+    std::optional<geardyn::config::Config> config;
+    if (command == "train") {
+      train = geardyn::analysis::loadTrainInputs(file, {});
+    } else {
+      config = geardyn::config::loadConfigFile(file, schema);
+    }
     const auto t2 = std::chrono::steady_clock::now();
-    const auto result = geardyn::analysis::runAnalysis(command, config, {});
+    const auto result = train ? geardyn::analysis::trainAnalysis(*train, {})
+                              : geardyn::analysis::runAnalysis(command, *config, {});
     const auto t3 = std::chrono::steady_clock::now();
     if (i == 0) continue;  // warm-up
     schema_s.push_back(seconds(t0, t1));
@@ -59,8 +102,10 @@ int main(int argc, char** argv) {
   }
   std::printf(
       "{\"command\": \"%s\", \"schema_s\": %.9g, \"load_s\": %.9g, \"analysis_s\": %.9g, "
-      "\"total_s\": %.9g, \"total_median_s\": %.9g}\n",
+      "\"total_s\": %.9g, \"total_median_s\": %.9g",
       command.c_str(), fastest(schema_s), fastest(load_s), fastest(analysis_s), fastest(total_s),
       median(total_s));
+  if (command == "train") sessionTimings(file, repeat, argc == 5 ? argv[4] : "");
+  std::printf("}\n");
   return 0;
 }

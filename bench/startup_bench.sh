@@ -47,6 +47,8 @@ measure "geardyn hbm (short sweep)" "$cli" hbm \
   "$here/examples/hbm_backlash_kahraman_singh.toml" --out "$work/hbm" "${quiet[@]}" \
   --set sweep.start=0.4 --set sweep.stop=0.5 --set sweep.direction=up \
   --set 'sweep.newmark_frequencies=[]'
+measure "geardyn train (Lin & Parker modal)" "$cli" train \
+  "$here/examples/train_lin_parker1999.toml" --out "$work/train" "${quiet[@]}"
 
 echo
 echo "shared libraries mapped:"

@@ -18,6 +18,7 @@ void bindRotor(py::module_& m);
 void bindStiffness(py::module_& m);
 void bindFeRotor(py::module_& m);
 void bindAnalysis(py::module_& m);
+void bindTrain(py::module_& m);
 }  // namespace geardyn::python
 
 PYBIND11_MODULE(_geardyn, m) {
@@ -67,4 +68,5 @@ PYBIND11_MODULE(_geardyn, m) {
   geardyn::python::bindStiffness(m);
   geardyn::python::bindFeRotor(m);
   geardyn::python::bindAnalysis(m);
+  geardyn::python::bindTrain(m);
 }

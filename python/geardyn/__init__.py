@@ -49,6 +49,7 @@ from . import _errors, _geardyn  # noqa: E402
 from ._cli import FolderResult, to_toml  # noqa: F401,E402
 from .analysis import COMMANDS, run, sweep  # noqa: F401,E402
 from .results import Result  # noqa: F401,E402
+from .train import GearTrain  # noqa: F401,E402
 
 # Keyword-argument errors in Python terms (missing, unknown with a did-you-mean).
 for _name in dir(_geardyn):

@@ -29,6 +29,7 @@ import warnings
 from . import _geardyn
 from ._cli import _toml_value, run_cli, to_toml
 from .results import Result
+from .train import GearTrain
 
 __all__ = ["run", "sweep", "COMMANDS"]
 
@@ -119,7 +120,8 @@ def run(command, config=None, *, out=None, overrides=None, threads=None, check=T
         progress=True, resume=False, timeout=None, overwrite=False, **sections):
     """Runs analysis ``command`` and returns a geardyn.Result (sweep: FolderResult).
 
-    - ``config``: a TOML file (str or path), a dict of sections, or None.
+    - ``config``: a TOML file (str or path), a dict of sections, or None; for ``train`` also a
+      geardyn.GearTrain (its built model, analysed without reading the gearbox again).
     - ``**sections``: sections added to (or merged into) ``config``, e.g.
       ``pinion=geardyn.Gear(...)``, ``excitation={"speed_rpm": 1500}``.
     - ``overrides``: {"section.key": value} or ["section.key=value"] (as the CLI's --set).
@@ -128,6 +130,11 @@ def run(command, config=None, *, out=None, overrides=None, threads=None, check=T
     - ``progress``: False for no progress display.
     """
     command = _command(command)
+    # A GearTrain built before: `train` on its model, without reading or building it again.
+    if command == "train" and isinstance(config, GearTrain):
+        if sections or overrides:
+            raise TypeError("run('train', GearTrain): change keys with GearTrain.set(key, value)")
+        return _finish(config.run(), command, out, plots, check)
     # In-process: every analysis; through the executable: `sweep` (a study of many runs).
     if command == "sweep":
         if sections:
@@ -162,9 +169,17 @@ def run(command, config=None, *, out=None, overrides=None, threads=None, check=T
     finally:
         if display is not None:
             display.close()
-    result = Result(native)
-    for warning in _geardyn.grouped_warnings(result.warnings):  # one line per kind, as the CLI
-        warn_once(warning, 2)
+    return _finish(Result(native), command, out, plots, check, shown)
+
+
+def _finish(result, command, out, plots, check, shown=None):
+    """Warnings (one line per kind, as the CLI, each text once: ``shown`` holds those raised
+    while loading), the result folder when ``out``, RuntimeError on a numerical failure."""
+    shown = set() if shown is None else shown
+    for warning in _geardyn.grouped_warnings(result.warnings):
+        if warning not in shown:
+            shown.add(warning)
+            warnings.warn(warning, stacklevel=3)
     if out is not None:
         if plots is None:
             plots = bool((result.summary.get("config", {}).get("output") or {}).get("plots"))

@@ -20,6 +20,7 @@
 #include <string_view>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/gear_train_session.h"
 #include "geardyn/analysis/run_budget.h"
 #include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/fe_rotor_config.h"
@@ -287,6 +288,15 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
                       d.critical_speeds.size());
 }
 
+/// The schemas of `train`, inline gearbox or not, declared once: declaring one takes about as
+/// long as a small train's whole analysis (0.4 ms), and parseConfig only reads it (no mutable
+/// state), so every run and thread shares them.
+const config::ConfigSchema& trainSchemaOnce(bool inline_gearbox) {
+  static const config::ConfigSchema with_gearbox = config::trainSchema(true);
+  static const config::ConfigSchema without_gearbox = config::trainSchema(false);
+  return inline_gearbox ? with_gearbox : without_gearbox;
+}
+
 /// The gearbox file an analysis file names: its gearbox.file, or the last --set of it (a sweep
 /// over gearbox files); "" when the gearbox is inline.
 std::string gearboxFileOf(std::string_view text, const std::string& source,
@@ -331,7 +341,7 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
                              const std::vector<std::string>& overrides) {
   const std::string ref = gearboxFileOf(text, source, overrides);
   if (ref.empty()) {
-    config::Config both = config::parseConfig(text, source, config::trainSchema(true), overrides);
+    config::Config both = config::parseConfig(text, source, trainSchemaOnce(true), overrides);
     if (both.has("gearbox.load_case"))
       throw InputError("gearbox.load_case", std::to_string(both.integer("gearbox.load_case")),
                        "only with a REXS gearbox file named by gearbox.file");
@@ -339,7 +349,7 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
   }
   // Every override names a key of the analysis file or of the gearbox (before they are split,
   // so that neither file's schema alone answers "unknown key; the keys in [...] are: (none)").
-  config::checkOverrideKeys(config::trainSchema(true), overrides);
+  config::checkOverrideKeys(trainSchemaOnce(true), overrides);
   std::vector<std::string> analysis_overrides, gearbox_overrides;
   const auto& sections = config::gearboxSectionNames();
   for (const auto& o : overrides) {
@@ -355,7 +365,7 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
   }
   const std::filesystem::path path = base_dir / ref;
   config::Config analysis =
-      config::parseConfig(text, source, config::trainSchema(false), analysis_overrides);
+      config::parseConfig(text, source, trainSchemaOnce(false), analysis_overrides);
   std::optional<int> load_case;
   if (analysis.has("gearbox.load_case"))
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
@@ -381,15 +391,29 @@ config::Config TrainInputs::combined() const {
 
 AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& context) {
   const auto start = Clock::now();
+  std::vector<std::string> warnings;
+  // A train whose dense matrices would not fit is refused before they are allocated.
+  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings),
+                             memoryLimitBytes());
+  AnalysisResult result =
+      trainAnalysis(loaded, model, loaded.analysis.stringList("analysis.run"), context, warnings);
+  result.summary.results["wall_time_s"] = secondsSince(start);
+  result.wall_time_s = secondsSince(start);
+  return result;
+}
+
+AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& model,
+                             const std::vector<std::string>& analyses,
+                             const AnalysisContext& context,
+                             const std::vector<std::string>& spec_warnings) {
+  const auto start = Clock::now();
   AnalysisResult result("train", loaded.analysis, context);
   io::RunSummary& summary = result.summary;
   if (loaded.gearbox_source != loaded.analysis_source) {
     summary.config["gearbox_description"] = loaded.gearbox.resolved();
   }
   std::vector<std::string> warnings = loaded.warnings;
-  // A train whose dense matrices would not fit is refused before they are allocated.
-  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings),
-                             memoryLimitBytes());
+  warnings.insert(warnings.end(), spec_warnings.begin(), spec_warnings.end());
   warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
   summary.warnings = warnings;
   std::string text = fmt::format(
@@ -420,7 +444,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   int code = 0;
   std::string status = "ok";
   std::optional<TrainTimeResponse> time_record;  // `time`'s Newmark run, reused by `stats`
-  for (const std::string& analysis : loaded.analysis.stringList("analysis.run")) {
+  for (const std::string& analysis : analyses) {
     flush();
     if (analysis == "static") runStatic(model, result, summary, text);
     if (analysis == "modal") runModal(linear, loaded.analysis, result, summary, text);

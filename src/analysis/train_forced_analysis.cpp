@@ -115,8 +115,15 @@ void writeOds(const GearTrainModel& model, const TrainSteadySolver& solver,
 void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
                     AnalysisResult& result, io::RunSummary& summary, std::string& text,
                     const AnalysisContext& context) {
+  runTrainForcedAt(model, analysis,
+                   config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1),
+                   result, summary, text, context);
+}
+
+void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysis,
+                      const std::vector<double>& speeds, AnalysisResult& result,
+                      io::RunSummary& summary, std::string& text, const AnalysisContext& context) {
   const auto start = Clock::now();
-  const auto speeds = config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1);
   const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
   const TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
   // Base harmonics the common period needs: L × the largest multiple of its base.

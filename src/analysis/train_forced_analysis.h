@@ -5,6 +5,7 @@
 /// of the meshes or on the torus of their phases (forced.method).
 
 #include <string>
+#include <vector>
 
 #include "geardyn/analysis/analysis_result.h"
 #include "geardyn/config/config.h"
@@ -20,5 +21,10 @@ namespace geardyn::analysis::detail {
 void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
                     AnalysisResult& result, io::RunSummary& summary, std::string& text,
                     const AnalysisContext& context);
+/// As runTrainForced at the input speeds `speeds` [rad/s] instead of forced.speed_*_rpm and
+/// forced.points (GearTrainSession::forced).
+void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysis,
+                      const std::vector<double>& speeds, AnalysisResult& result,
+                      io::RunSummary& summary, std::string& text, const AnalysisContext& context);
 
 }  // namespace geardyn::analysis::detail

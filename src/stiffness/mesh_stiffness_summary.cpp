@@ -3,18 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "geardyn/error.h"
+#include "geardyn/stiffness/api_stiffness.h"
 
 namespace geardyn {
 
 MeshStiffnessSummary summarizeMeshStiffness(const MeshStiffness& k, int order, int samples) {
   if (order < 0) throw InputError("fourier_order", std::to_string(order), "must be >= 0");
   if (samples < 2) throw InputError("samples", std::to_string(samples), "must be >= 2");
+  MeshStiffnessSummary s;
+  if (dynamic_cast<const ConstantMeshStiffness*>(&k) != nullptr) {
+    // A constant k: its summary exactly, without quadrature (a train built many times with
+    // changed constant stiffnesses summarises every mesh each time).
+    s.mean = s.min = s.max = k.stiffness(0.0);
+    s.cosine = s.sine = s.amplitude = s.phase = std::vector<double>(order, 0.0);
+    return s;
+  }
   const std::vector<double> breaks = k.discontinuities();
   const auto value = [&](double phase) { return k.stiffness(phase); };
 
-  MeshStiffnessSummary s;
   s.mean = integrateOverPeriod(value, breaks);
   const double variance = integrateOverPeriod(
       [&](double phase) {

@@ -336,7 +336,6 @@ void GearTrainModel::assemble() {
   const bool planar = spec_.dofs == TrainDofs::kPlanar;
   M_ = Eigen::MatrixXd::Zero(n, n);
   K_ = M_, C_ = M_, G_ = M_, Komega_ = M_, Kmesh_ = M_;
-  F0_ = Eigen::VectorXd::Zero(n);
   const bool full = spec_.dofs == TrainDofs::kFull;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const TrainBody& body = bodies_[b];
@@ -386,6 +385,12 @@ void GearTrainModel::assemble() {
     C_ += m.damping * v * v.transpose();
   }
   C_ += spec_.mass_proportional_damping * M_ + spec_.stiffness_proportional_damping * (K_ + Kmesh_);
+  assembleLoads();
+}
+
+void GearTrainModel::assembleLoads() {
+  const int n = dof_count_;
+  F0_ = Eigen::VectorXd::Zero(n);
   detail::applyOperatingLoads(*this, spec_, F0_, output_torque_);
   if (spec_.gravity != 0.0) {
     if (!std::isfinite(spec_.gravity) || spec_.dofs == TrainDofs::kTorsional) {

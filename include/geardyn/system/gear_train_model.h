@@ -172,6 +172,16 @@ class GearTrainModel {
   /// This train with every rolling bearing replaced by its tangent stiffness at the state q
   /// (TrainBearingSpec::stiffness_matrix): the linear model about a static deflection.
   GearTrainModel linearisedAt(const Eigen::Ref<const Eigen::VectorXd>& q) const;
+  /// This train with `spec` in place of spec(), where `spec` differs from it only in mesh-stiffness
+  /// models (TrainMeshSpec::stiffness, PlanetaryStageSpec::sun_planet_stiffness and
+  /// ring_planet_stiffness: a new object for a changed mesh) and the operating point's input speed
+  /// and torque — the parameters a design loop varies. Only what depends on them is reassembled
+  /// (train_model_updates.cpp): a changed mesh's k̄, its dashpot when it follows from a damping
+  /// ratio, Σ k̄ v vᵀ and C by rank-one updates; F₀ for a new operating point. A change that
+  /// moves a mesh to its other flank or loads or unloads one (the torque's sign, the load path
+  /// of a statically indeterminate train) builds the train anew from `spec`. Either way the
+  /// result equals GearTrainModel(spec) to round-off.
+  GearTrainModel withParameters(GearTrainSpec spec) const;
   int bodyIndex(const std::string& name) const;  ///< −1 when absent
   /// "input.y", "stage1.planet2.theta", … for DOF i.
   std::string dofName(int i) const;
@@ -254,6 +264,8 @@ class GearTrainModel {
   void addRollingBearing(const TrainBearingSpec& bearing, const std::string& key, int body,
                          int other, double dx, double other_dx);
   void assemble();
+  /// F₀ from the operating point, pin position errors and gravity (after M is assembled).
+  void assembleLoads();
 
   GearTrainSpec spec_;
   TrainKinematics kinematics_;
