@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geardyn/config/detail/gearbox_bearing.h"
+#include "geardyn/config/detail/gearbox_excitation.h"
 #include "geardyn/config/detail/gearbox_mesh_model.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
@@ -20,8 +21,10 @@
 namespace geardyn::config {
 namespace {
 
+using detail::addGearboxExcitationSections;
 using detail::addMeshModelKeys;
 using detail::contactFromConfig;
+using detail::readGearboxExcitations;
 using detail::stiffnessFromConfig;
 using detail::teFromConfig;
 
@@ -32,9 +35,19 @@ using Json = nlohmann::ordered_json;
 }  // namespace
 
 const std::vector<std::string>& gearboxSectionNames() {
-  static const std::vector<std::string> names = {
-      "gearbox",   "shafts", "gears",     "meshes",          "bearings",
-      "couplings", "disks",  "planetary", "operating_point", "mesh_stiffness"};
+  static const std::vector<std::string> names = {"gearbox",
+                                                 "shafts",
+                                                 "gears",
+                                                 "meshes",
+                                                 "bearings",
+                                                 "couplings",
+                                                 "disks",
+                                                 "planetary",
+                                                 "operating_point",
+                                                 "mesh_stiffness",
+                                                 "unbalances",
+                                                 "runouts",
+                                                 "bearing_excitations"};
   return names;
 }
 
@@ -239,7 +252,9 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .defaultValue(0.0)
       .doc("about a transverse axis");
 
-  schema.collection("couplings", "Couplings between two coaxial shafts (one speed).");
+  addGearboxExcitationSections(schema);
+  schema.collection("couplings",
+                    "Couplings between two coaxial shafts (one speed, or a kinematic ratio).");
   schema.section("couplings.*", "One coupling.");
   schema.stringList("couplings.*.shafts").required().doc("the two shafts");
   schema.real("couplings.*.k_torsion")
@@ -262,6 +277,12 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .min(0.0)
       .defaultValue(0.0)
       .doc("lateral damping");
+  schema.real("couplings.*.ratio")
+      .defaultValue(1.0)
+      .doc(
+          "speed of the second shaft per speed of the first (signed, != 0): 1 for a coupling; "
+          "another value is a gear ratio whose mesh the model leaves out (the torsional spring "
+          "acts on ratio θ_a − θ_b)");
 
   schema.collection("planetary",
                     "Planetary (epicyclic) stages: sun and ring are gears on "
@@ -511,8 +532,9 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     }
     spec.couplings.push_back({name, shafts[0], shafts[1], config.real(p + "k_torsion"),
                               config.real(p + "c_torsion"), config.real(p + "k_lateral"),
-                              config.real(p + "c_lateral")});
+                              config.real(p + "c_lateral"), config.real(p + "ratio")});
   }
+  readGearboxExcitations(config, spec);
   for (const std::string& name : config.names("planetary")) {
     const std::string p = "planetary." + name + ".";
     PlanetaryStageSpec st;

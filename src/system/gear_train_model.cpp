@@ -404,6 +404,7 @@ void GearTrainModel::assemble() {
     }
     F0_ -= spec_.gravity * (M_ * ez);
   }
+  excitations_ = buildTrainExcitation(*this, F0_);
 }
 
 int GearTrainModel::rotatingFrame(int body) const {
