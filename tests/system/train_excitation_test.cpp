@@ -189,48 +189,45 @@ TEST(TrainExcitation, RefusedWhereTheyDoNotApply) {
   }
 }
 
-/// (x₁, y₁, x₂, y₂) of the 4-DOF model ↔ (pinion.y, pinion.z, gear.y, gear.z) of the train.
-std::array<int, 4> raoDofs(const GearTrainModel& train) {
-  const int p = train.translationDof(train.bodyIndex("pinion"));
-  const int g = train.translationDof(train.bodyIndex("gear"));
-  return {p, p + 1, g, g + 1};
-}
+/// Table 4.1 as the 4-DOF model and as the train of the gearbox it translates to, with the
+/// train's DOFs of (x₁, y₁, x₂, y₂): (pinion.y, pinion.z, gear.y, gear.z).
+struct RaoTable41 {
+  LateralRotorModel model{raoTable41Spec()};
+  std::vector<std::string> warnings;
+  GearTrainModel train{config::lateralRotorGearTrain(raoTable41Spec(), "Table 4.1", warnings)};
+  int p = train.translationDof(train.bodyIndex("pinion"));
+  int g = train.translationDof(train.bodyIndex("gear"));
+  std::array<int, 4> map{p, p + 1, g, g + 1};
+};
 
 TEST(TrainExcitation, RaoRotorAsAGearboxHasTheFourDofForce) {
-  const LateralRotorSpec rotor = raoTable41Spec();
-  const LateralRotorModel model(rotor);
-  std::vector<std::string> warnings;
-  const GearTrainModel train(config::lateralRotorGearTrain(rotor, "Table 4.1", warnings));
-  const auto map = raoDofs(train);
-  const double speed = train.inputSpeed();
-  EXPECT_NEAR(speed, -model.pinionOmega(), 1e-15 * model.pinionOmega());
-  Eigen::VectorXd f(train.dofCount());
+  const RaoTable41 rao;
+  const double speed = rao.train.inputSpeed();
+  EXPECT_NEAR(speed, -rao.model.pinionOmega(), 1e-15 * rao.model.pinionOmega());
+  Eigen::VectorXd f(rao.train.dofCount());
   for (double t : {0.0, 0.0123, 0.377, 1.9, 14.2}) {
-    f = train.staticLoad();
-    addExcitationForce(train.excitations(), std::abs(speed) * t, speed, 0.0, nullptr, f);
-    const Eigen::Vector4d expected = model.force(t);
+    f = rao.train.staticLoad();
+    addExcitationForce(rao.train.excitations(), std::abs(speed) * t, speed, 0.0, nullptr, f);
+    const Eigen::Vector4d expected = rao.model.force(t);
     const double scale = expected.cwiseAbs().maxCoeff();
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(f(map[i]), expected(i), 1e-12 * scale) << t;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(f(rao.map[i]), expected(i), 1e-12 * scale) << t;
   }
 }
 
 TEST(TrainExcitation, RaoRotorAsAGearboxHasTheFourDofSteadyState) {
-  const LateralRotorSpec rotor = raoTable41Spec();
-  const LateralRotorModel model(rotor);
-  std::vector<std::string> warnings;
-  const GearTrainModel train(config::lateralRotorGearTrain(rotor, "Table 4.1", warnings));
-  const auto map = raoDofs(train);
-  const TrainSteadyState s = solveTrainSteadyState(train, train.inputSpeed());
-  EXPECT_NEAR(1.0 / s.base_frequency, model.commonPeriod(), 1e-12 * model.commonPeriod());
+  const RaoTable41 rao;
+  const double period = rao.model.commonPeriod();
+  const TrainSteadyState s = solveTrainSteadyState(rao.train, rao.train.inputSpeed());
+  EXPECT_NEAR(1.0 / s.base_frequency, period, 1e-12 * period);
   std::vector<double> t;
-  for (int k = 0; k < 64; ++k) t.push_back(model.commonPeriod() * k / 64.0 + 1e-4 * k);
-  const auto exact = superposeWhirlResponse(solveRotorFrequencyResponse(model), t);
+  for (int k = 0; k < 64; ++k) t.push_back(period * k / 64.0 + 1e-4 * k);
+  const auto exact = superposeWhirlResponse(solveRotorFrequencyResponse(rao.model), t);
   const Eigen::MatrixXd q = s.displacement(
       Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size())));
   double scale = 0.0;
   for (const auto& e : exact) scale = std::max(scale, e.cwiseAbs().maxCoeff());
   for (std::size_t k = 0; k < t.size(); ++k)
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(q(k, map[i]), exact[k](i), 1e-10 * scale) << t[k];
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(q(k, rao.map[i]), exact[k](i), 1e-10 * scale) << t[k];
 }
 
 }  // namespace
