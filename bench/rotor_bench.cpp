@@ -5,9 +5,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include "geardyn/config/rotor_gearbox.h"
 #include "geardyn/identify/dte_identification.h"
 #include "geardyn/signal/full_spectrum.h"
 #include "geardyn/solvers/rotor_response.h"
+#include "geardyn/solvers/train_response.h"
 
 namespace {
 
@@ -29,6 +31,19 @@ void BM_RotorFrequencyDomain(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(geardyn::solveRotorFrequencyResponse(model));
 }
 BENCHMARK(BM_RotorFrequencyDomain)->Unit(benchmark::kMicrosecond);
+
+/// The same steady state from the gearbox the rotor is (config/rotor_gearbox.h): the train's
+/// harmonic balance over the common period (2800 harmonics of f_p/35, 6 DOFs), what
+/// `geardyn rotor` now reports as its frequency domain.
+void BM_RotorGearboxSteadyState(benchmark::State& state) {
+  std::vector<std::string> warnings;
+  const geardyn::GearTrainModel train(
+      geardyn::config::lateralRotorGearTrain(geardyn::raoTable41Spec(), "bench", warnings));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(geardyn::solveTrainSteadyState(train, train.inputSpeed()));
+  }
+}
+BENCHMARK(BM_RotorGearboxSteadyState)->Unit(benchmark::kMillisecond);
 
 void BM_RotorForceEvaluation(benchmark::State& state) {
   const geardyn::LateralRotorModel model(geardyn::raoTable41Spec());

@@ -72,7 +72,7 @@ int printGearbox(const geardyn::cli::Command& command, const CommandOptions& opt
   const auto refuse = [&] {
     std::cerr << "geardyn " << command.name << ": error: --print-gearbox: `" << command.name
               << "` has no translation into a gearbox description for this file (the gear-pair "
-                 "commands simulate, hbm and stats and finite-element rotor files have one)\n";
+                 "commands simulate, hbm and stats and rotor files have one)\n";
     return geardyn::cli::kExitBadInput;
   };
   if (command.run_file) return refuse();
@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
     if (command.has_gearbox) {
       sub->add_flag("--print-gearbox", o.print_gearbox,
                     "write the gearbox description (TOML) the file translates into to stdout and "
-                    "exit without analysing (simulate, hbm, stats, finite-element rotor files)");
+                    "exit without analysing (simulate, hbm, stats, rotor files)");
     }
     if (!command.example.empty()) sub->footer("Example:\n  geardyn " + command.example);
     if (command.resumable) {

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geardyn/config/config_schema.h"
+#include "geardyn/config/detail/toml_text.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/geometry_config.h"
@@ -19,18 +20,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// A double that reads back exactly (fmt's shortest round-trip form), as a TOML float.
-std::string real(double v) {
-  std::string s = fmt::format("{}", v);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-  return s;
-}
-
-std::string reals(const std::vector<double>& v) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + real(v[i]);
-  return out + "]";
-}
+using detail::tomlReal;
+using detail::tomlReals;
 
 std::string quoted(const std::string& s) {
   std::string out = "\"";
@@ -46,7 +37,7 @@ std::string value(const Json& j) {
   if (j.is_string()) return quoted(j.get<std::string>());
   if (j.is_boolean()) return j.get<bool>() ? "true" : "false";
   if (j.is_number_integer()) return fmt::format("{}", j.get<long long>());
-  if (j.is_number()) return real(j.get<double>());
+  if (j.is_number()) return tomlReal(j.get<double>());
   if (j.is_array()) {
     std::string out = "[";
     for (std::size_t i = 0; i < j.size(); ++i) out += (i ? ", " : "") + value(j[i]);
@@ -105,47 +96,47 @@ std::string gearboxText(const Config& config, const FeGearedRotorSpec& fe,
   const std::string title = config.string("title");
   out += fmt::format("name = {}\n", quoted(title.empty() ? "fe_geared_rotor" : title));
   out += "dofs = \"full\"\n";
-  out += fmt::format("gravity = {}   # m/s^2\n", real(train.gravity));
+  out += fmt::format("gravity = {}   # m/s^2\n", tomlReal(train.gravity));
   out += fmt::format("mass_proportional_damping = {}   # 1/s\n",
-                     real(train.mass_proportional_damping));
+                     tomlReal(train.mass_proportional_damping));
   out += fmt::format("stiffness_proportional_damping = {}   # s (the shafts' own below)\n",
-                     real(train.stiffness_proportional_damping));
+                     tomlReal(train.stiffness_proportional_damping));
   for (const TrainShaftSpec& s : train.shafts) {
     out += fmt::format("\n[shafts.{}]\n", s.name);
     out += fmt::format("section_lengths = {}   # m, one section per FE element\n",
-                       reals(s.section_lengths));
-    out += fmt::format("outer_diameters = {}   # m\n", reals(s.outer_diameters));
-    out += fmt::format("inner_diameters = {}   # m\n", reals(s.inner_diameters));
-    out += fmt::format("density = {}   # kg/m^3\n", real(s.density));
+                       tomlReals(s.section_lengths));
+    out += fmt::format("outer_diameters = {}   # m\n", tomlReals(s.outer_diameters));
+    out += fmt::format("inner_diameters = {}   # m\n", tomlReals(s.inner_diameters));
+    out += fmt::format("density = {}   # kg/m^3\n", tomlReal(s.density));
     out += "flexible = true\n";
-    out += fmt::format("youngs_modulus = {}   # Pa\n", real(s.youngs_modulus));
-    out += fmt::format("poisson_ratio = {}   # E / 2G - 1\n", real(s.poisson_ratio));
+    out += fmt::format("youngs_modulus = {}   # Pa\n", tomlReal(s.youngs_modulus));
+    out += fmt::format("poisson_ratio = {}   # E / 2G - 1\n", tomlReal(s.poisson_ratio));
     out +=
         fmt::format("stiffness_proportional_damping = {}   # s, damping.stiffness_proportional\n",
-                    real(s.stiffness_proportional_damping));
+                    tomlReal(s.stiffness_proportional_damping));
   }
   const char* members[2] = {"pinion", "gear"};
   for (int g = 0; g < 2; ++g) {
     const TrainGearSpec& gear = train.gears[g];
     out += fmt::format("\n[gears.{}]\n", gear.name);
     out += fmt::format("shaft = {}\n", quoted(gear.shaft));
-    out +=
-        fmt::format("position = {}   # m, node {}\n", real(gear.position), fe.shafts[g].gear_node);
+    out += fmt::format("position = {}   # m, node {}\n", tomlReal(gear.position),
+                       fe.shafts[g].gear_node);
     out += "body = false   # its body is one of the disks\n";
     addTable(out, resolved.at(members[g]));
   }
   for (const TrainDiskSpec& d : train.disks) {
     out += fmt::format("\n[disks.{}]\n", d.name);
     out += fmt::format("shaft = {}\n", quoted(d.shaft));
-    out += fmt::format("position = {}   # m\n", real(d.position));
-    out += fmt::format("mass = {}   # kg\n", real(d.mass));
-    out += fmt::format("polar_inertia = {}   # kg m^2\n", real(d.polar_inertia));
-    out += fmt::format("diametral_inertia = {}   # kg m^2\n", real(d.diametral_inertia));
+    out += fmt::format("position = {}   # m\n", tomlReal(d.position));
+    out += fmt::format("mass = {}   # kg\n", tomlReal(d.mass));
+    out += fmt::format("polar_inertia = {}   # kg m^2\n", tomlReal(d.polar_inertia));
+    out += fmt::format("diametral_inertia = {}   # kg m^2\n", tomlReal(d.diametral_inertia));
   }
   for (const TrainBearingSpec& b : train.bearings) {
     out += fmt::format("\n[bearings.{}]\n", b.name);
     out += fmt::format("shaft = {}\n", quoted(b.shaft));
-    out += fmt::format("position = {}   # m\n", real(b.position));
+    out += fmt::format("position = {}   # m\n", tomlReal(b.position));
     for (auto [key, v] :
          std::initializer_list<std::pair<const char*, double>>{{"kyy", b.kyy},
                                                                {"kzz", b.kzz},
@@ -161,30 +152,32 @@ std::string gearboxText(const Config& config, const FeGearedRotorSpec& fe,
                                                                {"c_tilt", b.c_tilt},
                                                                {"k_torsion", b.k_torsion},
                                                                {"c_torsion", b.c_torsion}}) {
-      out += fmt::format("{} = {}\n", key, real(v));
+      out += fmt::format("{} = {}\n", key, tomlReal(v));
     }
   }
   const TrainMeshSpec& m = train.meshes.front();
   out += fmt::format("\n[meshes.{}]\n", m.name);
   out += fmt::format("gears = [{}, {}]\n", quoted(m.gear_a), quoted(m.gear_b));
   out += fmt::format("position_angle_deg = {}   # deg, the line of action of [mesh]\n",
-                     real(m.position_angle * 180.0 / std::numbers::pi));
+                     tomlReal(m.position_angle * 180.0 / std::numbers::pi));
   if (m.centre_distance)
-    out += fmt::format("centre_distance = {}   # m\n", real(*m.centre_distance));
+    out += fmt::format("centre_distance = {}   # m\n", tomlReal(*m.centre_distance));
   out += "phase = 0.0\n";
   out += fmt::format("stiffness = {}\n", quoted(config.string("mesh.stiffness")));
-  out += fmt::format("damping = {}   # N s/m\n", real(config.real("mesh.damping")));
-  out += fmt::format("te_amplitudes = {}   # m\n", reals(config.realList("mesh.te_amplitudes")));
-  out += fmt::format("te_phases_deg = {}   # deg\n", reals(config.realList("mesh.te_phases_deg")));
+  out += fmt::format("damping = {}   # N s/m\n", tomlReal(config.real("mesh.damping")));
+  out +=
+      fmt::format("te_amplitudes = {}   # m\n", tomlReals(config.realList("mesh.te_amplitudes")));
+  out +=
+      fmt::format("te_phases_deg = {}   # deg\n", tomlReals(config.realList("mesh.te_phases_deg")));
   out += "\n[operating_point]\n";
   out += fmt::format("input = {}\n", quoted(train.operating.input_shaft));
   out += fmt::format("output = {}\n", quoted(train.operating.output_shaft));
-  out += fmt::format("speed_rpm = {}   # rpm\n", real(config.real("speed.speed_rpm")));
-  out += fmt::format("torque = {}   # N m\n", real(train.operating.input_torque));
+  out += fmt::format("speed_rpm = {}   # rpm\n", tomlReal(config.real("speed.speed_rpm")));
+  out += fmt::format("torque = {}   # N m\n", tomlReal(train.operating.input_torque));
   out += fmt::format("input_position = {}   # m, load.drive_node\n",
-                     real(*train.operating.input_position));
+                     tomlReal(*train.operating.input_position));
   out += fmt::format("output_position = {}   # m, load.load_node\n",
-                     real(*train.operating.output_position));
+                     tomlReal(*train.operating.output_position));
   addMeshStiffnessTables(out, resolved.at("mesh_stiffness"), "mesh_stiffness");
   return out;
 }

@@ -9,6 +9,7 @@
 
 #include "geardyn/config/detail/gearbox_bearing.h"
 #include "geardyn/config/detail/gearbox_gear_defaults.h"
+#include "geardyn/config/detail/gearbox_excitation.h"
 #include "geardyn/config/detail/gearbox_mesh_model.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
@@ -21,9 +22,11 @@
 namespace geardyn::config {
 namespace {
 
+using detail::addGearboxExcitationSections;
 using detail::addMeshModelKeys;
 using detail::contactFromConfig;
 using detail::defaultBoreDiameter;
+using detail::readGearboxExcitations;
 using detail::stiffnessFromConfig;
 using detail::teFromConfig;
 
@@ -34,9 +37,19 @@ using Json = nlohmann::ordered_json;
 }  // namespace
 
 const std::vector<std::string>& gearboxSectionNames() {
-  static const std::vector<std::string> names = {
-      "gearbox",   "shafts", "gears",     "meshes",          "bearings",
-      "couplings", "disks",  "planetary", "operating_point", "mesh_stiffness"};
+  static const std::vector<std::string> names = {"gearbox",
+                                                 "shafts",
+                                                 "gears",
+                                                 "meshes",
+                                                 "bearings",
+                                                 "couplings",
+                                                 "disks",
+                                                 "planetary",
+                                                 "operating_point",
+                                                 "mesh_stiffness",
+                                                 "unbalances",
+                                                 "runouts",
+                                                 "bearing_excitations"};
   return names;
 }
 
@@ -245,7 +258,9 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .defaultValue(0.0)
       .doc("about a transverse axis");
 
-  schema.collection("couplings", "Couplings between two coaxial shafts (one speed).");
+  addGearboxExcitationSections(schema);
+  schema.collection("couplings",
+                    "Couplings between two coaxial shafts (one speed, or a kinematic ratio).");
   schema.section("couplings.*", "One coupling.");
   schema.stringList("couplings.*.shafts").required().doc("the two shafts");
   schema.real("couplings.*.k_torsion")
@@ -268,6 +283,12 @@ void addGearboxSections(config::ConfigSchema& schema) {
       .min(0.0)
       .defaultValue(0.0)
       .doc("lateral damping");
+  schema.real("couplings.*.ratio")
+      .defaultValue(1.0)
+      .doc(
+          "speed of the second shaft per speed of the first (signed, != 0): 1 for a coupling; "
+          "another value is a gear ratio whose mesh the model leaves out (the torsional spring "
+          "acts on ratio θ_a − θ_b)");
 
   schema.collection("planetary",
                     "Planetary (epicyclic) stages: sun and ring are gears on "
@@ -538,8 +559,9 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     }
     spec.couplings.push_back({name, shafts[0], shafts[1], config.real(p + "k_torsion"),
                               config.real(p + "c_torsion"), config.real(p + "k_lateral"),
-                              config.real(p + "c_lateral")});
+                              config.real(p + "c_lateral"), config.real(p + "ratio")});
   }
+  readGearboxExcitations(config, spec);
   for (const std::string& name : config.names("planetary")) {
     const std::string p = "planetary." + name + ".";
     PlanetaryStageSpec st;

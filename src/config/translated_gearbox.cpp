@@ -4,6 +4,7 @@
 
 #include "geardyn/config/fe_rotor_gearbox.h"
 #include "geardyn/config/gear_pair_gearbox.h"
+#include "geardyn/config/rotor_gearbox.h"
 
 namespace geardyn::config {
 
@@ -12,8 +13,11 @@ std::optional<std::string> translatedGearbox(const std::string& command, const C
   if (command == "simulate" || command == "hbm" || command == "stats") {
     return gearPairGearbox(config);
   }
-  // The finite-element two-shaft rotor (Visnadi & de Castro 2021); Rao's lateral rotor has none.
-  if (command == "rotor") return feRotorGearbox(config);
+  // The finite-element two-shaft rotor (Visnadi & de Castro 2021), else Rao's lateral rotor.
+  if (command == "rotor") {
+    if (auto fe = feRotorGearbox(config)) return fe;
+    return lateralRotorGearbox(config);
+  }
   return std::nullopt;
 }
 

@@ -67,6 +67,7 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
                                            const TrainHarmonicBalanceOptions& options)
     : model_(model), options_(options) {
   options_.validate();
+  refuseExcitations(model, "the nonlinear harmonic balance");
   if (model.meshes().empty()) throw InputError("meshes", "", "a train with at least one mesh");
   h_ = options_.harmonics;
   n_ = 2 * h_ + 1;

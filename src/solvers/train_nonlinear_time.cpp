@@ -65,6 +65,7 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
       jump_levels_(event_refinement),
       contact_levels_(contact_refinement) {
   newmark.validate();
+  refuseExcitations(model, "the nonlinear time response");
   for (auto [key, levels] :
        {std::pair{"nonlinear.newmark_event_refinement", event_refinement},
         std::pair{"nonlinear.newmark_contact_refinement", contact_refinement}}) {

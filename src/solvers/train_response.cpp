@@ -23,6 +23,33 @@ using Complex = std::complex<double>;
 using detail::elementDeformation;
 using detail::rigidModes;
 
+/// The excitations' harmonics into F (n × (2H + 1), column H + h): Re[F_e e^{i j ω₀ t}] is
+/// F_e/2 at j = ±P_e (signed by ν) and its conjugate at −j; a runout's stiffness part rides on
+/// its mesh's k(φ) = Σ_l k̂_l e^{i l P_m ω₀ t}, at the sidebands j + l P_m.
+void addExcitationHarmonics(const GearTrainModel& model, const TrainBaseFrequency& base,
+                            double input_speed, int L, int H,
+                            const std::vector<std::vector<Complex>>& k_hat, Eigen::MatrixXcd& F) {
+  const auto& terms = model.excitations();
+  for (std::size_t e = 0; e < terms.size(); ++e) {
+    const TrainExcitationTerm& t = terms[e];
+    const int j = (t.order(input_speed) < 0.0 ? -1 : 1) * base.excitation_multiple[e];
+    auto place = [&](int h, const Eigen::VectorXcd& value) {
+      if (h < -H || h > H) return;
+      for (std::size_t i = 0; i < t.dofs.size(); ++i) F(t.dofs[i], h + H) += 0.5 * value(i);
+    };
+    const Eigen::VectorXcd moving = t.amplitude(input_speed, 0.0);  // without the k(φ) part
+    place(j, moving);
+    place(-j, moving.conjugate());
+    if (t.mesh < 0) continue;
+    const int P = base.mesh_multiple[t.mesh];
+    for (int l = -L; l <= L; ++l) {
+      const Complex k = k_hat[t.mesh][L + l];
+      place(j + l * P, k * t.stiffness);
+      place(-j + l * P, k * t.stiffness.conjugate());
+    }
+  }
+}
+
 }  // namespace
 
 ElementLoad elementLoad(const TrainElement& element, const Eigen::VectorXd& local_force) {
@@ -113,26 +140,43 @@ void TrainSteadyOptions::validate() const {
 TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harmonics,
                                       int max_base_harmonics) {
   TrainBaseFrequency base;
-  if (model.meshes().empty()) {
+  const auto& excitations = model.excitations();
+  if (model.meshes().empty() && excitations.empty()) {
     base.ratio = 1.0 / kTwoPi;
     return base;
   }
   long long g = 0, l = 1;
   std::vector<std::pair<long long, long long>> fractions;
-  for (const TrainMesh& m : model.meshes()) {
-    // Mesh events per input revolution: z |ω/Ω|, a ratio of tooth counts.
-    const auto [p, q] = detail::rationalApproximation(m.frequency_ratio * kTwoPi);
+  auto add = [&](double events_per_revolution) {
+    const auto [p, q] = detail::rationalApproximation(events_per_revolution);
     fractions.push_back({p, q});
     g = std::gcd(g, p);
     l = std::lcm(l, q);
-  }
+  };
+  // Mesh events per input revolution: z |ω/Ω|, a ratio of tooth counts; an excitation's |ν|.
+  for (const TrainMesh& m : model.meshes()) add(m.frequency_ratio * kTwoPi);
+  for (const TrainExcitationTerm& e : excitations) add(std::abs(e.ratio));
   // gcd of p_i/q_i (reduced) = gcd(p_i) / lcm(q_i).
   base.ratio = static_cast<double>(g) / static_cast<double>(l) / kTwoPi;
   long long largest = 0;
-  for (const auto& [p, q] : fractions) {
+  for (std::size_t i = 0; i < fractions.size(); ++i) {
+    const auto [p, q] = fractions[i];
     const long long multiple = (p / g) * (l / q);
-    base.mesh_multiple.push_back(static_cast<int>(std::min<long long>(multiple, 1 << 30)));
-    largest = std::max(largest, multiple);
+    const int clipped = static_cast<int>(std::min<long long>(multiple, 1 << 30));
+    if (i < model.meshes().size()) {
+      base.mesh_multiple.push_back(clipped);
+      largest = std::max(largest, multiple);
+    } else {
+      base.excitation_multiple.push_back(clipped);
+      if (multiple > max_base_harmonics) {
+        const TrainExcitationTerm& e = excitations[i - model.meshes().size()];
+        throw InputError(
+            "steady.max_base_harmonics", std::to_string(max_base_harmonics),
+            fmt::format("at least {}: {} (order {:.9g}) is harmonic {} of the common period of "
+                        "the meshes and excitations; use the time analysis for this train",
+                        multiple, e.name, std::abs(e.ratio), multiple));
+      }
+    }
   }
   if (largest * mesh_harmonics > max_base_harmonics) {
     throw InputError(
@@ -149,11 +193,13 @@ TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harm
 Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) const {
   Eigen::MatrixXd q(times.size(), harmonic.rows());
   const double w0 = kTwoPi * base_frequency;
+  // Only the harmonics that are there (an excitation at a shaft order fills a few of many).
+  std::vector<int> present;
+  for (int h = 1; h <= harmonics; ++h)
+    if (harmonic.col(h).cwiseAbs().maxCoeff() > 0.0) present.push_back(h);
   for (Eigen::Index k = 0; k < times.size(); ++k) {
     Eigen::VectorXcd sum = harmonic.col(0);
-    for (int h = 1; h <= harmonics; ++h) {
-      sum += 2.0 * harmonic.col(h) * std::polar(1.0, h * w0 * times(k));
-    }
+    for (int h : present) sum += 2.0 * harmonic.col(h) * std::polar(1.0, h * w0 * times(k));
     q.row(k) = sum.real().transpose();
   }
   return q;
@@ -172,6 +218,7 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
                           (Komega * rigid_).norm() <= 1e-12 * Komega.norm() * rigid_.norm();
   const int L = options.mesh_harmonics;
   for (int p : base_.mesh_multiple) harmonics_ = std::max(harmonics_, p * L);
+  for (int p : base_.excitation_multiple) harmonics_ = std::max(harmonics_, p);
   // Fourier coefficients of every mesh's k and k·e over its own period, with its phase.
   for (const TrainMesh& mesh : model.meshes()) {
     detail::MeshFourier fourier = detail::meshFourier(mesh, L);
@@ -235,6 +282,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
       }
     }
   }
+  addExcitationHarmonics(model, base, input_speed, L, H, k_hat, F);
   // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised (detail::HarmonicBlocks).
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Identity(r * blocks, r * blocks);
   Eigen::VectorXcd b(r * blocks);
@@ -260,7 +308,8 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
       }
     }
   }
-  const Eigen::VectorXcd delta = A.partialPivLu().solve(b);
+  // No meshes (a train excited by unbalances or bearing displacements only): nothing to condense.
+  const Eigen::VectorXcd delta = r > 0 ? Eigen::VectorXcd(A.partialPivLu().solve(b)) : b;
   if (!delta.allFinite()) {
     throw std::runtime_error(
         fmt::format("steady state at {:g} rad/s: the condensed harmonic-balance system is singular",

@@ -85,7 +85,9 @@ TrainNewmarkStepper::TrainNewmarkStepper(const GearTrainModel& model, double inp
   V_.resize(model.dofCount(), r);
   for (int m = 0; m < r; ++m) V_.col(m) = model.meshVector(m);
   F0_ = model.staticLoad();
-  if (!setup.dofs.empty()) restrict(setup.dofs);
+  if (!setup.dofs.empty()) restrict(setup.dofs), dofs_ = setup.dofs;
+  external_ = static_cast<bool>(force_) || !model.excitations().empty();
+  if (!model.excitations().empty()) excitation_.setZero(model.dofCount());
   const int n = static_cast<int>(V_.rows());
   if (setup.static_load.size() > 0) {
     if (setup.static_load.size() != n) {
@@ -211,6 +213,28 @@ void TrainNewmarkStepper::meshState(double t) {
   }
 }
 
+void TrainNewmarkStepper::externalForce(double t) {
+  fx_.setZero();
+  if (force_) force_(t, fx_);
+  if (excitation_.size() == 0) return;
+  // The input's rotation α = ∫|Ω| dt, |Ω| and d|Ω|/dt (train_excitation.h).
+  double angle = std::abs(speed_) * t, rate = 0.0;
+  if (ramp_) {
+    angle = ramp_->angle(t);
+    const double s = t - ramp_->begin;
+    if (s > 0.0 && s < ramp_->duration)
+      rate = (std::abs(ramp_->end) - std::abs(ramp_->start)) / ramp_->duration;
+  }
+  excitation_.setZero();
+  addExcitationForce(model_.excitations(), angle, ramp_ ? ramp_->speed(t) : speed_, rate, k_.data(),
+                     excitation_);
+  if (dofs_.empty()) {
+    fx_ += excitation_;
+  } else {
+    for (std::size_t i = 0; i < dofs_.size(); ++i) fx_(i) += excitation_(dofs_[i]);
+  }
+}
+
 void TrainNewmarkStepper::reset(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
   t_ = t;
   q_ = q;
@@ -222,9 +246,8 @@ void TrainNewmarkStepper::reset(double t, const Eigen::VectorXd& q, const Eigen:
   meshState(t);
   // M a = F − C v − K(t) q.
   f_ = F0_ + V_ * ke_ - Cg_ * v_ - K0_ * q_ - V_ * (dk_.asDiagonal() * (V_.transpose() * q_));
-  if (force_) {
-    fx_.setZero();
-    force_(t, fx_);
+  if (external_) {
+    externalForce(t);
     f_ += fx_;
   }
   a_ = M().llt().solve(f_);
@@ -250,14 +273,11 @@ void TrainNewmarkStepper::step() {
       factorise(speed_);
   }
   meshState(t1);
-  if (force_) {
-    fx_.setZero();
-    force_(t1, fx_);
-  }
+  if (external_) externalForce(t1);
   if (sparse_) {
     rhs_.noalias() = F0_;
     rhs_.noalias() += V_ * ke_;
-    if (force_) rhs_ += fx_;
+    if (external_) rhs_ += fx_;
     y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
     rhs_.noalias() += Msp_ * y_;
     y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
@@ -269,7 +289,7 @@ void TrainNewmarkStepper::step() {
     // would not yet have paid for themselves (a run-up refactorises every ~100 steps).
     rhs_.noalias() = F0_;
     rhs_.noalias() += V_ * ke_;
-    if (force_) rhs_ += fx_;
+    if (external_) rhs_ += fx_;
     y_ = nm_.a0 * q_ + nm_.a2 * v_ + nm_.a3 * a_;
     rhs_.noalias() += M() * y_;
     y_ = nm_.a1 * q_ + nm_.a4 * v_ + nm_.a5 * a_;
@@ -285,7 +305,7 @@ void TrainNewmarkStepper::step() {
     y_ = g0_;
     y_.noalias() += PQ_ * pc_;
     y_.noalias() += Z_ * ke_;
-    if (force_) {
+    if (external_) {
       rhs_ = lu_.solve(fx_);
       y_ += rhs_;
     }

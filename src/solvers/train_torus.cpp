@@ -125,6 +125,7 @@ TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_
 TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorusOptions& options)
     : model_(model), options_(options) {
   options.validate();
+  refuseExcitations(model, "the multi-frequency (torus) steady state");
   const int L = options.mesh_harmonics;
   generators_ = trainTorusGenerators(model, L, options.group_harmonics);
   const std::vector<int>& N = generators_.harmonics;

@@ -14,7 +14,10 @@ constexpr double kUndamped = 1e-9;  // |ζ| below this is round-off of an undamp
 constexpr double kDecay = 1e-6;
 
 /// √s_j: mode j's starting amplitude relative to the modes the meshes drive (TrainTransient).
-double meshExcitation(const TrainMode& mode) {
+/// With unbalances, runouts or prescribed bearing displacements (GearTrainModel::excitations())
+/// every mode counts as excited (1): conservative, the duration waits for the slowest one.
+double meshExcitation(const GearTrainModel& model, const TrainMode& mode) {
+  if (!model.excitations().empty()) return 1.0;
   double share = 0.0;
   for (double s : mode.mesh_strain_energy) share += s;
   return std::sqrt(std::max(share, 0.0));
@@ -30,7 +33,7 @@ std::vector<TrainUndampedMode> trainUndampedModes(const GearTrainModel& model,
   for (const TrainMode& mode : modes) {
     if (mode.divergent || mode.frequency <= 1e-6 * highest) continue;  // rigid or divergent
     if (std::abs(mode.damping_ratio) > kUndamped) continue;
-    TrainUndampedMode u{mode.frequency, meshExcitation(mode) > kDecay, {}, {}};
+    TrainUndampedMode u{mode.frequency, meshExcitation(model, mode) > kDecay, {}, {}};
     for (std::size_t e = 0; e < model.elements().size(); ++e) {
       if (mode.element_strain_energy[e] >= kShare) u.elements.push_back(model.elements()[e].name);
     }
@@ -50,7 +53,7 @@ TrainTransient trainTransient(const GearTrainModel& model, double input_speed) {
     if (u.excited) t.decay_time = HUGE_VAL;
   }
   for (const TrainMode& mode : modes) {
-    const double start = meshExcitation(mode);
+    const double start = meshExcitation(model, mode);
     const double sigma = -mode.eigenvalue.real();
     if (mode.divergent || std::abs(mode.damping_ratio) <= kUndamped || start <= kDecay ||
         !(sigma > 0.0)) {

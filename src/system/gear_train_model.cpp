@@ -409,6 +409,7 @@ void GearTrainModel::assembleLoads() {
     }
     F0_ -= spec_.gravity * (M_ * ez);
   }
+  excitations_ = buildTrainExcitation(*this, F0_);
 }
 
 int GearTrainModel::rotatingFrame(int body) const {

@@ -177,7 +177,12 @@ void GearTrainModel::buildElements() {
       throw InputError(key + ".k_torsion", fmt::format("{:g} N m/rad", c.k_torsion),
                        "a torsional stiffness > 0 (a coupling transmits torque)");
     }
-    add_torsion(c.name, "coupling", {rotationDof(a), rotationDof(b)}, {1.0, -1.0}, c.k_torsion,
+    if (!(c.ratio != 0.0) || !std::isfinite(c.ratio)) {
+      throw InputError(key + ".ratio", fmt::format("{:g}", c.ratio),
+                       "a finite speed ratio != 0 (omega_b = ratio omega_a; 1 for a coupling)");
+    }
+    // On ratio θ_a − θ_b: the torsional deformation of a kinematic ratio (1: a coupling).
+    add_torsion(c.name, "coupling", {rotationDof(a), rotationDof(b)}, {c.ratio, -1.0}, c.k_torsion,
                 c.c_torsion);
     if (lateral && (c.k_lateral > 0 || c.c_lateral > 0)) {
       detail::requireSameFrame(*this, a, b, key);

@@ -320,7 +320,7 @@ void GearTrainModel::solveTrainKinematics(MeshLayout& layout) {
   }
   for (const auto& c : spec_.couplings) {
     const auto [a, b] = detail::couplingBodies(*this, c);
-    layout.constraints.push_back({{a, b}, {1.0, -1.0}, "couplings." + c.name});
+    layout.constraints.push_back({{a, b}, {c.ratio, -1.0}, "couplings." + c.name});
   }
   for (const auto& b : spec_.bearings) {
     if (!(b.k_torsion > 0.0)) continue;
@@ -503,8 +503,10 @@ std::vector<double> GearTrainModel::torsionalMeshForces() const {
     Kt(a, a) += k, Kt(b, b) += k, Kt(a, b) -= k, Kt(b, a) -= k;
   };
   for (const auto& c : spec_.couplings) {
+    // The spring on ratio θ_a − θ_b (a coupling: ratio 1).
     const auto [a, b] = detail::couplingBodies(*this, c);
-    spring(a, b, c.k_torsion);
+    Kt(a, a) += c.ratio * c.ratio * c.k_torsion, Kt(b, b) += c.k_torsion;
+    Kt(a, b) -= c.ratio * c.k_torsion, Kt(b, a) -= c.ratio * c.k_torsion;
   }
   for (const auto& beam : beams_) {
     spring(beam.body_a, beam.body_b,

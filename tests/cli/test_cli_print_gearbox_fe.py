@@ -78,9 +78,3 @@ def test_a_helical_file_without_axial_dofs_is_refused_naming_the_key():
                  "--set", "gear.helix_angle_deg=-5.0")
     assert result.returncode == 2, result.stdout + result.stderr
     assert "model.axial" in result.stderr, result.stderr
-
-
-def test_a_file_without_a_gearbox_translation_is_refused():
-    result = run("rotor", EXAMPLES / "rotor_rao2023_table41.toml", "--print-gearbox")
-    assert result.returncode == 2, result.stdout + result.stderr
-    assert "--print-gearbox" in result.stderr, result.stderr

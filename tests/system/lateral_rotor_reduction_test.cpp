@@ -4,8 +4,9 @@
 /// translational bearing between the two shafts (kyy = kzz = k_m) with planar DOFs; the shafts'
 /// lateral stiffness is a bearing to the housing. Restricted to the lateral DOFs the train's M,
 /// C, K are the model's (the rotations are free and uncoupled), and so are its modes. Its forcing
-/// (transmission error applied to that isotropic spring, runouts, unbalance) is not a train
-/// input and stays with `geardyn rotor`.
+/// (transmission error applied to that isotropic spring, runouts, unbalance) is made of the
+/// train's excitations in the gearbox `geardyn rotor --print-gearbox` writes
+/// (config/rotor_gearbox.h), checked in train_excitation_test.cpp.
 ///
 /// Tolerances: the same sums in another order, 1e-12 of the largest entry; eigenvalues of equal
 /// 4 × 4 problems, 1e-9.

@@ -18,12 +18,14 @@
 ///       = F₀ δ_h0 + Σ_m v_m [(k e)^_{m,h} + i h ω₀ c_m ê_{m,h}],
 /// (the mesh dashpot acts on the rate of the tooth deformation, (δ − e)˙, as in the SDOF model),
 ///
-/// where k̂_{m,j} = c_l e^{i 2π l φ_m0} for j = l P_m (c_l the Fourier coefficients of k_m over
-/// one mesh period, exact for piecewise models), truncated at |l| <= L mesh harmonics and
-/// |h| <= H = L max P_m. The time-invariant part is block-diagonal over harmonics and the
-/// stiffness variation acts only through the mesh deflections δ_m = v_mᵀ q, so the system is
-/// condensed exactly onto r (2H + 1) mesh-deflection harmonics (r meshes): per speed, one
-/// n × n LU per harmonic and one dense solve of the condensed system. This is the linear case
+/// plus the excitations Re[F_e e^{i ν_e α}] of GearTrainModel::excitations() (unbalances,
+/// runouts, prescribed bearing displacements: F_e/2 at h = ±P_e, a runout's k(φ) F_e at the
+/// sidebands h = ±P_e + l P_m), where k̂_{m,j} = c_l e^{i 2π l φ_m0} for j = l P_m (c_l the Fourier
+/// coefficients of k_m over one mesh period, exact for piecewise models), truncated at |l| <= L
+/// mesh harmonics and |h| <= H = L max P_m. The time-invariant part is block-diagonal over
+/// harmonics and the stiffness variation acts only through the mesh deflections δ_m = v_mᵀ q, so
+/// the system is condensed exactly onto r (2H + 1) mesh-deflection harmonics (r meshes): per speed,
+/// one n × n LU per harmonic and one dense solve of the condensed system. This is the linear case
 /// of the harmonic balance (no AFT needed): the parametric excitation of the static load
 /// through the stiffness variation and the transmission-error excitation are both in it.
 
@@ -87,11 +89,14 @@ struct TrainSteadyOptions {
 };
 
 /// The base frequency of a train per unit input speed and the multiples P_m of every mesh:
-/// f_m = P_m f₀ [Hz per rad/s]. InputError (key "steady.mesh_harmonics") when the mesh
-/// frequencies have no common divisor within `max_base_harmonics`.
+/// f_m = P_m f₀ [Hz per rad/s], and those of its excitations (GearTrainModel::excitations(),
+/// e.g. an unbalance at a shaft's speed): |ν| |Ω| / 2π = P_e f₀. InputError (key
+/// "steady.mesh_harmonics") when the mesh frequencies have no common divisor within
+/// `max_base_harmonics` (key "steady.max_base_harmonics" when an excitation's order has none).
 struct TrainBaseFrequency {
-  double ratio = 0.0;              ///< f₀ / |Ω| [Hz per rad/s]
-  std::vector<int> mesh_multiple;  ///< P_m
+  double ratio = 0.0;                    ///< f₀ / |Ω| [Hz per rad/s]
+  std::vector<int> mesh_multiple;        ///< P_m
+  std::vector<int> excitation_multiple;  ///< P_e
 };
 TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harmonics,
                                       int max_base_harmonics);

@@ -9,7 +9,8 @@
 ///
 /// Cost: the effective matrix A = K̄ + a₀ M + a₁ (C + Ω G₁) (K̄ with the mean meshes) is
 /// factorised once; the r meshes vary it by V D(t) Vᵀ with D = diag(k_m(t) − k̄_m), which the
-/// Woodbury identity solves with the precomputed Z = A⁻¹ V and one r × r system per step:
+/// Woodbury identity solves with the precomputed Z = A⁻¹ V and one r × r system per step
+/// (the model's excitations, GearTrainModel::excitations(), are added to f(t) at every step):
 ///   x = y − Z (I + D Vᵀ Z)⁻¹ D Vᵀ y,   y = A⁻¹ b.
 /// A step is one back-substitution, a few matrix–vector products and an r × r LU, and allocates
 /// nothing: small trains use dense matrices; from kSparseTrainDofs DOFs on (flexible shafts)
@@ -151,6 +152,8 @@ class TrainNewmarkStepper {
 
  private:
   void meshState(double t);  // fills dk_ (k − k̄) and ke_ (k e + c ė) of every mesh at t
+  /// fx_ = the setup's force plus the model's excitations at t (after meshState(t)).
+  void externalForce(double t);
   void factorise(double speed);
   void precomputeProducts();
   void restrict(const std::vector<int>& dofs);
@@ -176,6 +179,9 @@ class TrainNewmarkStepper {
   }
   Eigen::VectorXd F0_;
   std::function<void(double, Eigen::Ref<Eigen::VectorXd>)> force_;
+  bool external_ = false;       // force_ or the model's excitations (unbalances, ...)
+  std::vector<int> dofs_;       // the integrated DOFs when restricted
+  Eigen::VectorXd excitation_;  // the excitations over all the model's DOFs
   Eigen::MatrixXd Cg_, K0_, A_, V_, Z_, S_, small_matrix_;
   Eigen::MatrixXd PQ_;       // dense path: [A⁻¹M  A⁻¹(C + ΩG₁)], n × 2n
   Eigen::VectorXd g0_, pc_;  // dense path: A⁻¹F₀; the step's [p; c]

@@ -158,6 +158,51 @@ struct TrainCouplingSpec {
   std::string shaft_a, shaft_b;
   double k_torsion = 0, c_torsion = 0;  ///< [N m/rad], [N m s/rad]
   double k_lateral = 0, c_lateral = 0;  ///< [N/m], [N s/m]
+  /// ω_b = ratio ω_a [-]: 1 for a coupling; another value makes it a kinematic gear ratio (the
+  /// speeds of a stage whose mesh the model leaves out, e.g. Rao's lateral rotor, whose "mesh"
+  /// is a bearing between the shafts); the torsional spring then acts on ratio θ_a − θ_b.
+  double ratio = 1.0;
+};
+
+/// A mass unbalance on a shaft (or on a gear's body: give the gear's shaft and position): the
+/// mass m at eccentricity e [kg m] at angle `phase` [rad] from +y towards +z at t = 0, turning
+/// with the shaft at its signed speed ω; the rotating force m e (ψ̇² cos ψ + ψ̈ sin ψ,
+/// ψ̇² sin ψ − ψ̈ cos ψ), ψ = ∫ω dt + phase (m e ω² (cos ψ, sin ψ) at constant speed) on the
+/// shaft's centre (with full DOFs, at its axial position).
+struct TrainUnbalanceSpec {
+  std::string name;
+  std::string shaft;
+  double position = 0.0;           ///< along the shaft from its first section start [m]
+  double mass_eccentricity = 0.0;  ///< m e [kg m]
+  double phase = 0.0;              ///< [rad]
+};
+
+/// A gear's runout (geometric eccentricity): its centre sits `amplitude` [m] off the shaft's
+/// axis at angle `phase` [rad] from +y towards +z at t = 0 and turns with the gear. On each of
+/// its meshes the offset w(t) adds v_gᵀ w (its projection on the line of action) to the mesh
+/// deflection: a displacement excitation at the gear's shaft order, the load
+/// −v_m (k(φ) v_gᵀ w + c_m v_gᵀ ẇ).
+struct TrainRunoutSpec {
+  std::string name;
+  std::string gear;
+  double amplitude = 0.0;  ///< [m]
+  double phase = 0.0;      ///< [rad]
+};
+
+/// A prescribed relative displacement d(t) across a linear bearing (its shaft against the other
+/// shaft or the housing, in y and z): the bearing's spring and dashpot act on J q − d, which
+/// loads the train with Jᵀ (K_b d + C_b ḋ). Harmonic i is
+///   d_y = a_y,i cos(ν_i α + ϕ_y,i),  d_z = a_z,i cos(ν_i α + ϕ_z,i)
+/// with ν_i α = orders_i × the reference's angle: a shaft's rotation ∫|ω| dt, or 2π × a mesh's
+/// phase φ_m(t) (mesh periods, its phase at t = 0 included). This is Rao's "mesh" (thesis
+/// eqs. 2.8–2.9: transmission error applied to an isotropic spring between the gear centres).
+struct TrainBearingExcitationSpec {
+  std::string name;
+  std::string bearing;
+  std::string reference;              ///< a shaft or a mesh the orders refer to
+  double mean_y = 0.0, mean_z = 0.0;  ///< constant part [m]
+  std::vector<double> orders;         ///< > 0, multiples of the reference's speed or mesh frequency
+  std::vector<double> amplitude_y, phase_y, amplitude_z, phase_z;  ///< [m], [rad] per order
 };
 
 /// The planet set of a planetary (epicyclic) stage: sun and ring are gears on shafts, the
@@ -215,6 +260,10 @@ struct GearTrainSpec {
   std::vector<TrainCouplingSpec> couplings;
   std::vector<TrainDiskSpec> disks;
   std::vector<PlanetaryStageSpec> stages;
+  /// Excitations beside the meshes' transmission errors (train_excitation.h).
+  std::vector<TrainUnbalanceSpec> unbalances;
+  std::vector<TrainRunoutSpec> runouts;
+  std::vector<TrainBearingExcitationSpec> bearing_excitations;
   OperatingPoint operating;
   double mass_proportional_damping = 0.0;       ///< α [1/s]
   double stiffness_proportional_damping = 0.0;  ///< β [s]

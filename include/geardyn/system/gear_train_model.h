@@ -28,6 +28,7 @@
 #include "geardyn/models/timoshenko_shaft_element.h"
 #include "geardyn/system/bearing_clearance.h"
 #include "geardyn/system/gear_train.h"
+#include "geardyn/system/train_excitation.h"
 #include "geardyn/system/train_kinematics.h"
 
 namespace geardyn {
@@ -215,8 +216,12 @@ class GearTrainModel {
   const Eigen::MatrixXd& centripetal() const noexcept { return Komega_; }  ///< K_Ω per Ω² [kg]
   /// Σ_m k̄_m v_m v_mᵀ.
   const Eigen::MatrixXd& meanMeshStiffness() const noexcept { return Kmesh_; }
-  /// F₀: input and output torques and pin-position-error loads [N, N m].
+  /// F₀: input and output torques, pin-position-error loads, weights and the prescribed mean
+  /// bearing displacements' loads [N, N m].
   const Eigen::VectorXd& staticLoad() const noexcept { return F0_; }
+  /// Unbalances, runouts and prescribed bearing displacements as harmonic forces
+  /// (train_excitation.h); their constant parts are in staticLoad().
+  const std::vector<TrainExcitationTerm>& excitations() const noexcept { return excitations_; }
   /// v_m as a dense vector.
   Eigen::VectorXd meshVector(int mesh) const;
   /// The operating input speed [rad/s] and torque [N m], and the output's load torque [N m].
@@ -283,6 +288,7 @@ class GearTrainModel {
   double output_torque_ = 0.0;
   Eigen::MatrixXd M_, K_, C_, G_, Komega_, Kmesh_;
   Eigen::VectorXd F0_;
+  std::vector<TrainExcitationTerm> excitations_;
   std::vector<std::string> warnings_;
 };
 
