@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <map>
+#include <set>
 
 #include "geardyn/analysis/analysis_result.h"
 
@@ -71,7 +72,9 @@ std::vector<std::string> groupedWarnings(const std::vector<std::string>& warning
   };
   std::vector<Group> groups;
   std::map<std::string, std::size_t> by_kind;  // kind (or the whole text) -> group
+  std::set<std::string> shown;                 // exact repeats are dropped
   for (const std::string& w : warnings) {
+    if (!shown.insert(w).second) continue;
     const Parts p = partsOf(w);
     // Without a subject only identical texts are of one kind.
     const std::string key = p.subject.empty() ? "\n" + w : p.kind;
@@ -81,10 +84,14 @@ std::vector<std::string> groupedWarnings(const std::vector<std::string>& warning
       continue;
     }
     Group& g = groups[it->second];
-    if (w == g.first) continue;
-    bool seen = false;
-    for (const auto& s : g.others) seen = seen || s == p.subject;
-    if (!seen && p.subject != partsOf(g.first).subject) g.others.push_back(p.subject);
+    bool named = p.subject == partsOf(g.first).subject;
+    for (const auto& s : g.others) named = named || s == p.subject;
+    // A subject the group already names, with other values: its own line (never hidden).
+    if (named) {
+      groups.push_back({w, {}});
+    } else {
+      g.others.push_back(p.subject);
+    }
   }
   std::vector<std::string> out;
   for (const Group& g : groups) {

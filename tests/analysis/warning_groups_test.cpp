@@ -38,6 +38,17 @@ TEST(WarningGroups, DifferentTextsOrNumbersInWordsStayApart) {
   EXPECT_EQ(lines[1], "meshes.b: axial_stiffness 1e+20 N/m capped");
 }
 
+TEST(WarningGroups, OneSubjectWithOtherValuesIsNeverHidden) {
+  // Two Newmark checks of one analysis ("time") differ only in their numbers: both are shown.
+  const auto lines =
+      groupedWarnings({"time: differs by 12 % at 1500 rpm", "time: differs by 7 % at 1800 rpm",
+                       "other: differs by 3 % at 2000 rpm"});
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0],
+            "time: differs by 12 % at 1500 rpm (the same for 1 more: other; each in summary.json)");
+  EXPECT_EQ(lines[1], "time: differs by 7 % at 1800 rpm");
+}
+
 TEST(WarningGroups, LongListsAreCut) {
   std::vector<std::string> warnings;
   for (int i = 0; i < 12; ++i) warnings.push_back("b" + std::to_string(i) + ": capped at 5 N/m");
