@@ -1,7 +1,8 @@
 #include "geardyn/config/detail/gearbox_gear_defaults.h"
 
 #include <algorithm>
-#include <cmath>
+
+#include "geardyn/geometry/gear_mounting.h"
 
 namespace geardyn::config::detail {
 
@@ -17,11 +18,7 @@ double defaultBoreDiameter(const TrainGearSpec& gear, const std::vector<TrainSha
     if (gear.position >= start && gear.position <= end) {
       const auto& od = shaft->outer_diameters;
       const double diameter = od.size() == 1 ? od[0] : i < od.size() ? od[i] : 0.0;
-      const GearSpec& g = gear.gear;
-      const double root_diameter =
-          g.teeth * g.normal_module / std::cos(g.helix_angle) -
-          2.0 * (g.dedendum_coefficient - g.profile_shift) * g.normal_module;
-      return diameter > 0.0 && diameter < root_diameter ? diameter : 0.0;
+      return diameter > 0.0 && diameter < rootDiameter(gear.gear) ? diameter : 0.0;
     }
     start = end;
   }

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/geometry/gear_mounting.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/stiffness/api_stiffness.h"
 #include "geardyn/units.h"
@@ -297,9 +298,7 @@ GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& s) {
 }
 
 void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& s) {
-  // Root diameter of the standard rack (h_f* = 1.25): d_f = m_n z / cos β − 2 m_n (1.25 − x).
-  const double root = gear.normal_module * gear.teeth / std::cos(gear.helix_angle) -
-                      2 * gear.normal_module * (1.25 - gear.profile_shift);
+  const double root = rootDiameter(gear);  // the imported gears keep the standard h_f* = 1.25
   if (shaft_diameter <= 0) {
     s.add("bore_diameter", tomlReal(0.5 * root),
           "no shaft section under the gear: half the root diameter");
