@@ -4,14 +4,17 @@
 (Python) write one HTML file holding the run's headline numbers (summary.json ``results``), the
 resolved configuration (summary.json ``config``) and interactive plotly.js figures of its tables:
 zoom, pan, hover and toggle traces in any browser, with no network; a gear train's report also
-holds its 3-D view with animated modes (view3d.py, three.js). plotly.js (MIT, the npm package
-``plotly.js-dist-min``, installed by ``scripts/setup.sh`` into ``.cache/npm``) and three.js are
-embedded gzip-compressed (_embed.py), so the file can be mailed on its own (about 2-3 MB).
+holds its 3-D view with animated modes (view3d.py, three.js). plotly.js (MIT; its cartesian
+bundle, the npm package ``plotly.js-cartesian-dist-min``: the scatter, bar and heatmap traces the
+figures use, 1.3 MB against the full bundle's 4.8 MB, a third of the time to start in the browser)
+and three.js are installed by ``scripts/setup.sh`` into ``.cache/npm`` and embedded
+gzip-compressed (_embed.py), so the file can be mailed on its own (about 1.5-2 MB).
 
-Where plotly.min.js is looked for, first found wins: ``$GEARDYN_PLOTLY_JS``; the package's own
-``_assets/plotly.min.js``; ``.cache/npm/node_modules/plotly.js-dist-min/plotly.min.js`` in a
-parent of this file or of the working directory (a build tree inside the source tree); Debian's
-``/usr/share/javascript/plotly/plotly.min.js`` (libjs-plotly) and python3-plotly's bundled copy.
+Where plotly.js is looked for, first found wins: ``$GEARDYN_PLOTLY_JS``; the package's own
+``_assets/plotly-cartesian.min.js``;
+``.cache/npm/node_modules/plotly.js-cartesian-dist-min/plotly-cartesian.min.js`` in a parent of
+this file or of the working directory (a build tree inside the source tree); then a full bundle:
+Debian's ``/usr/share/javascript/plotly/plotly.min.js`` (libjs-plotly) and python3-plotly's copy.
 """
 
 import datetime
@@ -28,11 +31,11 @@ from . import _report_figures as _figures
 from . import view3d as _view3d
 from ._units import suffix_unit
 
-_NPM_PATH = pathlib.Path(".cache/npm/node_modules/plotly.js-dist-min/plotly.min.js")
+_NPM_PATH = pathlib.Path(".cache/npm/node_modules/plotly.js-cartesian-dist-min/plotly-cartesian.min.js")
 
 
 def find_plotly_js():
-    """The path of plotly.min.js (see the module doc for the search order); FileNotFoundError
+    """The path of plotly.js (see the module doc for the search order); FileNotFoundError
     naming every place tried and how to install it when none has it."""
     extra = [pathlib.Path("/usr/share/javascript/plotly/plotly.min.js")]
     try:  # python3-plotly keeps a copy unless the distribution stripped it
@@ -44,10 +47,11 @@ def find_plotly_js():
     modules = pathlib.Path(".cache/npm/node_modules")
     relative = _NPM_PATH.relative_to(modules) if _NPM_PATH.is_relative_to(modules) else _NPM_PATH
     return _embed.first_found(
-        "plotly.min.js", "GEARDYN_PLOTLY_JS", relative,
+        "plotly.js", "GEARDYN_PLOTLY_JS", relative,
         lambda path: path.is_file() and path.stat().st_size > 100_000,
-        "install it with `bash scripts/setup.sh --deps` (npm package plotly.js-dist-min into "
-        ".cache/npm) or set GEARDYN_PLOTLY_JS to a copy of plotly.min.js", extra)
+        "install it with `bash scripts/setup.sh --deps` (npm package plotly.js-cartesian-dist-min "
+        "into .cache/npm) or set GEARDYN_PLOTLY_JS to a copy of plotly.js (any bundle with the "
+        "scatter, bar and heatmap traces)", extra)
 
 
 def _clean(value):
@@ -137,19 +141,50 @@ pre{background:#f6f6f6;padding:.8em;font-size:.8em;overflow:auto;max-height:30em
 """
 
 # plotly.js is unpacked and run after the 3-D view (when the page has one) has drawn its first
-# frame, and the view's animation starts when the figures are drawn: the view shows first and
-# its frames do not hold up the figures.
+# frame. The figures on the first screen are drawn first (gdLib.times.screen: the page as a reader
+# first sees it, the view's first frame when no figure is on it), then the others one at a time, each yielding to the browser so the page stays
+# responsive; a figure scrolled to before its turn is drawn at once. The view's animation starts
+# when every figure is drawn (gdLib.times.figures), so its frames do not hold up the figures.
 _RENDER = """
+var gdFigures, gdDivs, gdFirst;
 (window.geardynView3d ? window.geardynView3d.mounted : Promise.resolve()).then(function () {
-  return gdLib.classic('gd-lib-plotly');
-}).then(function () {
-  var figures = JSON.parse(document.getElementById('gd-figures').textContent);
-  return Promise.all(figures.map(function (f, i) {
+  gdLib.times.view = performance.now();
+  gdFigures = JSON.parse(document.getElementById('gd-figures').textContent);
+  gdDivs = gdFigures.map(function (f, i) {
     var div = document.getElementById('gd-figure-' + i);
     div.style.height = (f.height || 480) + 'px';
-    return Plotly.newPlot(div, f.data, f.layout, {responsive: true, displaylogo: false})
-      .then(function () { div.setAttribute('data-rendered', '1'); });
-  }));
+    return div;
+  });
+  gdFirst = gdDivs.map(function (d, i) { return i; }).filter(function (i) {
+    var box = gdDivs[i].getBoundingClientRect();
+    return box.bottom > 0 && box.top < window.innerHeight;
+  });
+  if (!gdFirst.length) gdLib.times.screen = performance.now();
+  return gdLib.classic('gd-lib-plotly');
+}).then(function () {
+  gdLib.times.plotly = performance.now();
+  function draw(i) {
+    var div = gdDivs[i], f = gdFigures[i];
+    if (!div.gdDrawn) {
+      div.gdDrawn = Plotly.newPlot(div, f.data, f.layout, {responsive: true, displaylogo: false})
+        .then(function () { div.setAttribute('data-rendered', '1'); gdLib.times['figure' + i] = performance.now(); });
+    }
+    return div.gdDrawn;
+  }
+  if ('IntersectionObserver' in window) {
+    var seen = new IntersectionObserver(function (entries) {
+      entries.forEach(function (e) { if (e.isIntersecting) draw(gdDivs.indexOf(e.target)); });
+    }, {rootMargin: '200px'});
+    gdDivs.forEach(function (d) { seen.observe(d); });
+  }
+  return Promise.all(gdFirst.map(draw)).then(function () {
+    gdLib.times.screen = gdLib.times.screen || performance.now();
+    return gdDivs.reduce(function (previous, d, i) {
+      return previous.then(function () {
+        return new Promise(function (resolve) { setTimeout(resolve, 0); }).then(function () { return draw(i); });
+      });
+    }, Promise.resolve());
+  });
 }).then(function () {
   gdLib.times.figures = performance.now();
   if (window.geardynView3d) window.geardynView3d.play();
@@ -245,7 +280,7 @@ def main(argv=None):
         print(f"geardyn report: error: {args.results_dir}/summary.json is not valid JSON: {error}",
               file=sys.stderr)
         return 2
-    except OSError as error:  # a missing table or plotly.min.js, an unwritable --out
+    except OSError as error:  # a missing table or plotly.js, an unwritable --out
         print(f"geardyn report: I/O error: {error}", file=sys.stderr)
         return 3
     if not args.quiet:

@@ -112,11 +112,17 @@ window.geardynView3d = (function () {
     root.setAttribute('data-times', JSON.stringify(times));
     root.setAttribute('data-rendered-ms', String(performance.now()));
     root.setAttribute('data-rendered', '1');
+    // The undeformed outline and the animation start together, after the page's figures (a
+    // report sets window.geardynView3dWait): the first frame is drawn without the outline.
     var started = false;
     root.gdStart = function () {
-      if (!started) { started = true; state.start = performance.now(); requestAnimationFrame(frame); }
+      if (started) return;
+      started = true;
+      view.snapshotGhost();
+      state.start = performance.now();
+      requestAnimationFrame(frame);
     };
-    setTimeout(function () { view.snapshotGhost(); render(); if (!window.geardynView3dWait) root.gdStart(); }, 0);
+    if (!window.geardynView3dWait) setTimeout(root.gdStart, 0);
   }
 
   // Resolved when every view on the page has drawn its first frame (or failed).

@@ -4,6 +4,7 @@ silent; screenshots are kept under the build tree (BUILD/test-results/report/)."
 
 import base64
 import gzip
+import json
 import pathlib
 import re
 import subprocess
@@ -121,7 +122,8 @@ def test_report_is_self_contained(reports):
     assert not re.search(r"<link[^>]+href=\"https?:", text)
     packed = re.search(r'<script type="application/gzip-base64" id="gd-lib-plotly">([^<]*)</script>', text)
     assert packed, "plotly.js is not embedded"
-    assert "plotly.js v" in gzip.decompress(base64.b64decode(packed.group(1)))[:2_000].decode()
+    head = gzip.decompress(base64.b64decode(packed.group(1)))[:2_000].decode()
+    assert re.search(r"plotly\.js \(cartesian - minified\) v\d", head), head[:200]
     assert "Resolved configuration" in text and "contact_stiffness" in text
     assert "Headline numbers" in text and "natural_frequency" in text
 
@@ -139,4 +141,18 @@ def test_default_output_is_report_html_in_the_folder(reports):
     folder = OUT / "runs" / "geometry_rao2023_rig"
     done = subprocess.run([CLI, "report", str(folder), "--quiet"], capture_output=True, text=True)
     assert done.returncode == 0 and done.stdout == "", done.stderr
-    assert (folder / "report.html").stat().st_size > 1_000_000
+    assert (folder / "report.html").stat().st_size > 400_000  # plotly.js (cartesian) embedded
+
+
+# The trace types of plotly.js's cartesian bundle (its README), the one the report embeds: a
+# figure with another type would be drawn as a scatter, with a console warning.
+CARTESIAN_TRACES = {"bar", "box", "contour", "heatmap", "histogram", "histogram2d",
+                    "histogram2dcontour", "image", "pie", "scatter", "scatterternary", "violin"}
+
+
+def test_every_figure_uses_the_embedded_bundles_traces(reports):
+    for name, page in reports.items():
+        figures = re.search(r'<script type="application/json" id="gd-figures">(.*?)</script>',
+                            page.read_text(), re.S)
+        types = {trace.get("type", "scatter") for f in json.loads(figures.group(1)) for trace in f["data"]}
+        assert types <= CARTESIAN_TRACES, (name, types - CARTESIAN_TRACES)
