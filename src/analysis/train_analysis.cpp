@@ -25,6 +25,7 @@
 #include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
@@ -303,7 +304,7 @@ std::string gearboxFileOf(std::string_view text, const std::string& source,
                           const std::vector<std::string>& overrides) {
   std::string ref;
   try {
-    const toml::table table = toml::parse(text, source);
+    const toml::table table = config::parseToml(text, source);
     if (auto node = table.at_path("gearbox.file"); node && node.is_string())
       ref = *node.value<std::string>();
   } catch (const std::exception&) {
@@ -319,7 +320,7 @@ std::string gearboxFileOf(std::string_view text, const std::string& source,
     value.erase(value.find_last_not_of(" \t") + 1);
     value.erase(0, value.find_first_not_of(" \t"));
     try {  // TOML ("x.toml"), or a bare word taken as a string, as config::parseConfig does
-      const toml::table parsed = toml::parse("v = " + value);
+      const toml::table parsed = config::parseToml("v = " + value, "--set");
       if (auto v = parsed["v"].value<std::string>()) value = *v;
     } catch (const toml::parse_error&) {
     }

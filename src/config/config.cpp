@@ -12,6 +12,7 @@
 
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/config/renamed_keys.h"
+#include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 
 namespace geardyn::config {
@@ -178,7 +179,7 @@ void Resolver::applyOverride(toml::table& root, const std::string& assignment) {
   toml::table parsed;
   try {
     const std::string document = "v = " + text;
-    parsed = toml::parse(std::string_view(document), std::string_view("--set"));
+    parsed = parseToml(document, "--set");
   } catch (const toml::parse_error&) {
     parsed = toml::table{};
     parsed.insert("v", text);
@@ -533,7 +534,7 @@ Config parseConfig(std::string_view toml_text, const std::string& source_name,
                    const ConfigSchema& schema, const std::vector<std::string>& overrides) {
   toml::table root;
   try {
-    root = toml::parse(toml_text, source_name);
+    root = parseToml(toml_text, source_name);
   } catch (const toml::parse_error& error) {
     throw InputError(
         "", "",

@@ -11,6 +11,7 @@
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/output_section.h"
 #include "geardyn/config/stiffness_config.h"
+#include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
@@ -186,7 +187,7 @@ FeShaftSpec shaftFromConfig(const Config& config, const std::string& s, const Ge
 
 std::string peekConfigString(const std::filesystem::path& file, const std::string& key) {
   try {
-    const toml::table table = toml::parse_file(file.string());
+    const toml::table table = parseTomlFile(file);
     if (auto node = table.at_path(key); node && node.is_string()) return *node.value<std::string>();
   } catch (const std::exception&) {
     // The real load reports the error with its location.

@@ -16,6 +16,7 @@
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/ltca_config.h"
+#include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/solvers/train_response.h"
@@ -75,7 +76,7 @@ std::string keyOf(const toml::table& table, const std::string& key,
     v.erase(v.find_last_not_of(" \t") + 1);
     v.erase(0, v.find_first_not_of(" \t"));
     try {  // TOML ("stage1") or a bare word, as parseConfig reads it
-      const toml::table parsed = toml::parse("v = " + v);
+      const toml::table parsed = parseToml("v = " + v, "--set");
       if (auto s = parsed["v"].value<std::string>()) v = *s;
     } catch (const toml::parse_error&) {
     }
@@ -111,7 +112,7 @@ Config loadLtcaOnGearboxMesh(const std::filesystem::path& file, const ConfigSche
   const std::string text = readConfigFile(file);
   toml::table table;
   try {
-    table = toml::parse(text, file.string());
+    table = parseToml(text, file.string());
   } catch (const toml::parse_error&) {
     return parseConfig(text, file.string(), schema, overrides);  // the syntax error, located
   }

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "geardyn/config/did_you_mean.h"
+#include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
 
@@ -225,7 +226,7 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
                                     const std::vector<std::string>& extra_set) {
   toml::table root;
   try {
-    root = toml::parse_file(file.string());
+    root = parseTomlFile(file);
   } catch (const toml::parse_error& e) {
     if (!fs::exists(file)) throw InputError("config", file.string(), "an existing file");
     throw InputError("config", file.string(),
@@ -245,7 +246,7 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
     toml::table parsed;
     const std::string document = "v = " + text;
     try {
-      parsed = toml::parse(std::string_view(document), std::string_view("--set"));
+      parsed = parseToml(document, "--set");
     } catch (const toml::parse_error&) {
       parsed.insert("v", text);  // a bare word is a string
     }
