@@ -31,19 +31,15 @@ std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f)
   return values;
 }
 
-}  // namespace
+using SweepRuns = std::vector<std::pair<std::string, ContinuationResult>>;
 
-AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& context) {
-  context.checkBudget("hbm");
-  const config::GearPairModelBuild build = config::buildGearPairModel(config, false);
-  std::vector<std::string> warnings = build.warnings;
-  const GearPairModel model(build.spec);
-  const HarmonicBalanceOptions hbm_options = config::harmonicBalanceOptionsFromConfig(config);
-  HarmonicBalance hbm(model, hbm_options);
-  const double scale = build.nondimensional ? 1.0 : 2.0 * std::numbers::pi;  // ω = scale · f
-
+/// The continuation's options: the steps the user gave (in the unit of the keys), the others
+/// derived from the problem (deriveContinuationSteps); `steps` records them for summary.json.
+ContinuationOptions continuationOptions(const config::Config& config,
+                                        const config::GearPairModelBuild& build,
+                                        const HarmonicBalanceOptions& hbm_options, double scale,
+                                        nlohmann::ordered_json& steps) {
   ContinuationOptions sweep;
-  // Steps the user gave (in the unit of the keys); the others are derived from the problem.
   const auto given = [&](const char* key) {
     return config.has(key) ? config.real(key) * scale : 0.0;
   };
@@ -68,115 +64,100 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
   deriveContinuationSteps(sweep, build.natural_frequency, build.damping_ratio,
                           hbm_options.harmonics);
   if (sweep.fold_tolerance == 0.0) sweep.fold_tolerance = 1e-3 * (stop - start) * scale;
-  const nlohmann::ordered_json steps = {{"initial_step", sweep.initial_step / scale},
-                                        {"min_step", sweep.min_step / scale},
-                                        {"max_step", sweep.max_step / scale},
-                                        {"fold_tolerance", sweep.fold_tolerance / scale},
-                                        {"derived", !config.has("sweep.max_step")}};
-  const std::string direction = config.string("sweep.direction");
-  std::vector<std::pair<std::string, ContinuationResult>> runs;
-  const auto clock_start = std::chrono::steady_clock::now();
-  for (const std::string which : {"up", "down"}) {
-    if (direction != "both" && direction != which) continue;
-    sweep.start = (which == "up" ? start : stop) * scale;
-    sweep.stop = (which == "up" ? stop : start) * scale;
-    sweep.progress = context.progressFor("hbm: sweep " + which, "");
-    runs.emplace_back(which, continueInFrequency(hbm, sweep));
-  }
+  steps = {{"initial_step", sweep.initial_step / scale},
+           {"min_step", sweep.min_step / scale},
+           {"max_step", sweep.max_step / scale},
+           {"fold_tolerance", sweep.fold_tolerance / scale},
+           {"derived", !config.has("sweep.max_step")}};
+  return sweep;
+}
 
-  const double sweep_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
-  AnalysisResult result("hbm", config, context);
+/// The sweeps' points as rows, their folds, bifurcations and per-sweep record in summary.json.
+struct SweepRecord {
   std::vector<io::SweepRow> rows;
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
   nlohmann::ordered_json bifurcations = nlohmann::ordered_json::array();
+  nlohmann::ordered_json sweeps = nlohmann::ordered_json::object();
   int failures = 0, points = 0;
   bool completed = true;
-  nlohmann::ordered_json sweeps = nlohmann::ordered_json::object();
-  for (auto& [which, run] : runs) {
+};
+
+SweepRecord recordSweeps(const SweepRuns& runs, HarmonicBalance& hbm, const GearPairModel& model,
+                         double scale, AnalysisResult& result) {
+  SweepRecord record;
+  auto& rows = record.rows;
+  for (const auto& [which, run] : runs) {
     const std::size_t first = rows.size();
     for (const auto& p : run.points) rows.push_back(io::sweepRow(hbm, model, p, which, scale));
     for (std::size_t index : run.folds) {
-      folds.push_back({{"sweep", which},
-                       {"frequency", rows[first + index].frequency},
-                       {"p2p", rows[first + index].p2p}});
+      record.folds.push_back({{"sweep", which},
+                              {"frequency", rows[first + index].frequency},
+                              {"p2p", rows[first + index].p2p}});
     }
     for (const Bifurcation& b : run.bifurcations) {
-      bifurcations.push_back({{"sweep", which},
-                              {"type", toString(b.type)},
-                              {"frequency", rows[first + b.index].frequency},
-                              {"p2p", rows[first + b.index].p2p}});
+      record.bifurcations.push_back({{"sweep", which},
+                                     {"type", toString(b.type)},
+                                     {"frequency", rows[first + b.index].frequency},
+                                     {"p2p", rows[first + b.index].p2p}});
     }
-    failures += run.failures;
-    points += static_cast<int>(run.points.size());
-    completed = completed && run.completed;
-    sweeps[which] = {{"points", run.points.size()},
-                     {"completed", run.completed},
-                     {"folds", run.folds.size()},
-                     {"step_cuts", run.failures},
-                     {"message", run.message}};
+    record.failures += run.failures;
+    record.points += static_cast<int>(run.points.size());
+    record.completed = record.completed && run.completed;
+    record.sweeps[which] = {{"points", run.points.size()},
+                            {"completed", run.completed},
+                            {"folds", run.folds.size()},
+                            {"step_cuts", run.failures},
+                            {"message", run.message}};
     if (!run.completed) result.errors.push_back("sweep " + which + ": " + run.message);
   }
+  return record;
+}
 
-  io::RunSummary& summary = result.summary;
-  summary.status = completed ? "ok" : "incomplete_sweep";
-  nlohmann::ordered_json peak;
-  for (const auto& r : rows) {
-    if (peak.is_null() || r.p2p > peak["p2p"].get<double>())
-      peak = {{"frequency", r.frequency}, {"p2p", r.p2p}, {"stable", r.stable}};
-  }
-  summary.results = {{"points", points},
-                     {"wall_time_s", sweep_seconds},
-                     {"time_per_point_s", points > 0 ? sweep_seconds / points : 0.0},
-                     {"folds", folds},
-                     {"peak", peak},
-                     {"failures", failures},
-                     {"bifurcations", bifurcations},
-                     {"continuation_steps", steps},
-                     {"sweeps", sweeps},
-                     {"harmonics", hbm_options.harmonics},
-                     {"samples_per_period", hbm_options.samples_per_period},
-                     {"natural_frequency", build.natural_frequency / scale}};
-
-  result.addTable("sweep.csv", io::sweepTable(rows, hbm_options.harmonics, build.nondimensional));
-
-  // Newmark checks at requested frequencies.
+/// newmark.csv: Newmark runs at `sweep.newmark_frequencies` against the stable branches there.
+void addNewmarkChecks(const config::Config& config, const GearPairModel& model,
+                      const std::vector<io::SweepRow>& rows, double scale, bool nondimensional,
+                      AnalysisResult& result) {
   const auto newmark_frequencies = config.realList("sweep.newmark_frequencies");
-  if (!newmark_frequencies.empty()) {
-    const std::string u = build.nondimensional ? "nondim" : "m";
-    io::CsvTable table({build.nondimensional ? "frequency_nondim" : "frequency_hz",
-                        "p2p_newmark_transverse_" + u, "p2p_hbm_transverse_" + u,
-                        "relative_difference", "status"});
-    nlohmann::ordered_json checks = nlohmann::ordered_json::array();
-    for (double f : newmark_frequencies) {
-      GearPairModelSpec spec = model.spec();
-      spec.mesh_frequency = f * scale / (2.0 * std::numbers::pi);
-      const GearPairModel at(spec);
-      const TimeResponse r = solveTimeResponse(at, config::timeResponseOptionsFromConfig(config));
-      const io::TimeResponseChannels c = io::channelsOf(at, r);
-      const double p2p =
-          *std::max_element(c.y.begin(), c.y.end()) - *std::min_element(c.y.begin(), c.y.end());
-      const auto candidates = stableP2pAt(rows, f);
-      double best = NAN;
-      for (double v : candidates) {
-        if (std::isnan(best) || std::abs(v - p2p) < std::abs(best - p2p)) best = v;
-      }
-      const double difference = std::isnan(best) ? NAN : best / p2p - 1.0;
-      table.addRow({f, p2p, best, difference, toString(r.status)});
-      checks.push_back(
-          {{"frequency", f},
-           {"p2p_newmark", p2p},
-           {"p2p_hbm",
-            std::isnan(best) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(best)},
-           {"relative_difference", std::isnan(difference) ? nlohmann::ordered_json(nullptr)
-                                                          : nlohmann::ordered_json(difference)},
-           {"status", toString(r.status)}});
+  if (newmark_frequencies.empty()) return;
+  const std::string u = nondimensional ? "nondim" : "m";
+  io::CsvTable table({nondimensional ? "frequency_nondim" : "frequency_hz",
+                      "p2p_newmark_transverse_" + u, "p2p_hbm_transverse_" + u,
+                      "relative_difference", "status"});
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+  for (double f : newmark_frequencies) {
+    GearPairModelSpec spec = model.spec();
+    spec.mesh_frequency = f * scale / (2.0 * std::numbers::pi);
+    const GearPairModel at(spec);
+    const TimeResponse r = solveTimeResponse(at, config::timeResponseOptionsFromConfig(config));
+    const io::TimeResponseChannels c = io::channelsOf(at, r);
+    const double p2p =
+        *std::max_element(c.y.begin(), c.y.end()) - *std::min_element(c.y.begin(), c.y.end());
+    const auto candidates = stableP2pAt(rows, f);
+    double best = NAN;
+    for (double v : candidates) {
+      if (std::isnan(best) || std::abs(v - p2p) < std::abs(best - p2p)) best = v;
     }
-    result.addTable("newmark.csv", table);
-    summary.results["newmark_checks"] = checks;
+    const double difference = std::isnan(best) ? NAN : best / p2p - 1.0;
+    table.addRow({f, p2p, best, difference, toString(r.status)});
+    checks.push_back(
+        {{"frequency", f},
+         {"p2p_newmark", p2p},
+         {"p2p_hbm",
+          std::isnan(best) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(best)},
+         {"relative_difference", std::isnan(difference) ? nlohmann::ordered_json(nullptr)
+                                                        : nlohmann::ordered_json(difference)},
+         {"status", toString(r.status)}});
   }
+  result.addTable("newmark.csv", table);
+  result.summary.results["newmark_checks"] = checks;
+}
 
-  // One period at requested frequencies: every solution on the sweeps there.
+/// period_<i>_<sweep>.csv: one period of every distinct solution the sweeps cross at each of
+/// `hbm.detail_frequencies` (solved there from the neighbours' interpolated coefficients).
+void addDetailPeriods(const config::Config& config, HarmonicBalance& hbm,
+                      const GearPairModel& model, const SweepRuns& runs,
+                      const std::vector<io::SweepRow>& rows, double scale, bool nondimensional,
+                      StabilityMethod stability_method, AnalysisResult& result) {
   int detail = 0;
   for (double f : config.realList("hbm.detail_frequencies")) {
     std::vector<double> found;  // p2p of the solutions written at f (the sweeps meet the same ones)
@@ -196,7 +177,7 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
       point.q = a.q + w * (b.q - a.q);
       hbm.solve(point);
       if (!point.converged) continue;
-      if (config.boolean("sweep.stability")) hbm.classify(point, sweep.stability_method, false);
+      if (config.boolean("sweep.stability")) hbm.classify(point, stability_method, false);
       const auto x = hbm.timeSignal(point.q);
       const double p2p =
           *std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end());
@@ -205,7 +186,7 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
         continue;
       found.push_back(p2p);
       const auto force = hbm.meshForceSignal(point.q, point.omega);
-      const bool nd = build.nondimensional;
+      const bool nd = nondimensional;
       io::CsvTable table(
           {"tau_rad", nd ? "t_nondim" : "t_s", nd ? "x_transverse_nondim" : "x_transverse_m",
            nd ? "y_transverse_nondim" : "y_transverse_m",
@@ -219,31 +200,93 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
       }
       const std::string name = fmt::format("period_{}_{}.csv", detail++, rows[i].sweep);
       result.addTable(name, table);
-      summary.results["details"].push_back(
+      result.summary.results["details"].push_back(
           {{"file", name}, {"frequency", f}, {"stable", point.stable}, {"p2p", p2p}});
     }
   }
+}
 
-  summary.warnings = warnings;
-  context.warnings(warnings);
-  // Printed values carry the unit of the configuration (nondimensional models: [-], the
-  // frequency as Ω/ω_n and the deflection in x₀).
-  const std::string length_unit = build.nondimensional ? " [-]" : " m";
-  const std::string frequency_unit = build.nondimensional ? " [-]" : " Hz";
-  std::string& text = result.report;
-  text = fmt::format("harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
-                     hbm_options.harmonics, hbm_options.samples_per_period, points, folds.size(),
-                     failures);
+/// The printed lines: points, folds, step cuts, the peak and the bifurcations, in the unit of
+/// the configuration (nondimensional models: [-], the frequency as Ω/ω_n and the deflection in
+/// x₀).
+std::string hbmReport(const HarmonicBalanceOptions& hbm_options, const SweepRecord& record,
+                      const nlohmann::ordered_json& peak, bool nondimensional) {
+  const std::string length_unit = nondimensional ? " [-]" : " m";
+  const std::string frequency_unit = nondimensional ? " [-]" : " Hz";
+  std::string text =
+      fmt::format("harmonic balance, H = {}, N = {}: {} points, {} folds, {} step cuts\n",
+                  hbm_options.harmonics, hbm_options.samples_per_period, record.points,
+                  record.folds.size(), record.failures);
   if (!peak.is_null()) {
     text += fmt::format("  peak p2p {:.6g}{} at {:.6g}{}\n", peak["p2p"].get<double>(), length_unit,
                         peak["frequency"].get<double>(), frequency_unit);
   }
-  for (const auto& b : bifurcations) {
+  for (const auto& b : record.bifurcations) {
     text += fmt::format("  {} ({} sweep) at {:.6g}{}, p2p {:.6g}{}\n", b["type"].get<std::string>(),
                         b["sweep"].get<std::string>(), b["frequency"].get<double>(), frequency_unit,
                         b["p2p"].get<double>(), length_unit);
   }
-  result.numerical_failure = !completed;
+  return text;
+}
+
+}  // namespace
+
+AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& context) {
+  context.checkBudget("hbm");
+  const config::GearPairModelBuild build = config::buildGearPairModel(config, false);
+  std::vector<std::string> warnings = build.warnings;
+  const GearPairModel model(build.spec);
+  const HarmonicBalanceOptions hbm_options = config::harmonicBalanceOptionsFromConfig(config);
+  HarmonicBalance hbm(model, hbm_options);
+  const double scale = build.nondimensional ? 1.0 : 2.0 * std::numbers::pi;  // ω = scale · f
+
+  nlohmann::ordered_json steps;
+  ContinuationOptions sweep = continuationOptions(config, build, hbm_options, scale, steps);
+  const double start = config.real("sweep.start"), stop = config.real("sweep.stop");
+  const std::string direction = config.string("sweep.direction");
+  SweepRuns runs;
+  const auto clock_start = std::chrono::steady_clock::now();
+  for (const std::string which : {"up", "down"}) {
+    if (direction != "both" && direction != which) continue;
+    sweep.start = (which == "up" ? start : stop) * scale;
+    sweep.stop = (which == "up" ? stop : start) * scale;
+    sweep.progress = context.progressFor("hbm: sweep " + which, "");
+    runs.emplace_back(which, continueInFrequency(hbm, sweep));
+  }
+  const double sweep_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+
+  AnalysisResult result("hbm", config, context);
+  const SweepRecord record = recordSweeps(runs, hbm, model, scale, result);
+  io::RunSummary& summary = result.summary;
+  summary.status = record.completed ? "ok" : "incomplete_sweep";
+  nlohmann::ordered_json peak;
+  for (const auto& r : record.rows) {
+    if (peak.is_null() || r.p2p > peak["p2p"].get<double>())
+      peak = {{"frequency", r.frequency}, {"p2p", r.p2p}, {"stable", r.stable}};
+  }
+  summary.results = {{"points", record.points},
+                     {"wall_time_s", sweep_seconds},
+                     {"time_per_point_s", record.points > 0 ? sweep_seconds / record.points : 0.0},
+                     {"folds", record.folds},
+                     {"peak", peak},
+                     {"failures", record.failures},
+                     {"bifurcations", record.bifurcations},
+                     {"continuation_steps", steps},
+                     {"sweeps", record.sweeps},
+                     {"harmonics", hbm_options.harmonics},
+                     {"samples_per_period", hbm_options.samples_per_period},
+                     {"natural_frequency", build.natural_frequency / scale}};
+  result.addTable("sweep.csv",
+                  io::sweepTable(record.rows, hbm_options.harmonics, build.nondimensional));
+  addNewmarkChecks(config, model, record.rows, scale, build.nondimensional, result);
+  addDetailPeriods(config, hbm, model, runs, record.rows, scale, build.nondimensional,
+                   sweep.stability_method, result);
+
+  summary.warnings = warnings;
+  context.warnings(warnings);
+  result.report = hbmReport(hbm_options, record, peak, build.nondimensional);
+  result.numerical_failure = !record.completed;
   return result;
 }
 
