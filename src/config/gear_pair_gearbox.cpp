@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geardyn/config/detail/toml_text.h"
 #include "geardyn/config/gear_pair_keys.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/geometry_config.h"
@@ -32,19 +33,8 @@ constexpr double kNominalModule = 3e-3;          // [m]
 constexpr double kNominalPressureAngleDeg = 20;  // [deg]
 constexpr double kNominalFaceWidth = 20e-3;      // [m]
 
-/// A TOML float that reads back as the same double: fmt's shortest round-trip form, with a
-/// ".0" when it would read as an integer.
-std::string real(double x) {
-  std::string s = fmt::format("{}", x);
-  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // n: inf, nan
-  return s;
-}
-
-std::string realList(const std::vector<double>& xs) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? ", " : "") + real(xs[i]);
-  return s + "]";
-}
+using detail::tomlReal;
+using detail::tomlReals;
 
 /// A TOML basic string: quotes, backslashes and control characters escaped.
 std::string quoted(const std::string& text) {
@@ -66,7 +56,7 @@ std::string quoted(const std::string& text) {
 std::string value(const Json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number_integer()) return fmt::format("{}", v.get<long long>());
-  if (v.is_number()) return real(v.get<double>());
+  if (v.is_number()) return tomlReal(v.get<double>());
   if (v.is_string()) return quoted(v.get<std::string>());
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + value(v[i]);
@@ -137,14 +127,14 @@ std::string stiffnessKeys(const Config& config, const GearPairKeys& k, std::stri
     tables = fmt::format(
         "\n[mesh_stiffness.fourier]\nfit = \"given\"\nmean = \"given\"\nmean_value = {}  # "
         "[N/m]\namplitudes = {}\nphases_deg = {}\ncontact_ratio = {}\n",
-        real(f->mean()), realList(f->relativeAmplitudes()), realList(phases_deg),
-        real(f->contactRatio()));
+        tomlReal(f->mean()), tomlReals(f->relativeAmplitudes()), tomlReals(phases_deg),
+        tomlReal(f->contactRatio()));
   } else if (const auto* step = dynamic_cast<const StepMeshStiffness*>(given)) {
     t += "stiffness = \"step\"\n";
     tables = fmt::format(
         "\n[mesh_stiffness.step]\nlevels = \"given\"\nk_min = {}  # [N/m]\nk_max = {}  # "
         "[N/m]\ncontact_ratio = {}\n",
-        real(step->kMin()), real(step->kMax()), real(step->contactRatio()));
+        tomlReal(step->kMin()), tomlReal(step->kMax()), tomlReal(step->contactRatio()));
   } else if (k.linearised) {
     // Tabulated at the loaded contact's positions: the table reads back its values there.
     const TabulatedMeshStiffness table(k.linearised->phases, k.linearised->tangent,
@@ -157,7 +147,7 @@ std::string stiffnessKeys(const Config& config, const GearPairKeys& k, std::stri
         "contact's\n# tangent stiffness K(phi) at the mean force F = {} N, at {} positions\n"
         "stiffness_table_source = \"ltca\"\nstiffness_table_phases = {}\n"
         "stiffness_table_values = {}  # [N/m]\n",
-        real(k.mean_force), phases.size(), realList(phases), realList(values));
+        tomlReal(k.mean_force), phases.size(), tomlReals(phases), tomlReals(values));
   } else {
     // gear_pair_ltca: k(φ) is the unmodified potential-energy stiffness (scales, k̄, linear
     // analyses); the tooth-pair elements carry the modifications.
@@ -171,9 +161,9 @@ std::string stiffnessKeys(const Config& config, const GearPairKeys& k, std::stri
 /// The mesh's damping: the file's dashpot c, or its ratio ζ (the same c = 2ζ√(k̄ m_e) on the
 /// train's mean stiffness and equivalent mass).
 std::string dampingKeys(const GearPairKeys& k) {
-  if (k.damping) return fmt::format("damping = {}  # [N s/m]\n", real(*k.damping));
+  if (k.damping) return fmt::format("damping = {}  # [N s/m]\n", tomlReal(*k.damping));
   return fmt::format("damping_ratio = {}  # on m_e and the mean stiffness\n",
-                     real(k.damping_ratio));
+                     tomlReal(k.damping_ratio));
 }
 
 /// The mesh's transmission-error keys.
@@ -181,21 +171,21 @@ std::string errorKeys(const Config& config, const GearPairKeys& k) {
   std::string t;
   const auto te_amplitudes = config.realList("model.transmission_error.amplitudes");
   if (!te_amplitudes.empty()) {
-    t += "te_amplitudes = " + realList(te_amplitudes) + "  # [m]\n";
-    t += "te_phases_deg = " + realList(config.realList("model.transmission_error.phases_deg")) +
+    t += "te_amplitudes = " + tomlReals(te_amplitudes) + "  # [m]\n";
+    t += "te_phases_deg = " + tomlReals(config.realList("model.transmission_error.phases_deg")) +
          "\n";
   }
   const std::string te = "model.transmission_error.";
   if (config.real(te + "rectangular_amplitude") != 0.0) {
     t += fmt::format("te_rectangular_amplitude = {}  # [m]\n",
-                     real(config.real(te + "rectangular_amplitude")));
-    t += "te_rectangular_duty = " + real(config.real(te + "rectangular_duty")) + "\n";
-    t += "te_rectangular_start = " + real(config.real(te + "rectangular_start")) + "\n";
+                     tomlReal(config.real(te + "rectangular_amplitude")));
+    t += "te_rectangular_duty = " + tomlReal(config.real(te + "rectangular_duty")) + "\n";
+    t += "te_rectangular_start = " + tomlReal(config.real(te + "rectangular_start")) + "\n";
   }
   if (!config.realList(te + "table_phases").empty() ||
       !config.realList(te + "table_values").empty()) {
-    t += "te_table_phases = " + realList(config.realList(te + "table_phases")) + "\n";
-    t += "te_table_values = " + realList(config.realList(te + "table_values")) + "  # [m]\n";
+    t += "te_table_phases = " + tomlReals(config.realList(te + "table_phases")) + "\n";
+    t += "te_table_values = " + tomlReals(config.realList(te + "table_values")) + "  # [m]\n";
   } else if (k.linearised) {
     // E = δ − F/K of the loaded contact, read back at the stiffness table's positions.
     TransmissionError table;
@@ -205,9 +195,9 @@ std::string errorKeys(const Config& config, const GearPairKeys& k) {
     const std::vector<double> phases = stiffness.discontinuities();
     std::vector<double> values;
     for (double p : phases) values.push_back(table.value(p));
-    t += "te_table_phases = " + realList(phases) +
+    t += "te_table_phases = " + tomlReals(phases) +
          "  # the loaded contact's error delta - F/K (model.stiffness.type = \"ltca\")\n";
-    t += "te_table_values = " + realList(values) + "  # [m]\n";
+    t += "te_table_values = " + tomlReals(values) + "  # [m]\n";
   }
   return t;
 }
@@ -235,7 +225,7 @@ std::string contactKeys(const Config& config, const GearPairKeys& k, std::string
   return fmt::format(
       "contact = \"backlash\"\nbacklash = {}  # [m] the file's model.normal_backlash: "
       "the full clearance j\n",
-      real(k.backlash));
+      tomlReal(k.backlash));
 }
 
 /// The header comment, [gearbox], the shafts and the gears.
@@ -257,7 +247,7 @@ std::string gearsAndShafts(const Config& config, const GearPairKeys& k, const Ge
   if (k.pair) {
     t += "# The gears are the file's [pinion] and [gear]; their bodies are off and each shaft\n"
          "# carries I = 2 m_e r_b^2, so that the equivalent mass is the file's m_e = " +
-         real(k.mass) + " kg.\n";
+         tomlReal(k.mass) + " kg.\n";
   } else {
     t += fmt::format(
         "# The file gives no gear geometry: a nominal spur pair carries the model (z = {},\n"
@@ -266,23 +256,24 @@ std::string gearsAndShafts(const Config& config, const GearPairKeys& k, const Ge
         "# I = 2 m_e r_b^2 (so that the equivalent mass is the file's m_e = {} kg), the torque\n"
         "# is F r_b and the speed 60 f_m / z.\n",
         kNominalTeeth, kNominalModule * 1e3, kNominalPressureAngleDeg, kNominalFaceWidth * 1e3,
-        real(r_a), real(k.mass));
+        tomlReal(r_a), tomlReal(k.mass));
   }
   t += "\n[gearbox]\n";
   const Json* title = tableAt(config, "title");
   t += "name = " + quoted(title && title->is_string() ? title->get<std::string>() : "gear pair") +
        "\n";
   t += "dofs = \"torsional\"\n";
-  t += fmt::format("\n[shafts.pinion_shaft]\npolar_inertia = {}  # [kg m^2]\n", real(inertia_a));
-  t += fmt::format("\n[shafts.gear_shaft]\npolar_inertia = {}  # [kg m^2]\n", real(inertia_b));
+  t +=
+      fmt::format("\n[shafts.pinion_shaft]\npolar_inertia = {}  # [kg m^2]\n", tomlReal(inertia_a));
+  t += fmt::format("\n[shafts.gear_shaft]\npolar_inertia = {}  # [kg m^2]\n", tomlReal(inertia_b));
   for (const char* gear : {"pinion", "gear"}) {
     t += fmt::format("\n[gears.{}]\nshaft = \"{}_shaft\"\nbody = false\n", gear, gear);
     if (k.pair) {
       t += keys(*tableAt(config, gear));
     } else {
       t += fmt::format("teeth = {}\nmodule = {}\npressure_angle_deg = {}\nface_width = {}\n",
-                       kNominalTeeth, real(kNominalModule), real(kNominalPressureAngleDeg),
-                       real(kNominalFaceWidth));
+                       kNominalTeeth, tomlReal(kNominalModule), tomlReal(kNominalPressureAngleDeg),
+                       tomlReal(kNominalFaceWidth));
     }
   }
   return t;
@@ -303,7 +294,7 @@ std::string gearPairGearboxToml(const Config& config, const GearPairKeys& k) {
   std::string t = gearsAndShafts(config, k, pair);
   t += "\n[meshes.mesh]\ngears = [\"pinion\", \"gear\"]\n";
   if (k.pair && config.has("pair.centre_distance")) {
-    t += "centre_distance = " + real(config.real("pair.centre_distance")) + "\n";
+    t += "centre_distance = " + tomlReal(config.real("pair.centre_distance")) + "\n";
   }
   if (k.pair && k.pair->spec().driver == Driver::kGear) t += "driver = \"gear\"  # pair.driver\n";
   std::string tables;
@@ -312,7 +303,7 @@ std::string gearPairGearboxToml(const Config& config, const GearPairKeys& k) {
     t += "stiffness_plane = \"transverse\"  # k, c, e and j of the gear-pair file are transverse\n";
   }
   t += dampingKeys(k);
-  t += "phase = " + real(k.initial_phase) + "  # mesh phase at t = 0 [mesh periods]\n";
+  t += "phase = " + tomlReal(k.initial_phase) + "  # mesh phase at t = 0 [mesh periods]\n";
   t += errorKeys(config, k);
   t += contactKeys(config, k, tables);
   t += tables;
@@ -320,9 +311,9 @@ std::string gearPairGearboxToml(const Config& config, const GearPairKeys& k) {
   t += fmt::format(
       "\n[operating_point]\ninput = \"pinion_shaft\"\noutput = \"gear_shaft\"\n"
       "speed_rpm = {}  # f_m = {} Hz{}\ntorque = {}  # [N m]: F = {} N on r_b = {} m\n",
-      real(speed_rpm), real(k.mesh_frequency),
+      tomlReal(speed_rpm), tomlReal(k.mesh_frequency),
       k.mesh_frequency == 0.0 ? " (the file leaves the speed to the analysis)" : "",
-      real(k.mean_force * r_a), real(k.mean_force), real(r_a));
+      tomlReal(k.mean_force * r_a), tomlReal(k.mean_force), tomlReal(r_a));
   return t;
 }
 
