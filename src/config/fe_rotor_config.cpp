@@ -195,14 +195,8 @@ std::string peekConfigString(const std::filesystem::path& file, const std::strin
   return "";
 }
 
-ConfigSchema feRotorSchema() {
-  ConfigSchema schema(
-      "rotor",
-      "Finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3-4): Timoshenko shafts, "
-      "bearings, disks, gyroscopics and a spur/helical mesh k_m(t) v v^T with any mesh-stiffness "
-      "model; Newmark time response at constant speed or along a run-up, modal analysis, "
-      "Campbell diagram, and the paper's comparison of mesh-stiffness models.");
-  schema.string("title").defaultValue("").doc("free text copied into the summary");
+/// The model, the gear pair, its mesh and mesh-stiffness models, the two shafts.
+static void addFeRotorModelSections(ConfigSchema& schema) {
   schema.section("model", "The model.");
   schema.string("model.type")
       .choices({"fe_geared_rotor"})
@@ -248,6 +242,10 @@ ConfigSchema feRotorSchema() {
   addMeshStiffnessModelSections(schema);
   addShaftSections(schema, kShafts[0], "pinion");
   addShaftSections(schema, kShafts[1], "gear");
+}
+
+/// Damping, constant loads and the pinion speed (constant or a ramp).
+static void addFeRotorLoadSections(ConfigSchema& schema) {
   schema.section("damping", "Proportional damping C = α M + β K_shafts.");
   schema.real("damping.stiffness_proportional")
       .unit("s")
@@ -289,6 +287,10 @@ ConfigSchema feRotorSchema() {
       .positive()
       .optional()
       .doc("ramp end (default: time.duration)");
+}
+
+/// What to compute and the Newmark time response.
+static void addFeRotorTimeSections(ConfigSchema& schema) {
   schema.section("analysis", "What to compute.");
   schema.string("analysis.type")
       .choices({"time", "modal", "campbell", "compare_stiffness"})
@@ -341,6 +343,10 @@ ConfigSchema feRotorSchema() {
       .positive()
       .defaultValue(0.02)
       .doc("run-up: window of the order tracking and waterfall");
+}
+
+/// Modal analysis, Campbell diagram and the paper's comparison of mesh-stiffness models.
+static void addFeRotorModalSections(ConfigSchema& schema) {
   schema.section("modal", "Modal analysis (mean mesh stiffness).");
   schema.integer("modal.modes").min(1).max(500).defaultValue(12).doc("modes reported");
   schema.real("modal.speed_rpm")
@@ -381,6 +387,20 @@ ConfigSchema feRotorSchema() {
       .choices({"api", "step", "fourier", "potential_energy", "iso6336", "fourier_beam_mean"})
       .defaultValue("potential_energy")
       .doc("model the others are compared with (ratios in compare_ratios.csv)");
+}
+
+ConfigSchema feRotorSchema() {
+  ConfigSchema schema(
+      "rotor",
+      "Finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3-4): Timoshenko shafts, "
+      "bearings, disks, gyroscopics and a spur/helical mesh k_m(t) v v^T with any mesh-stiffness "
+      "model; Newmark time response at constant speed or along a run-up, modal analysis, "
+      "Campbell diagram, and the paper's comparison of mesh-stiffness models.");
+  schema.string("title").defaultValue("").doc("free text copied into the summary");
+  addFeRotorModelSections(schema);
+  addFeRotorLoadSections(schema);
+  addFeRotorTimeSections(schema);
+  addFeRotorModalSections(schema);
   addOutputSection(schema);
   return schema;
 }

@@ -167,15 +167,8 @@ void addRotorSection(ConfigSchema& schema, bool with_speed) {
   }
 }
 
-ConfigSchema rotorSchema() {
-  ConfigSchema schema("rotor",
-                      "Lateral geared rotor with asymmetric transmission error (Rao 2023, "
-                      "Fig. 2.1): Dormand-Prince response from rest, exact frequency-domain "
-                      "steady state, orbits, full spectra, simulated probe records, parametric "
-                      "study. Defaults are the thesis's Table 4.1.");
-  schema.string("title").optional().doc("free text describing the study");
-  addRotorSection(schema, true);
-
+/// Mesh spring, damper and transmission error (Rao 2023 eqs. 2.6-2.9).
+static void addRotorMeshSection(ConfigSchema& schema) {
   schema.section("mesh", "Mesh spring, damper and transmission error (eqs. 2.6-2.9).");
   schema.real("mesh.stiffness").unit("N/m").positive().defaultValue(6e8).doc("k_m");
   schema.real("mesh.damping_ratio")
@@ -242,6 +235,10 @@ ConfigSchema rotorSchema() {
           "e_y = e cos; default the operating pressure angle");
   schema.alias("mesh.line_of_action_angle",
                "mesh.line_of_action_angle_deg");  // value converted (config/renamed_keys.h)
+}
+
+/// Gear runouts and the Dormand-Prince time response.
+static void addRotorRunoutAndTimeSections(ConfigSchema& schema) {
   schema.section("runout", "Gear runouts (eccentricities) and their phases (eqs. 2.2-2.4).");
   schema.real("runout.pinion").unit("m").min(0.0).defaultValue(200e-6).doc("e_p");
   schema.real("runout.pinion_phase_deg")
@@ -285,7 +282,10 @@ ConfigSchema rotorSchema() {
       .lessThan(1.0)
       .defaultValue(1e-6)
       .doc("steady once |z(t + T_c) - z(t)| <= tol max|z| for the rest of the record");
+}
 
+/// The exact steady state, the spectrum, the gear pair and the modifications.
+static void addRotorFrequencySections(ConfigSchema& schema) {
   schema.section("frequency", "Exact steady state, one complex solve per whirl component.");
   schema.boolean("frequency.superpose")
       .defaultValue(false)
@@ -294,7 +294,10 @@ ConfigSchema rotorSchema() {
   addSpectrumSection(schema);
   addGearPairSections(schema, false);
   addModificationsSection(schema);
+}
 
+/// Simulated measurement records and the parametric study of §4.5.
+static void addRotorMeasurementSections(ConfigSchema& schema) {
   schema.section("measurement",
                  "Simulated probe records (x1, y1, x2, y2, keyphasor) for `geardyn spectrum`.");
   schema.stringList("measurement.formats")
@@ -348,7 +351,21 @@ ConfigSchema rotorSchema() {
       .unit("-")
       .defaultValue(nlohmann::ordered_json::array({0.5, 2.0}))
       .doc("mesh damping x factor");
+}
 
+ConfigSchema rotorSchema() {
+  ConfigSchema schema("rotor",
+                      "Lateral geared rotor with asymmetric transmission error (Rao 2023, "
+                      "Fig. 2.1): Dormand-Prince response from rest, exact frequency-domain "
+                      "steady state, orbits, full spectra, simulated probe records, parametric "
+                      "study. Defaults are the thesis's Table 4.1.");
+  schema.string("title").optional().doc("free text describing the study");
+  addRotorSection(schema, true);
+
+  addRotorMeshSection(schema);
+  addRotorRunoutAndTimeSections(schema);
+  addRotorFrequencySections(schema);
+  addRotorMeasurementSections(schema);
   addOutputSection(schema);
   return schema;
 }

@@ -13,6 +13,98 @@ namespace {
 using Json = nlohmann::ordered_json;
 }  // namespace
 
+/// The SDOF model's mesh stiffness k(t): its models and their keys.
+static void addGearPairStiffnessSection(ConfigSchema& schema) {
+  schema.section("model.stiffness", "Mesh stiffness k(t).");
+  schema.string("model.stiffness.type")
+      .choices({"fourier", "step", "potential_energy", "api", "iso6336", "ltca"})
+      .defaultValue("fourier")
+      .doc(
+          "given Fourier series or step, or a model of the gear pair ([mesh_stiffness.*] options); "
+          "ltca: the loaded tooth contact at the mean force with [modifications] - its tangent "
+          "stiffness as k(t) and delta - F/k as a table error");
+  schema.real("model.stiffness.mean")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("k̄ (fourier; step from a mean); nondimensional default 1");
+  schema.realList("model.stiffness.cos")
+      .unit("-")
+      .defaultValue(Json::array())
+      .doc("k = k̄ (1 + Σ cos_i cos(iΩt) + sin_i sin(iΩt))");
+  schema.realList("model.stiffness.sin")
+      .unit("-")
+      .defaultValue(Json::array())
+      .doc("see cos (empty: zeros)");
+  schema.real("model.stiffness.k_min")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("step: stiffness with n pairs");
+  schema.real("model.stiffness.k_max")
+      .unit("N/m")
+      .positive()
+      .optional()
+      .doc("step: stiffness with n + 1 pairs");
+  schema.real("model.stiffness.contact_ratio")
+      .unit("-")
+      .min(1.0)
+      .optional()
+      .doc("step/fourier without a gear pair");
+}
+
+/// The static transmission error e(t) and the speed (`excitation`).
+static void addGearPairErrorAndSpeedSections(ConfigSchema& schema) {
+  schema.section("model.transmission_error", "Static transmission error / gear error e(t).");
+  schema.realList("model.transmission_error.amplitudes")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("e = Σ a_r cos(rΩt + φ_r), r = 1, 2, ...");
+  schema.realList("model.transmission_error.phases_deg")
+      .unit("deg")
+      .defaultValue(Json::array())
+      .doc("φ_r, one per amplitude; empty: 0 (as a gearbox's meshes.*.te_phases_deg)");
+  schema.alias("model.transmission_error.phases",
+               "model.transmission_error.phases_deg");  // value converted (config/renamed_keys.h)
+  schema.real("model.transmission_error.rectangular_amplitude")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc("rectangular wave: value on its duty part");
+  schema.real("model.transmission_error.rectangular_duty")
+      .unit("-")
+      .greaterThan(0.0)
+      .lessThan(1.0)
+      .defaultValue(0.5)
+      .doc("fraction of the mesh period");
+  schema.real("model.transmission_error.rectangular_start")
+      .unit("-")
+      .defaultValue(0.0)
+      .doc("mesh phase where it starts");
+  schema.realList("model.transmission_error.table_phases")
+      .unit("-")
+      .min(0.0)
+      .lessThan(1.0)
+      .defaultValue(Json::array())
+      .doc("table: mesh phases in [0, 1)");
+  schema.realList("model.transmission_error.table_values")
+      .unit("m")
+      .defaultValue(Json::array())
+      .doc("table: e at those phases");
+
+  schema.section("excitation", "Speed.");
+  schema.real("excitation.mesh_frequency")
+      .unit("Hz")
+      .min(0.0)
+      .optional()
+      .doc("f_m (nondimensional: Ω = ω_m/ω_n)");
+  schema.real("excitation.speed_rpm")
+      .unit("rpm")
+      .min(0.0)
+      .optional()
+      .doc("pinion speed (f_m = z₁ n₁ / 60)");
+  schema.real("excitation.initial_phase").unit("-").defaultValue(0.0).doc("mesh phase at t = 0");
+}
+
 void addGearPairModelSections(ConfigSchema& schema) {
   schema.section(
       "model",
@@ -106,91 +198,8 @@ void addGearPairModelSections(ConfigSchema& schema) {
   schema.alias("model.backlash",
                "model.normal_backlash");  // value converted (config/renamed_keys.h)
 
-  schema.section("model.stiffness", "Mesh stiffness k(t).");
-  schema.string("model.stiffness.type")
-      .choices({"fourier", "step", "potential_energy", "api", "iso6336", "ltca"})
-      .defaultValue("fourier")
-      .doc(
-          "given Fourier series or step, or a model of the gear pair ([mesh_stiffness.*] options); "
-          "ltca: the loaded tooth contact at the mean force with [modifications] - its tangent "
-          "stiffness as k(t) and delta - F/k as a table error");
-  schema.real("model.stiffness.mean")
-      .unit("N/m")
-      .positive()
-      .optional()
-      .doc("k̄ (fourier; step from a mean); nondimensional default 1");
-  schema.realList("model.stiffness.cos")
-      .unit("-")
-      .defaultValue(Json::array())
-      .doc("k = k̄ (1 + Σ cos_i cos(iΩt) + sin_i sin(iΩt))");
-  schema.realList("model.stiffness.sin")
-      .unit("-")
-      .defaultValue(Json::array())
-      .doc("see cos (empty: zeros)");
-  schema.real("model.stiffness.k_min")
-      .unit("N/m")
-      .positive()
-      .optional()
-      .doc("step: stiffness with n pairs");
-  schema.real("model.stiffness.k_max")
-      .unit("N/m")
-      .positive()
-      .optional()
-      .doc("step: stiffness with n + 1 pairs");
-  schema.real("model.stiffness.contact_ratio")
-      .unit("-")
-      .min(1.0)
-      .optional()
-      .doc("step/fourier without a gear pair");
-
-  schema.section("model.transmission_error", "Static transmission error / gear error e(t).");
-  schema.realList("model.transmission_error.amplitudes")
-      .unit("m")
-      .defaultValue(Json::array())
-      .doc("e = Σ a_r cos(rΩt + φ_r), r = 1, 2, ...");
-  schema.realList("model.transmission_error.phases_deg")
-      .unit("deg")
-      .defaultValue(Json::array())
-      .doc("φ_r, one per amplitude; empty: 0 (as a gearbox's meshes.*.te_phases_deg)");
-  schema.alias("model.transmission_error.phases",
-               "model.transmission_error.phases_deg");  // value converted (config/renamed_keys.h)
-  schema.real("model.transmission_error.rectangular_amplitude")
-      .unit("m")
-      .defaultValue(0.0)
-      .doc("rectangular wave: value on its duty part");
-  schema.real("model.transmission_error.rectangular_duty")
-      .unit("-")
-      .greaterThan(0.0)
-      .lessThan(1.0)
-      .defaultValue(0.5)
-      .doc("fraction of the mesh period");
-  schema.real("model.transmission_error.rectangular_start")
-      .unit("-")
-      .defaultValue(0.0)
-      .doc("mesh phase where it starts");
-  schema.realList("model.transmission_error.table_phases")
-      .unit("-")
-      .min(0.0)
-      .lessThan(1.0)
-      .defaultValue(Json::array())
-      .doc("table: mesh phases in [0, 1)");
-  schema.realList("model.transmission_error.table_values")
-      .unit("m")
-      .defaultValue(Json::array())
-      .doc("table: e at those phases");
-
-  schema.section("excitation", "Speed.");
-  schema.real("excitation.mesh_frequency")
-      .unit("Hz")
-      .min(0.0)
-      .optional()
-      .doc("f_m (nondimensional: Ω = ω_m/ω_n)");
-  schema.real("excitation.speed_rpm")
-      .unit("rpm")
-      .min(0.0)
-      .optional()
-      .doc("pinion speed (f_m = z₁ n₁ / 60)");
-  schema.real("excitation.initial_phase").unit("-").defaultValue(0.0).doc("mesh phase at t = 0");
+  addGearPairStiffnessSection(schema);
+  addGearPairErrorAndSpeedSections(schema);
 }
 
 void addTimeSolverSection(ConfigSchema& schema) {
