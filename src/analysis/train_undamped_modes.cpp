@@ -28,6 +28,10 @@ std::string dampingKeyOf(const GearTrainModel& model, const std::string& element
     if (part == "torsion") return "bearings." + base + ".c_torsion";
     return "bearings." + base + ".cyy/czz";
   }
+  for (const TrainShaftSpec& s : spec.shafts) {
+    if (s.name == base && part.rfind("beam", 0) == 0)
+      return "shafts." + base + ".stiffness_proportional_damping";
+  }
   for (const TrainCouplingSpec& c : spec.couplings) {
     if (c.name == base)
       return "couplings." + base + (part == "lateral" ? ".c_lateral" : ".c_torsion");
@@ -71,19 +75,37 @@ std::string undampedModesWarning(const GearTrainModel& model,
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
     }
     if (listed.size() < kListed) {
-      listed.push_back(
-          fmt::format("{:.1f} Hz{}", m.frequency, m.excited ? " (excited by the meshes)" : ""));
+      listed.push_back(fmt::format("{:.1f} Hz{}", m.frequency, m.excited ? " (excited)" : ""));
     }
   }
   if (modes.size() > kListed) listed.push_back(fmt::format("{} more", modes.size() - kListed));
   keys.push_back("gearbox.mass_proportional_damping");
-  return fmt::format(
-      "{} mode(s) at {:.1f} rpm have no damping: {}; {}; damp them with {}", modes.size(),
-      speed_rpm, fmt::join(listed, ", "),
-      any_excited ? "a time run cannot reach a steady state while the meshes excite one"
-                  : "the meshes do not excite them (a time run does not wait for them), but any "
-                    "other excitation (unbalance, a shock) would ring forever",
-      fmt::join(keys, ", "));
+  // What drives the train: its meshes and its other excitation terms (unbalances, runouts,
+  // prescribed bearing displacements), by their keys' sections.
+  std::vector<std::string> sources;
+  if (!model.meshes().empty()) sources.push_back("the meshes");
+  for (const TrainExcitationTerm& term : model.excitations()) {
+    const std::string section = term.name.substr(0, term.name.find('.'));
+    if (std::find(sources.begin(), sources.end(), section) == sources.end())
+      sources.push_back(section);
+  }
+  const std::string forcing = fmt::format("{}", fmt::join(sources, " and the "));
+  std::string consequence;
+  if (any_excited)
+    consequence =
+        fmt::format("a time run cannot reach a steady state while {} excite one", forcing);
+  else if (sources.empty())
+    consequence =
+        "nothing forces them (a time run does not wait for them), but a shock would "
+        "ring forever";
+  else
+    consequence = fmt::format(
+        "{} do not excite them (a time run does not wait for them), but "
+        "any other excitation (a shock) would ring forever",
+        forcing);
+  return fmt::format("{} mode(s) at {:.1f} rpm have no damping: {}; {}; damp them with {}",
+                     modes.size(), speed_rpm, fmt::join(listed, ", "), consequence,
+                     fmt::join(keys, ", "));
 }
 
 }  // namespace geardyn::analysis::detail

@@ -364,8 +364,9 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .min(0.0)
       .defaultValue(0.0)
       .doc(
-          "simulated time (0: until every mode the meshes excite has decayed by 1e-6, then "
-          "the window; undamped modes the meshes do not excite are not waited for; "
+          "simulated time (0: until every mode the meshes or the other excitations "
+          "(unbalances, runouts, bearing excitations) excite has decayed by 1e-6, then the "
+          "window; undamped modes they do not excite are not waited for; "
           "solvers/train_transient.h)");
   schema.real("time.time_step")
       .unit("s")

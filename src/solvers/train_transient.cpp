@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace geardyn {
 
@@ -13,14 +14,30 @@ constexpr double kUndamped = 1e-9;  // |ζ| below this is round-off of an undamp
 // not excited (train_transient.h).
 constexpr double kDecay = 1e-6;
 
-/// √s_j: mode j's starting amplitude relative to the modes the meshes drive (TrainTransient).
-/// With unbalances, runouts or prescribed bearing displacements (GearTrainModel::excitations())
-/// every mode counts as excited (1): conservative, the duration waits for the slowest one.
-double meshExcitation(const GearTrainModel& model, const TrainMode& mode) {
-  if (!model.excitations().empty()) return 1.0;
+/// Mode j's starting amplitude relative to the modes the forcing drives (TrainTransient): √s_j
+/// from the meshes (s_j its strain-energy share in them) and, for every other excitation term
+/// (unbalances, runouts, prescribed bearing displacements: GearTrainModel::excitations()), the
+/// cosine |φ_jᴴ P| / (‖P‖ max|φ_j|) between the mode shape and each nonzero part P (S, D, U of
+/// train_excitation.h) of the term's force pattern: a mode orthogonal to every force pattern
+/// to round-off (a Jeffcott rotor's torsional and axial modes under an unbalance) is not
+/// excited by it, whatever the speed.
+double modalExcitation(const GearTrainModel& model, const TrainMode& mode) {
   double share = 0.0;
   for (double s : mode.mesh_strain_energy) share += s;
-  return std::sqrt(std::max(share, 0.0));
+  double start = std::sqrt(std::max(share, 0.0));
+  const double largest = mode.shape.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) return start;
+  for (const TrainExcitationTerm& term : model.excitations()) {
+    for (const Eigen::VectorXcd* part : {&term.stiffness, &term.damping, &term.inertia}) {
+      const double size = part->size() > 0 ? part->norm() : 0.0;
+      if (!(size > 0.0)) continue;
+      std::complex<double> force = 0.0;
+      for (std::size_t i = 0; i < term.dofs.size(); ++i)
+        force += std::conj(mode.shape(term.dofs[i])) * (*part)(static_cast<Eigen::Index>(i));
+      start = std::max(start, std::abs(force) / (size * largest));
+    }
+  }
+  return start;
 }
 }  // namespace
 
@@ -33,7 +50,7 @@ std::vector<TrainUndampedMode> trainUndampedModes(const GearTrainModel& model,
   for (const TrainMode& mode : modes) {
     if (mode.divergent || mode.frequency <= 1e-6 * highest) continue;  // rigid or divergent
     if (std::abs(mode.damping_ratio) > kUndamped) continue;
-    TrainUndampedMode u{mode.frequency, meshExcitation(model, mode) > kDecay, {}, {}};
+    TrainUndampedMode u{mode.frequency, modalExcitation(model, mode) > kDecay, {}, {}};
     for (std::size_t e = 0; e < model.elements().size(); ++e) {
       if (mode.element_strain_energy[e] >= kShare) u.elements.push_back(model.elements()[e].name);
     }
@@ -53,7 +70,7 @@ TrainTransient trainTransient(const GearTrainModel& model, double input_speed) {
     if (u.excited) t.decay_time = HUGE_VAL;
   }
   for (const TrainMode& mode : modes) {
-    const double start = meshExcitation(model, mode);
+    const double start = modalExcitation(model, mode);
     const double sigma = -mode.eigenvalue.real();
     if (mode.divergent || std::abs(mode.damping_ratio) <= kUndamped || start <= kDecay ||
         !(sigma > 0.0)) {

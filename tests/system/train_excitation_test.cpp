@@ -31,6 +31,7 @@
 #include "geardyn/solvers/rotor_response.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
+#include "geardyn/solvers/train_transient.h"
 #include "geardyn/system/gear_train_model.h"
 #include "sample_trains.h"
 
@@ -162,6 +163,38 @@ TEST(TrainExcitation, NewmarkReachesTheUnbalanceSteadyState) {
   const Complex e = Y * std::polar(1.0, speed * stepper.time());
   EXPECT_NEAR(stepper.displacement()(y), e.real(), 5e-4 * std::abs(Y));
   EXPECT_NEAR(stepper.displacement()(y + 1), (-kJ * e).real(), 5e-4 * std::abs(Y));
+}
+
+/// A mode orthogonal to every excitation's force pattern is not excited by it: under an
+/// unbalance on the Jeffcott rotor, the undamped torsional mode (rotor against load through the
+/// coupling) and the load's lateral modes (on their undamped stiff bearing) neither set the time
+/// run's duration nor are called excited; the rotor's own lateral mode, damped, sets it to
+/// ln(1e6) / (ζ ω_n) (σ = ζ ω_n exactly: y and z are uncoupled single DOFs), and undamped it is
+/// excited (an endless transient). Tolerance 1e-9: the eigenvalues of a 6-DOF model.
+TEST(TrainExcitation, OnlyTheModesAnExcitationDrivesAreWaitedFor) {
+  const double speed = 300.0;
+  GearTrainSpec spec = jeffcott(speed);
+  spec.unbalances = {{"u", "rotor", 0.0, 1e-4, 0.0}};
+  const GearTrainModel model(spec);
+  const TrainTransient transient = trainTransient(model, speed);
+  ASSERT_FALSE(transient.undamped.empty());
+  for (const TrainUndampedMode& mode : transient.undamped)
+    EXPECT_FALSE(mode.excited) << mode.frequency << " Hz";
+  const double omega_n = std::sqrt(kStiffness / kMass);
+  EXPECT_NEAR(transient.decay_time, std::log(1e6) / (kZeta * omega_n),
+              1e-9 * transient.decay_time);
+
+  spec.bearings[0].cyy = spec.bearings[0].czz = 0.0;
+  const TrainTransient undamped = trainTransient(GearTrainModel(spec), speed);
+  bool lateral_excited = false;
+  for (const TrainUndampedMode& mode : undamped.undamped) {
+    const bool lateral = std::abs(mode.frequency - omega_n / (2.0 * std::numbers::pi)) <
+                         1e-9 * mode.frequency;
+    EXPECT_EQ(mode.excited, lateral) << mode.frequency << " Hz";
+    lateral_excited = lateral_excited || (lateral && mode.excited);
+  }
+  EXPECT_TRUE(lateral_excited);
+  EXPECT_TRUE(std::isinf(undamped.decay_time));
 }
 
 TEST(TrainExcitation, RefusedWhereTheyDoNotApply) {

@@ -14,8 +14,9 @@ namespace geardyn {
 /// A mode with no damping: |ζ| within round-off of 0 (1e-9), so its free vibration never decays.
 struct TrainUndampedMode {
   double frequency = 0.0;  ///< [Hz]
-  /// The meshes excite it: its share of strain energy in the meshes is above round-off, so
-  /// its modal force from the mesh excitation is not zero (see TrainTransient).
+  /// The forcing excites it: its share of strain energy in the meshes, or the cosine between
+  /// its shape and an unbalance's, runout's or prescribed displacement's force pattern, is above
+  /// round-off, so its modal force is not zero (see TrainTransient).
   bool excited = false;
   /// The elements (TrainElement::name) and meshes holding 10 % or more of its strain energy:
   /// where damping would act on it (neither: its strain is in flexible shafts).
