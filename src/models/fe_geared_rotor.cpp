@@ -30,6 +30,83 @@ void requireFiniteNonNegative(double value, const std::string& key, bool allow_n
   }
 }
 
+/// The full-DOF matrices the constructor assembles before keeping the active DOFs.
+struct FullMatrices {
+  Eigen::MatrixXd M, K, C, G, Ks;  ///< mass, supports' stiffness, damping, gyroscopic, shafts'
+  Eigen::VectorXd F;               ///< constant loads
+};
+
+/// One shaft's Timoshenko elements (stiffness, mass, gyroscopic at `spin` × the pinion speed) and
+/// the consistent load of their weight ρ A g along −z; `offset` is its first full DOF.
+void addShaftElements(const FeShaftSpec& shaft, int offset, double spin, double gravity,
+                      FullMatrices& m) {
+  for (std::size_t e = 0; e < shaft.elements.size(); ++e) {
+    const int first = offset + static_cast<int>(e) * kNodeDofs;
+    const ShaftSegment& seg = shaft.elements[e];
+    const ElementMatrix ke = shaftElementStiffness(seg), me = shaftElementMass(seg);
+    m.Ks.block<2 * kNodeDofs, 2 * kNodeDofs>(first, first) += ke;
+    m.M.block<2 * kNodeDofs, 2 * kNodeDofs>(first, first) += me;
+    m.G.block<2 * kNodeDofs, 2 * kNodeDofs>(first, first) += spin * shaftElementGyroscopic(seg);
+    const double w = seg.density * seg.area() * seg.length * gravity;
+    m.F(first + kUz) -= w / 2;
+    m.F(first + kNodeDofs + kUz) -= w / 2;
+    m.F(first + kRy) += w * seg.length / 12;  // −z load: end moments ∓ wL/12 about y
+    m.F(first + kNodeDofs + kRy) -= w * seg.length / 12;
+  }
+}
+
+/// One shaft's rigid disks: mass and inertia, gyroscopic coupling, weight.
+void addDisks(const FeShaftSpec& shaft, int offset, double spin, double gravity, FullMatrices& m) {
+  for (std::size_t i = 0; i < shaft.disks.size(); ++i) {
+    const FeDisk& d = shaft.disks[i];
+    const std::string key = fmt::format("{}.disks[{}]", shaft.name, i);
+    requireNode(d.node, shaft, key + ".node");
+    requireFiniteNonNegative(d.mass, key + ".mass");
+    requireFiniteNonNegative(d.polar_inertia, key + ".polar_inertia");
+    requireFiniteNonNegative(d.diametral_inertia, key + ".diametral_inertia");
+    const int n = offset + d.node * kNodeDofs;
+    for (int t : {kUx, kUy, kUz}) m.M(n + t, n + t) += d.mass;
+    m.M(n + kRx, n + kRx) += d.polar_inertia;
+    m.M(n + kRy, n + kRy) += d.diametral_inertia;
+    m.M(n + kRz, n + kRz) += d.diametral_inertia;
+    m.G(n + kRy, n + kRz) += spin * d.polar_inertia;
+    m.G(n + kRz, n + kRy) -= spin * d.polar_inertia;
+    m.F(n + kUz) -= d.mass * gravity;
+  }
+}
+
+/// One shaft's bearings to ground: translational (with the y-z cross terms), tilt and torsion
+/// springs and dampers.
+void addBearings(const FeShaftSpec& shaft, int offset, FullMatrices& m) {
+  for (std::size_t i = 0; i < shaft.bearings.size(); ++i) {
+    const FeBearing& b = shaft.bearings[i];
+    const std::string key = fmt::format("{}.bearings[{}]", shaft.name, i);
+    requireNode(b.node, shaft, key + ".node");
+    for (double k :
+         {b.kxx, b.kyy, b.kzz, b.cxx, b.cyy, b.czz, b.k_tilt, b.c_tilt, b.k_torsion, b.c_torsion})
+      requireFiniteNonNegative(k, key);
+    for (double k : {b.kyz, b.kzy, b.cyz, b.czy}) requireFiniteNonNegative(k, key, true);
+    const int n = offset + b.node * kNodeDofs;
+    Eigen::MatrixXd &K = m.K, &C = m.C;
+    K(n + kUx, n + kUx) += b.kxx;
+    K(n + kUy, n + kUy) += b.kyy;
+    K(n + kUz, n + kUz) += b.kzz;
+    K(n + kUy, n + kUz) += b.kyz;
+    K(n + kUz, n + kUy) += b.kzy;
+    C(n + kUx, n + kUx) += b.cxx;
+    C(n + kUy, n + kUy) += b.cyy;
+    C(n + kUz, n + kUz) += b.czz;
+    C(n + kUy, n + kUz) += b.cyz;
+    C(n + kUz, n + kUy) += b.czy;
+    K(n + kRy, n + kRy) += b.k_tilt;
+    K(n + kRz, n + kRz) += b.k_tilt;
+    C(n + kRy, n + kRy) += b.c_tilt;
+    C(n + kRz, n + kRz) += b.c_tilt;
+    K(n + kRx, n + kRx) += b.k_torsion;
+    C(n + kRx, n + kRx) += b.c_torsion;
+  }
+}
+
 }  // namespace
 
 double SpeedProfile::speed(double t) const {
@@ -108,68 +185,15 @@ FeGearedRotor::FeGearedRotor(FeGearedRotorSpec spec) : spec_(std::move(spec)) {
   requireNode(spec_.load_node, spec_.shafts[1], "load.load_node");
 
   // --- Assemble on the full DOF set, then keep the active rows and columns.
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(full, full), K = M, C = M, G = M, Ks = M;
-  Eigen::VectorXd F = Eigen::VectorXd::Zero(full);
+  FullMatrices m{Eigen::MatrixXd::Zero(full, full), Eigen::MatrixXd::Zero(full, full),
+                 Eigen::MatrixXd::Zero(full, full), Eigen::MatrixXd::Zero(full, full),
+                 Eigen::MatrixXd::Zero(full, full), Eigen::VectorXd::Zero(full)};
   auto at = [&](int s, int node, int dof) { return node_offset_[s] + node * kNodeDofs + dof; };
   for (int s = 0; s < 2; ++s) {
     const FeShaftSpec& shaft = spec_.shafts[s];
-    const double spin = spinRatio(s);
-    for (std::size_t e = 0; e < shaft.elements.size(); ++e) {
-      const int first = at(s, static_cast<int>(e), 0);
-      const ShaftSegment& seg = shaft.elements[e];
-      const ElementMatrix ke = shaftElementStiffness(seg), me = shaftElementMass(seg);
-      Ks.block<2 * kNodeDofs, 2 * kNodeDofs>(first, first) += ke;
-      M.block<2 * kNodeDofs, 2 * kNodeDofs>(first, first) += me;
-      G.block<2 * kNodeDofs, 2 * kNodeDofs>(first, first) += spin * shaftElementGyroscopic(seg);
-      // Gravity: the consistent load of ρ A g along −z.
-      const double w = seg.density * seg.area() * seg.length * spec_.gravity;
-      F(first + kUz) -= w / 2;
-      F(first + kNodeDofs + kUz) -= w / 2;
-      F(first + kRy) += w * seg.length / 12;  // −z load: end moments ∓ wL/12 about y
-      F(first + kNodeDofs + kRy) -= w * seg.length / 12;
-    }
-    for (std::size_t i = 0; i < shaft.disks.size(); ++i) {
-      const FeDisk& d = shaft.disks[i];
-      const std::string key = fmt::format("{}.disks[{}]", shaft.name, i);
-      requireNode(d.node, shaft, key + ".node");
-      requireFiniteNonNegative(d.mass, key + ".mass");
-      requireFiniteNonNegative(d.polar_inertia, key + ".polar_inertia");
-      requireFiniteNonNegative(d.diametral_inertia, key + ".diametral_inertia");
-      const int n = at(s, d.node, 0);
-      for (int t : {kUx, kUy, kUz}) M(n + t, n + t) += d.mass;
-      M(n + kRx, n + kRx) += d.polar_inertia;
-      M(n + kRy, n + kRy) += d.diametral_inertia;
-      M(n + kRz, n + kRz) += d.diametral_inertia;
-      G(n + kRy, n + kRz) += spin * d.polar_inertia;
-      G(n + kRz, n + kRy) -= spin * d.polar_inertia;
-      F(n + kUz) -= d.mass * spec_.gravity;
-    }
-    for (std::size_t i = 0; i < shaft.bearings.size(); ++i) {
-      const FeBearing& b = shaft.bearings[i];
-      const std::string key = fmt::format("{}.bearings[{}]", shaft.name, i);
-      requireNode(b.node, shaft, key + ".node");
-      for (double k :
-           {b.kxx, b.kyy, b.kzz, b.cxx, b.cyy, b.czz, b.k_tilt, b.c_tilt, b.k_torsion, b.c_torsion})
-        requireFiniteNonNegative(k, key);
-      for (double k : {b.kyz, b.kzy, b.cyz, b.czy}) requireFiniteNonNegative(k, key, true);
-      const int n = at(s, b.node, 0);
-      K(n + kUx, n + kUx) += b.kxx;
-      K(n + kUy, n + kUy) += b.kyy;
-      K(n + kUz, n + kUz) += b.kzz;
-      K(n + kUy, n + kUz) += b.kyz;
-      K(n + kUz, n + kUy) += b.kzy;
-      C(n + kUx, n + kUx) += b.cxx;
-      C(n + kUy, n + kUy) += b.cyy;
-      C(n + kUz, n + kUz) += b.czz;
-      C(n + kUy, n + kUz) += b.cyz;
-      C(n + kUz, n + kUy) += b.czy;
-      K(n + kRy, n + kRy) += b.k_tilt;
-      K(n + kRz, n + kRz) += b.k_tilt;
-      C(n + kRy, n + kRy) += b.c_tilt;
-      C(n + kRz, n + kRz) += b.c_tilt;
-      K(n + kRx, n + kRx) += b.k_torsion;
-      C(n + kRx, n + kRx) += b.c_torsion;
-    }
+    addShaftElements(shaft, node_offset_[s], spinRatio(s), spec_.gravity, m);
+    addDisks(shaft, node_offset_[s], spinRatio(s), spec_.gravity, m);
+    addBearings(shaft, node_offset_[s], m);
     for (std::size_t i = 0; i < shaft.unbalances.size(); ++i) {
       const FeUnbalance& u = shaft.unbalances[i];
       const std::string key = fmt::format("{}.unbalance[{}]", shaft.name, i);
@@ -193,18 +217,19 @@ FeGearedRotor::FeGearedRotor(FeGearedRotorSpec spec) : spec_(std::move(spec)) {
   }
   // Torques: T on the pinion shaft about +x, T r_bg/r_bp on the gear shaft about +x (the
   // gear turns about −x; the mesh force's moment on it is −T r_bg/r_bp).
-  F(at(0, spec_.drive_node, kRx)) += spec_.drive_torque;
-  F(at(1, spec_.load_node, kRx)) += spec_.drive_torque * g.gear_base_radius / g.pinion_base_radius;
+  m.F(at(0, spec_.drive_node, kRx)) += spec_.drive_torque;
+  m.F(at(1, spec_.load_node, kRx)) +=
+      spec_.drive_torque * g.gear_base_radius / g.pinion_base_radius;
 
   // Mesh coupling between the gear nodes.
   const MeshVector vm = meshDeflectionGradient(g);
   Eigen::VectorXd v_full = Eigen::VectorXd::Zero(full);
   v_full.segment<kNodeDofs>(at(0, spec_.shafts[0].gear_node, 0)) = vm.head<kNodeDofs>();
   v_full.segment<kNodeDofs>(at(1, spec_.shafts[1].gear_node, 0)) = vm.tail<kNodeDofs>();
-  C += spec_.mesh_damping * v_full * v_full.transpose();
+  m.C += spec_.mesh_damping * v_full * v_full.transpose();
 
-  K += Ks;
-  C += spec_.mass_proportional * M + spec_.stiffness_proportional * Ks;
+  m.K += m.Ks;
+  m.C += spec_.mass_proportional * m.M + spec_.stiffness_proportional * m.Ks;
   const int n = dofCount();
   M_.resize(n, n);
   K_.resize(n, n);
@@ -214,12 +239,12 @@ FeGearedRotor::FeGearedRotor(FeGearedRotorSpec spec) : spec_(std::move(spec)) {
   F0_.resize(n);
   for (int i = 0; i < n; ++i) {
     v_(i) = v_full(active_[i]);
-    F0_(i) = F(active_[i]);
+    F0_(i) = m.F(active_[i]);
     for (int j = 0; j < n; ++j) {
-      M_(i, j) = M(active_[i], active_[j]);
-      K_(i, j) = K(active_[i], active_[j]);
-      C_(i, j) = C(active_[i], active_[j]);
-      G_(i, j) = G(active_[i], active_[j]);
+      M_(i, j) = m.M(active_[i], active_[j]);
+      K_(i, j) = m.K(active_[i], active_[j]);
+      C_(i, j) = m.C(active_[i], active_[j]);
+      G_(i, j) = m.G(active_[i], active_[j]);
     }
   }
   for (auto& u : unbalance_dofs_) {
