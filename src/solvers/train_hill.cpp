@@ -20,9 +20,12 @@ namespace geardyn::detail {
 namespace {
 
 using Complex = std::complex<double>;
-/// Eigenvalues asked for beyond the 2n exponents in the first pass: room for a conjugate pair
-/// split at the cut and an edge exponent's second copy a − iω/2.
-constexpr Eigen::Index kHillMargin = 4;
+/// Eigenvalues asked for beyond the 2n exponents in the first pass: room for copies of lightly
+/// damped exponents just outside the strip that are nearer 0 than a more damped exponent's
+/// central copy. Measured on the 3-planet sweep's 201 bench points (n = 17): the first pass
+/// holds all 2n at 59 % of them with 4, 99.5 % with 8 (112 operator applications a point,
+/// against 128 with 12 and 138 with 16, where all pass).
+constexpr Eigen::Index kHillMargin = 8;
 
 /// y = (𝓗 − σI)⁻¹ x in Spectra's operator interface (train_hill.h): per harmonic h the block
 /// A₀ − s_h (s_h = σ + ihω) through D(s_h) = s²M + sC + K̄, the periodic part by Woodbury:
@@ -177,7 +180,7 @@ TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
   // docs/theory/nonlinear_gear_trains.md "Hill's method: the nearest 2n"); fewer (an exponent
   // damped by more than about ω/2, whose central copy is farther than others' neighbours) fall
   // back to the 4n nearest 0: every copy λ + ikω inside |λ| < ω/√2 (at most two per exponent).
-  for (const Eigen::Index wanted : {2 * n + kHillMargin, 4 * n}) {
+  for (const Eigen::Index wanted : {std::min<Eigen::Index>(2 * n + kHillMargin, 4 * n), 4 * n}) {
     const Eigen::Index nev = std::min<Eigen::Index>(wanted, N - 3);
     const Eigen::Index ncv = std::min<Eigen::Index>(N, std::max<Eigen::Index>(2 * nev + 1, 20));
     Spectra::GenEigsRealShiftSolver<HillShiftSolve> solver(op, nev, ncv, 0.0);
@@ -193,11 +196,12 @@ TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
           problem.omega, solver.num_iterations(), nev));
     }
     const Eigen::VectorXcd values = solver.eigenvalues();
+    double radius = 0.0;
+    for (const Complex& v : values) radius = std::max(radius, std::abs(v));
     std::vector<Complex> strip = floquetStrip(values, problem.omega, static_cast<int>(n));
     if (!last && static_cast<Eigen::Index>(strip.size()) < 2 * n) continue;
     out.computed = static_cast<int>(nev);
-    out.radius = 0.0;
-    for (const Complex& v : values) out.radius = std::max(out.radius, std::abs(v));
+    out.radius = radius;
     out.exponents = std::move(strip);
     break;
   }
