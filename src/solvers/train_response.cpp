@@ -362,13 +362,15 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   }
   s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
   const Eigen::MatrixXd q = s.displacement(s.t);
-  const Eigen::MatrixXd q_columns = q.transpose();  // q(t_k) contiguous for the mesh forces
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
-  for (std::size_t m = 0; m < meshes.size(); ++m) {
-    const TrainMesh& mesh = meshes[m];
-    for (int k = 0; k < samples; ++k) {
-      s.mesh_force(k, m) = mesh.force(s.t(k), input_speed, q_columns.col(k));
+  Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
+  for (int k = 0; k < samples; ++k) {
+    q_k = q.row(k).transpose();
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      s.mesh_force(k, m) = meshes[m].force(s.t(k), input_speed, q_k);
     }
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
     const Eigen::VectorXd f = s.mesh_force.col(m);
     s.mesh_force_mean.push_back(f.mean());
     s.mesh_force_max.push_back(f.maxCoeff());
