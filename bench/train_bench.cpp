@@ -7,6 +7,8 @@
 
 #include <memory>
 
+#include "geardyn/analysis/gear_train_session.h"
+#include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
@@ -108,6 +110,26 @@ void BM_FlexibleTrainSteadyStatePerSpeed(benchmark::State& state) {
   state.counters["dofs"] = model.dofCount();
 }
 BENCHMARK(BM_FlexibleTrainSteadyStatePerSpeed)->Unit(benchmark::kMillisecond);
+
+// Issue #39: the forced response per speed of the example itself
+// (examples/train_two_stage_flexible.toml, 270 DOFs, its [forced] options: 8 mesh harmonics,
+// H = 24 over the common period; target <= 50 ms a speed), at the operating speed and, to
+// vary the harmonic blocks' frequencies as a sweep does, at 0.5 and 1.5 times it.
+void BM_FlexibleExampleForcedPerSpeed(benchmark::State& state) {
+  auto session = analysis::GearTrainSession::fromFile(GEARDYN_SOURCE_DIR
+                                                      "/examples/train_two_stage_flexible.toml");
+  const GearTrainModel& model = session.linearModel();
+  const TrainSteadySolver solver(model,
+                                 config::trainSteadyOptionsFromConfig(session.inputs().analysis));
+  const double speed = model.inputSpeed();
+  int i = 0;
+  for (auto _ : state) {
+    auto s = solver.solve(speed * (0.5 + 0.5 * (i++ % 3)));
+    benchmark::DoNotOptimize(s.harmonic.data());
+  }
+  state.counters["dofs"] = model.dofCount();
+}
+BENCHMARK(BM_FlexibleExampleForcedPerSpeed)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace geardyn

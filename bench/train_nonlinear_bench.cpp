@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "geardyn/solvers/continuation.h"
+#include "geardyn/solvers/detail/train_hill.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_response.h"
@@ -126,7 +127,7 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       continueInFrequency(hbm, testing::nonlinear::planetarySweep(false));
   using Clock = std::chrono::steady_clock;
   double newton = 0.0, monodromy = 0.0, hill = 0.0;
-  int points = 0, iterations = 0;
+  int points = 0, iterations = 0, operations = 0, certified = 0;
   for (auto _ : state) {
     newton = monodromy = hill = 0.0;
     points = iterations = 0;
@@ -149,6 +150,10 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       hill += std::chrono::duration<double>(t3 - t2).count();
       iterations += p.iterations;
       ++points;
+      // Untimed: the Arnoldi's operator applications and whether the 2n + 4 nearest 0 sufficed.
+      const detail::TrainHillResult r = detail::trainHillExponents(hbm.hillProblem(h, false));
+      operations += r.operations;
+      certified += r.computed < 4 * static_cast<int>(hbm.hillProblem(h, true).M.rows());
     }
   }
   state.counters["points"] = points;
@@ -158,6 +163,8 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   state.counters["hill_ms"] = 1e3 * hill / points;
   state.counters["monodromy_over_newton"] = monodromy / newton;
   state.counters["hill_over_newton"] = hill / newton;
+  state.counters["hill_operations"] = static_cast<double>(operations) / points;
+  state.counters["hill_first_pass_fraction"] = static_cast<double>(certified) / points;
 }
 BENCHMARK(BM_TrainStabilityCostPerPoint)->Iterations(1)->Unit(benchmark::kSecond);
 

@@ -99,6 +99,10 @@ void GearTrainSession::reload(bool rebuild) {
     model_.emplace(config::gearTrainFromConfig(fresh.gearbox, warnings), memoryLimitBytes());
     linear_stale_ = true;
   }
+  modal_options_ = config::trainModalOptionsFromConfig(fresh.analysis, "modal");
+  modal_speed_.reset();
+  if (fresh.analysis.has("modal.speed_rpm"))
+    modal_speed_ = config::analysisSpeed(fresh.analysis, "modal", 0.0);
   inputs_ = std::move(fresh);
   inputs_stale_ = false;
 }
@@ -204,13 +208,12 @@ const GearTrainModel& GearTrainSession::linearModel() {
 }
 
 double GearTrainSession::modalSpeed() {
-  return config::analysisSpeed(inputs_->analysis, "modal", model_->inputSpeed());
+  return modal_speed_ ? *modal_speed_ : model_->inputSpeed();
 }
 
 std::vector<TrainMode> GearTrainSession::modes() {
-  // The options of [modal] are analysis keys: inputs_->analysis is current for them.
-  return trainModes(linearModel(), modalSpeed(),
-                    config::trainModalOptionsFromConfig(inputs_->analysis, "modal"));
+  // The options of [modal] are analysis keys: read by the last reload().
+  return trainModes(linearModel(), modalSpeed(), modal_options_);
 }
 
 TrainStaticResult GearTrainSession::staticDeflection() const {

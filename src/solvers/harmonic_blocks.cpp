@@ -19,8 +19,14 @@ Eigen::SparseMatrix<std::complex<double>> complexSparseOf(const Eigen::MatrixXd&
 }  // namespace
 
 HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
-                               const Eigen::MatrixXd& C, const Eigen::MatrixXd& R, int sparse_dofs)
-    : K_(K), M_(M), C_(C), sparse_(K.rows() >= sparse_dofs), n_(static_cast<int>(K.rows())) {
+                               const Eigen::MatrixXd& C, const Eigen::MatrixXd& R, int sparse_dofs,
+                               bool keep_factors)
+    : K_(K),
+      M_(M),
+      C_(C),
+      sparse_(K.rows() >= sparse_dofs),
+      keep_factors_(keep_factors),
+      n_(static_cast<int>(K.rows())) {
   if (R.cols() > 0) MR_ = M * R;
   penalty_ = std::max(K.diagonal().cwiseAbs().maxCoeff(), 1e-300);
   if (sparse_) {
@@ -41,7 +47,8 @@ void HarmonicBlocks::factorize(int h, double w) {
     return;
   }
   SparseMatrixC D = Ks_ - (w * w) * Ms_ + Complex(0.0, w) * Cs_;
-  if (w == 0.0 && MR_.cols() > 0) {
+  const bool bordered = w == 0.0 && MR_.cols() > 0;
+  if (bordered) {
     // [D(0) MR; (MR)ᵀ 0]: the border's nonzeros appended to D's.
     const int k = static_cast<int>(MR_.cols());
     std::vector<Eigen::Triplet<Complex>> entries;
@@ -62,20 +69,34 @@ void HarmonicBlocks::factorize(int h, double w) {
     D.setFromTriplets(entries.begin(), entries.end());
   }
   D.makeCompressed();
-  sparse_lu_.resize(std::max<std::size_t>(sparse_lu_.size(), h + 1));
-  sparse_lu_[h] = std::make_unique<SparseLUC>();
-  sparse_lu_[h]->compute(D);
-  if (sparse_lu_[h]->info() != Eigen::Success) {
+  // Kept: one factorisation per h. Not kept: slot 0 the bordered block, slot 1 every other
+  // one, in the pattern analysed once (the sum above keeps the union pattern, zeros included).
+  const std::size_t slot = keep_factors_ ? static_cast<std::size_t>(h) : (bordered ? 0 : 1);
+  sparse_lu_.resize(std::max<std::size_t>(sparse_lu_.size(), slot + 1));
+  if (!sparse_lu_[slot]) sparse_lu_[slot] = std::make_unique<SparseLUC>();
+  SparseLUC& lu = *sparse_lu_[slot];
+  if (keep_factors_ || bordered) {
+    lu.compute(D);
+  } else {
+    if (!analysed_) lu.analyzePattern(D), analysed_ = true;
+    lu.factorize(D);
+  }
+  latest_ = h, latest_slot_ = static_cast<int>(slot);
+  if (lu.info() != Eigen::Success) {
     throw std::runtime_error(fmt::format(
         "steady state: the harmonic block D(h) = K̄ − (hω₀)²M + i hω₀ C cannot be factorised at "
         "h = {}, hω₀ = {:g} rad/s ({})",
-        h, w, sparse_lu_[h]->lastErrorMessage()));
+        h, w, lu.lastErrorMessage()));
   }
 }
 
 Eigen::MatrixXcd HarmonicBlocks::solveNonNegative(int h, const Eigen::MatrixXcd& rhs) const {
   if (!sparse_) return dense_[h].solve(rhs);
-  const SparseLUC& lu = *sparse_lu_[h];
+  if (!keep_factors_ && h != latest_) {
+    throw std::logic_error(fmt::format(
+        "HarmonicBlocks: block {} asked after block {} (factors not kept)", h, latest_));
+  }
+  const SparseLUC& lu = *sparse_lu_[keep_factors_ ? h : latest_slot_];
   if (lu.rows() == n_) return lu.solve(rhs);
   Eigen::MatrixXcd padded = Eigen::MatrixXcd::Zero(lu.rows(), rhs.cols());
   padded.topRows(n_) = rhs;

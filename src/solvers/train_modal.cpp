@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -27,12 +28,33 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
+/// What describe() needs of the model, looked up once per modal analysis rather than per mode
+/// (a small train's modes take microseconds), and its work vectors.
+struct ModeContext {
+  Eigen::VectorXd mass_diagonal;  ///< [kg, kg m²]
+  /// Per stage: the body indices of its carrier, sun shaft and ring shaft.
+  std::vector<std::array<int, 3>> stage_central;
+  Eigen::VectorXd x, y, Mx, My, kinetic;
+  std::vector<double> rot, trans, out_of_plane;
+
+  ModeContext(const GearTrainModel& model, const Eigen::SparseMatrix<double>* sparse_mass)
+      : mass_diagonal(sparse_mass ? Eigen::VectorXd(sparse_mass->diagonal())
+                                  : Eigen::VectorXd(model.mass().diagonal())) {
+    const auto& spec = model.spec();
+    for (const auto& st : spec.stages) {
+      const std::string key = "planetary." + st.name;
+      stage_central.push_back(
+          {model.bodyIndex(st.carrier),
+           model.bodyIndex(spec.gears[detail::gearIndexOf(spec, st.sun, key)].shaft),
+           model.bodyIndex(spec.gears[detail::gearIndexOf(spec, st.ring, key)].shaft)});
+    }
+  }
+};
+
 /// Lateral, torsional and axial shares of the diagonal kinetic energy and the whirl
 /// (train_modal.h, TrainMode::whirl).
-void classifyWhirl(const GearTrainModel& model, TrainMode& mode,
-                   const Eigen::SparseMatrix<double>* sparse_mass) {
-  const Eigen::VectorXd md = sparse_mass ? Eigen::VectorXd(sparse_mass->diagonal())
-                                         : Eigen::VectorXd(model.mass().diagonal());
+void classifyWhirl(const GearTrainModel& model, TrainMode& mode, const ModeContext& context) {
+  const Eigen::VectorXd& md = context.mass_diagonal;
   const int per = model.dofsPerBody();
   detail::WhirlShares shares;
   for (std::size_t b = 0; b < model.bodies().size(); ++b) {
@@ -60,22 +82,29 @@ void classifyWhirl(const GearTrainModel& model, TrainMode& mode,
 /// planet modes not at all). With six DOFs per body, modes of the stage's axial and tilting
 /// motion alone are "out_of_plane", and modes with both kinds of motion "mixed".
 void describe(const GearTrainModel& model, TrainMode& mode,
-              const Eigen::SparseMatrix<double>* sparse_mass) {
+              const Eigen::SparseMatrix<double>* sparse_mass, ModeContext& context) {
   // Kinetic energy per DOF, Re(x̄_i (M x)_i) (M is not diagonal with beam elements); a body's
   // rotation is its θ_x, everything else (translations, tilts) counts as translation.
   // Re(x̄ ∘ M x) = x_r ∘ M x_r + x_i ∘ M x_i (M real: no complex copy of it).
-  const Eigen::VectorXd x = mode.shape.real();
-  const Eigen::VectorXd y = mode.shape.imag();
-  const Eigen::VectorXd Mxr =
-      sparse_mass ? Eigen::VectorXd(*sparse_mass * x) : Eigen::VectorXd(model.mass() * x);
-  const Eigen::VectorXd Mxi =
-      sparse_mass ? Eigen::VectorXd(*sparse_mass * y) : Eigen::VectorXd(model.mass() * y);
-  const Eigen::VectorXd kinetic = x.cwiseProduct(Mxr) + y.cwiseProduct(Mxi);
+  Eigen::VectorXd &x = context.x, &y = context.y, &kinetic = context.kinetic;
+  x = mode.shape.real();
+  y = mode.shape.imag();
+  if (sparse_mass) {
+    context.Mx = *sparse_mass * x;
+    context.My = *sparse_mass * y;
+  } else {
+    context.Mx.noalias() = model.mass() * x;
+    context.My.noalias() = model.mass() * y;
+  }
+  kinetic = x.cwiseProduct(context.Mx) + y.cwiseProduct(context.My);
   const int per = model.dofsPerBody();
   const auto& bodies = model.bodies();
   // With six DOFs (y, z, θ_x, x, θ_y, θ_z) the axial and tilting part is also kept apart.
-  std::vector<double> rot(bodies.size(), 0.0), trans(bodies.size(), 0.0);
-  std::vector<double> out_of_plane(bodies.size(), 0.0);
+  std::vector<double>&rot = context.rot, &trans = context.trans,
+  &out_of_plane = context.out_of_plane;
+  rot.assign(bodies.size(), 0.0);
+  trans.assign(bodies.size(), 0.0);
+  out_of_plane.assign(bodies.size(), 0.0);
   double total = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const int r = model.rotationDof(static_cast<int>(b));
@@ -92,7 +121,7 @@ void describe(const GearTrainModel& model, TrainMode& mode,
     translational += trans[b] / total;
   }
   mode.translational_fraction = translational;
-  classifyWhirl(model, mode, sparse_mass);
+  classifyWhirl(model, mode, context);
 
   // Strain energy ½ Re(x̄ᵀ k x) = ½ (x_rᵀ k x_r + x_iᵀ k x_i) over each component's DOFs (no
   // allocation per mode: a modal analysis of a small train takes microseconds).
@@ -129,14 +158,9 @@ void describe(const GearTrainModel& model, TrainMode& mode,
   mode.stage_type.clear();
   const auto& spec = model.spec();
   for (std::size_t s = 0; s < spec.stages.size(); ++s) {
-    const auto& st = spec.stages[s];
-    const std::string key = "planetary." + st.name;
     // In-plane translation (Lin & Parker's) and the out-of-plane part, of the whole stage.
     double central_rot = 0.0, central_trans = 0.0, stage_out = 0.0, stage_in = 0.0;
-    for (const std::string& name :
-         {st.carrier, spec.gears[detail::gearIndexOf(spec, st.sun, key)].shaft,
-          spec.gears[detail::gearIndexOf(spec, st.ring, key)].shaft}) {
-      const int b = model.bodyIndex(name);
+    for (const int b : context.stage_central[s]) {
       central_rot += rot[b] / total;
       central_trans += (trans[b] - out_of_plane[b]) / total;
       stage_out += out_of_plane[b] / total;
@@ -368,7 +392,9 @@ std::vector<TrainMode> modesAt(const GearTrainModel& model, double input_speed,
   if (options.modes > 0 && static_cast<int>(kept.size()) > divergent + options.modes) {
     kept.resize(divergent + options.modes);
   }
-  for (TrainMode& mode : kept) describe(model, mode, sparse ? &sparse->M : nullptr);
+  const Eigen::SparseMatrix<double>* sparse_mass = sparse ? &sparse->M : nullptr;
+  ModeContext context(model, sparse_mass);
+  for (TrainMode& mode : kept) describe(model, mode, sparse_mass, context);
   return kept;
 }
 

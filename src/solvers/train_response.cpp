@@ -191,17 +191,26 @@ TrainBaseFrequency trainBaseFrequency(const GearTrainModel& model, int mesh_harm
 }
 
 Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) const {
-  Eigen::MatrixXd q(times.size(), harmonic.rows());
   const double w0 = kTwoPi * base_frequency;
   // Only the harmonics that are there (an excitation at a shaft order fills a few of many).
   std::vector<int> present;
   for (int h = 1; h <= harmonics; ++h)
     if (harmonic.col(h).cwiseAbs().maxCoeff() > 0.0) present.push_back(h);
-  for (Eigen::Index k = 0; k < times.size(); ++k) {
-    Eigen::VectorXcd sum = harmonic.col(0);
-    for (int h : present) sum += 2.0 * harmonic.col(h) * std::polar(1.0, h * w0 * times(k));
-    q.row(k) = sum.real().transpose();
+  // Re[2 X_h e^{iθ}] = 2 Re X_h cos θ − 2 Im X_h sin θ: one real product of the sampled
+  // (cos, sin) basis with the coefficients.
+  const Eigen::Index p = static_cast<Eigen::Index>(present.size());
+  Eigen::MatrixXd basis(times.size(), 2 * p), coefficients(2 * p, harmonic.rows());
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const int h = present[static_cast<std::size_t>(j)];
+    for (Eigen::Index k = 0; k < times.size(); ++k) {
+      basis(k, 2 * j) = std::cos(h * w0 * times(k));
+      basis(k, 2 * j + 1) = std::sin(h * w0 * times(k));
+    }
+    coefficients.row(2 * j) = 2.0 * harmonic.col(h).real().transpose();
+    coefficients.row(2 * j + 1) = -2.0 * harmonic.col(h).imag().transpose();
   }
+  Eigen::MatrixXd q = Eigen::VectorXd::Ones(times.size()) * harmonic.col(0).real().transpose();
+  if (p > 0) q.noalias() += basis * coefficients;
   return q;
 }
 
@@ -265,7 +274,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
   detail::HarmonicBlocks blocks_of(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
-                                   options_.sparse_dofs);
+                                   options_.sparse_dofs, false);
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
   // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.
@@ -283,18 +292,32 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     }
   }
   addExcitationHarmonics(model, base, input_speed, L, H, k_hat, F);
-  // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised (detail::HarmonicBlocks).
+  // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised (detail::HarmonicBlocks),
+  // one block at a time: D(h)⁻¹ [V, F_h, conj F_−h] in one solve, D(h)⁻¹V and D(h)⁻¹F_h kept
+  // for the recovery X_h = D(h)⁻¹F_h − D(h)⁻¹V g_h (g_h the mesh terms below), so the sparse
+  // path analyses D's pattern once per speed and refactorises it per harmonic.
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Identity(r * blocks, r * blocks);
   Eigen::VectorXcd b(r * blocks);
+  std::vector<Eigen::MatrixXcd> DinvV(H + 1);
+  Eigen::MatrixXcd DinvF(n, H + 1);
+  Eigen::MatrixXcd rhs(n, r + 2);
+  rhs.leftCols(r) = V;
   for (int h = 0; h <= H; ++h) {
     blocks_of.factorize(h, h * w0);
-    const Eigen::MatrixXcd B = V.transpose() * blocks_of.solve(h, V);  // Vᵀ D(h)⁻¹ V (r × r)
+    rhs.col(r) = F.col(h + H);
+    rhs.col(r + 1) = F.col(H - h).conjugate();
+    const Eigen::MatrixXcd solved = blocks_of.solve(h, rhs);
+    DinvV[h] = solved.leftCols(r);
+    DinvF.col(h) = solved.col(r);
+    const Eigen::MatrixXcd B = V.transpose() * DinvV[h];  // Vᵀ D(h)⁻¹ V (r × r)
     for (const int sign : {1, -1}) {
       if (h == 0 && sign < 0) continue;
       const int hh = sign * h;
       const bool conjugate = sign < 0;
-      const Eigen::VectorXcd DinvF = blocks_of.solve(hh, F.col(hh + H));
-      b.segment((hh + H) * r, r) = V.transpose() * DinvF;
+      // D(−h)⁻¹ F_−h = conj(D(h)⁻¹ conj F_−h).
+      b.segment((hh + H) * r, r) =
+          V.transpose() * (conjugate ? Eigen::VectorXcd(solved.col(r + 1).conjugate())
+                                     : Eigen::VectorXcd(solved.col(r)));
       for (int m = 0; m < r; ++m) {
         const int P = base.mesh_multiple[m];
         const Eigen::VectorXcd Bm =
@@ -316,19 +339,19 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
                     input_speed));
   }
   s.harmonic.resize(n, H + 1);
+  Eigen::VectorXcd g_sum(r);
   for (int h = 0; h <= H; ++h) {
-    Eigen::VectorXcd load = F.col(h + H);
     for (int m = 0; m < r; ++m) {
       const int P = base.mesh_multiple[m];
-      Complex g_sum = 0.0;
+      g_sum(m) = 0.0;
       for (int l = -L; l <= L; ++l) {
         const int g = h - l * P;
         if (l == 0 || g < -H || g > H) continue;
-        g_sum += k_hat[m][L + l] * delta((g + H) * r + m);
+        g_sum(m) += k_hat[m][L + l] * delta((g + H) * r + m);
       }
-      load -= g_sum * V.col(m);
     }
-    s.harmonic.col(h) = blocks_of.solve(h, load);
+    s.harmonic.col(h) = DinvF.col(h);
+    if (r > 0) s.harmonic.col(h).noalias() -= DinvV[h] * g_sum;
   }
 
   // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.
@@ -340,11 +363,14 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
   const Eigen::MatrixXd q = s.displacement(s.t);
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
-  for (std::size_t m = 0; m < meshes.size(); ++m) {
-    const TrainMesh& mesh = meshes[m];
-    for (int k = 0; k < samples; ++k) {
-      s.mesh_force(k, m) = mesh.force(s.t(k), input_speed, q.row(k).transpose());
+  Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
+  for (int k = 0; k < samples; ++k) {
+    q_k = q.row(k).transpose();
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      s.mesh_force(k, m) = meshes[m].force(s.t(k), input_speed, q_k);
     }
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
     const Eigen::VectorXd f = s.mesh_force.col(m);
     s.mesh_force_mean.push_back(f.mean());
     s.mesh_force_max.push_back(f.maxCoeff());
@@ -360,15 +386,14 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     }
     s.mesh_force_harmonics.push_back(std::move(amplitudes));
   }
+  // Element forces k J q(t): linear in q, one product per element with the samples of its DOFs.
+  Eigen::MatrixXd local;
   for (const TrainElement& e : model.elements()) {
-    Eigen::MatrixXd forces(samples, e.local_stiffness.rows());
-    for (int k = 0; k < samples; ++k) {
-      forces.row(k) = (e.local_stiffness * elementDeformation(e, q.row(k).transpose())).transpose();
-    }
-    const Eigen::RowVectorXd mean = forces.colwise().mean();
-    double peak = 0.0;
-    for (int k = 0; k < samples; ++k) peak = std::max(peak, (forces.row(k) - mean).norm());
-    s.element_dynamic_force.push_back(peak);
+    local.resize(samples, static_cast<Eigen::Index>(e.dofs.size()));
+    for (std::size_t i = 0; i < e.dofs.size(); ++i) local.col(i) = q.col(e.dofs[i]);
+    Eigen::MatrixXd forces = local * (e.local_stiffness * e.jacobian).transpose();
+    forces.rowwise() -= forces.colwise().mean();
+    s.element_dynamic_force.push_back(forces.rowwise().norm().maxCoeff());
   }
   return s;
 }

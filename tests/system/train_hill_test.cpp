@@ -49,7 +49,10 @@ TEST(TrainHill, ArnoldiMatchesTheDenseHillMatrix) {
   const Eigen::VectorXcd all = dense.eigenvalues();
   const detail::TrainHillResult hill = detail::trainHillExponents(problem);
   const int n = static_cast<int>(problem.M.rows());
-  EXPECT_EQ(hill.computed, 4 * n);
+  // The 2n + 8 nearest 0 first; the 4n when the strip does not hold 2n of them (both checked
+  // against the dense matrix: the first pass's certificate is that count).
+  EXPECT_TRUE(hill.computed == 4 * n || static_cast<int>(hill.exponents.size()) == 2 * n)
+      << hill.computed;
   double worst = 0.0;
   for (const Complex& lambda : hill.exponents) {
     worst = std::max(worst, (all.array() - lambda).abs().minCoeff());
@@ -66,9 +69,10 @@ TEST(TrainHill, ArnoldiMatchesTheDenseHillMatrix) {
   EXPECT_GT(expected, n);
   EXPECT_LE(static_cast<int>(hill.exponents.size()), 2 * n);
   std::printf(
-      "dense Hill (%d wide): %d exponents with Re >= -ω/2, all found; worst %.3g ω; max "
-      "Re λ = %.6g 1/s\n",
-      static_cast<int>(all.size()), expected, worst / point.omega, hill.exponents.front().real());
+      "dense Hill (%d wide): %d exponents with Re >= -ω/2, all found (%d nearest 0 computed); "
+      "worst %.3g ω; max Re λ = %.6g 1/s\n",
+      static_cast<int>(all.size()), expected, hill.computed, worst / point.omega,
+      hill.exponents.front().real());
 }
 
 /// A linear train (constant mesh stiffness, contact kept: S(t) = k − k̄ = 0) is time-invariant:

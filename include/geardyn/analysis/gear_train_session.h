@@ -95,6 +95,10 @@ class GearTrainSession {
   std::optional<GearTrainModel> model_;
   std::optional<GearTrainModel> linear_;  // linearised model (rolling bearings) or empty
   bool linear_stale_ = true;
+  // [modal]'s options and speed (modal.speed_rpm [rad/s] when given), read once per reload:
+  // they are analysis keys, which only reload() changes (modes() takes microseconds).
+  TrainModalOptions modal_options_;
+  std::optional<double> modal_speed_;
 };
 
 }  // namespace geardyn::analysis

@@ -10,6 +10,11 @@
 /// p (MR)(MR)ᵀ (p the largest |K̄_ii|), the sparse path borders the block instead,
 /// [D(0) MR; (MR)ᵀ 0], whose dense border would fill a sparse penalty term in. Both give the
 /// same X₀ when the loads are balanced (Rᵀ F₀ = 0).
+///
+/// With `keep_factors` false the sparse path keeps only the latest block's factors: the
+/// pattern of D(h) (the union of K̄'s, M's and C's) is analysed once (COLAMD ordering, elimination
+/// tree) and every block with w ≠ 0 only refactorised in it, so a caller that is done with a block
+/// before the next (train_response.cpp) pays one symbolic analysis per speed, not per harmonic.
 
 #include <Eigen/Dense>
 #include <Eigen/SparseLU>
@@ -25,13 +30,14 @@ class HarmonicBlocks {
 
   /// K̄ [N/m], M [kg], C [N s/m] at the speed, R the rigid-body modes (n × k, may be empty).
   HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
-                 const Eigen::MatrixXd& R, int sparse_dofs);
+                 const Eigen::MatrixXd& R, int sparse_dofs, bool keep_factors = true);
   ~HarmonicBlocks();
 
   /// Factorises block h at the angular frequency w [rad/s] (hω₀ over a common period, n·ω of a
   /// torus tone), for h = 0..H in order; the rigid-body modes are fixed in a block at w = 0.
   void factorize(int h, double w);
-  /// D(h)⁻¹ rhs for h ≥ 0 (factorised), and for h < 0 through conj(D(|h|)⁻¹ conj rhs).
+  /// D(h)⁻¹ rhs for h ≥ 0 (factorised; without keep_factors the latest only), and for h < 0
+  /// through conj(D(|h|)⁻¹ conj rhs).
   Eigen::MatrixXcd solve(int h, const Eigen::MatrixXcd& rhs) const;
   bool sparse() const noexcept { return sparse_; }
 
@@ -43,11 +49,11 @@ class HarmonicBlocks {
   const Eigen::MatrixXd &K_, &M_, &C_;
   Eigen::MatrixXd MR_;  // M R, the constraint of the rigid-body modes
   double penalty_ = 0.0;
-  bool sparse_ = false;
-  int n_ = 0;
+  bool sparse_ = false, keep_factors_ = true, analysed_ = false;
+  int n_ = 0, latest_ = -1, latest_slot_ = -1;
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> dense_;
   SparseMatrixC Ks_, Ms_, Cs_;
-  std::vector<std::unique_ptr<SparseLUC>> sparse_lu_;
+  std::vector<std::unique_ptr<SparseLUC>> sparse_lu_;  // per h, or [bordered, w ≠ 0] (not kept)
 };
 
 }  // namespace geardyn::detail
