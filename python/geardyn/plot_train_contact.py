@@ -1,0 +1,62 @@
+"""Figures of the gearbox's own deflection at its meshes (`geardyn train`, issue 36): the mesh
+misalignment of `static` (mesh_misalignment.png) and, of `contact`, the contact pattern of every
+mesh, K_Hβ per mesh and the loaded STE harmonics (mesh_contact.png)."""
+
+from ._plot_common import _read_columns, plt
+from .plot_face_load import draw_contact_pattern
+
+
+def mesh_misalignment_figure(folder, title):
+    """Per mesh: the mismatch in and out of the plane of action and the centre-distance change
+    [µm], bars."""
+    table = _read_columns(folder / "mesh_misalignment.csv")
+    meshes = list(table["mesh"])
+    figure, ax = plt.subplots(figsize=(max(5.0, 1.6 * len(meshes) + 3), 4), layout="constrained")
+    series = [("mismatch_m", "f_ma in the plane of action"),
+              ("mismatch_out_of_plane_m", "out of the plane of action"),
+              ("centre_distance_change_m", "centre-distance change")]
+    width = 0.8 / len(series)
+    for k, (column, label) in enumerate(series):
+        xs = [i + (k - 1) * width for i in range(len(meshes))]
+        ax.bar(xs, [1e6 * v for v in table[column]], width, label=label)
+    ax.axhline(0.0, color="0.4", lw=0.8)
+    ax.set_xticks(range(len(meshes)), meshes)
+    ax.set_ylabel("across the face width [µm]")
+    ax.grid(alpha=0.3, axis="y")
+    ax.legend(fontsize=8)
+    ax.set_title(f"{title}: mesh misalignment from the static deflection", fontsize=9)
+    return figure
+
+
+def mesh_contact_figure(folder, summary, title):
+    """One column per mesh: its contact pattern; below, K_Hβ per mesh and the loaded STE
+    harmonics."""
+    contact = summary["results"]["contact"]
+    meshes = list(contact["meshes"])
+    columns = max(2, len(meshes))
+    figure, axes = plt.subplots(2, columns, figsize=(5.2 * columns, 8), layout="constrained", squeeze=False)
+    for j, mesh in enumerate(meshes):
+        table = _read_columns(folder / f"face_load_{mesh}.csv")
+        draw_contact_pattern(axes[0][j], table, f"mesh {mesh}", contact["meshes"][mesh]["face_load_factor"])
+    for j in range(len(meshes), columns):
+        axes[0][j].axis("off")
+    left, right = axes[1][0], axes[1][1]
+    left.bar(meshes, [contact["meshes"][m]["face_load_factor"] for m in meshes], color="tab:orange")
+    left.axhline(1.0, color="0.4", lw=0.8)
+    left.set_ylabel("face load factor K_Hβ [-]")
+    left.grid(alpha=0.3, axis="y")
+    left.set_title("K_Hβ = peak / mean line load", fontsize=9)
+    for mesh in meshes:
+        amplitudes = contact["meshes"][mesh]["ste_harmonics_m"]
+        orders = range(1, len(amplitudes) + 1)
+        right.semilogy(orders, [max(1e-6 * 1e-6, 1e6 * a) for a in amplitudes], "o-", label=mesh)
+    right.set_xlabel("mesh order")
+    right.set_ylabel("loaded STE amplitude [µm]")
+    right.grid(alpha=0.3, which="both")
+    right.legend(fontsize=8)
+    right.set_title("loaded STE harmonics at the static load", fontsize=9)
+    for j in range(2, columns):
+        axes[1][j].axis("off")
+    figure.suptitle(f"{title}: loaded tooth contact under the gearbox's own deflection "
+                    f"({contact['iterations']} coupling iterations)", fontsize=9)
+    return figure
