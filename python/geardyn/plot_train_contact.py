@@ -1,6 +1,7 @@
 """Figures of the gearbox's own deflection at its meshes (`geardyn train`, issue 36): the mesh
-misalignment of `static` (mesh_misalignment.png) and, of `contact`, the contact pattern of every
-mesh, K_Hβ per mesh and the loaded STE harmonics (mesh_contact.png)."""
+misalignment of `static` (mesh_misalignment.png), of `contact` the contact pattern of every
+mesh, K_Hβ per mesh and the loaded STE harmonics (mesh_contact.png), and of `forced` the whine
+orders against speed (whine_orders.png)."""
 
 from ._plot_common import _read_columns, plt
 from .plot_face_load import draw_contact_pattern
@@ -21,7 +22,7 @@ def mesh_misalignment_figure(folder, title):
         ax.bar(xs, [1e6 * v for v in table[column]], width, label=label)
     ax.axhline(0.0, color="0.4", lw=0.8)
     ax.set_xticks(range(len(meshes)), meshes)
-    ax.set_ylabel("across the face width [µm]")
+    ax.set_ylabel("misalignment across the face; centre-distance change [µm]")
     ax.grid(alpha=0.3, axis="y")
     ax.legend(fontsize=8)
     ax.set_title(f"{title}: mesh misalignment from the static deflection", fontsize=9)
@@ -59,4 +60,29 @@ def mesh_contact_figure(folder, summary, title):
         axes[1][j].axis("off")
     figure.suptitle(f"{title}: loaded tooth contact under the gearbox's own deflection "
                     f"({contact['iterations']} coupling iterations)", fontsize=9)
+    return figure
+
+
+def whine_orders_figure(folder, summary, title):
+    """Whine order levels against speed: the dynamic mesh force of every mesh at each of its
+    orders (forced_mesh_orders.csv), one panel per mesh, with the meshes that take their loaded
+    contact as excitation (excitation = "ltca") named in the title."""
+    table = _read_columns(folder / "forced_mesh_orders.csv")
+    meshes = list(dict.fromkeys(table["mesh"]))
+    figure, axes = plt.subplots(1, len(meshes), figsize=(5.5 * len(meshes), 4.2), layout="constrained",
+                                squeeze=False)
+    for ax, mesh in zip(axes[0], meshes):
+        rows = [i for i, m in enumerate(table["mesh"]) if m == mesh]
+        for order in sorted({int(table["order"][i]) for i in rows}):
+            keep = [i for i in rows if int(table["order"][i]) == order]
+            ax.semilogy([table["speed_rpm"][i] for i in keep],
+                        [max(table["amplitude_n"][i], 1e-6) for i in keep], lw=1.2, label=f"{order}× mesh")
+        ax.set_xlabel("input speed [rpm]")
+        ax.set_ylabel("dynamic mesh force [N]")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+        ax.set_title(f"mesh {mesh}", fontsize=9)
+    ltca = summary["results"].get("excitation_ltca", {}).get("meshes", {})
+    source = f"loaded contact of {', '.join(ltca)}" if ltca else "the meshes' input excitation"
+    figure.suptitle(f"{title}: whine orders against speed ({source})", fontsize=9)
     return figure
