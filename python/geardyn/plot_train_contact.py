@@ -29,13 +29,42 @@ def mesh_misalignment_figure(folder, title):
     return figure
 
 
+def _load_cases(left, right, table, meshes):
+    """K_Hβ and the loaded STE's first mesh harmonics against the load factor, per mesh."""
+    orders = sorted(int(c[len("ste_h"):-2]) for c in table if c.startswith("ste_h"))[:3]
+    for k, mesh in enumerate(meshes):
+        keep = [i for i, m in enumerate(table["mesh"]) if m == mesh]
+        load = [table["load_factor"][i] for i in keep]
+        left.plot(load, [table["face_load_factor"][i] for i in keep], "o-", color=f"C{k}", label=mesh)
+        for n, style in zip(orders, ("-", "--", ":")):
+            right.plot(load, [1e6 * table[f"ste_h{n}_m"][i] for i in keep], style, marker="o", ms=3,
+                       color=f"C{k}", label=f"{mesh} {n}× mesh")
+    left.set_xlabel("load / operating load [-]")
+    left.set_ylabel("face load factor K_Hβ [-]")
+    left.set_title("K_Hβ per mesh and load case", fontsize=9)
+    right.set_xlabel("load / operating load [-]")
+    right.set_ylabel("loaded STE harmonic [µm]")
+    right.set_title("loaded STE harmonics against load", fontsize=9)
+    for ax in (left, right):
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+
+
 def mesh_contact_figure(folder, summary, title):
     """One column per mesh: its contact pattern; below, K_Hβ per mesh and the loaded STE
-    harmonics."""
+    harmonics; with load cases (contact_load_cases.csv), K_Hβ and the STE harmonics against
+    load."""
     contact = summary["results"]["contact"]
     meshes = list(contact["meshes"])
     columns = max(2, len(meshes))
-    figure, axes = plt.subplots(2, columns, figsize=(5.2 * columns, 8), layout="constrained", squeeze=False)
+    cases = folder / "contact_load_cases.csv"
+    rows = 3 if cases.exists() else 2
+    figure, axes = plt.subplots(rows, columns, figsize=(5.2 * columns, 4 * rows), layout="constrained",
+                                squeeze=False)
+    if cases.exists():
+        _load_cases(axes[2][0], axes[2][1], _read_columns(cases), meshes)
+        for j in range(2, columns):
+            axes[2][j].axis("off")
     for j, mesh in enumerate(meshes):
         table = _read_columns(folder / f"face_load_{mesh}.csv")
         draw_contact_pattern(axes[0][j], table, f"mesh {mesh}", contact["meshes"][mesh]["face_load_factor"])

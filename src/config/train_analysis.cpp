@@ -340,6 +340,12 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(10000)
       .defaultValue(50)
       .doc("deflection <-> load distribution iterations at most");
+  schema.realList("contact.load_factors")
+      .unit("-")
+      .defaultValue(nlohmann::ordered_json::array({0.25, 0.5, 0.75, 1.0, 1.25, 1.5}))
+      .doc(
+          "load cases as multiples of the operating torque, each coupled anew: K_Hbeta and the "
+          "loaded STE harmonics against load (contact_load_cases.csv); empty: none");
   schema.section("modal", "Modes at one speed.");
   schema.integer("modal.modes").min(0).defaultValue(0).doc("lowest modes reported (0: all)");
   schema.real("modal.speed_rpm")

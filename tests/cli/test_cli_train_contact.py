@@ -35,6 +35,13 @@ def test_static_contact_and_ltca_excitation(tmp_path):
         assert (out / f"face_load_{mesh}.csv").exists()
     table = {r["mesh"]: r for r in _rows(out / "mesh_contact.csv")}
     assert float(table["stage1"]["face_load_factor"]) == contact["meshes"]["stage1"]["face_load_factor"]
+    # The load cases: at factor 1 the operating point's fixed point again; the misalignment grows
+    # with the load (the deflection is linear in the torque, the coupling moves it a little).
+    cases = _rows(out / "contact_load_cases.csv")
+    at_one = [r for r in cases if float(r["load_factor"]) == 1.0 and r["mesh"] == "stage2"]
+    assert abs(float(at_one[0]["face_load_factor"]) - contact["meshes"]["stage2"]["face_load_factor"]) < 1e-12
+    stage2 = [abs(float(r["mismatch_m"])) for r in cases if r["mesh"] == "stage2"]
+    assert stage2 == sorted(stage2)
 
     # The same meshes as the forced response's excitation: k_t(φ) and e = STE − F/k_t.
     excited = tmp_path / "excited"
