@@ -12,7 +12,6 @@
 #include "geardyn/config/ltca_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/csv_table.h"
-#include "geardyn/stiffness/tabulated_stiffness.h"
 
 namespace geardyn::analysis::detail {
 
@@ -230,33 +229,18 @@ std::optional<GearTrainModel> withLoadedContactExcitation(const GearTrainModel& 
   const TrainLoadedContactOptions options = loadedContactOptions(analysis);
   const auto contacts = gearboxMeshContacts(model, gearbox, options.slices);
   const TrainLoadedContactResult r = solveTrainLoadedContact(model, contacts, options);
-  GearTrainSpec spec = model.spec();
+  GearTrainSpec spec = loadedContactExcitation(model, r, wanted);
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (const TrainMeshLoadedContact& m : r.meshes) {
     if (!wanted[m.mesh]) continue;
-    const TrainMesh& mesh = model.meshes()[m.mesh];
-    const double cb = std::cos(mesh.base_helix_angle);
-    std::vector<double> phases, k, e;
-    for (const auto& p : m.face.points) {
-      phases.push_back(p.phase);
-      k.push_back(p.tangent / (cb * cb));
-      e.push_back(cb * (p.ste - m.force_transverse / p.tangent));
-    }
-    for (TrainMeshSpec& s : spec.meshes) {
-      if (s.name != mesh.name) continue;
-      s.stiffness = std::make_shared<const TabulatedMeshStiffness>(
-          phases, k, mesh.stiffness ? mesh.stiffness->contactRatio() : mesh.contact_ratio,
-          "loaded_contact");
-      s.transmission_error = TransmissionError();
-      s.transmission_error.addTable(phases, e, "meshes." + mesh.name + ".excitation");
-    }
-    json[mesh.name] = {{"face_load_factor", m.face.k_hbeta},
-                       {"mismatch_m", m.misalignment.mismatch},
-                       {"ste_peak_to_peak_m", m.ste_peak_to_peak}};
+    const std::string& name = model.meshes()[m.mesh].name;
+    json[name] = {{"face_load_factor", m.face.k_hbeta},
+                  {"mismatch_m", m.misalignment.mismatch},
+                  {"ste_peak_to_peak_m", m.ste_peak_to_peak}};
     text += fmt::format(
         "  mesh {} excited by its loaded contact: k_t(phi) and e(phi) from {} positions "
         "(K_Hbeta {:.4f}, loaded STE {:.4g} um peak to peak)\n",
-        mesh.name, phases.size(), m.face.k_hbeta, 1e6 * m.ste_peak_to_peak);
+        name, m.face.points.size(), m.face.k_hbeta, 1e6 * m.ste_peak_to_peak);
   }
   summary.results["excitation_ltca"] = {
       {"iterations", r.iterations}, {"converged", r.converged}, {"meshes", json}};

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "geardyn/error.h"
+#include "geardyn/stiffness/tabulated_stiffness.h"
 
 namespace geardyn {
 
@@ -148,6 +149,32 @@ TrainLoadedContactResult solveTrainLoadedContact(
     r.meshes.push_back(std::move(s));
   }
   return r;
+}
+
+GearTrainSpec loadedContactExcitation(const GearTrainModel& model,
+                                      const TrainLoadedContactResult& r,
+                                      const std::vector<bool>& meshes) {
+  GearTrainSpec spec = model.spec();
+  for (const TrainMeshLoadedContact& m : r.meshes) {
+    if (m.mesh >= static_cast<int>(meshes.size()) || !meshes[m.mesh]) continue;
+    const TrainMesh& mesh = model.meshes()[m.mesh];
+    const double cb = std::cos(mesh.base_helix_angle);
+    std::vector<double> phases, k, e;
+    for (const auto& p : m.face.points) {
+      phases.push_back(p.phase);
+      k.push_back(p.tangent / (cb * cb));
+      e.push_back(cb * (p.ste - m.force_transverse / p.tangent));
+    }
+    for (TrainMeshSpec& s : spec.meshes) {
+      if (s.name != mesh.name) continue;
+      s.stiffness = std::make_shared<const TabulatedMeshStiffness>(
+          phases, k, mesh.stiffness ? mesh.stiffness->contactRatio() : mesh.contact_ratio,
+          "loaded_contact");
+      s.transmission_error = TransmissionError();
+      s.transmission_error.addTable(phases, e, "meshes." + mesh.name + ".excitation");
+    }
+  }
+  return spec;
 }
 
 }  // namespace geardyn

@@ -70,4 +70,11 @@ TrainLoadedContactResult solveTrainLoadedContact(
     const std::vector<std::shared_ptr<const LoadedToothContact>>& contacts,
     const TrainLoadedContactOptions& options = {});
 
+/// The spec of `model` with every mesh i with `meshes[i]` excited by its loaded contact in `r`
+/// (above): the table k_t(φ) / cos² β_b and e(φ) = cos β_b (δ(φ) − F / k_t(φ)) along the contact
+/// normal at the contact's positions, in place of its stiffness model and transmission error.
+GearTrainSpec loadedContactExcitation(const GearTrainModel& model,
+                                      const TrainLoadedContactResult& r,
+                                      const std::vector<bool>& meshes);
+
 }  // namespace geardyn
