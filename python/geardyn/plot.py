@@ -18,6 +18,7 @@ from ._plot_common import _read_columns, finish, plt
 from .plot_fe_rotor import (campbell_figure, fe_modes_figure, plot_campbell, plot_rotor_fe,  # noqa: F401
                             runup_figure)
 from .plot_hbm import details_figure, forced_response_figure, plot_hbm  # noqa: F401  (re-exported)
+from .plot_face_load import face_load_figure
 from .plot_rotor import (full_spectrum_figure, orbits_figure, plot_rotor, plot_spectrum,  # noqa: F401
                          study_figure)
 from .plot_sweep import plot_histograms, plot_sweep  # noqa: F401  (re-exported)
@@ -262,6 +263,9 @@ def plot_ltca(result_dir, save=False):
     figure.suptitle(f"{title}: {summary['results']['ltca']['force']:.6g} N", fontsize=9)
     figure.tight_layout()
     figures["ltca.png"] = figure
+    face = face_load_figure(folder, f"{title}: across the face", summary["results"]["ltca"].get("face_load_factor"))
+    if face is not None:
+        figures["face_load.png"] = face
     if (folder / "harris.csv").exists():
         harris = _read_columns(folder / "harris.csv")
         figure, ax = plt.subplots(figsize=(7, 4.5))

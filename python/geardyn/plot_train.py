@@ -9,6 +9,7 @@ import pathlib
 
 from ._plot_common import _axes, _long_table, _read_columns, _read_summary, finish, plt
 from ._tables import log_floor
+from .plot_train_contact import mesh_contact_figure, mesh_misalignment_figure, whine_orders_figure
 from .plot_train_nonlinear import train_nonlinear_figure
 from .plot_train_runup import train_runup_figure, train_waterfall_figure
 from .plot_train_stats import train_stats_figure
@@ -234,7 +235,8 @@ def plot_train(result_dir, save=False):
     """{file name: Figure}: modes.png, campbell.png, forced_response.png (and forced_tones.png
     on the torus, plot_train_tones.py), time_history.png,
     runup.png and waterfall.png (plot_train_runup.py), mesh_statistics.png
-    (plot_train_stats.py), and nonlinear_response.png of the analyses run; written into the folder when `save`."""
+    (plot_train_stats.py), mesh_misalignment.png, mesh_contact.png and whine_orders.png
+    (plot_train_contact.py), and nonlinear_response.png of the analyses run; written into the folder when `save`."""
     folder = pathlib.Path(result_dir)
     summary = _read_summary(folder)
     title = _train_title(summary)
@@ -244,8 +246,14 @@ def plot_train(result_dir, save=False):
         figures["modes.png"] = _mode_shapes(folder, summary, title)
     if "campbell" in results:
         figures["campbell.png"] = _campbell(folder, summary, title)
+    if "static" in results and (folder / "mesh_misalignment.csv").exists():
+        figures["mesh_misalignment.png"] = mesh_misalignment_figure(folder, title)
+    if "contact" in results:
+        figures["mesh_contact.png"] = mesh_contact_figure(folder, summary, title)
     if "forced" in results:
         figures["forced_response.png"] = _forced(folder, summary, title)
+        if (folder / "forced_mesh_orders.csv").exists():
+            figures["whine_orders.png"] = whine_orders_figure(folder, summary, title)
         if (folder / "forced_tones.csv").exists():
             figures["forced_tones.png"] = train_tones_figure(folder, summary, title)
     if "time" in results and (folder / "time_history.csv").exists():

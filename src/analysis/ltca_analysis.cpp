@@ -9,9 +9,11 @@
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/ltca_config.h"
+#include "geardyn/contact/face_load.h"
 #include "geardyn/error.h"
 #include "geardyn/io/geometry_results.h"
 #include "geardyn/io/ltca_results.h"
+#include "train_loaded_contact_analysis.h"
 
 namespace geardyn::analysis {
 
@@ -22,7 +24,8 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
   PotentialEnergyOptions pe;
   if (pair.baseHelixAngle() > 0.0) pe.slices = slices;  // the same slices as the contact
   auto stiffness = std::make_shared<const PotentialEnergyMeshStiffness>(pair, pe);
-  const PairModifications modifications = config::pairModificationsFromConfig(config, *stiffness);
+  PairModifications modifications = config::pairModificationsFromConfig(config, *stiffness);
+  modifications.misalignment = config.real("ltca.misalignment");
   const LoadedToothContact contact(stiffness, modifications, slices);
   const double force = config.real("ltca.force");
   const int positions = static_cast<int>(config.integer("ltca.positions"));
@@ -39,6 +42,9 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
   const double sweep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.addTable("ltca.csv", io::ltcaTable(points, force));
+  const FaceLoadDistribution face = faceLoadDistribution(
+      contact, force, std::vector<LoadedContactPoint>(points.begin(), points.begin() + positions));
+  detail::addFaceLoadTables(face, "face_load", result);
   const auto [lo, hi] = std::minmax_element(points.begin(), points.end(),
                                             [](auto& a, auto& b) { return a.ste < b.ste; });
   double mean_tangent = 0.0;
@@ -50,6 +56,11 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
       {"ste_max", hi->ste},
       {"mean_tangent_stiffness", mean_tangent},
       {"contact_ratio", stiffness->contactRatio()},
+      {"misalignment_m", modifications.misalignment},
+      {"face_load_factor", face.k_hbeta},
+      {"face_load_factor_max", face.k_hbeta_max},
+      {"centre_of_load_m", face.centre_of_load},
+      {"loaded_face_fraction", face.loaded_fraction},
       {"gearbox_mesh", config.has("gearbox.mesh")
                            ? nlohmann::ordered_json(config.string("gearbox.mesh"))
                            : nlohmann::ordered_json(nullptr)},
@@ -62,6 +73,11 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
       "loaded tooth contact at {:g} N: STE {:.4g} .. {:.4g} um (peak to peak {:.4g} um), mean "
       "tangent stiffness {:.4g} N/m\n",
       force, 1e6 * lo->ste, 1e6 * hi->ste, 1e6 * (hi->ste - lo->ste), mean_tangent);
+  text += fmt::format(
+      "  across the face ({} slices): K_Hbeta {:.4f} (largest instantaneous {:.4f}), centre of "
+      "load {:+.2f} mm from the mid-face, {:.0f} % of the face loaded\n",
+      slices, face.k_hbeta, face.k_hbeta_max, 1e3 * face.centre_of_load,
+      100 * face.loaded_fraction);
 
   const auto design = config.optionalReal("modifications.design_load");
   std::vector<double> factors = config.realList("harris.load_factors");

@@ -30,10 +30,12 @@
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/mesh_misalignment.h"
 #include "geardyn/units.h"
 #include "train_bearings_analysis.h"
 #include "train_forced_analysis.h"
 #include "train_geometry.h"
+#include "train_loaded_contact_analysis.h"
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
@@ -147,6 +149,10 @@ void runStatic(const GearTrainModel& model, AnalysisResult& result, io::RunSumma
                                {"wall_time_s", secondsSince(start)}};
   if (r.status != "ok") summary.warnings.push_back(r.message);
   text += fmt::format("static: {} ({} rigid-body modes)\n", r.status, r.rigid_modes);
+  if (model.dofsPerBody() == 6) {
+    summary.results["static"]["misalignment"] =
+        detail::writeMeshMisalignment(meshMisalignment(model, r.displacement), result, text);
+  }
 }
 
 void runModal(const GearTrainModel& model, const config::Config& analysis, AnalysisResult& result,
@@ -403,7 +409,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   return result;
 }
 
-AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& model,
+AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& given,
                              const std::vector<std::string>& analyses,
                              const AnalysisContext& context,
                              const std::vector<std::string>& spec_warnings) {
@@ -415,12 +421,16 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& mo
   }
   std::vector<std::string> warnings = loaded.warnings;
   warnings.insert(warnings.end(), spec_warnings.begin(), spec_warnings.end());
-  warnings.insert(warnings.end(), model.warnings().begin(), model.warnings().end());
+  warnings.insert(warnings.end(), given.warnings().begin(), given.warnings().end());
   summary.warnings = warnings;
   std::string text = fmt::format(
       "gear train {}: {} bodies, {} meshes, {} DOFs ({})\n",
-      model.spec().name.empty() ? loaded.gearbox_source : model.spec().name, model.bodies().size(),
-      model.meshes().size(), model.dofCount(), toString(model.spec().dofs));
+      given.spec().name.empty() ? loaded.gearbox_source : given.spec().name, given.bodies().size(),
+      given.meshes().size(), given.dofCount(), toString(given.spec().dofs));
+  // Meshes with excitation = "ltca" take their loaded contact under the gearbox's deflection.
+  const std::optional<GearTrainModel> excited =
+      detail::withLoadedContactExcitation(given, loaded.analysis, loaded.gearbox, summary, text);
+  const GearTrainModel& model = excited ? *excited : given;
   writeKinematics(model, result, summary, text);
   // Bearings from their geometry: the static deflection is nonlinear; every other analysis
   // takes them linearised there (summary.results.bearings says so).
@@ -448,6 +458,8 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& mo
   for (const std::string& analysis : analyses) {
     flush();
     if (analysis == "static") runStatic(model, result, summary, text);
+    if (analysis == "contact")
+      detail::runTrainContact(model, loaded.analysis, loaded.gearbox, result, summary, text);
     if (analysis == "modal") runModal(linear, loaded.analysis, result, summary, text);
     if (analysis == "campbell")
       runCampbell(linear, loaded.analysis, result, summary, text, context);

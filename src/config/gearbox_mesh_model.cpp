@@ -141,11 +141,14 @@ bool hasModifications(const config::Config& config, const std::string& prefix) {
   const std::string p = prefix + "modifications.";
   if (config.string(p + "relief") != "none" || config.has(p + "design_load")) return true;
   for (const char* gear : {"pinion", "gear"}) {
-    for (const char* key : {"tip_relief", "tip_relief_length", "root_relief", "root_relief_length",
-                            "crowning", "slope_error"}) {
+    for (const char* key :
+         {"tip_relief", "tip_relief_length", "root_relief", "root_relief_length", "crowning",
+          "slope_error", "helix_slope", "end_relief", "end_relief_length"}) {
       if (config.real(fmt::format("{}{}_{}", p, gear, key)) != 0.0) return true;
     }
-    if (!config.realList(fmt::format("{}{}_pitch_errors", p, gear)).empty()) return true;
+    for (const char* key : {"pitch_errors", "lead_error_positions", "lead_errors"}) {
+      if (!config.realList(fmt::format("{}{}_{}", p, gear, key)).empty()) return true;
+    }
   }
   return false;
 }
@@ -186,9 +189,14 @@ TrainMeshContact contactFromConfig(const config::Config& config, const std::stri
     c.tooth_pairs = std::make_shared<LoadedContactElements>(contact);
     return c;
   }
-  if (tooth_keys && hasModifications(config, prefix)) {
+  const bool ltca_excitation =
+      config.resolved().contains("meshes") && prefix.rfind("meshes.", 0) == 0 &&
+      config.has(prefix + "excitation") && config.string(prefix + "excitation") == "ltca";
+  if (tooth_keys && hasModifications(config, prefix) && !ltca_excitation) {
     throw InputError(prefix + "modifications", "(given)",
-                     fmt::format("only with contact = \"tooth_pairs\" (contact = \"{}\")", law));
+                     fmt::format("only with contact = \"tooth_pairs\" or excitation = \"ltca\" "
+                                 "(contact = \"{}\")",
+                                 law));
   }
   if (law == "backlash" && !has_backlash) {
     throw InputError(prefix + "backlash", "(absent)",

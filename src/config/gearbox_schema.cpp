@@ -138,6 +138,14 @@ void addGearAndMeshKeys(ConfigSchema& schema) {
       .doc("mesh phase at t = 0 in mesh periods (default 0)");
   addMeshModelKeys(schema, "meshes.*.", "this mesh");
   detail::addToothPairKeys(schema, "meshes.*.");
+  schema.string("meshes.*.excitation")
+      .choices({"input", "ltca"})
+      .defaultValue("input")
+      .doc(
+          "input: the mesh's stiffness model and te_* keys; ltca (full DOFs, external meshes): "
+          "the loaded tooth contact under the gearbox's own deflection (train [contact]) gives "
+          "the tangent stiffness k_t(phi) and the error e = STE - F/k_t, with the mesh's "
+          "[modifications] (issue 36)");
   schema.real("meshes.*.damping")
       .unit("N s/m")
       .min(0.0)

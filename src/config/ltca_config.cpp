@@ -9,6 +9,38 @@
 
 namespace geardyn::config {
 
+namespace {
+
+/// The lead (across the face) modifications of one gear (issue 36).
+void addLeadKeys(ConfigSchema& schema, const std::string& prefix, const char* gear) {
+  schema.real(fmt::format("{}.{}_helix_slope", prefix, gear))
+      .unit("m")
+      .defaultValue(0.0)
+      .doc(
+          "helix slope deviation f_Hbeta: separation f_Hbeta z/b across the face (z from the "
+          "mid-face, along +x of a train)");
+  schema.real(fmt::format("{}.{}_end_relief", prefix, gear))
+      .unit("m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("end relief C_I at both face ends (modifications shape: linear or parabolic)");
+  schema.real(fmt::format("{}.{}_end_relief_length", prefix, gear))
+      .unit("m")
+      .min(0.0)
+      .defaultValue(0.0)
+      .doc("its length across the face from each end");
+  schema.realList(fmt::format("{}.{}_lead_error_positions", prefix, gear))
+      .unit("m")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc("face positions z in [-b/2, b/2] of a measured lead error table (ascending)");
+  schema.realList(fmt::format("{}.{}_lead_errors", prefix, gear))
+      .unit("m")
+      .defaultValue(nlohmann::ordered_json::array())
+      .doc("lead errors (separations) at those positions, interpolated linearly");
+}
+
+}  // namespace
+
 void addModificationsSection(ConfigSchema& schema, const std::string& prefix) {
   schema.section(prefix,
                  "Flank modifications and errors (separations along the line of "
@@ -51,6 +83,7 @@ void addModificationsSection(ConfigSchema& schema, const std::string& prefix) {
         .unit("m")
         .defaultValue(nlohmann::ordered_json::array())
         .doc("pitch error of each tooth (cyclic)");
+    addLeadKeys(schema, prefix, gear);
   }
 }
 
@@ -95,7 +128,15 @@ ConfigSchema ltcaSchema() {
       .min(1)
       .max(10000)
       .defaultValue(1)
-      .doc("face slices per tooth pair (helical gears and crowning need several)");
+      .doc(
+          "face slices per tooth pair (helical gears, crowning and lead modifications need "
+          "several)");
+  schema.real("ltca.misalignment")
+      .unit("m")
+      .defaultValue(0.0)
+      .doc(
+          "mesh misalignment f_ma in the plane of action: the flanks approach by f_ma more at "
+          "z = b/2 than at -b/2 (ISO 6336-1 f_ma; `train` computes it from the deflection)");
   addModificationsSection(schema);
   schema.section("harris", "Peak-to-peak loaded STE against load.");
   schema.stringList("harris.compare_reliefs")
@@ -162,6 +203,18 @@ PairModifications pairModificationsFromConfig(const Config& config,
     t.crowning = config.real(fmt::format("{}{}_crowning", p, gear));
     t.profile_slope_error = config.real(fmt::format("{}{}_slope_error", p, gear));
     t.pitch_errors = config.realList(fmt::format("{}{}_pitch_errors", p, gear));
+    t.helix_slope = config.real(fmt::format("{}{}_helix_slope", p, gear));
+    t.end_relief = {config.real(fmt::format("{}{}_end_relief", p, gear)),
+                    config.real(fmt::format("{}{}_end_relief_length", p, gear)), shape};
+    t.end_relief.validate(fmt::format("{}{}_end_relief", p, gear).c_str());
+    t.lead_error_positions = config.realList(fmt::format("{}{}_lead_error_positions", p, gear));
+    t.lead_errors = config.realList(fmt::format("{}{}_lead_errors", p, gear));
+    if (t.lead_errors.size() != t.lead_error_positions.size()) {
+      throw InputError(fmt::format("{}{}_lead_errors", p, gear),
+                       fmt::format("{} values", t.lead_errors.size()),
+                       fmt::format("one per {}{}_lead_error_positions ({})", p, gear,
+                                   t.lead_error_positions.size()));
+    }
   }
   return m;
 }

@@ -310,9 +310,42 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
           "into <out>/load_case_<id>/");
   schema.section("analysis", "What to run.");
   schema.stringList("analysis.run")
-      .choices({"static", "modal", "campbell", "forced", "time", "runup", "nonlinear", "stats"})
+      .choices({"static", "contact", "modal", "campbell", "forced", "time", "runup", "nonlinear",
+                "stats"})
       .defaultValue(nlohmann::ordered_json::array({"static", "modal"}))
       .doc("analyses, in any combination");
+  schema.section("contact",
+                 "System deflection coupled with the loaded tooth contact across the face of every "
+                 "external mesh (full DOFs): misalignment, load distribution, K_Hbeta, loaded STE; "
+                 "also what meshes with excitation = \"ltca\" take (issue 36).");
+  schema.integer("contact.slices").min(1).max(10000).defaultValue(40).doc("face slices per pair");
+  schema.integer("contact.positions")
+      .min(8)
+      .max(100000)
+      .defaultValue(64)
+      .doc("mesh positions per mesh period");
+  schema.integer("contact.harmonics")
+      .min(1)
+      .max(1000)
+      .defaultValue(8)
+      .doc("loaded-STE mesh harmonics reported (< positions / 2)");
+  schema.real("contact.tolerance")
+      .unit("-")
+      .positive()
+      .lessThan(1.0)
+      .defaultValue(1e-4)
+      .doc("fixed point: every mesh's centre of load moves by less than this × its face width");
+  schema.integer("contact.max_iterations")
+      .min(1)
+      .max(10000)
+      .defaultValue(50)
+      .doc("deflection <-> load distribution iterations at most");
+  schema.realList("contact.load_factors")
+      .unit("-")
+      .defaultValue(nlohmann::ordered_json::array({0.25, 0.5, 0.75, 1.0, 1.25, 1.5}))
+      .doc(
+          "load cases as multiples of the operating torque, each coupled anew: K_Hbeta and the "
+          "loaded STE harmonics against load (contact_load_cases.csv); empty: none");
   schema.section("modal", "Modes at one speed.");
   schema.integer("modal.modes").min(0).defaultValue(0).doc("lowest modes reported (0: all)");
   schema.real("modal.speed_rpm")

@@ -46,7 +46,7 @@ void LoadedToothContact::gather(double phase, int period, std::vector<Slice>& ou
     for (int i = 0; i < slices_; ++i) {
       double k = 0.0, g = 0.0;
       slice(phase, j, i, k, g, period);
-      if (k > 0.0) out.push_back({k, g, j});
+      if (k > 0.0) out.push_back({k, g, j, i});
     }
   }
 }
@@ -60,6 +60,7 @@ LoadedContactPoint LoadedToothContact::solve(double phase, double force, int per
   LoadedContactPoint p;
   p.phase = phase;
   p.pair_loads.assign(pairCount(), 0.0);
+  p.face_loads.assign(slices_, 0.0);
   if (slices.empty()) {
     throw InputError("phase", fmt::format("{:g}", phase), "no tooth pair is in contact there");
   }
@@ -80,6 +81,7 @@ LoadedContactPoint LoadedToothContact::solve(double phase, double force, int per
   for (std::size_t i = 0; i < m; ++i) {
     const double load = slices[i].k * std::max(0.0, delta - slices[i].g);
     p.pair_loads[slices[i].pair] += load;
+    p.face_loads[slices[i].face] += load;
     if (delta > slices[i].g || force == 0.0) p.tangent += slices[i].k;
   }
   p.loaded_slices = static_cast<int>(m);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geardyn/error.h"
@@ -35,6 +36,53 @@ void ToothModification::validate(const char* key) const {
   for (double e : pitch_errors) {
     if (!std::isfinite(e)) throw InputError(key, "pitch error", "must be finite [m]");
   }
+  end_relief.validate(key);
+  if (!std::isfinite(helix_slope)) {
+    throw InputError(key, fmt::format("helix slope {:g} m", helix_slope), "must be finite [m]");
+  }
+  if (lead_error_positions.size() != lead_errors.size()) {
+    throw InputError(key,
+                     fmt::format("{} lead error positions, {} lead errors",
+                                 lead_error_positions.size(), lead_errors.size()),
+                     "one error per position");
+  }
+  for (std::size_t i = 0; i < lead_errors.size(); ++i) {
+    if (!std::isfinite(lead_errors[i]) || !std::isfinite(lead_error_positions[i]) ||
+        (i > 0 && !(lead_error_positions[i] > lead_error_positions[i - 1]))) {
+      throw InputError(
+          key,
+          fmt::format("lead error {:g} m at z = {:g} m", lead_errors[i], lead_error_positions[i]),
+          "finite errors at strictly ascending face positions [m]");
+    }
+  }
+}
+
+namespace {
+
+/// Linear interpolation of a table (constant beyond its ends; 0 when empty).
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  if (x.empty()) return 0.0;
+  if (at <= x.front()) return y.front();
+  if (at >= x.back()) return y.back();
+  const auto hi = std::upper_bound(x.begin(), x.end(), at) - x.begin();
+  const double t = (at - x[hi - 1]) / (x[hi] - x[hi - 1]);
+  return y[hi - 1] + t * (y[hi] - y[hi - 1]);
+}
+
+double toothLead(const ToothModification& t, double z, double b) {
+  double g = t.helix_slope * z / b;
+  g += t.end_relief.at(z + 0.5 * b) + t.end_relief.at(0.5 * b - z);
+  return g + interpolate(t.lead_error_positions, t.lead_errors, z);
+}
+
+}  // namespace
+
+double PairModifications::leadSeparation(double z, double face_width) const {
+  if (!(face_width > 0.0)) return 0.0;
+  const double zeta = 2.0 * z / face_width;
+  double g = (pinion.crowning + gear.crowning) * zeta * zeta;
+  g += toothLead(pinion, z, face_width) + toothLead(gear, z, face_width);
+  return g - misalignment * z / face_width;
 }
 
 double PairModifications::separation(double s, double z, int pinion_tooth, int gear_tooth,
@@ -43,8 +91,7 @@ double PairModifications::separation(double s, double z, int pinion_tooth, int g
   // Pinion: tip at s_end, root at s_begin; gear: tip at s_begin, root at s_end.
   g += pinion.tip.at(s_end - s) + pinion.root.at(s - s_begin);
   g += gear.tip.at(s - s_begin) + gear.root.at(s_end - s);
-  const double zeta = face_width > 0.0 ? 2.0 * z / face_width : 0.0;
-  g += (pinion.crowning + gear.crowning) * zeta * zeta;
+  g += leadSeparation(z, face_width);
   const double span = s_end - s_begin;
   if (span > 0.0) {
     const double t = (s - s_begin) / span - 0.5;  // −½ at the pinion root, +½ at its tip
@@ -62,9 +109,10 @@ double PairModifications::separation(double s, double z, int pinion_tooth, int g
 bool PairModifications::none() const {
   const auto empty = [](const ToothModification& m) {
     return m.tip.amount == 0.0 && m.root.amount == 0.0 && m.crowning == 0.0 &&
-           m.profile_slope_error == 0.0 && m.pitch_errors.empty();
+           m.profile_slope_error == 0.0 && m.pitch_errors.empty() && m.helix_slope == 0.0 &&
+           m.end_relief.amount == 0.0 && m.lead_errors.empty();
   };
-  return empty(pinion) && empty(gear);
+  return empty(pinion) && empty(gear) && misalignment == 0.0;
 }
 
 PairModifications designedTipRelief(const PotentialEnergyMeshStiffness& stiffness,

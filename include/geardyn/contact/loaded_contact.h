@@ -30,6 +30,9 @@ struct LoadedContactPoint {
   double secant = 0.0;      ///< F / δ [N/m] (0 at F = 0)
   double tangent = 0.0;     ///< dF/dδ [N/m]
   std::vector<double> pair_loads;  ///< load per pair slot j (pairCount()) [N]
+  /// Load per face slice i (slices(), at z_i = (i + ½) b / slices − b/2), summed over the
+  /// pairs [N]: the load distribution across the face.
+  std::vector<double> face_loads;
   int loaded_slices = 0;
 };
 
@@ -42,6 +45,9 @@ class LoadedToothContact {
 
   int pairCount() const { return stiffness_->pairCount(); }
   const PotentialEnergyMeshStiffness& stiffness() const { return *stiffness_; }
+  const std::shared_ptr<const PotentialEnergyMeshStiffness>& sharedStiffness() const {
+    return stiffness_;
+  }
   const PairModifications& modifications() const { return modifications_; }
 
   /// The contact at mesh phase φ (in mesh period `period`, which picks the teeth for pitch
@@ -62,7 +68,7 @@ class LoadedToothContact {
  private:
   struct Slice {
     double k, g;
-    int pair;
+    int pair, face;
   };
   void gather(double phase, int period, std::vector<Slice>& out) const;
 
