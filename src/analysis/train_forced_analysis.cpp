@@ -18,6 +18,7 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
+#include "geardyn/solvers/train_truncation.h"
 #include "geardyn/units.h"
 
 namespace geardyn::analysis::detail {
@@ -124,12 +125,24 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                       const std::vector<double>& speeds, AnalysisResult& result,
                       io::RunSummary& summary, std::string& text, const AnalysisContext& context) {
   const auto start = Clock::now();
-  const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
-  const TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
-  // Base harmonics the common period needs: L × the largest multiple of its base.
+  TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
+  TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
+  // Without forced.mesh_harmonics: L_m per mesh from the problem (train_truncation.h).
+  const bool derived = !analysis.has("forced.mesh_harmonics");
+  std::vector<int> per_mesh(model.meshes().size(), steady.mesh_harmonics);
+  if (derived) {
+    const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
+    per_mesh = estimate.per_mesh;
+    steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
+    torus_options.per_mesh_harmonics = per_mesh;
+    torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
+  }
+  // Base harmonics the common period needs: L_m × the multiple of its base, the largest.
   int common_harmonics = 0;
-  for (int p : trainBaseFrequency(model, 1, std::numeric_limits<int>::max()).mesh_multiple) {
-    common_harmonics = std::max(common_harmonics, p * steady.mesh_harmonics);
+  const std::vector<int> multiples =
+      trainBaseFrequency(model, 1, std::numeric_limits<int>::max()).mesh_multiple;
+  for (std::size_t m = 0; m < multiples.size(); ++m) {
+    common_harmonics = std::max(common_harmonics, multiples[m] * per_mesh[m]);
   }
   const std::string requested = analysis.string("forced.method");
   const bool torus = requested == "torus" ||
@@ -223,6 +236,8 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   }
   Json forced = {{"speeds", speeds.size()},
                  {"mesh_harmonics", steady.mesh_harmonics},
+                 {"mesh_harmonics_derived", derived},
+                 {"mesh_harmonics_per_mesh", Json::object()},
                  {"method", torus ? "torus" : "common_period"},
                  {"common_period_harmonics", common_harmonics}};
   if (torus) {
@@ -245,6 +260,9 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                        {"tones", torus_solver->toneCount()},
                        {"max_gmres_iterations", max_iterations},
                        {"direct_solves", direct}};
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    forced["mesh_harmonics_per_mesh"][meshes[m].name] = per_mesh[m];
   }
   forced["meshes"] = peaks;
   forced["wall_time_s"] = std::chrono::duration<double>(Clock::now() - start).count();

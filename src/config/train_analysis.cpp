@@ -332,8 +332,12 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
   schema.integer("forced.mesh_harmonics")
       .min(1)
       .max(200)
-      .defaultValue(10)
-      .doc("harmonics of each mesh frequency in the balance");
+      .optional()
+      .doc(
+          "harmonics of each mesh frequency in the balance (default: derived per mesh, the "
+          "smallest number whose neglected mesh-force orders, estimated by each mesh's own "
+          "balance with the train's dynamic compliance at the mesh, stay below 1e-3 of the "
+          "largest at every speed; solvers/train_truncation.h)");
   schema.integer("forced.max_base_harmonics")
       .min(1)
       .defaultValue(4000)
@@ -417,14 +421,18 @@ TrainModalOptions trainModalOptionsFromConfig(const config::Config& analysis,
 
 TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis) {
   TrainSteadyOptions o;
-  o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  if (analysis.has("forced.mesh_harmonics")) {
+    o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  }
   o.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
   return o;
 }
 
 TrainTorusOptions trainTorusOptionsFromConfig(const config::Config& analysis) {
   TrainTorusOptions o;
-  o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  if (analysis.has("forced.mesh_harmonics")) {
+    o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  }
   o.group_harmonics = static_cast<int>(analysis.integer("forced.torus_above"));
   o.truncation = analysis.string("forced.torus_truncation") == "diamond" ? TorusTruncation::kDiamond
                                                                          : TorusTruncation::kBox;
