@@ -20,6 +20,7 @@
 #include "geardyn/solvers/train_torus.h"
 #include "geardyn/solvers/train_truncation.h"
 #include "geardyn/units.h"
+#include "torus_tones.h"
 
 namespace geardyn::analysis::detail {
 namespace {
@@ -63,18 +64,6 @@ ForcedPoint pointOf(TrainTorusState&& s) {
   p.iterations = s.iterations;
   p.direct = s.linear_solver == "direct";
   return p;
-}
-
-/// "2g1-g2": the tone n as a combination of the generators.
-std::string toneName(const std::vector<int>& n) {
-  std::string out;
-  for (std::size_t j = 0; j < n.size(); ++j) {
-    if (n[j] == 0) continue;
-    out += n[j] < 0 ? "-" : (out.empty() ? "" : "+");
-    if (std::abs(n[j]) != 1) out += std::to_string(std::abs(n[j]));
-    out += fmt::format("g{}", j + 1);
-  }
-  return out;
 }
 
 /// Mesh orders the operating deflection shapes are written for (1..this, at most L).

@@ -54,6 +54,19 @@ void addNonlinearSection(config::ConfigSchema& schema) {
       .choices({"up", "down", "both"})
       .defaultValue("both")
       .doc("continuation up from speed_min_rpm, down from speed_max_rpm, or both");
+  schema.string("nonlinear.method")
+      .choices({"auto", "common_period", "torus"})
+      .defaultValue("auto")
+      .doc(
+          "balance over the meshes' common period, or on the torus of their phases "
+          "(quasi-periodic; stability by Newmark checks at nonlinear.newmark_speeds_rpm); auto: "
+          "the torus when the largest mesh multiple of the base × nonlinear.torus_mesh_harmonics "
+          "exceeds forced.torus_above");
+  schema.integer("nonlinear.torus_mesh_harmonics")
+      .min(1)
+      .max(40)
+      .defaultValue(6)
+      .doc("on the torus: harmonics of each mesh frequency (a box of tones per generator)");
   schema.integer("nonlinear.harmonics")
       .min(1)
       .max(512)

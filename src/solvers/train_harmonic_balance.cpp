@@ -84,10 +84,12 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   if (largest > h_) {
     throw InputError(
         "nonlinear.harmonics", std::to_string(h_),
-        fmt::format("at least {}: the meshes repeat over a common period of {} periods of the "
-                    "fastest mesh, which needs {} harmonics of the common frequency for one of "
-                    "its own (trains without a short common period: use time integration)",
-                    largest, largest, largest));
+        fmt::format(
+            "at least {}: the meshes repeat over a common period of {} periods of the "
+            "fastest mesh, which needs {} harmonics of the common frequency for one of "
+            "its own (trains without a short common period: nonlinear.method = \"torus\" or time "
+            "integration)",
+            largest, largest, largest));
   }
   base_ratio_ = kTwoPi * base.ratio;
   speed_sign_ = model.inputSpeed() < 0.0 ? -1.0 : 1.0;

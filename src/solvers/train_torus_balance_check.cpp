@@ -68,6 +68,11 @@ std::pair<Eigen::VectorXd, Eigen::VectorXd> TrainTorusBalance::initialState(
   return {q, v};
 }
 
+Eigen::MatrixXd TrainTorusBalance::gridCoordinates(const Eigen::VectorXd& u) {
+  gridForces(u);
+  return grid_;
+}
+
 Eigen::MatrixXd TrainTorusBalance::gridMeshForces(const Eigen::VectorXd& u) {
   gridForces(u);  // grid_ holds the coordinates on the grid afterwards
   const long long points = fft_->points();

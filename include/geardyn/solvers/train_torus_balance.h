@@ -99,6 +99,8 @@ class TrainTorusBalance final : public ContinuationProblem {
   Eigen::MatrixXcd displacementHarmonics(const HarmonicBalancePoint& point);
   /// (q, q̇) at t = 0 [m, rad; m/s, rad/s]: where a Newmark check starts.
   std::pair<Eigen::VectorXd, Eigen::VectorXd> initialState(const HarmonicBalancePoint& point);
+  /// The nonlinear coordinates on the grid (rows: grid points, axis 0 fastest) [m].
+  Eigen::MatrixXd gridCoordinates(const Eigen::VectorXd& u);
   /// Mesh contact forces k g(δ − e) (tooth pairs: Σ k_j max(0, y − g_j)) on the grid (rows:
   /// grid points, axis 0 fastest; cols: meshes) [N].
   Eigen::MatrixXd gridMeshForces(const Eigen::VectorXd& u);
