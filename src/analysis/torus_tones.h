@@ -3,9 +3,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
+
+#include "geardyn/io/csv_table.h"
+#include "geardyn/solvers/train_torus.h"
 
 namespace geardyn::analysis::detail {
 
@@ -19,6 +23,25 @@ inline std::string toneName(const std::vector<int>& n) {
     out += fmt::format("g{}", j + 1);
   }
   return out;
+}
+
+/// One row per line of `lines` at or above `floor` × the largest: speed [rpm], mesh, n_j, the
+/// tone's name, frequency [Hz], amplitude [N] and amplitude / largest (forced_tones.csv,
+/// nonlinear_tones.csv).
+inline void addToneRows(io::CsvTable& table, double speed_rpm, const std::string& mesh,
+                        const std::vector<TorusLine>& lines, double floor) {
+  double largest = 0.0;
+  for (const TorusLine& line : lines) largest = std::max(largest, line.amplitude);
+  for (const TorusLine& line : lines) {
+    if (line.amplitude < floor * largest) continue;
+    std::vector<io::CsvCell> row{speed_rpm, mesh};
+    for (int n : line.tone) row.push_back(n);
+    row.push_back(toneName(line.tone));
+    row.push_back(line.frequency);
+    row.push_back(line.amplitude);
+    row.push_back(line.amplitude / largest);
+    table.addRow(row);
+  }
 }
 
 }  // namespace geardyn::analysis::detail

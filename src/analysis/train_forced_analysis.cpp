@@ -189,19 +189,8 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
         orders_table.addRow({speed / kRpm, meshes[m].name, static_cast<int>(l + 1), (l + 1.0) * f_m,
                              s.orders[m][l]});
       }
-      if (!torus) continue;
-      double largest = 0.0;
-      for (const TorusLine& line : s.lines[m]) largest = std::max(largest, line.amplitude);
-      for (const TorusLine& line : s.lines[m]) {
-        if (line.amplitude < kToneTableFloor * largest) continue;
-        std::vector<io::CsvCell> tone_row{speed / kRpm, meshes[m].name};
-        for (int n : line.tone) tone_row.push_back(n);
-        tone_row.push_back(toneName(line.tone));
-        tone_row.push_back(line.frequency);
-        tone_row.push_back(line.amplitude);
-        tone_row.push_back(line.amplitude / largest);
-        tones_table.addRow(tone_row);
-      }
+      if (torus)
+        addToneRows(tones_table, speed / kRpm, meshes[m].name, s.lines[m], kToneTableFloor);
     }
     for (double f : s.element_force) row.push_back(f);
     table.addRow(row);

@@ -121,8 +121,6 @@ std::string runTrainNonlinearTorus(const GearTrainModel& model, const config::Co
     table.addRow(row);
     const auto lines = hb.meshForceLines(p.q, p.omega);
     for (int m = 0; m < r; ++m) {
-      double largest = 0.0;
-      for (const TorusLine& line : lines[m]) largest = std::max(largest, line.amplitude);
       const int j = g.mesh_generator[m], P = g.mesh_multiple[m];
       for (const TorusLine& line : lines[m]) {
         bool pure = line.tone[j] % P == 0;
@@ -131,15 +129,8 @@ std::string runTrainNonlinearTorus(const GearTrainModel& model, const config::Co
           orders.addRow(
               {speed / kRpm, meshes[m].name, line.tone[j] / P, line.frequency, line.amplitude});
         }
-        if (line.amplitude < kToneFloor * largest) continue;
-        std::vector<io::CsvCell> tone_row{speed / kRpm, meshes[m].name};
-        for (int n : line.tone) tone_row.push_back(n);
-        tone_row.push_back(toneName(line.tone));
-        tone_row.push_back(line.frequency);
-        tone_row.push_back(line.amplitude);
-        tone_row.push_back(line.amplitude / largest);
-        tones.addRow(tone_row);
       }
+      addToneRows(tones, speed / kRpm, meshes[m].name, lines[m], kToneFloor);
     }
   }
   result.addTable("nonlinear_torus.csv", table);
