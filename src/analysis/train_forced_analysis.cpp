@@ -18,7 +18,9 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
+#include "geardyn/solvers/train_truncation.h"
 #include "geardyn/units.h"
+#include "torus_tones.h"
 
 namespace geardyn::analysis::detail {
 namespace {
@@ -62,18 +64,6 @@ ForcedPoint pointOf(TrainTorusState&& s) {
   p.iterations = s.iterations;
   p.direct = s.linear_solver == "direct";
   return p;
-}
-
-/// "2g1-g2": the tone n as a combination of the generators.
-std::string toneName(const std::vector<int>& n) {
-  std::string out;
-  for (std::size_t j = 0; j < n.size(); ++j) {
-    if (n[j] == 0) continue;
-    out += n[j] < 0 ? "-" : (out.empty() ? "" : "+");
-    if (std::abs(n[j]) != 1) out += std::to_string(std::abs(n[j]));
-    out += fmt::format("g{}", j + 1);
-  }
-  return out;
 }
 
 /// Mesh orders the operating deflection shapes are written for (1..this, at most L).
@@ -124,12 +114,24 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                       const std::vector<double>& speeds, AnalysisResult& result,
                       io::RunSummary& summary, std::string& text, const AnalysisContext& context) {
   const auto start = Clock::now();
-  const TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
-  const TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
-  // Base harmonics the common period needs: L × the largest multiple of its base.
+  TrainSteadyOptions steady = config::trainSteadyOptionsFromConfig(analysis);
+  TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
+  // Without forced.mesh_harmonics: L_m per mesh from the problem (train_truncation.h).
+  const bool derived = !analysis.has("forced.mesh_harmonics");
+  std::vector<int> per_mesh(model.meshes().size(), steady.mesh_harmonics);
+  if (derived) {
+    const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
+    per_mesh = estimate.per_mesh;
+    steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
+    torus_options.per_mesh_harmonics = per_mesh;
+    torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
+  }
+  // Base harmonics the common period needs: L_m × the multiple of its base, the largest.
   int common_harmonics = 0;
-  for (int p : trainBaseFrequency(model, 1, std::numeric_limits<int>::max()).mesh_multiple) {
-    common_harmonics = std::max(common_harmonics, p * steady.mesh_harmonics);
+  const std::vector<int> multiples =
+      trainBaseFrequency(model, 1, std::numeric_limits<int>::max()).mesh_multiple;
+  for (std::size_t m = 0; m < multiples.size(); ++m) {
+    common_harmonics = std::max(common_harmonics, multiples[m] * per_mesh[m]);
   }
   const std::string requested = analysis.string("forced.method");
   const bool torus = requested == "torus" ||
@@ -187,19 +189,8 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
         orders_table.addRow({speed / kRpm, meshes[m].name, static_cast<int>(l + 1), (l + 1.0) * f_m,
                              s.orders[m][l]});
       }
-      if (!torus) continue;
-      double largest = 0.0;
-      for (const TorusLine& line : s.lines[m]) largest = std::max(largest, line.amplitude);
-      for (const TorusLine& line : s.lines[m]) {
-        if (line.amplitude < kToneTableFloor * largest) continue;
-        std::vector<io::CsvCell> tone_row{speed / kRpm, meshes[m].name};
-        for (int n : line.tone) tone_row.push_back(n);
-        tone_row.push_back(toneName(line.tone));
-        tone_row.push_back(line.frequency);
-        tone_row.push_back(line.amplitude);
-        tone_row.push_back(line.amplitude / largest);
-        tones_table.addRow(tone_row);
-      }
+      if (torus)
+        addToneRows(tones_table, speed / kRpm, meshes[m].name, s.lines[m], kToneTableFloor);
     }
     for (double f : s.element_force) row.push_back(f);
     table.addRow(row);
@@ -223,6 +214,8 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   }
   Json forced = {{"speeds", speeds.size()},
                  {"mesh_harmonics", steady.mesh_harmonics},
+                 {"mesh_harmonics_derived", derived},
+                 {"mesh_harmonics_per_mesh", Json::object()},
                  {"method", torus ? "torus" : "common_period"},
                  {"common_period_harmonics", common_harmonics}};
   if (torus) {
@@ -245,6 +238,9 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                        {"tones", torus_solver->toneCount()},
                        {"max_gmres_iterations", max_iterations},
                        {"direct_solves", direct}};
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    forced["mesh_harmonics_per_mesh"][meshes[m].name] = per_mesh[m];
   }
   forced["meshes"] = peaks;
   forced["wall_time_s"] = std::chrono::duration<double>(Clock::now() - start).count();

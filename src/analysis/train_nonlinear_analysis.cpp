@@ -404,6 +404,9 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
         "a radial clearance (bearings.<name>.radial_clearance): the teeth never separate and the "
         "response is the linear one");
   }
+  if (nonlinearOnTorus(model, analysis)) {
+    return runTrainNonlinearTorus(model, analysis, result, text, context);
+  }
   const TrainHarmonicBalanceOptions options =
       config::trainHarmonicBalanceOptionsFromConfig(analysis);
   TrainHarmonicBalance hbm(model, options);  // InputError when H is below a mesh's multiple
@@ -542,7 +545,8 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
     multiples[model.meshes()[m].name] = hbm.meshMultiples()[m];
     per_rpm[model.meshes()[m].name] = hbm.meshMultiples()[m] * scale / kTwoPi;
   }
-  summary.results["nonlinear"] = {{"harmonics", options.harmonics},
+  summary.results["nonlinear"] = {{"method", "common_period"},
+                                  {"harmonics", options.harmonics},
                                   {"samples", options.samples},
                                   {"mesh_multiples", multiples},
                                   {"base_frequency_hz_per_rpm", scale / kTwoPi},

@@ -18,4 +18,12 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
                               AnalysisResult& result, std::string& text,
                               const AnalysisContext& context);
 
+/// The meshes' common period is long (nonlinear.method auto: the largest mesh multiple of the
+/// base × nonlinear.torus_mesh_harmonics above forced.torus_above), or method = "torus".
+bool nonlinearOnTorus(const GearTrainModel& model, const config::Config& analysis);
+/// The nonlinear analysis on the torus of the mesh phases (train_nonlinear_torus.cpp).
+std::string runTrainNonlinearTorus(const GearTrainModel& model, const config::Config& analysis,
+                                   AnalysisResult& result, std::string& text,
+                                   const AnalysisContext& context);
+
 }  // namespace geardyn::analysis::detail

@@ -54,6 +54,19 @@ void addNonlinearSection(config::ConfigSchema& schema) {
       .choices({"up", "down", "both"})
       .defaultValue("both")
       .doc("continuation up from speed_min_rpm, down from speed_max_rpm, or both");
+  schema.string("nonlinear.method")
+      .choices({"auto", "common_period", "torus"})
+      .defaultValue("auto")
+      .doc(
+          "balance over the meshes' common period, or on the torus of their phases "
+          "(quasi-periodic; stability by Newmark checks at nonlinear.newmark_speeds_rpm); auto: "
+          "the torus when the largest mesh multiple of the base × nonlinear.torus_mesh_harmonics "
+          "exceeds forced.torus_above");
+  schema.integer("nonlinear.torus_mesh_harmonics")
+      .min(1)
+      .max(40)
+      .defaultValue(6)
+      .doc("on the torus: harmonics of each mesh frequency (a box of tones per generator)");
   schema.integer("nonlinear.harmonics")
       .min(1)
       .max(512)
@@ -365,8 +378,12 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
   schema.integer("forced.mesh_harmonics")
       .min(1)
       .max(200)
-      .defaultValue(10)
-      .doc("harmonics of each mesh frequency in the balance");
+      .optional()
+      .doc(
+          "harmonics of each mesh frequency in the balance (default: derived per mesh, the "
+          "smallest number whose neglected mesh-force orders, estimated by each mesh's own "
+          "balance with the train's dynamic compliance at the mesh, stay below 1e-3 of the "
+          "largest at every speed; solvers/train_truncation.h)");
   schema.integer("forced.max_base_harmonics")
       .min(1)
       .defaultValue(4000)
@@ -451,14 +468,18 @@ TrainModalOptions trainModalOptionsFromConfig(const config::Config& analysis,
 
 TrainSteadyOptions trainSteadyOptionsFromConfig(const config::Config& analysis) {
   TrainSteadyOptions o;
-  o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  if (analysis.has("forced.mesh_harmonics")) {
+    o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  }
   o.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
   return o;
 }
 
 TrainTorusOptions trainTorusOptionsFromConfig(const config::Config& analysis) {
   TrainTorusOptions o;
-  o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  if (analysis.has("forced.mesh_harmonics")) {
+    o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
+  }
   o.group_harmonics = static_cast<int>(analysis.integer("forced.torus_above"));
   o.truncation = analysis.string("forced.torus_truncation") == "diamond" ? TorusTruncation::kDiamond
                                                                          : TorusTruncation::kBox;

@@ -2,6 +2,8 @@
 
 #include "geardyn/solvers/detail/torus_fft.h"
 
+#include <algorithm>
+#include <cmath>
 #include <mutex>
 
 #include "geardyn/signal/detail/fftw_planner.h"
@@ -62,6 +64,36 @@ void TorusFft::toSpectrum(Eigen::MatrixXd& grid, Eigen::MatrixXcd& half) const {
   half.resize(half_, spectra_);
   fftw_execute_dft_r2c(to_spectrum_, grid.data(), reinterpret_cast<fftw_complex*>(half.data()));
   half /= static_cast<double>(points_);
+}
+
+std::vector<TorusLine> torusLines(const Eigen::MatrixXcd& half, Eigen::Index column,
+                                  const TorusFft& fft, const std::vector<int>& K,
+                                  const std::vector<double>& g) {
+  // Lines below this fraction of the largest are not listed (round-off).
+  constexpr double kLineFloor = 1e-9;
+  std::vector<TorusLine> lines;
+  const int k = static_cast<int>(K.size());
+  Eigen::VectorXi n(k);
+  for (long long i = 0; i < fft.halfSize(); ++i) {
+    fft.toneAt(i, n);
+    bool inside = true;
+    double frequency = 0.0;
+    for (int j = 0; j < k; ++j) {
+      inside = inside && std::abs(n(j)) <= K[j];
+      frequency += n(j) * g[j];
+    }
+    if (!inside || std::abs(frequency) <= 1e-9 * g[0] || (n(0) == 0 && frequency < 0.0)) continue;
+    if (frequency < 0.0) n = -n, frequency = -frequency;
+    lines.push_back(
+        {std::vector<int>(n.data(), n.data() + k), frequency, 2.0 * std::abs(half(i, column))});
+  }
+  double largest = 0.0;
+  for (const TorusLine& line : lines) largest = std::max(largest, line.amplitude);
+  std::erase_if(lines,
+                [&](const TorusLine& line) { return line.amplitude < kLineFloor * largest; });
+  std::sort(lines.begin(), lines.end(),
+            [](const TorusLine& a, const TorusLine& b) { return a.frequency < b.frequency; });
+  return lines;
 }
 
 }  // namespace geardyn::detail

@@ -8,9 +8,11 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 
 #include "geardyn/error.h"
+#include "geardyn/signal/detail/fftw_planner.h"
 #include "geardyn/solvers/detail/aft_jacobian.h"
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/solvers/train_response.h"
@@ -82,10 +84,12 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   if (largest > h_) {
     throw InputError(
         "nonlinear.harmonics", std::to_string(h_),
-        fmt::format("at least {}: the meshes repeat over a common period of {} periods of the "
-                    "fastest mesh, which needs {} harmonics of the common frequency for one of "
-                    "its own (trains without a short common period: use time integration)",
-                    largest, largest, largest));
+        fmt::format(
+            "at least {}: the meshes repeat over a common period of {} periods of the "
+            "fastest mesh, which needs {} harmonics of the common frequency for one of "
+            "its own (trains without a short common period: nonlinear.method = \"torus\" or time "
+            "integration)",
+            largest, largest, largest));
   }
   base_ratio_ = kTwoPi * base.ratio;
   speed_sign_ = model.inputSpeed() < 0.0 ? -1.0 : 1.0;
@@ -132,8 +136,11 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   }
   real_buffer_ = fftw_alloc_real(samples_);
   complex_buffer_ = fftw_alloc_complex(samples_ / 2 + 1);
-  forward_plan_ = fftw_plan_dft_r2c_1d(samples_, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
-  inverse_plan_ = fftw_plan_dft_c2r_1d(samples_, complex_buffer_, real_buffer_, FFTW_ESTIMATE);
+  {  // FFTW's planner is not thread-safe: every plan under the library's one lock
+    const std::lock_guard<std::mutex> lock(detail::fftwPlannerMutex());
+    forward_plan_ = fftw_plan_dft_r2c_1d(samples_, real_buffer_, complex_buffer_, FFTW_ESTIMATE);
+    inverse_plan_ = fftw_plan_dft_c2r_1d(samples_, complex_buffer_, real_buffer_, FFTW_ESTIMATE);
+  }
   rate_coefficients_.resize(n_, meshes_);
   for (int m = 0; m < meshes_; ++m) forward(rate.col(m).data(), rate_coefficients_.col(m).data());
   B_.resize(h_ + 1);
@@ -142,6 +149,7 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
 }
 
 TrainHarmonicBalance::~TrainHarmonicBalance() {
+  const std::lock_guard<std::mutex> lock(detail::fftwPlannerMutex());
   fftw_destroy_plan(forward_plan_);
   fftw_destroy_plan(inverse_plan_);
   fftw_free(real_buffer_);

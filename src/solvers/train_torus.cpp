@@ -62,6 +62,12 @@ void TrainTorusOptions::validate() const {
   if (samples != 0 && samples < 8) {
     throw InputError("forced.torus_samples", std::to_string(samples), "0 (derived) or >= 8");
   }
+  for (int Lm : per_mesh_harmonics) {
+    if (Lm < 1 || Lm > mesh_harmonics) {
+      throw InputError("forced.mesh_harmonics", std::to_string(Lm),
+                       fmt::format("per mesh an integer in [1, {}] (the largest)", mesh_harmonics));
+    }
+  }
   if (!(tolerance > 0.0 && tolerance < 1e-3)) {
     throw InputError("forced.torus_tolerance", fmt::format("{:g}", tolerance), "in (0, 1e-3)");
   }
@@ -69,9 +75,16 @@ void TrainTorusOptions::validate() const {
 
 TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_harmonics,
                                           int group_harmonics) {
+  return trainTorusGenerators(model, std::vector<int>(model.meshes().size(), mesh_harmonics),
+                              group_harmonics);
+}
+
+TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model,
+                                          const std::vector<int>& mesh_harmonics,
+                                          int group_harmonics) {
   // Greedy grouping in mesh order: a mesh joins the first group whose common base with it
-  // (gcd of the reduced fractions p/q = gcd(p) / lcm(q)) keeps L × the largest multiple within
-  // group_harmonics; else it starts a generator of its own.
+  // (gcd of the reduced fractions p/q = gcd(p) / lcm(q)) keeps the largest L_m × multiple
+  // within group_harmonics; else it starts a generator of its own.
   struct Group {
     long long g = 0, l = 1;
     std::vector<int> members;
@@ -82,7 +95,7 @@ TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_
     long long largest = 0;
     for (int m : group.members) {
       const auto [p, q] = fraction[m];
-      largest = std::max(largest, (p / g) * (l / q));
+      largest = std::max(largest, (p / g) * (l / q) * mesh_harmonics[m]);
     }
     return largest;
   };
@@ -94,7 +107,7 @@ TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_
       const long long g = std::gcd(group.g, p), l = std::lcm(group.l, q);
       Group joined = group;
       joined.members.push_back(static_cast<int>(m));
-      if (l > 1000000000LL || largestMultiple(joined, g, l) * mesh_harmonics > group_harmonics) {
+      if (l > 1000000000LL || largestMultiple(joined, g, l) > group_harmonics) {
         continue;
       }
       group = joined;
@@ -115,9 +128,9 @@ TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_
       const auto [p, q] = fraction[m];
       out.mesh_generator[m] = static_cast<int>(j);
       out.mesh_multiple[m] = static_cast<int>((p / group.g) * (group.l / q));
-      largest = std::max(largest, out.mesh_multiple[m]);
+      largest = std::max(largest, out.mesh_multiple[m] * mesh_harmonics[m]);
     }
-    out.harmonics.push_back(largest * mesh_harmonics);
+    out.harmonics.push_back(largest);
   }
   return out;
 }
@@ -127,7 +140,10 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
   options.validate();
   refuseExcitations(model, "the multi-frequency (torus) steady state");
   const int L = options.mesh_harmonics;
-  generators_ = trainTorusGenerators(model, L, options.group_harmonics);
+  generators_ =
+      options.per_mesh_harmonics.empty()
+          ? trainTorusGenerators(model, L, options.group_harmonics)
+          : trainTorusGenerators(model, options.per_mesh_harmonics, options.group_harmonics);
   const std::vector<int>& N = generators_.harmonics;
   const int k = static_cast<int>(N.size());
   const int r = static_cast<int>(model.meshes().size());

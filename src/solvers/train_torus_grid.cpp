@@ -14,38 +14,6 @@ namespace {
 
 using Complex = std::complex<double>;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-/// Lines below this fraction of a mesh force's largest line are not listed (round-off).
-constexpr double kLineFloor = 1e-9;
-
-/// The lines of one mesh force's spectrum (column of `half`) at positive frequencies, tones
-/// |n_j| <= K_j: n or −n of every entry of the half spectrum (at n_0 = 0 both are in it).
-std::vector<TorusLine> linesOf(const Eigen::MatrixXcd& half, Eigen::Index column,
-                               const detail::TorusFft& fft, const std::vector<int>& K,
-                               const std::vector<double>& g) {
-  std::vector<TorusLine> lines;
-  const int k = static_cast<int>(K.size());
-  Eigen::VectorXi n(k);
-  for (long long i = 0; i < fft.halfSize(); ++i) {
-    fft.toneAt(i, n);
-    bool inside = true;
-    double frequency = 0.0;
-    for (int j = 0; j < k; ++j) {
-      inside = inside && std::abs(n(j)) <= K[j];
-      frequency += n(j) * g[j];
-    }
-    if (!inside || std::abs(frequency) <= 1e-9 * g[0] || (n(0) == 0 && frequency < 0.0)) continue;
-    if (frequency < 0.0) n = -n, frequency = -frequency;
-    lines.push_back(
-        {std::vector<int>(n.data(), n.data() + k), frequency, 2.0 * std::abs(half(i, column))});
-  }
-  double largest = 0.0;
-  for (const TorusLine& line : lines) largest = std::max(largest, line.amplitude);
-  std::erase_if(lines,
-                [&](const TorusLine& line) { return line.amplitude < kLineFloor * largest; });
-  std::sort(lines.begin(), lines.end(),
-            [](const TorusLine& a, const TorusLine& b) { return a.frequency < b.frequency; });
-  return lines;
-}
 
 }  // namespace
 
@@ -124,7 +92,7 @@ void TrainTorusSolver::postProcess(TrainTorusState& s) const {
       orders.push_back(n(j) <= K[j] ? 2.0 * std::abs(spectrum(fft.halfIndex(n), m)) : 0.0);
     }
     s.mesh_force_harmonics.push_back(std::move(orders));
-    s.mesh_force_lines.push_back(linesOf(spectrum, m, fft, K, s.generator_frequency));
+    s.mesh_force_lines.push_back(detail::torusLines(spectrum, m, fft, K, s.generator_frequency));
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <numbers>
 
+#include "geardyn/solvers/train_truncation.h"
 #include "solvers/torus_newmark_comparison.h"
 
 namespace geardyn {
@@ -22,6 +23,35 @@ TEST(TrainTorusLong, NewmarkSpectraAtThreeSpeeds) {
     const double speed = rpm * 2.0 * std::numbers::pi / 60.0;
     const auto comparison = testing::compareTorusWithNewmark(model, speed, 20, 1024);
     ASSERT_EQ(comparison.size(), model.meshes().size()) << rpm << " rpm: Newmark failed";
+    for (std::size_t m = 0; m < comparison.size(); ++m) {
+      const std::string name = fmt::format("{}_{:.0f}rpm", model.meshes()[m].name, rpm);
+      EXPECT_LT(comparison[m].worst, 1e-3) << name;
+      RecordProperty(name + "_worst", fmt::format("{:.3g}", comparison[m].worst));
+    }
+  }
+}
+
+// Issue 32's acceptance at the default (derived) truncation, train_truncation.h, over the
+// forced analysis's default sweep (200 speeds, 0.1–1.5 × the operating speed): the same three
+// speeds and the same criterion as above, 1024 Newmark steps per stage-1 mesh period.
+TEST(TrainTorusLong, DerivedTruncationAgainstNewmarkAtThreeSpeeds) {
+  const GearTrainModel model(testing::exampleGearbox("hunting_tooth_reducer.toml"));
+  std::vector<double> speeds;
+  for (int i = 0; i < 200; ++i) speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / 199.0));
+  const MeshHarmonicsEstimate e = estimateMeshHarmonics(model, speeds);
+  RecordProperty("derived", fmt::format("{} {}", e.per_mesh[0], e.per_mesh[1]));
+  TrainTorusOptions torus_options;
+  torus_options.mesh_harmonics = e.harmonics;
+  torus_options.per_mesh_harmonics = e.per_mesh;
+  torus_options.group_harmonics = std::max(100, e.harmonics);
+  const TrainTorusSolver torus(model, torus_options);
+  for (double rpm : {900.0, 1459.0, 2250.0}) {
+    const double speed = rpm * 2.0 * std::numbers::pi / 60.0;
+    TrainTimeOptions options;
+    options.steps_per_mesh_period = 1024;
+    const TrainTimeResponse newmark = solveTrainTimeResponse(model, speed, options);
+    ASSERT_EQ(newmark.status, "completed") << rpm;
+    const auto comparison = testing::compareSpectra(model, torus.solve(speed), newmark, 1, 1e-3);
     for (std::size_t m = 0; m < comparison.size(); ++m) {
       const std::string name = fmt::format("{}_{:.0f}rpm", model.meshes()[m].name, rpm);
       EXPECT_LT(comparison[m].worst, 1e-3) << name;

@@ -36,6 +36,9 @@ enum class TorusTruncation { kBox, kDiamond };
 
 struct TrainTorusOptions {
   int mesh_harmonics = 10;  ///< L: harmonics of each mesh frequency kept (>= 1)
+  /// L_m per mesh (empty: L for every mesh; else each in [1, L], L their largest): generator
+  /// j keeps N_j = max_{m∈j} L_m P_m harmonics (train_truncation.h derives them).
+  std::vector<int> per_mesh_harmonics;
   /// The most base harmonics (L × the largest multiple P_m of the group's base) a group of
   /// meshes sharing one generator may need; a mesh that would exceed it starts a new generator.
   int group_harmonics = 100;
@@ -56,6 +59,10 @@ struct TrainTorusGenerators {
   std::vector<int> harmonics;       ///< N_j = L max_{m∈j} P_m
 };
 TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model, int mesh_harmonics,
+                                          int group_harmonics);
+/// The same with L_m per mesh: a group keeps max L_m P_m within group_harmonics.
+TrainTorusGenerators trainTorusGenerators(const GearTrainModel& model,
+                                          const std::vector<int>& mesh_harmonics,
                                           int group_harmonics);
 
 /// One spectral line of a mesh force: the tone n (the frequency n·g) and its amplitude.

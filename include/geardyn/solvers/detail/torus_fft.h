@@ -12,6 +12,8 @@
 #include <complex>
 #include <vector>
 
+#include "geardyn/solvers/train_torus.h"
+
 namespace geardyn::detail {
 
 class TorusFft {
@@ -41,5 +43,12 @@ class TorusFft {
   int fields_ = 0, spectra_ = 0;
   fftw_plan to_grid_ = nullptr, to_spectrum_ = nullptr;
 };
+
+/// The lines of one field's spectrum (column of `half`, from toSpectrum) at positive
+/// frequencies, tones |n_j| <= K_j (g_j [Hz]): n or −n of every entry of the half spectrum (at
+/// n_0 = 0 both are in it); above 1e-9 of the largest, ascending frequency, amplitude 2|c_n|.
+std::vector<TorusLine> torusLines(const Eigen::MatrixXcd& half, Eigen::Index column,
+                                  const TorusFft& fft, const std::vector<int>& K,
+                                  const std::vector<double>& g);
 
 }  // namespace geardyn::detail
