@@ -40,14 +40,7 @@ bool haveCcx() {
     GTEST_SKIP() << "ccx (calculix-ccx) is not installed";                                \
   }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "geardyn-housing-gearbox-XXXXXX").string();
-    path = mkdtemp(pattern.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using testing::TempDir;
 
 /// A clamped steel beam (0.4 m, 20 × 20 mm, 10 × 2 × 2 C3D20) as the housing: seat
 /// PINION_BEARING its tip face, GEAR_BEARING its middle cross-section (unless `without_gear_seat`),
