@@ -49,9 +49,17 @@ void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen:
 Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
                                               const Eigen::MatrixXcd& rhs) const {
   const Eigen::Index n_t = h.first, n_h = h.Phi.rows();
+  Eigen::MatrixXcd out(n_t + n_h, rhs.cols());
+  // The train's loads (mesh vectors, static load, excitations) leave the housing's rows zero:
+  // then Φᵀ f_h and g vanish and two n_h × n_h products per column are skipped.
+  if (rhs.bottomRows(n_h).isZero(0.0)) {
+    out.topRows(n_t) = lu_.solve(rhs.topRows(n_t));
+    const Eigen::MatrixXcd F = Zeff_ * (h.Jc * out.topRows(n_t));  // bearing forces
+    out.bottomRows(n_h) = h.Phic * (dinv_.asDiagonal() * (h.Wc.transpose() * F));
+    return out;
+  }
   const Eigen::MatrixXcd p = h.Phic.transpose() * rhs.bottomRows(n_h);  // Φᵀ f_h
   const Eigen::MatrixXcd g = h.Wc * (dinv_.asDiagonal() * p);           // J_H D_h0⁻¹ f_h
-  Eigen::MatrixXcd out(n_t + n_h, rhs.cols());
   out.topRows(n_t) = lu_.solve(rhs.topRows(n_t) + h.Jc.transpose() * (Zeff_ * g));
   const Eigen::MatrixXcd F = Zeff_ * (h.Jc * out.topRows(n_t) - g);  // bearing forces
   out.bottomRows(n_h) = h.Phic * (dinv_.asDiagonal() * (h.Wc.transpose() * F + p));
