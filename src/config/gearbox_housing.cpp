@@ -106,7 +106,9 @@ HousingSource housingSourceFromConfig(const Config& gearbox, const GearTrainSpec
       const auto b = std::find_if(to_housing.begin(), to_housing.end(),
                                   [&](const std::string& n) { return upper(n) == upper(seat); });
       if (b == to_housing.end()) {
-        const auto match = closestMatch(seat, to_housing);
+        std::string lower = seat;  // bearing names are compared without case
+        for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        const auto match = closestMatch(lower, to_housing);
         throw InputError("housing.seats", "\"" + seat + "\"",
                          "a node set named as the bearing to the housing it carries" +
                              (match ? " (did you mean \"" + *match + "\"?)" : std::string()));
