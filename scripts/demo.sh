@@ -7,6 +7,10 @@ cd "$here"
 cli="${BUILD_DIR:-build}/bin/geardyn"
 [ -x "$cli" ] || { echo "demo: $cli is missing; run scripts/setup.sh first" >&2; exit 3; }
 
+# Meshes the examples read and nobody stores: written by their gmsh scripts when absent.
+deck=examples/gearboxes/two_stage_reducer_box.inp
+[ -f "$deck" ] || /usr/bin/python3 examples/housing_box_gmsh.py "$deck" --size 0.03
+
 status=0
 for example in examples/*.toml; do
   stem="$(basename "$example" .toml)"

@@ -10,6 +10,7 @@ import pathlib
 from ._plot_common import _axes, _long_table, _read_columns, _read_summary, finish, plt
 from ._tables import log_floor
 from .plot_train_contact import mesh_contact_figure, mesh_misalignment_figure, whine_orders_figure
+from .plot_train_housing import train_housing_figure
 from .plot_train_nonlinear import train_nonlinear_figure
 from .plot_train_runup import train_runup_figure, train_waterfall_figure
 from .plot_train_stats import train_stats_figure
@@ -233,7 +234,8 @@ def _train_title(summary):
 
 def plot_train(result_dir, save=False):
     """{file name: Figure}: modes.png, campbell.png, forced_response.png (and forced_tones.png
-    on the torus, plot_train_tones.py), time_history.png,
+    on the torus, plot_train_tones.py; housing_response.png with a flexible housing's response
+    points, plot_train_housing.py), time_history.png,
     runup.png and waterfall.png (plot_train_runup.py), mesh_statistics.png
     (plot_train_stats.py), mesh_misalignment.png, mesh_contact.png and whine_orders.png
     (plot_train_contact.py), and nonlinear_response.png of the analyses run; written into the folder when `save`."""
@@ -256,6 +258,8 @@ def plot_train(result_dir, save=False):
             figures["whine_orders.png"] = whine_orders_figure(folder, summary, title)
         if (folder / "forced_tones.csv").exists():
             figures["forced_tones.png"] = train_tones_figure(folder, summary, title)
+        if (folder / "housing_response.csv").exists():
+            figures["housing_response.png"] = train_housing_figure(folder, summary, title)
     if "time" in results and (folder / "time_history.csv").exists():
         figures["time_history.png"] = train_time_figure(folder, summary, title)
     if "runup" in results and (folder / "runup.csv").exists():

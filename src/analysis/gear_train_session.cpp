@@ -17,6 +17,7 @@
 #include "geardyn/units.h"
 #include "train_bearings_analysis.h"
 #include "train_forced_analysis.h"
+#include "train_housing_analysis.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -96,7 +97,10 @@ void GearTrainSession::reload(bool rebuild) {
   }
   if (rebuild) {
     std::vector<std::string> warnings;
-    model_.emplace(config::gearTrainFromConfig(fresh.gearbox, warnings), memoryLimitBytes());
+    GearTrainSpec spec = config::gearTrainFromConfig(fresh.gearbox, warnings);
+    detail::attachTrainHousing(fresh.gearbox, fresh.analysis,
+                               fresh.analysis.stringList("analysis.run"), spec);
+    model_.emplace(std::move(spec), memoryLimitBytes());
     linear_stale_ = true;
   }
   modal_options_ = config::trainModalOptionsFromConfig(fresh.analysis, "modal");

@@ -31,11 +31,13 @@
 #include "geardyn/io/rexs/rexs_reader.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/mesh_misalignment.h"
+#include "geardyn/system/train_housing.h"
 #include "geardyn/units.h"
 #include "train_bearings_analysis.h"
 #include "train_forced_analysis.h"
 #include "train_geometry.h"
 #include "train_loaded_contact_analysis.h"
+#include "train_housing_analysis.h"
 #include "train_nonlinear_analysis.h"
 #include "train_probes_analysis.h"
 #include "train_runup_analysis.h"
@@ -166,6 +168,12 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
                                   "stage_type", "translational_fraction"};
   for (const TrainMesh& m : model.meshes()) header.push_back("strain_" + m.name);
   for (const TrainElement& e : model.elements()) header.push_back("strain_" + e.name);
+  // A flexible housing: the mode's type ("housing" when most of its kinetic energy is there),
+  // the housing's kinetic and strain energy fractions.
+  const bool housed = model.housingFirstDof() >= 0;
+  if (housed) {
+    for (const char* c : {"mode_type", "housing_fraction", "strain_housing"}) header.push_back(c);
+  }
   io::CsvTable table(header);
   io::CsvTable shapes({"mode", "dof", "real", "imag"});
   Json list = Json::array();
@@ -177,6 +185,9 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
                                  stageTypes(m),         m.translational_fraction};
     row.insert(row.end(), m.mesh_strain_energy.begin(), m.mesh_strain_energy.end());
     row.insert(row.end(), m.element_strain_energy.begin(), m.element_strain_energy.end());
+    if (housed) {
+      row.insert(row.end(), {m.whirl, m.housing_fraction, m.housing_strain_energy});
+    }
     table.addRow(row);
     for (int i = 0; i < model.dofCount(); ++i) {
       shapes.addRow(
@@ -188,6 +199,11 @@ void runModal(const GearTrainModel& model, const config::Config& analysis, Analy
                     {"growth_rate_1_per_s", m.growthRate()},
                     {"multiplicity", m.multiplicity},
                     {"stage_type", m.stage_type}});
+    if (housed) {
+      list.back()["mode_type"] = m.whirl;
+      list.back()["housing_fraction"] = m.housing_fraction;
+      list.back()["housing_strain_energy"] = m.housing_strain_energy;
+    }
   }
   const auto divergent =
       std::count_if(modes.begin(), modes.end(), [](const TrainMode& m) { return m.divergent; });
@@ -399,11 +415,12 @@ config::Config TrainInputs::combined() const {
 AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& context) {
   const auto start = Clock::now();
   std::vector<std::string> warnings;
+  const std::vector<std::string> analyses = loaded.analysis.stringList("analysis.run");
+  GearTrainSpec spec = config::gearTrainFromConfig(loaded.gearbox, warnings);
+  detail::attachTrainHousing(loaded.gearbox, loaded.analysis, analyses, spec);
   // A train whose dense matrices would not fit is refused before they are allocated.
-  const GearTrainModel model(config::gearTrainFromConfig(loaded.gearbox, warnings),
-                             memoryLimitBytes());
-  AnalysisResult result =
-      trainAnalysis(loaded, model, loaded.analysis.stringList("analysis.run"), context, warnings);
+  const GearTrainModel model(std::move(spec), memoryLimitBytes());
+  AnalysisResult result = trainAnalysis(loaded, model, analyses, context, warnings);
   result.summary.results["wall_time_s"] = secondsSince(start);
   result.wall_time_s = secondsSince(start);
   return result;
@@ -432,6 +449,27 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& gi
       detail::withLoadedContactExcitation(given, loaded.analysis, loaded.gearbox, summary, text);
   const GearTrainModel& model = excited ? *excited : given;
   writeKinematics(model, result, summary, text);
+  if (model.housingFirstDof() >= 0) {
+    const TrainHousingSpec& h = *model.spec().housing;
+    const auto& f = h.reduced.mode_frequencies_hz;
+    text += fmt::format("housing {}: {} seats, {} fixed-interface modes{}, {} DOFs\n", h.source,
+                        h.reduced.seats.size(), f.size(),
+                        f.size() > 0 ? fmt::format(" ({:.1f} to {:.1f} Hz)", f(0), f(f.size() - 1))
+                                     : std::string(" (Guyan)"),
+                        model.dofCount() - model.housingFirstDof());
+    summary.results["housing"] = {
+        {"deck", h.source},
+        {"seats", h.reduced.seats},
+        {"points", h.reduced.points},
+        {"dofs", model.dofCount() - model.housingFirstDof()},
+        {"fixed_interface_modes_hz", std::vector<double>(f.data(), f.data() + f.size())},
+        {"cache_file", h.cache_file},
+        {"from_cache", h.from_cache},
+        {"assembly_s", h.assembly_s},
+        {"factorisation_s", h.reduced.factorisation_s},
+        {"modes_s", h.reduced.modes_s},
+        {"other_reduction_s", h.reduced.other_s}};
+  }
   // Bearings from their geometry: the static deflection is nonlinear; every other analysis
   // takes them linearised there (summary.results.bearings says so).
   const std::optional<GearTrainModel> linearised = detail::linearModelOf(model, result, text);

@@ -21,6 +21,7 @@
 #include "geardyn/solvers/train_truncation.h"
 #include "geardyn/units.h"
 #include "torus_tones.h"
+#include "train_housing_analysis.h"
 
 namespace geardyn::analysis::detail {
 namespace {
@@ -169,12 +170,20 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   std::vector<double> p2p(meshes.size(), 0.0), p2p_speed(meshes.size(), 0.0);
   int max_iterations = 0, direct = 0;
   const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
+  // The housing's response points (common period only: the torus keeps no DOF harmonics).
+  HousingResponseTable housing(model);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     if (progress) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
     if (speeds[i] == 0.0) continue;
     const double speed = speeds[i];
-    const ForcedPoint s =
-        torus ? pointOf(torus_solver->solve(speed)) : pointOf(common->solve(speed));
+    ForcedPoint s;
+    if (torus) {
+      s = pointOf(torus_solver->solve(speed));
+    } else {
+      const TrainSteadyState state = common->solve(speed);
+      housing.add(state);
+      s = pointOf(state);
+    }
     max_iterations = std::max(max_iterations, s.iterations);
     direct += s.direct ? 1 : 0;
     std::vector<io::CsvCell> row{speed / kRpm};
@@ -243,6 +252,14 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
     forced["mesh_harmonics_per_mesh"][meshes[m].name] = per_mesh[m];
   }
   forced["meshes"] = peaks;
+  summary.results["forced"] = forced;
+  housing.write(result, summary, text);
+  forced = summary.results["forced"];
+  if (torus && housing.active()) {
+    summary.warnings.push_back(
+        "forced: the housing's response points are reported with the common-period method only "
+        "(forced.method = \"common_period\")");
+  }
   forced["wall_time_s"] = std::chrono::duration<double>(Clock::now() - start).count();
   summary.results["forced"] = forced;
   text += fmt::format("forced response ({}): {} speeds in {:.2f} s\n",

@@ -4,6 +4,7 @@
 #include "geardyn/config/detail/gearbox_excitation.h"
 #include "geardyn/config/detail/gearbox_mesh_model.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/gearbox_housing.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
 
@@ -389,7 +390,8 @@ const std::vector<std::string>& gearboxSectionNames() {
                                                  "mesh_stiffness",
                                                  "unbalances",
                                                  "runouts",
-                                                 "bearing_excitations"};
+                                                 "bearing_excitations",
+                                                 "housing"};
   return names;
 }
 
@@ -400,6 +402,7 @@ void addGearboxSections(config::ConfigSchema& schema) {
   addExcitationAndCouplingKeys(schema);
   addPlanetaryKeys(schema);
   addOperatingPointKeys(schema);
+  addHousingKeys(schema);
 }
 
 config::ConfigSchema gearboxSchema() {

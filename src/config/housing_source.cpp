@@ -4,10 +4,13 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "geardyn/config/did_you_mean.h"
@@ -155,6 +158,27 @@ std::vector<HousingNodeSet> namedSets(const io::CalculixDeck& deck,
   return sets;
 }
 
+/// The elastic mounts' springs to the ground [N/m, SI] on K's diagonal: each set's total
+/// stiffness spread evenly over its nodes, in x, y and z.
+void addElasticMounts(io::FeMatrices& fe, const io::CalculixDeck& deck,
+                      const HousingSource& source) {
+  if (source.elastic_mounts.empty()) return;
+  std::map<int, double> per_node;  // node -> spring [N/m]
+  for (const auto& [set, k] : source.elastic_mounts) {
+    if (!(k > 0.0) || !std::isfinite(k)) {
+      throw InputError("housing.mounts." + set + ".stiffness", fmt::format("{:g} N/m", k),
+                       "a finite stiffness > 0 N/m (absent: a fixed mount)");
+    }
+    const std::vector<int> nodes =
+        namedSets(deck, {set}, "housing.mounts." + set, source.deck)[0].nodes;
+    for (int node : nodes) per_node[node] += k / static_cast<double>(nodes.size());
+  }
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(fe.dofs.size()); ++i) {
+    const auto it = per_node.find(fe.dofs[static_cast<std::size_t>(i)].node);
+    if (it != per_node.end()) fe.K.coeffRef(i, i) += it->second;
+  }
+}
+
 }  // namespace
 
 std::string housingCacheKey(const HousingSource& source) {
@@ -164,6 +188,15 @@ std::string housingCacheKey(const HousingSource& source) {
   h.add(source.units);
   for (const std::string& s : source.seats) h.add("seat:" + s);
   for (const std::string& p : source.points) h.add("point:" + p);
+  for (const std::string& f : source.fixed_mounts) h.add("fixed:" + f);
+  for (const auto& [set, k] : source.elastic_mounts) h.add("elastic:" + set), h.add(k);
+  for (const std::string* f : {&source.stiffness_matrix, &source.mass_matrix, &source.dof_map}) {
+    h.add("mm:" + *f);
+    if (!f->empty()) {
+      const std::string b = readBytes(*f);
+      h.add(b.data(), b.size());
+    }
+  }
   h.add(source.reduction.cutoff_hz);
   h.add(static_cast<double>(source.reduction.modes));
   return fmt::format("{:016x}", h.h);
@@ -192,8 +225,21 @@ LoadedHousing loadHousing(const HousingSource& source) {
       namedSets(deck, source.seats, "housing.seats", source.deck);
   const std::vector<HousingNodeSet> points =
       namedSets(deck, source.points, "housing.points", source.deck);
-  io::FeMatrices fe = io::runCalculix(source.deck, "housing.deck");
+  for (const auto& [set, k] : source.elastic_mounts) {
+    namedSets(deck, {set}, "housing.mounts." + set, source.deck);
+  }
+  for (const std::string& set : source.fixed_mounts) {
+    namedSets(deck, {set}, "housing.mounts." + set, source.deck);
+  }
+  const auto assembly = std::chrono::steady_clock::now();
+  io::FeMatrices fe = source.stiffness_matrix.empty()
+                          ? io::runCalculix(source.deck, "housing.deck", "ccx", source.fixed_mounts)
+                          : io::readMatrixMarketModel(source.stiffness_matrix, source.mass_matrix,
+                                                      source.dof_map, "housing.stiffness_matrix");
+  out.assembly_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - assembly).count();
   scaleToSi(fe, deck.nodes, units);
+  addElasticMounts(fe, deck, source);
   out.housing = reduceHousing(fe, deck.nodes, seats, points, source.reduction);
   try {
     io::writeFileAtomic(cache, serialise(out.housing), false);

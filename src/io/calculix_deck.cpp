@@ -263,15 +263,16 @@ void checkHousingFits(const CalculixDeck& deck, const std::string& path, const s
 }
 
 FeMatrices runCalculix(const std::string& path, const std::string& key,
-                       const std::string& ccx_command) {
+                       const std::string& ccx_command, const std::vector<std::string>& fixed_sets) {
   const fs::path deck = fs::absolute(path);
   if (!fs::exists(deck)) throw InputError(key, path, "an existing CalculiX deck (.inp)");
   TemporaryFolder folder;
   {
     std::ofstream job(folder.path / "job.inp");
     job << "** written by geardyn: the user's deck and the step that stores K and M\n"
-        << "*INCLUDE, INPUT=" << deck.string() << "\n"
-        << "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n1\n*END STEP\n";
+        << "*INCLUDE, INPUT=" << deck.string() << "\n";
+    for (const std::string& set : fixed_sets) job << "*BOUNDARY\n" << set << ", 1, 3\n";
+    job << "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n1\n*END STEP\n";
     if (!job) throw IoError("cannot write " + (folder.path / "job.inp").string());
   }
   const fs::path log = folder.path / "job.log";

@@ -10,6 +10,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -26,6 +27,10 @@ using Ldlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrderin
 /// Below this many interior DOFs, or when more than half of them are asked for, the
 /// fixed-interface modes come from a dense generalised eigensolver (Lanczos needs nev < n).
 constexpr Eigen::Index kDenseModesBelow = 400;
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 /// y = K_oo⁻¹ x with K_oo factorised once, in Spectra's shift-invert operator interface (the
 /// shift is 0: K_oo is positive definite, its seats held by the interface).
@@ -127,56 +132,71 @@ Eigen::Vector3d tieSeat(const HousingNodeSet& seat, int s,
   return c;
 }
 
+/// The `nev` lowest fixed-interface modes by shift-invert Lanczos on the factorised K_oo
+/// (Spectra's SymGEigsShiftSolver, shift 0), ascending.
+void lanczosModes(const SparseMatrix& Moo, const Ldlt& ldlt, Eigen::Index nev, Eigen::MatrixXd& Phi,
+                  Eigen::VectorXd& lambda) {
+  const Eigen::Index no = Moo.rows();
+  InverseOp op(ldlt);
+  Spectra::SparseSymMatProd<double> bop(Moo);
+  const Eigen::Index ncv = std::min<Eigen::Index>(no, std::max<Eigen::Index>(2 * nev + 1, 20));
+  Spectra::SymGEigsShiftSolver<InverseOp, Spectra::SparseSymMatProd<double>,
+                               Spectra::GEigsMode::ShiftInvert>
+      solver(op, bop, nev, ncv, 0.0);
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
+  if (solver.info() != Spectra::CompInfo::Successful) {
+    throw std::runtime_error(
+        fmt::format("housing reduction: Lanczos found {} of the {} lowest fixed-interface modes",
+                    solver.eigenvalues().size(), nev));
+  }
+  // Spectra returns them largest first.
+  lambda = solver.eigenvalues().reverse();
+  Phi = solver.eigenvectors().rowwise().reverse();
+}
+
 /// The fixed-interface modes (mass-normalised shapes, eigenvalues ω² [1/s²]): `options.modes`
-/// of them, or those below the cut-off, counted first by Sylvester's law of inertia.
+/// of them, or those below the cut-off. Below the cut-off they are found by Lanczos on the one
+/// factor of K_oo the constraint modes need, asking for twice as many until the highest found
+/// lies above the cut-off (a second factorisation of K_oo − ω_c² M_oo to count them by Sylvester's
+/// law of inertia cost as much as the first; issue #37's reduction budget).
 void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const Ldlt& ldlt,
                          const CraigBamptonOptions& options, Eigen::MatrixXd& Phi,
                          Eigen::VectorXd& lambda) {
   const Eigen::Index no = Koo.rows();
-  // The number of fixed-interface modes: given, or counted below the cut-off (Sylvester).
-  Eigen::Index m = options.modes;
-  if (m < 0) {
-    const double w = 2.0 * std::numbers::pi * options.cutoff_hz;
-    const SparseMatrix shifted = Koo - w * w * Moo;
-    const Ldlt sturm(shifted);
-    if (sturm.info() != Eigen::Success) {
-      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g}", options.cutoff_hz),
-                       "a cut-off that is not a fixed-interface natural frequency");
-    }
-    m = (sturm.vectorD().array() < 0.0).count();
-    if (m == 0) {
-      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g} Hz", options.cutoff_hz),
-                       "a cut-off above the first fixed-interface mode of the housing (no mode "
-                       "lies below it: raise the cut-off or the analyses' frequency range)");
-    }
+  const bool by_cutoff = options.modes < 0;
+  const double w = 2.0 * std::numbers::pi * options.cutoff_hz;
+  Eigen::Index m = by_cutoff ? 0 : std::min<Eigen::Index>(options.modes, no);
+  if (!by_cutoff && m == 0) {
+    Phi.resize(no, 0);
+    lambda.resize(0);
+    return;
   }
-  m = std::min(m, no);
-  Phi.resize(no, m);
-  lambda.resize(m);
-  if (m > 0 && (no < kDenseModesBelow || 2 * m > no)) {
+  if (no < kDenseModesBelow || (!by_cutoff && 2 * m > no)) {
     const Eigen::MatrixXd Kd = Koo, Md = Moo;
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Kd, Md);
-    Phi = dense.eigenvectors().leftCols(m);
-    lambda = dense.eigenvalues().head(m);
-  } else if (m > 0) {
-    InverseOp op(ldlt);
-    Spectra::SparseSymMatProd<double> bop(Moo);
-    const Eigen::Index ncv = std::min<Eigen::Index>(no, std::max<Eigen::Index>(2 * m + 1, 20));
-    Spectra::SymGEigsShiftSolver<InverseOp, Spectra::SparseSymMatProd<double>,
-                                 Spectra::GEigsMode::ShiftInvert>
-        solver(op, bop, m, ncv, 0.0);
-    solver.init();
-    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
-    if (solver.info() != Spectra::CompInfo::Successful) {
-      throw std::runtime_error(fmt::format(
-          "housing reduction: Lanczos found {} of the {} fixed-interface modes below the "
-          "cut-off",
-          solver.eigenvalues().size(), m));
+    lambda = dense.eigenvalues();
+    Phi = dense.eigenvectors();
+  } else {
+    Eigen::Index nev = by_cutoff ? std::min<Eigen::Index>(12, no / 2) : m;
+    while (true) {
+      lanczosModes(Moo, ldlt, nev, Phi, lambda);
+      if (!by_cutoff || lambda(lambda.size() - 1) >= w * w || nev >= no / 2) break;
+      nev = std::min<Eigen::Index>(2 * nev, no / 2);
     }
-    // Spectra returns them largest first.
-    lambda = solver.eigenvalues().reverse();
-    Phi = solver.eigenvectors().rowwise().reverse();
   }
+  if (by_cutoff) {
+    m = (lambda.array() < w * w).count();
+    if (m == 0) {
+      throw InputError(options.key + ".cutoff_hz", fmt::format("{:g} Hz", options.cutoff_hz),
+                       fmt::format("a cut-off above the first fixed-interface mode of the housing "
+                                   "({:.6g} Hz; no mode lies below it: raise the cut-off or the "
+                                   "analyses' frequency range)",
+                                   std::sqrt(std::max(lambda(0), 0.0)) / (2.0 * std::numbers::pi)));
+    }
+  }
+  Phi = Phi.leftCols(m).eval();
+  lambda = lambda.head(m).eval();
   for (Eigen::Index j = 0; j < m; ++j) Phi.col(j) /= std::sqrt(Phi.col(j).dot(Moo * Phi.col(j)));
 }
 
@@ -201,6 +221,7 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
                              const std::vector<HousingNodeSet>& seats,
                              const std::vector<HousingNodeSet>& points,
                              const CraigBamptonOptions& options) {
+  const auto t_start = Clock::now();
   const std::string& key = options.key;
   const Eigen::Index n = static_cast<Eigen::Index>(fe.dofs.size());
   if (seats.empty()) throw InputError(key, "no seats", "at least one bearing seat node set");
@@ -242,7 +263,9 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
   const Eigen::MatrixXd Kob = To.transpose() * KTb, Mob = To.transpose() * MTb;
   const Eigen::MatrixXd Kbb = Tb.transpose() * KTb, Mbb = Tb.transpose() * MTb;
 
+  const auto t_factor = Clock::now();
   Ldlt ldlt(Koo);
+  red.factorisation_s = secondsSince(t_factor);
   if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0.0).any()) {
     throw InputError(key, "the housing with its seats held",
                      "a housing whose interior is held by its seats (K_oo positive definite): "
@@ -252,7 +275,9 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
 
   Eigen::MatrixXd Phi;
   Eigen::VectorXd lambda;
+  const auto t_modes = Clock::now();
   fixedInterfaceModes(Koo, Moo, ldlt, options, Phi, lambda);
+  red.modes_s = secondsSince(t_modes);
   const Eigen::Index m = Phi.cols();
   red.mode_frequencies_hz = lambda.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
 
@@ -302,6 +327,7 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
       }
     }
   }
+  red.other_s = secondsSince(t_start) - red.factorisation_s - red.modes_s;
   return red;
 }
 

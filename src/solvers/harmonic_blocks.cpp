@@ -20,7 +20,8 @@ Eigen::SparseMatrix<std::complex<double>> complexSparseOf(const Eigen::MatrixXd&
 
 HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                const Eigen::MatrixXd& C, const Eigen::MatrixXd& R, int sparse_dofs,
-                               bool keep_factors)
+                               bool keep_factors,
+                               std::shared_ptr<const HousingCondensation> housing)
     : K_(K),
       M_(M),
       C_(C),
@@ -28,6 +29,13 @@ HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& 
       keep_factors_(keep_factors),
       n_(static_cast<int>(K.rows())) {
   if (R.cols() > 0) MR_ = M * R;
+  if (housing && housing->first < sparse_dofs) {
+    const Eigen::Index n_h = n_ - housing->first;
+    // A rigid-body mode that moves the housing: the whole block is factorised.
+    const bool still = MR_.cols() == 0 || MR_.bottomRows(n_h).cwiseAbs().maxCoeff() <=
+                                              1e-12 * std::max(MR_.cwiseAbs().maxCoeff(), 1e-300);
+    if (still) housing_ = std::move(housing), sparse_ = false;
+  }
   penalty_ = std::max(K.diagonal().cwiseAbs().maxCoeff(), 1e-300);
   if (sparse_) {
     Ks_ = complexSparseOf(K);
@@ -39,6 +47,18 @@ HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& 
 HarmonicBlocks::~HarmonicBlocks() = default;
 
 void HarmonicBlocks::factorize(int h, double w) {
+  if (housing_) {
+    const Eigen::Index n_t = housing_->first;
+    Eigen::MatrixXcd D =
+        (K_.topLeftCorner(n_t, n_t) - w * w * M_.topLeftCorner(n_t, n_t)).cast<Complex>() +
+        Complex(0.0, w) * C_.topLeftCorner(n_t, n_t).cast<Complex>();
+    if (w == 0.0 && MR_.cols() > 0) {
+      D += (penalty_ * MR_.topRows(n_t) * MR_.topRows(n_t).transpose()).cast<Complex>();
+    }
+    housed_.resize(std::max<std::size_t>(housed_.size(), h + 1));
+    housed_[h].factorize(*housing_, D, w);
+    return;
+  }
   if (!sparse_) {
     Eigen::MatrixXcd D = (K_ - w * w * M_).cast<Complex>() + Complex(0.0, w) * C_.cast<Complex>();
     if (w == 0.0 && MR_.cols() > 0) D += (penalty_ * MR_ * MR_.transpose()).cast<Complex>();
@@ -91,6 +111,7 @@ void HarmonicBlocks::factorize(int h, double w) {
 }
 
 Eigen::MatrixXcd HarmonicBlocks::solveNonNegative(int h, const Eigen::MatrixXcd& rhs) const {
+  if (housing_) return housed_[h].solve(*housing_, rhs);
   if (!sparse_) return dense_[h].solve(rhs);
   if (!keep_factors_ && h != latest_) {
     throw std::logic_error(fmt::format(

@@ -22,6 +22,7 @@
 #include "geardyn/solvers/detail/shift_invert_modes.h"
 #include "geardyn/solvers/detail/whirl_shares.h"
 #include "geardyn/system/detail/train_building.h"
+#include "geardyn/system/train_housing.h"
 
 namespace geardyn {
 namespace {
@@ -114,6 +115,11 @@ void describe(const GearTrainModel& model, TrainMode& mode,
     }
     total += rot[b] + trans[b];
   }
+  // A flexible housing's DOFs follow the bodies' (train_housing.h).
+  const int h0 = model.housingFirstDof();
+  const double housing = h0 >= 0 ? kinetic.tail(model.dofCount() - h0).sum() : 0.0;
+  total += housing;
+  mode.housing_fraction = housing / total;
   double translational = 0.0;
   mode.body_kinetic_energy.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -122,6 +128,7 @@ void describe(const GearTrainModel& model, TrainMode& mode,
   }
   mode.translational_fraction = translational;
   classifyWhirl(model, mode, context);
+  if (mode.housing_fraction > 0.5) mode.whirl = "housing";
 
   // Strain energy ½ Re(x̄ᵀ k x) = ½ (x_rᵀ k x_r + x_iᵀ k x_i) over each component's DOFs (no
   // allocation per mode: a modal analysis of a small train takes microseconds).
@@ -151,6 +158,15 @@ void describe(const GearTrainModel& model, TrainMode& mode,
   for (const TrainElement& e : model.elements()) {
     mode.element_strain_energy.push_back(energy(e.dofs, e.stiffness));
     strain += mode.element_strain_energy.back();
+  }
+  mode.housing_strain_energy = 0.0;
+  if (h0 >= 0) {
+    const Eigen::MatrixXd& Kh = model.spec().housing->reduced.K;
+    const auto n = model.dofCount() - h0;
+    mode.housing_strain_energy =
+        0.5 * (x.tail(n).dot(Kh * x.tail(n)) + y.tail(n).dot(Kh * y.tail(n)));
+    strain += mode.housing_strain_energy;
+    mode.housing_strain_energy = strain > 0 ? mode.housing_strain_energy / strain : 0.0;
   }
   for (double& e : mode.mesh_strain_energy) e = strain > 0 ? e / strain : 0.0;
   for (double& e : mode.element_strain_energy) e = strain > 0 ? e / strain : 0.0;

@@ -10,6 +10,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
+#include "geardyn/solvers/detail/housing_condensation.h"
 #include "geardyn/solvers/detail/train_static_bearings.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
@@ -225,6 +226,7 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
   const Eigen::MatrixXd& Komega = model.centripetal();
   rigid_at_every_speed_ = rigid_.cols() == 0 || Komega.size() == 0 ||
                           (Komega * rigid_).norm() <= 1e-12 * Komega.norm() * rigid_.norm();
+  if (options.condense_housing) housing_ = detail::HousingCondensation::of(model);
   const int L = options.mesh_harmonics;
   for (int p : base_.mesh_multiple) harmonics_ = std::max(harmonics_, p * L);
   for (int p : base_.excitation_multiple) harmonics_ = std::max(harmonics_, p);
@@ -274,7 +276,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
   detail::HarmonicBlocks blocks_of(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
-                                   options_.sparse_dofs, false);
+                                   options_.sparse_dofs, false, housing_);
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
   // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.

@@ -13,6 +13,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/system/detail/train_building.h"
+#include "geardyn/system/train_housing.h"
 #include "geardyn/system/train_tooth_pairs.h"
 
 namespace geardyn {
@@ -113,6 +114,7 @@ GearTrainModel::GearTrainModel(GearTrainSpec spec, double memory_limit)
   buildMeshes();
   buildElements();
   assemble();
+  if (spec_.housing) attachHousing();
 }
 
 int GearTrainModel::bodyIndex(const std::string& name) const {
@@ -134,6 +136,9 @@ int GearTrainModel::translationDof(int body) const {
 }
 
 std::string GearTrainModel::dofName(int i) const {
+  if (housing_first_dof_ >= 0 && i >= housing_first_dof_) {
+    return housingDofName(spec_.housing->reduced, i - housing_first_dof_);
+  }
   const int per = dofsPerBody();
   const int body = i / per;
   static constexpr const char* kNames[6] = {"y", "z", "theta", "x", "theta_y", "theta_z"};

@@ -5,12 +5,25 @@
 /// rectangular section, its x = 0 end face clamped by *BOUNDARY (optional) and node sets ROOT, TIP
 /// (the end faces) and MID (the node nearest the middle of the beam's axis).
 
+#include <stdlib.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 namespace geardyn::testing {
+
+/// A new folder under the temporary directory, removed with everything in it at the end.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "geardyn-housing-test-XXXXXX").string();
+    path = mkdtemp(pattern.data());
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+};
 
 struct BeamDeck {
   double length = 1.0, width = 0.05, height = 0.05;  ///< [m]

@@ -32,14 +32,7 @@ namespace fs = std::filesystem;
 using geardyn::testing::BeamDeck;
 using geardyn::testing::isClose;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "geardyn-housing-test-XXXXXX").string();
-    path = mkdtemp(pattern.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using testing::TempDir;
 
 struct Beam {
   io::CalculixDeck deck;

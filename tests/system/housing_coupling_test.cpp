@@ -143,7 +143,7 @@ TEST(HousingCoupling, NamesTheBearingOrSeat) {
             std::string::npos);
   EXPECT_NE(keyOf({{"pinion_bearing", "SEAT_X"}}).find("housing.seats.pinion_bearing"),
             std::string::npos);
-  EXPECT_NE(keyOf({{"pinion_bearing", "SEAT_P"}}).find("housing | "), std::string::npos)
+  EXPECT_NE(keyOf({{"pinion_bearing", "SEAT_P"}}).find("housing.seats | "), std::string::npos)
       << "a seat without a bearing";
 }
 

@@ -10,6 +10,7 @@
 /// skipped with the reduction kept in memory.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geardyn/models/housing_superelement.h"
@@ -23,6 +24,14 @@ struct HousingSource {
   std::vector<std::string> seats;   ///< seat node set names (the deck's *NSET names)
   std::vector<std::string> points;  ///< response point node set names
   CraigBamptonOptions reduction;    ///< cut-off or mode count; key "housing"
+  /// Mounting points held rigidly in x, y, z (node set names; a `*BOUNDARY` added to ccx's job).
+  std::vector<std::string> fixed_mounts;
+  /// Elastic mounting points: a node set and its total stiffness [N/m] in each of x, y, z, spread
+  /// evenly over the set's nodes (springs to the ground added to the assembled K).
+  std::vector<std::pair<std::string, double>> elastic_mounts;
+  /// K and M from another tool (MatrixMarket) with their `node.direction` DOF map, instead of
+  /// ccx's assembly; the deck then only gives the nodes and node sets. Empty: ccx.
+  std::string stiffness_matrix, mass_matrix, dof_map;
   double memory_limit_bytes = 0.0;  ///< > 0: refuse a larger mesh before ccx runs
 };
 
@@ -31,6 +40,7 @@ struct LoadedHousing {
   ReducedHousing housing;
   std::string cache_file;  ///< the cache file used or written ("" when none could be written)
   bool from_cache = false;
+  double assembly_s = 0.0;  ///< ccx's run (or reading the matrices) [s]; 0 from the cache
 };
 
 /// Loads the cached reduction of `source`, or assembles, reduces and caches it. InputError

@@ -48,8 +48,11 @@ void checkHousingFits(const CalculixDeck& deck, const std::string& path, const s
 /// the file comment and reads the matrices it writes. InputError(key, path, ccx's *ERROR lines)
 /// when ccx rejects the deck or writes no matrices; InputError(key, path, "ccx ... not found")
 /// when ccx is missing.
+/// `fixed_sets`: node sets held in x, y, z by a `*BOUNDARY` geardyn adds (the housing's fixed
+/// mounts) besides the deck's own.
 FeMatrices runCalculix(const std::string& path, const std::string& key,
-                       const std::string& ccx_command = "ccx");
+                       const std::string& ccx_command = "ccx",
+                       const std::vector<std::string>& fixed_sets = {});
 
 /// Upper-triangle entries a DOF of a 3-D solid mesh has in K (second-order tetrahedra: about 40
 /// neighbour nodes × 3 DOFs / 2); the estimate's basis.

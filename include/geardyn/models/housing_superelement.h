@@ -14,10 +14,9 @@
 ///    (K_oo φ = ω² M_oo φ, mass-normalised) below a cut-off:
 ///      K_cb = [K_bb + K_bo Ψ, 0; 0, Λ],
 ///      M_cb = [M_bb + M_bo Ψ + Ψᵀ M_ob + Ψᵀ M_oo Ψ, (M_bo + Ψᵀ M_oo) Φ; sym, I].
-///    The number of modes below the cut-off is counted exactly before they are computed, by
-///    Sylvester's law of inertia (the negative pivots of the LDLᵀ of K_oo − ω_c² M_oo), and the
-///    modes are found by shift-invert Lanczos (Spectra's SymGEigsShiftSolver) on the sparse
-///    K_oo, M_oo factorised once (SimplicialLDLT).
+///    The modes are found by shift-invert Lanczos (Spectra's SymGEigsShiftSolver) on the sparse
+///    K_oo, M_oo with K_oo factorised once (SimplicialLDLT, the factor the constraint modes use):
+///    twice as many are asked for until the highest found lies above the cut-off.
 /// With no modes the superelement is Guyan's static condensation K_bb − K_bo K_oo⁻¹ K_ob.
 
 #include <Eigen/Core>
@@ -69,6 +68,9 @@ struct ReducedHousing {
   /// Response point translations [m] from the reduced coordinates: rows 3i..3i+2 are point i's
   /// x, y, z (the mean over its nodes).
   Eigen::MatrixXd recovery;
+  /// Wall times of the reduction that made it [s] (0 when read from a cache): the factorisation
+  /// of K_oo, the fixed-interface modes (Lanczos), the rest (tie, projections, constraint modes).
+  double factorisation_s = 0.0, modes_s = 0.0, other_s = 0.0;
   Eigen::Index interfaceDofs() const { return 6 * static_cast<Eigen::Index>(seats.size()); }
 };
 

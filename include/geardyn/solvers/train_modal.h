@@ -28,6 +28,11 @@ struct TrainMode {
   std::vector<double> mesh_strain_energy;     ///< fraction per mesh (of the total) [-]
   std::vector<double> element_strain_energy;  ///< fraction per element [-]
   double translational_fraction = 0.0;        ///< kinetic energy in translations [-]
+  /// Kinetic energy in the flexible housing's DOFs (train_housing.h) [-]; the bodies' fractions
+  /// sum to 1 − housing_fraction.
+  double housing_fraction = 0.0;
+  /// Strain energy ½ x̄ᵀ K_h x of the housing's DOFs, a fraction of the total [-].
+  double housing_strain_energy = 0.0;
   /// Per planetary stage: "rotational", "translational", "planet" or "mixed" (Lin & Parker
   /// 1999 §3), judged from the central members' kinetic energy; with full DOFs also
   /// "out_of_plane" (axial and tilting motion only); "outside" for modes not in the stage.
@@ -41,6 +46,7 @@ struct TrainMode {
   /// sense of the body's own spin. The mass-weighted share of the forward circles [-] (0.5
   /// without lateral motion), Lalanne & Ferraris (1998) §2.
   double forward_fraction = 0.5;
+  /// "housing" (housing_fraction > 1/2: a mode of the flexible housing),
   /// "torsional" (torsional share > 1/2), "axial" (axial share > 1/2), else "forward" (forward
   /// share > 0.75), "backward" (< 0.25) or "mixed".
   std::string whirl;

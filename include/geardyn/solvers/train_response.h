@@ -31,12 +31,16 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {
+namespace detail {
+struct HousingCondensation;
+}  // namespace detail
 
 struct TrainStageLoadSharing {
   std::string stage;
@@ -85,6 +89,10 @@ struct TrainSteadyOptions {
   /// DOF count from which the harmonic blocks are factorised sparse (Eigen::SparseLU) rather
   /// than dense; FE trains' banded matrices make that far cheaper (detail/harmonic_blocks.h).
   int sparse_dofs = 64;
+  /// A flexible housing (GearTrainModel::housingFirstDof) is condensed out of each harmonic block
+  /// exactly through its modes (detail/housing_condensation.h) rather than factorised with the
+  /// train; false: the whole block (the reference the fast path is tested against).
+  bool condense_housing = true;
   void validate() const;
 };
 
@@ -142,6 +150,8 @@ class TrainSteadySolver {
   // Rigid-body modes of (K̄(0), M), valid at every speed when K_Ω does not act on them.
   Eigen::MatrixXd rigid_;
   bool rigid_at_every_speed_ = false;
+  // A flexible housing's exact condensation (detail/housing_condensation.h); null: none.
+  std::shared_ptr<const detail::HousingCondensation> housing_;
 };
 
 /// One speed: TrainSteadySolver(model, options).solve(input_speed).

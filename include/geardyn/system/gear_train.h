@@ -250,6 +250,8 @@ struct OperatingPoint {
   std::optional<double> input_position, output_position;
 };
 
+struct TrainHousingSpec;  // system/train_housing.h
+
 struct GearTrainSpec {
   std::string name;
   TrainDofs dofs = TrainDofs::kPlanar;
@@ -272,6 +274,8 @@ struct GearTrainSpec {
   /// Gravity along −z [m/s²] (planar and full DOFs; members in a rotating carrier frame
   /// cannot take it).
   double gravity = 0.0;
+  /// A flexible housing carrying (some of) the bearings (train_housing.h); null: rigid ground.
+  std::shared_ptr<const TrainHousingSpec> housing;
 };
 
 std::string toString(TrainDofs dofs);

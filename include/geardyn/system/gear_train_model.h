@@ -234,6 +234,9 @@ class GearTrainModel {
   Eigen::MatrixXd dampingAt(double input_speed) const;
 
   const std::vector<std::string>& warnings() const noexcept { return warnings_; }
+  /// The first of the housing's DOFs (train_housing.h: after every body's), −1 without a
+  /// flexible housing; dofCount() − housingFirstDof() housing DOFs.
+  int housingFirstDof() const noexcept { return housing_first_dof_; }
   /// Body index of the spec's shaft i.
   int shaftBody(int shaft) const { return shaft_body_[shaft]; }
   /// The stage whose rotating carrier frame body b's translations are written in (−1: fixed
@@ -271,6 +274,9 @@ class GearTrainModel {
   void assemble();
   /// F₀ from the operating point, pin position errors and gravity (after M is assembled).
   void assembleLoads();
+  /// Appends spec_.housing's DOFs and moves its linked bearings onto the seats
+  /// (train_housing.cpp).
+  void attachHousing();
 
   GearTrainSpec spec_;
   TrainKinematics kinematics_;
@@ -284,6 +290,7 @@ class GearTrainModel {
   std::vector<std::vector<int>> shaft_nodes_;     // spec shaft index → its bodies by x
   std::vector<BeamElement> beams_;
   int dof_count_ = 0;
+  int housing_first_dof_ = -1;
   double memory_limit_ = std::numeric_limits<double>::infinity();  // [B]
   double output_torque_ = 0.0;
   Eigen::MatrixXd M_, K_, C_, G_, Komega_, Kmesh_;

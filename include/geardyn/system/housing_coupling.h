@@ -11,7 +11,9 @@
 ///   planar train has no axial positions, its bearings sit in their seats' planes),
 /// so the bearing's stiffness k (and damping c) adds −Jᵀ k J_h, −J_hᵀ k J and J_hᵀ k J_h to the
 /// coupled K (C); the housing's reduced K and M fill the housing block, its damping is
-/// stiffness-proportional (β K_h). Not yet in GearTrainModel: the analyses do not use it.
+/// stiffness-proportional (β K_h). The machine itself holds a housing through
+/// GearTrainSpec::housing (train_housing.h); this function builds that model and returns its
+/// matrices.
 
 #include <Eigen/Dense>
 #include <string>
@@ -19,14 +21,9 @@
 
 #include "geardyn/models/housing_superelement.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/train_housing.h"
 
 namespace geardyn {
-
-/// A bearing of the train (to the housing today) and the seat it sits in.
-struct HousingLink {
-  std::string bearing;  ///< TrainBearingSpec::name
-  std::string seat;     ///< ReducedHousing::seats entry
-};
 
 /// The coupled linear matrices: the train's DOFs first (as in GearTrainModel), then the
 /// housing's (interface DOFs, then modal coordinates).
@@ -40,7 +37,7 @@ struct HousedTrain {
 /// Joins `model` (at input speed Ω [rad/s]) to `housing` through `links`. `beta` [s]: the
 /// housing's stiffness-proportional damping. InputError naming "housing.seats.<bearing>" when
 /// the bearing does not exist, joins two shafts or is a rolling bearing (not yet), and when the
-/// seat is not in the housing; "housing" when a seat carries no bearing.
+/// seat is not in the housing; "housing.seats" when a seat carries no bearing.
 HousedTrain coupleHousing(const GearTrainModel& model, const ReducedHousing& housing,
                           const std::vector<HousingLink>& links, double input_speed = 0.0,
                           double beta = 0.0);

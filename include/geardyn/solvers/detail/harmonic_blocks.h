@@ -22,6 +22,8 @@
 #include <memory>
 #include <vector>
 
+#include "geardyn/solvers/detail/housing_condensation.h"
+
 namespace geardyn::detail {
 
 class HarmonicBlocks {
@@ -29,8 +31,12 @@ class HarmonicBlocks {
   using Complex = std::complex<double>;
 
   /// K̄ [N/m], M [kg], C [N s/m] at the speed, R the rigid-body modes (n × k, may be empty).
+  /// `housing` (may be null): condense the flexible housing out of every block exactly
+  /// (housing_condensation.h) when the train without it has fewer than `sparse_dofs` DOFs and
+  /// the rigid-body modes leave the housing at rest; the whole block is factorised otherwise.
   HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
-                 const Eigen::MatrixXd& R, int sparse_dofs, bool keep_factors = true);
+                 const Eigen::MatrixXd& R, int sparse_dofs, bool keep_factors = true,
+                 std::shared_ptr<const HousingCondensation> housing = nullptr);
   ~HarmonicBlocks();
 
   /// Factorises block h at the angular frequency w [rad/s] (hω₀ over a common period, n·ω of a
@@ -40,6 +46,8 @@ class HarmonicBlocks {
   /// through conj(D(|h|)⁻¹ conj rhs).
   Eigen::MatrixXcd solve(int h, const Eigen::MatrixXcd& rhs) const;
   bool sparse() const noexcept { return sparse_; }
+  /// The housing is condensed out (see the constructor).
+  bool condensesHousing() const noexcept { return housing_ != nullptr; }
 
  private:
   using SparseMatrixC = Eigen::SparseMatrix<Complex>;
@@ -54,6 +62,8 @@ class HarmonicBlocks {
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> dense_;
   SparseMatrixC Ks_, Ms_, Cs_;
   std::vector<std::unique_ptr<SparseLUC>> sparse_lu_;  // per h, or [bordered, w ≠ 0] (not kept)
+  std::shared_ptr<const HousingCondensation> housing_;
+  std::vector<CondensedHousingBlock> housed_;
 };
 
 }  // namespace geardyn::detail

@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// The flexible housing condensed out of a harmonic block exactly (issue #37; derivation in
+/// docs/theory/housing_superelement.md §6). On its own the housing's dynamic stiffness
+/// D_h0(ω) = (1 + iωβ_h) K_h − ω² M_h is diagonal in its modes (K_h Φ = M_h Φ Λ, Φᵀ M_h Φ = I):
+/// d_k = (1 + iωβ_h) λ_k − ω². The train sees it only through its r linked bearing rows,
+/// deformation J q_t − J_H q_h and Z = k + iω c, so with W = J_H Φ (r × n_h),
+///   G = W diag(1/d) Wᵀ (the seats' receptance at the bearings, r × r),
+///   Z_eff = (I + Z G)⁻¹ Z (each bearing in series with the housing),
+///   [D_tt − Jᵀ Z J + Jᵀ Z_eff J] q_t = f_t + Jᵀ Z_eff g,   g = W diag(1/d) Φᵀ f_h,
+///   q_h = Φ diag(1/d) (Wᵀ F + Φᵀ f_h),   F = Z_eff (J q_t − g) (the bearing forces).
+/// Per frequency: r² n_h for G, r³ for Z_eff and the train's own n_t × n_t LU, instead of an LU
+/// of n_t + n_h.
+
+#include <Eigen/Dense>
+#include <memory>
+
+#include "geardyn/system/gear_train_model.h"
+
+namespace geardyn::detail {
+
+/// What does not depend on the frequency (nor on the speed): built once per model.
+struct HousingCondensation {
+  int first = 0;           ///< the housing's first DOF (n_t)
+  Eigen::MatrixXd J;       ///< r × n_t: the linked bearings' rows on the train's DOFs
+  Eigen::MatrixXd W;       ///< r × n_h: J_H Φ
+  Eigen::MatrixXd Phi;     ///< n_h × n_h, mass-normalised modes of (K_h, M_h)
+  Eigen::VectorXd lambda;  ///< ω_k² [1/s²]
+  Eigen::MatrixXd k, c;    ///< r × r: the rows' stiffness and damping (with the gearbox's β k)
+  double beta = 0.0;       ///< the housing's β_h [s]
+  Eigen::MatrixXcd Jc, Wc, Phic;  ///< J, W, Φ as complex matrices (the solves' operands)
+  /// The condensation of `model`'s housing; null without a housing or when the housing is not
+  /// held (a zero eigenvalue: the exact path then factorises the whole block).
+  static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
+};
+
+/// One frequency's condensation: the train's LU and the housing's terms.
+class CondensedHousingBlock {
+ public:
+  using Complex = std::complex<double>;
+  /// Factorises the train's block D_tt of K̄ − ω²M + iωC (with any rigid-body penalty) with the
+  /// housing condensed out at ω [rad/s].
+  void factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt, double w);
+  /// D⁻¹ rhs over all n_t + n_h DOFs.
+  Eigen::MatrixXcd solve(const HousingCondensation& h, const Eigen::MatrixXcd& rhs) const;
+
+ private:
+  Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
+  Eigen::MatrixXcd Zeff_;
+  Eigen::VectorXcd dinv_;
+};
+
+}  // namespace geardyn::detail
