@@ -26,6 +26,7 @@ std::string geardynType(const std::string& rexs_type) {
       {"radial_roller_bearing", "cylindrical_roller"},
       {"radial_needle_roller_bearing", "cylindrical_roller"},
       {"radial_tapered_roller_bearing", "tapered_roller"},
+      {"radial_self_aligning_roller_bearing", "spherical_roller"},
   };
   const auto it = kTypes.find(rexs_type);
   return it == kTypes.end() ? "" : it->second;
@@ -131,7 +132,7 @@ bool addRollingBearingGeometry(Model& model, const Component& bearing, TomlSecti
   if (g.type.empty()) {
     read.warn(
         fmt::format("{}: bearing_type \"{}\" has no geometry model in geardyn (deep-groove "
-                    "and angular-contact ball, cylindrical, needle and tapered "
+                    "and angular-contact ball, cylindrical, needle, tapered and spherical "
                     "roller bearings); its stiffness keys are used",
                     bearing.label(), rexs_type));
     return false;
