@@ -15,6 +15,7 @@ RollingBearingType typeOf(const std::string& s) {
   if (s == "deep_groove_ball") return RollingBearingType::kDeepGrooveBall;
   if (s == "angular_contact_ball") return RollingBearingType::kAngularContactBall;
   if (s == "cylindrical_roller") return RollingBearingType::kCylindricalRoller;
+  if (s == "spherical_roller") return RollingBearingType::kSphericalRoller;
   return RollingBearingType::kTaperedRoller;
 }
 
@@ -23,7 +24,7 @@ RollingBearingType typeOf(const std::string& s) {
 void addRollingBearingKeys(ConfigSchema& schema, const std::string& prefix) {
   schema.string(prefix + "type")
       .choices({"stiffness", "deep_groove_ball", "angular_contact_ball", "cylindrical_roller",
-                "tapered_roller"})
+                "tapered_roller", "spherical_roller"})
       .defaultValue("stiffness")
       .doc(
           "\"stiffness\": the stiffness keys (kyy, ...); else a rolling bearing from its "
@@ -56,7 +57,8 @@ void addRollingBearingKeys(ConfigSchema& schema, const std::string& prefix) {
       .max(60.0)
       .doc(
           "nominal contact angle (angular contact: of the touching rows; tapered: the cup "
-          "angle); 0 for deep-groove and cylindrical bearings");
+          "angle; spherical roller: of each row, its rows' lines meet at the bearing's centre); "
+          "0 for deep-groove and cylindrical bearings");
   schema.real(prefix + "inner_groove_radius")
       .unit("m")
       .optional()

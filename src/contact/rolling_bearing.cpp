@@ -106,6 +106,10 @@ RollingBearing::RollingBearing(RollingBearingGeometry geometry, const std::strin
         contacts_.push_back(c);
         continue;
       }
+      if (g_.type == RollingBearingType::kSphericalRoller) {
+        addSphericalSlices(element, psi, row == 0 ? -1.0 : 1.0);
+        continue;
+      }
       // Roller slices along the roller axis t = (cos α, −σ sin α) (axial, radial), normal
       // n = (σ sin α, cos α): the normal approach of slice k is n · (u + θ × p_k).
       for (int k = 0; k < g_.slices; ++k) {
@@ -119,6 +123,26 @@ RollingBearing::RollingBearing(RollingBearingGeometry geometry, const std::strin
         contacts_.push_back(c);
       }
     }
+  }
+}
+
+void RollingBearing::addSphericalSlices(int element, double psi, double side) {
+  // Spherical roller bearing (Harris & Kotzalas 2006, vol. 1 §7.2): the outer raceway is the
+  // sphere of radius R_e about the bearing's centre, the roller of row `side` (−1: at −x, +1:
+  // at +x) touches it along the meridian arc φ ∈ α₀ ± L/(2 R_e). Slice k touches at
+  // p_k = R_e (side sin φ_k, cos φ_k) (axial, radial) with the normal n_k = p_k / R_e, so its
+  // approach is n_k · (u + θ × p_k) = n_k · u: θ × p_k ⊥ p_k, no tilt stiffness. The rows'
+  // contact lines meet at the centre (an X pair): row −x takes the shaft's load towards −x.
+  const double R = g_.outerRacewayRadius();
+  for (int k = 0; k < g_.slices; ++k) {
+    const double s = (k - 0.5 * g_.slices + 0.5) * g_.roller_length / g_.slices;
+    const double phi = g_.contact_angle + s / R;
+    Vector5 g_r, g_a;
+    pointGradients(psi, side * R * std::sin(phi), R * std::cos(phi), g_r, g_a);
+    Contact c{element, side, g_r * std::cos(phi) + g_a * side * std::sin(phi), Vector5::Zero(),
+              0.0};
+    c.offset = -0.5 * g_.clearance * std::cos(g_.contact_angle) - 2.0 * profileDrop(g_, s);
+    contacts_.push_back(c);
   }
 }
 
@@ -220,8 +244,8 @@ RollingBearing::Vector5 RollingBearing::referenceStiffness() const noexcept {
 RollingBearingSolveResult RollingBearing::solve(const Vector5& load) const {
   // Damped Newton (Levenberg–Marquardt): (K + μ D) Δq = F_given − F(q), D the stiffness of
   // every element at the reference deflection spread over the DOFs (moments over the pitch
-  // radius²), μ ÷ 10 on a step that lowers the scaled residual, × 10 otherwise. The contacts
-  // have no stiffness at q = 0 without preload, where a plain Newton step is undefined.
+  // radius²), μ ÷ 10 on a step that does not raise the scaled residual, × 10 otherwise. The
+  // contacts have no stiffness at q = 0 without preload, where a plain Newton step is undefined.
   const double R = 0.5 * g_.pitch_diameter;
   Vector5 weight;  // residual scaling: forces [N], moments / R [N]
   weight << 1.0, 1.0, 1.0, 1.0 / R, 1.0 / R;
@@ -244,7 +268,9 @@ RollingBearingSolveResult RollingBearing::solve(const Vector5& load) const {
     Matrix5 K_trial;
     evaluate(trial, F_trial, &K_trial);
     const double trial_norm = (load - F_trial).cwiseProduct(weight).norm();
-    if (trial_norm < norm) {
+    // A step that does not raise the residual is taken: inside the clearance F stays 0 and the
+    // residual with it, and the steps must grow (μ ÷ 10) until they close the gap.
+    if (trial_norm <= norm) {
       q = trial, F = F_trial, K = K_trial, norm = trial_norm;
       mu = std::max(mu / 10.0, 1e-14);
     } else {

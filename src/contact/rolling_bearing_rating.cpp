@@ -35,6 +35,8 @@ std::string toString(RollingBearingType type) {
       return "cylindrical_roller";
     case RollingBearingType::kTaperedRoller:
       return "tapered_roller";
+    case RollingBearingType::kSphericalRoller:
+      return "spherical_roller";
   }
   return "?";
 }
@@ -63,6 +65,10 @@ std::string toString(RollerProfile profile) {
   return "?";
 }
 
+double RollingBearingGeometry::outerRacewayRadius() const noexcept {
+  return 0.5 * pitch_diameter / std::cos(contact_angle) + 0.5 * element_diameter;
+}
+
 void RollingBearingGeometry::validate(const std::string& key) const {
   if (elements < 3) {
     throw InputError(key + ".elements", std::to_string(elements), "an integer >= 3");
@@ -82,9 +88,10 @@ void RollingBearingGeometry::validate(const std::string& key) const {
                         kPi / std::asin(std::min(1.0, element_diameter / pitch_diameter)))),
                     element_diameter, pitch_diameter));
   }
-  const bool angled =
-      type == RollingBearingType::kAngularContactBall || type == RollingBearingType::kTaperedRoller;
-  const double max_angle = type == RollingBearingType::kTaperedRoller ? 45.0 : 60.0;
+  const bool angled = type == RollingBearingType::kAngularContactBall ||
+                      type == RollingBearingType::kTaperedRoller ||
+                      type == RollingBearingType::kSphericalRoller;
+  const double max_angle = ball() ? 60.0 : 45.0;
   if (angled ? !(contact_angle > 0.0 && contact_angle <= max_angle * kDeg) : contact_angle != 0.0) {
     throw InputError(
         key + ".contact_angle", fmt::format("{:g} deg", contact_angle / kDeg),
@@ -92,6 +99,11 @@ void RollingBearingGeometry::validate(const std::string& key) const {
                : fmt::format("0 for a {} bearing (a deep-groove bearing's contact "
                              "angle follows from its clearance and load)",
                              toString(type)));
+  }
+  if (type == RollingBearingType::kSphericalRoller && arrangement != BearingArrangement::kSingle) {
+    throw InputError(key + ".arrangement", toString(arrangement),
+                     "single: a spherical roller bearing is two rows by construction (their "
+                     "spacing follows from the contact angle)");
   }
   if (ball()) {
     for (auto [r, name] : {std::pair{inner_groove_radius, ".inner_groove_radius"},

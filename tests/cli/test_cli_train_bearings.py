@@ -59,3 +59,30 @@ def test_bad_bearing_geometry_exits_2_naming_the_key(tmp_path, sets, key, words)
     result = run("train", EXAMPLE, "--out", tmp_path, *args)
     assert result.returncode == 2, result.stdout + result.stderr
     assert key in result.stderr and words in result.stderr, result.stderr
+
+
+SPHERICAL = ["type=spherical_roller", "elements=15", "element_diameter=10e-3",
+             "pitch_diameter=60e-3", "roller_length=9.5e-3", "contact_angle_deg=11.0",
+             "slices=12", "radial_clearance=10e-6", "dynamic_load_rating=96.5e3"]
+
+
+def test_spherical_roller_bearings_in_the_train(tmp_path):
+    """22208-like spherical roller bearings on the intermediate shaft: the static deflection
+    converges, the bearing has no tilt stiffness (self-aligning: tilt rows and columns zero to
+    round-off, 1e-12 of k_yy) and, its two rows symmetric about its centre, no net thrust under radial load
+    (1e-9 of the radial load: Newton's residual); a paired arrangement exits 2 naming it."""
+    args = [a for end in ("a", "b") for s in SPHERICAL
+            for a in ("--set", f"bearings.intermediate_{end}.{s}")]
+    result = run("train", EXAMPLE, "--out", tmp_path, *args)
+    assert result.returncode == 0, result.stdout + result.stderr
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    b = summary["results"]["bearings"]["bearings"]["intermediate_a"]
+    assert b["type"] == "spherical_roller"
+    k = b["stiffness_matrix"]
+    assert k[0][0] > 1e8
+    assert all(abs(k[i][j]) <= 1e-12 * k[0][0] for i in (3, 4) for j in range(5)), k
+    assert abs(b["axial_load_n"]) <= 1e-9 * b["radial_load_n"]
+    bad = run("train", EXAMPLE, "--out", tmp_path / "bad", *args, "--set",
+              "bearings.intermediate_a.arrangement=back_to_back")
+    assert bad.returncode == 2, bad.stdout + bad.stderr
+    assert "bearings.intermediate_a.arrangement" in bad.stderr

@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
 
+#include "contact/bearing_differences.h"
 #include "geardyn/contact/hertz_point_contact.h"
 #include "geardyn/error.h"
 #include "support/numeric_assertions.h"
@@ -39,21 +39,6 @@ RollingBearingGeometry tapered() {
   g.profile = RollerProfile::kCrowned;
   g.crown_drop = 8e-6;
   return g;
-}
-
-/// ∂F/∂q by central differences, steps h (translations) and h/R (tilts).
-Matrix5 centralDifferences(const RollingBearing& b, const Vector5& q, double h) {
-  const double R = 0.5 * b.geometry().pitch_diameter;
-  Matrix5 K;
-  for (int i = 0; i < 5; ++i) {
-    const double step = i < 3 ? h : h / R;
-    Vector5 plus = q, minus = q, fp, fm;
-    plus(i) += step, minus(i) -= step;
-    b.evaluate(plus, fp, nullptr);
-    b.evaluate(minus, fm, nullptr);
-    K.col(i) = (fp - fm) / (2.0 * step);
-  }
-  return K;
 }
 
 TEST(HertzPointContact, SphereOnFlatIsHertzsClosedForm) {
@@ -110,43 +95,26 @@ TEST(RollingBearing, DeepGrooveUnderAxialDisplacementIsTheHertzClosedForm) {
   EXPECT_CLOSE(b.ballStiffness(), std::pow(ci + ce, -1.5), kClosedForm);
 }
 
-/// Tolerance of the tangent against central differences: truncation (h/δ)² ≈ 1e-8 and
-/// round-off ε δ/h ≈ 1e-11 for h = 1e-4 × the contact deflections; 1e-6 of the largest entry.
-constexpr double kCentralDifference = 1e-6;
-
-void expectTangentMatchesDifferences(const RollingBearing& b, const Vector5& q) {
-  Vector5 F;
-  Matrix5 K;
-  b.evaluate(q, F, &K);
-  const Matrix5 fd = centralDifferences(b, q, 1e-4 * b.referenceDeflection());
-  EXPECT_CLOSE(K, fd, 0.0, kCentralDifference * K.cwiseAbs().maxCoeff());
-  EXPECT_CLOSE(K, Matrix5(K.transpose()), 0.0, 1e-12 * K.cwiseAbs().maxCoeff());
-  // The Hessian of the contacts' strain energy is positive semi-definite where every loaded
-  // contact is in compression (δ > 0): Hertz's δ^{3/2} and the slices' δ^{10/9} are convex.
-  const Eigen::SelfAdjointEigenSolver<Matrix5> eig(K);
-  EXPECT_GE(eig.eigenvalues().minCoeff(), -1e-12 * eig.eigenvalues().maxCoeff());
-}
-
 TEST(RollingBearing, TangentStiffnessMatchesCentralDifferences) {
   Vector5 q;
   q << 12e-6, -5e-6, 8e-6, 1.5e-4, -0.8e-4;
-  expectTangentMatchesDifferences(RollingBearing(deepGroove()), q);
+  testing::expectTangentMatchesDifferences(RollingBearing(deepGroove()), q);
   RollingBearingGeometry acbb = deepGroove();
   acbb.type = RollingBearingType::kAngularContactBall;
   acbb.contact_angle = 40.0 * kDeg;
   acbb.arrangement = BearingArrangement::kBackToBack;
   acbb.row_spacing = 18e-3;
   acbb.clearance = -4e-6;
-  expectTangentMatchesDifferences(RollingBearing(acbb), q);
+  testing::expectTangentMatchesDifferences(RollingBearing(acbb), q);
   acbb.arrangement = BearingArrangement::kFaceToFace;
-  expectTangentMatchesDifferences(RollingBearing(acbb), q);
+  testing::expectTangentMatchesDifferences(RollingBearing(acbb), q);
   q << 15e-6, 4e-6, 10e-6, 2e-4, 1e-4;
-  expectTangentMatchesDifferences(RollingBearing(tapered()), q);
+  testing::expectTangentMatchesDifferences(RollingBearing(tapered()), q);
   RollingBearingGeometry cyl = tapered();
   cyl.type = RollingBearingType::kCylindricalRoller;
   cyl.contact_angle = 0.0;
   cyl.profile = RollerProfile::kLogarithmic;
-  expectTangentMatchesDifferences(RollingBearing(cyl), q);
+  testing::expectTangentMatchesDifferences(RollingBearing(cyl), q);
 }
 
 TEST(RollingBearing, StribecksMostLoadedBallUnderRadialLoad) {

@@ -5,10 +5,11 @@
 /// every rolling element is a Hertzian contact — ball bearings a point contact with the
 /// elliptic-integral constants (hertz_point_contact.h) and a contact angle that follows the
 /// load, roller bearings a line contact cut in slices with the roller's crowned or logarithmic
-/// profile — summed into the load–deflection relation of the inner ring relative to the outer
-/// ring in five DOFs q = (u_y, u_z, u_x, θ_y, θ_z) [m, m, m, rad, rad] (x the bearing axis;
-/// the rotation about x is free), its tangent 5×5 stiffness matrix ∂F/∂q (symmetric: F is the
-/// gradient of the contacts' strain energy) and the load of every element.
+/// profile, spherical roller bearings two rows of barrel rollers on a spherical outer raceway
+/// (self-aligning: no tilt stiffness) — summed into the load–deflection relation of the inner ring
+/// relative to the outer ring in five DOFs q = (u_y, u_z, u_x, θ_y, θ_z) [m, m, m, rad, rad] (x the
+/// bearing axis; the rotation about x is free), its tangent 5×5 stiffness matrix ∂F/∂q (symmetric:
+/// F is the gradient of the contacts' strain energy) and the load of every element.
 ///
 /// Sign convention: F(q) = ∂U/∂q is the load [N, N, N, N m, N m] that holds the inner ring at
 /// q; the bearing pushes the inner ring with −F. docs/theory/rolling_bearings.md.
@@ -23,7 +24,12 @@ enum class RollingBearingType {
   kDeepGrooveBall,
   kAngularContactBall,
   kCylindricalRoller,
-  kTaperedRoller
+  kTaperedRoller,
+  /// Double row, barrel rollers, spherical outer raceway centred on the bearing's centre (Harris
+  /// & Kotzalas 2006, vol. 1 §1.3 and §7.2): every contact normal passes through that centre,
+  /// so a tilt of the inner ring approaches no contact (self-aligning). Two rows at ± the
+  /// contact angle by construction: `arrangement` stays kSingle, `row_spacing` is derived.
+  kSphericalRoller
 };
 /// Rows: one; two rows back to back (O, pressure centres outside the rows: large tilt
 /// stiffness) or face to face (X: small tilt stiffness); a double-row bearing is two rows back
@@ -68,7 +74,16 @@ struct RollingBearingGeometry {
     return type == RollingBearingType::kDeepGrooveBall ||
            type == RollingBearingType::kAngularContactBall;
   }
-  int rows() const noexcept { return arrangement == BearingArrangement::kSingle ? 1 : 2; }
+  int rows() const noexcept {
+    return type == RollingBearingType::kSphericalRoller ||
+                   arrangement != BearingArrangement::kSingle
+               ? 2
+               : 1;
+  }
+  /// Radius of the spherical outer raceway R_e = d_m / (2 cos α₀) + D_we / 2 [m] (spherical
+  /// roller bearings: the roller centres on the pitch circle, the contact normals through the
+  /// bearing's centre).
+  double outerRacewayRadius() const noexcept;
 };
 
 /// One rolling element at a state q.
@@ -136,6 +151,7 @@ class RollingBearing {
     Vector5 g_r, g_a;     // radial and axial displacement of the contact point per q
     double offset = 0.0;  // slices: profile drop and clearance along the normal [m]
   };
+  void addSphericalSlices(int element, double psi, double side);
   double ballLoad(const Contact& c, const Vector5& q, Vector5& F, Matrix5* K, double* alpha) const;
   double sliceLoad(const Contact& c, const Vector5& q, Vector5& F, Matrix5* K) const;
   double ratingLife(const std::vector<RollingElementState>& elements,

@@ -255,6 +255,13 @@ void addBearingsAndCouplings(GearboxSections& out, double default_stiffness,
           inner_first ? pos_in : pos_out);
     if (!to_housing)
       t.add("other_position", tomlReal(read.real(c, inner_first ? pos_out : pos_in, 0.0)));
+    // A rolling bearing whose file gives its inner geometry: its load-dependent, coupled
+    // stiffness (rexs_bearings.cpp) instead of the stiffness keys.
+    if (bearing && read.boolean(c, "radial_force_absorption").value_or(true) &&
+        addRollingBearingGeometry(model, c, t)) {
+      out.sections.push_back(std::move(t));
+      continue;
+    }
     const auto kr = read.real(c, "radial_stiffness");
     double k = 0.0;
     std::string note = "radial_stiffness";

@@ -53,6 +53,80 @@ Json material(double e, double nu, double rho) {
                       real("density", "kg / dm^3", rho / 1000)});
 }
 
+/// REXS bearing_type of the gearbox file's geometric bearing types (the importer's table,
+/// rexs_bearings.cpp, read backwards).
+const char* rexsBearingType(const std::string& type) {
+  if (type == "deep_groove_ball") return "radial_grooved_ball_bearing";
+  if (type == "angular_contact_ball") return "angular_contact_ball_bearing";
+  if (type == "cylindrical_roller") return "radial_roller_bearing";
+  if (type == "tapered_roller") return "radial_tapered_roller_bearing";
+  return "radial_self_aligning_roller_bearing";
+}
+
+/// A bearing from its geometry as rolling_bearing_with_detailed_geometry with one
+/// rolling_bearing_row (ordered_assembly) holding one rolling_element; what REXS cannot hold
+/// (the slice count, a logarithmic or straight profile, a face-to-face pair, other materials) is
+/// warned about. Returns the bearing's id.
+int addRollingBearing(Writer& w, const std::string& name, const Json& b, Json attrs,
+                      std::vector<std::string>& warnings) {
+  const std::string type = b["type"];
+  const bool ball = type == "deep_groove_ball" || type == "angular_contact_ball";
+  const std::string arrangement = b.value("arrangement", "single");
+  const bool pair = arrangement != "single";
+  attrs.push_back({{"id", "bearing_type"}, {"unit", "none"}, {"enum", rexsBearingType(type)}});
+  attrs.push_back(
+      real("operating_radial_bearing_clearance", "mum", 2e6 * b.value("radial_clearance", 0.0)));
+  attrs.push_back({{"id", "number_of_bearing_rows"}, {"unit", "none"}, {"integer", pair ? 2 : 1}});
+  if (pair)
+    attrs.push_back(
+        real("distance_between_bearing_rows", "mm", 1000 * b.value("row_spacing", 0.0)));
+  if (b.value("dynamic_load_rating", 0.0) > 0)
+    attrs.push_back(
+        real("radial_dynamic_load_rating", "kN", b["dynamic_load_rating"].get<double>() / 1000));
+  const int id = w.add("rolling_bearing_with_detailed_geometry", name, attrs);
+  const double angle = b.value("contact_angle_deg", 0.0) * (b.value("reversed", false) ? -1 : 1);
+  Json row = {
+      {{"id", "number_of_rolling_elements"}, {"unit", "none"}, {"integer", b["elements"]}},
+      real("pressure_angle", "deg", angle),
+      real("reference_diameter_rolling_bearing", "mm", 1000 * b["pitch_diameter"].get<double>())};
+  Json element = {
+      real("diameter_of_rolling_element", "mm", 1000 * b["element_diameter"].get<double>())};
+  if (ball) {
+    row.push_back(
+        real("raceway_radius_of_inner_ring", "mm", 1000 * b["inner_groove_radius"].get<double>()));
+    row.push_back(
+        real("raceway_radius_of_outer_ring", "mm", 1000 * b["outer_groove_radius"].get<double>()));
+  } else {
+    const double length = b["roller_length"];
+    element.push_back(real("length_of_rolling_element", "mm", 1000 * length));
+    const std::string profile = b.value("profile", "logarithmic");
+    // ISO/TS 16281's logarithmic profile is the importer's default; a crown is its radius.
+    if (profile == "crowned" && b.value("crown_drop", 0.0) > 0)
+      element.push_back(real("roller_crowning_radius", "mm",
+                             1000 * length * length / (8 * b["crown_drop"].get<double>())));
+    else if (profile != "logarithmic")
+      warnings.push_back("bearings." + name +
+                         ": REXS holds a roller's crowning radius, not a straight profile; the "
+                         "importer gives it the logarithmic one");
+    if (b.value("slices", 20) != 20)
+      warnings.push_back("bearings." + name + ": the slice count is geardyn's; not exported");
+  }
+  if (arrangement == "face_to_face")
+    warnings.push_back("bearings." + name +
+                       ": REXS's two rows are read back to back; the face-to-face pair is not "
+                       "exported as such");
+  if (b.value("youngs_modulus", 2.1e11) != 2.1e11 || b.value("poisson_ratio", 0.3) != 0.3 ||
+      b.contains("element_youngs_modulus") || b.contains("element_poisson_ratio"))
+    warnings.push_back("bearings." + name +
+                       ": the rings' and elements' materials are not exported");
+  const int r = w.add("rolling_bearing_row", name + " row", row);
+  w.relate("ordered_assembly", {{id, "assembly", "rolling_bearing_with_detailed_geometry"},
+                                {r, "part", "rolling_bearing_row"}});
+  w.part(r, "rolling_bearing_row", w.add("rolling_element", name + " rolling element", element),
+         "rolling_element");
+  return id;
+}
+
 }  // namespace
 
 std::string exportRexsJson(const config::Config& gearbox, std::vector<std::string>& warnings) {
@@ -231,13 +305,16 @@ std::string exportRexsJson(const config::Config& gearbox, std::vector<std::strin
     if (held)
       attrs.push_back(
           real("rotational_stiffness", "N mm / rad", b["k_torsion"].get<double>() * 1000));
-    const int id = w.add(held ? "coupling" : "concept_bearing", name, attrs);
+    const bool geometric = b.value("type", "stiffness") != "stiffness";
+    if (geometric) attrs.erase(0);  // its stiffness follows from the geometry
+    const int id = geometric ? addRollingBearing(w, name, b, attrs, warnings)
+                             : w.add(held ? "coupling" : "concept_bearing", name, attrs);
     const int outer = b["other_shaft"] == "" ? casing : shaft_id.at(b["other_shaft"]);
     w.relate("side", {{id, "assembly", ""},
                       {shaft_id.at(b["shaft"]), "inner_part", "shaft"},
                       {outer, "outer_part", ""}});
-    if (b["kyy"] != b["kzz"] || b["kyz"].get<double>() != 0 || b["kzy"].get<double>() != 0 ||
-        b["cyy"].get<double>() != 0 || b["czz"].get<double>() != 0 ||
+    if ((!geometric && b["kyy"] != b["kzz"]) || b["kyz"].get<double>() != 0 ||
+        b["kzy"].get<double>() != 0 || b["cyy"].get<double>() != 0 || b["czz"].get<double>() != 0 ||
         b["c_torsion"].get<double>() != 0)
       warnings.push_back("bearings." + name +
                          ": REXS holds one radial stiffness and no damping; "

@@ -111,6 +111,13 @@ GearSpec addGearKeys(Model& model, const Component& gear, TomlSection& section);
 /// section already carries the gear's mass.
 void addGearBody(const GearSpec& gear, double shaft_diameter, TomlSection& section);
 
+/// Writes a rolling bearing's inner geometry (its rows and rolling elements: type, elements,
+/// diameters, contact angle, raceway radii, roller length, clearance, C) as the gearbox file's
+/// geometry keys and returns true; false when the file does not give it — a catalogue bearing
+/// by its designation only, a type geardyn has no model of, or rows that lack an attribute (a
+/// warning names it) —, and the caller writes the stiffness keys (rexs_bearings.cpp).
+bool addRollingBearingGeometry(Model& model, const Component& bearing, TomlSection& section);
+
 /// The REXS component types the mapping writes as shafts, gears, bearings and couplings.
 inline const std::set<std::string> kShaftTypes = {"shaft"};
 inline const std::set<std::string> kGearTypes = {"cylindrical_gear", "ring_gear"};

@@ -61,6 +61,26 @@ const std::vector<AttributeSpec>& attributeTable() {
       {"moment_of_inertia_u_axis", D::kInertia, 100},
       {"moment_of_inertia_v_axis", D::kInertia, 100},
       {"meshing_stiffness_characteristic", D::kStiffness, 105},
+      // Rolling bearings' inner geometry (rexs_bearings.cpp).
+      {"bearing_type", D::kNone, 100},
+      {"number_of_bearing_rows", D::kNone, 100},
+      {"distance_between_bearing_rows", D::kLength, 100},
+      {"number_of_rolling_elements", D::kNone, 100},
+      {"pressure_angle", D::kAngle, 100},
+      {"axial_force_absorption_of_row", D::kNone, 101},
+      {"raceway_radius_of_inner_ring", D::kLength, 101},
+      {"raceway_radius_of_outer_ring", D::kLength, 101},
+      {"reference_diameter", D::kLength, 100},
+      {"reference_diameter_rolling_bearing", D::kLength, 200},
+      {"diameter_of_rolling_element", D::kLength, 100},
+      {"length_of_rolling_element", D::kLength, 100},
+      {"roller_crowning_radius", D::kLength, 101},
+      {"operating_radial_bearing_clearance", D::kLength, 101},
+      {"mounted_radial_bearing_clearance", D::kLength, 101},
+      {"radial_bearing_clearance", D::kLength, 101},
+      {"radial_backlash", D::kLength, 100},
+      {"radial_dynamic_load_rating", D::kForce, 101},
+      {"dynamic_capacity", D::kForce, 100},
   };
   return table;
 }
