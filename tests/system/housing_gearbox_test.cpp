@@ -244,7 +244,7 @@ TEST(HousingGearbox, FrfsBetweenTwoResponsePointsAreReciprocal) {
   rhs.col(0).tail(n - h0) = h.recovery.row(0 * 3 + 1).transpose();  // P1, y
   rhs.col(1).tail(n - h0) = h.recovery.row(1 * 3 + 2).transpose();  // P2, z
   for (double f : {50.0, 400.0, 2000.0}) {
-    detail::HarmonicBlocks blocks(K, model.mass(), C, Eigen::MatrixXd(), 64, condensation);
+    detail::HarmonicBlocks blocks(K, model.mass(), C, Eigen::MatrixXd(), 64, true, condensation);
     ASSERT_TRUE(blocks.condensesHousing());
     blocks.factorize(1, 2.0 * std::numbers::pi * f);
     const Eigen::MatrixXcd x = blocks.solve(1, rhs.cast<Complex>());
