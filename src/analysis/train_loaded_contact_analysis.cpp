@@ -215,7 +215,12 @@ std::optional<GearTrainModel> withLoadedContactExcitation(const GearTrainModel& 
                                                           std::string& text) {
   std::vector<bool> wanted(model.meshes().size(), false);
   bool any = false;
+  // Only the gearbox's [meshes.<name>] have the key (a planetary stage's meshes, named
+  // <stage>.sun_planet<n>, are not in the schema).
+  const auto& declared = gearbox.resolved().contains("meshes") ? gearbox.resolved()["meshes"]
+                                                               : nlohmann::ordered_json::object();
   for (std::size_t i = 0; i < model.meshes().size(); ++i) {
+    if (!declared.contains(model.meshes()[i].name)) continue;
     const std::string key = "meshes." + model.meshes()[i].name + ".excitation";
     if (!gearbox.has(key) || gearbox.string(key) != "ltca") continue;
     if (model.dofsPerBody() != 6 || model.meshes()[i].kind != TrainMeshKind::kExternal) {
