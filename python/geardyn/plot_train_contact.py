@@ -95,15 +95,20 @@ def mesh_contact_figure(folder, summary, title):
 def whine_orders_figure(folder, summary, title):
     """Whine order levels against speed: the dynamic mesh force of every mesh at each of its
     orders (forced_mesh_orders.csv), one panel per mesh, with the meshes that take their loaded
-    contact as excitation (excitation = "ltca") named in the title."""
+    contact as excitation (excitation = "ltca") named in the title; below, when the forced
+    response wrote forced_bearing_orders.csv, the force every bearing transmits at each mesh's
+    first order (the path of the whine into the housing)."""
     table = _read_columns(folder / "forced_mesh_orders.csv")
     meshes = list(dict.fromkeys(table["mesh"]))
-    figure, axes = plt.subplots(1, len(meshes), figsize=(5.5 * len(meshes), 4.2), layout="constrained",
-                                squeeze=False)
+    bearing_file = folder / "forced_bearing_orders.csv"
+    bearings = _read_columns(bearing_file) if bearing_file.exists() else None
+    rows = 2 if bearings and bearings["mesh"] else 1
+    figure, axes = plt.subplots(rows, len(meshes), figsize=(5.5 * len(meshes), 4.2 * rows),
+                                layout="constrained", squeeze=False)
     for ax, mesh in zip(axes[0], meshes):
-        rows = [i for i, m in enumerate(table["mesh"]) if m == mesh]
-        for order in sorted({int(table["order"][i]) for i in rows}):
-            keep = [i for i in rows if int(table["order"][i]) == order]
+        keep_mesh = [i for i, m in enumerate(table["mesh"]) if m == mesh]
+        for order in sorted({int(table["order"][i]) for i in keep_mesh}):
+            keep = [i for i in keep_mesh if int(table["order"][i]) == order]
             ax.semilogy([table["speed_rpm"][i] for i in keep],
                         [max(table["amplitude_n"][i], 1e-6) for i in keep], lw=1.2, label=f"{order}× mesh")
         ax.set_xlabel("input speed [rpm]")
@@ -111,6 +116,25 @@ def whine_orders_figure(folder, summary, title):
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7)
         ax.set_title(f"mesh {mesh}", fontsize=9)
+    if rows == 2:
+        for ax, mesh in zip(axes[1], meshes):
+            keep_mesh = [i for i, m in enumerate(bearings["mesh"])
+                         if m == mesh and int(bearings["order"][i]) == 1]
+            largest = max((bearings["amplitude_n"][i] for i in keep_mesh), default=0.0)
+            names = list(dict.fromkeys(bearings["bearing"][i] for i in keep_mesh))
+            colours = plt.get_cmap("tab20")
+            for j, bearing in enumerate(names):
+                keep = [i for i in keep_mesh if bearings["bearing"][i] == bearing]
+                values = [bearings["amplitude_n"][i] for i in keep]
+                if max(values) <= 1e-6 * largest:
+                    continue  # a bearing this order does not load (an axial spring of a spur stage)
+                ax.semilogy([bearings["speed_rpm"][i] for i in keep], [max(v, 1e-9 * largest) for v in values],
+                            lw=1.2, color=colours(j % 20), label=bearing)
+            ax.set_xlabel("input speed [rpm]")
+            ax.set_ylabel("bearing force at 1× mesh [N]")
+            ax.grid(alpha=0.3, which="both")
+            ax.legend(fontsize=7, ncol=2)
+            ax.set_title(f"bearing forces at the first order of mesh {mesh}", fontsize=9)
     ltca = summary["results"].get("excitation_ltca", {}).get("meshes", {})
     source = f"loaded contact of {', '.join(ltca)}" if ltca else "the meshes' input excitation"
     figure.suptitle(f"{title}: whine orders against speed ({source})", fontsize=9)

@@ -16,6 +16,7 @@
 
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
+#include "geardyn/solvers/train_element_orders.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
 #include "geardyn/solvers/train_truncation.h"
@@ -65,6 +66,34 @@ ForcedPoint pointOf(TrainTorusState&& s) {
   p.iterations = s.iterations;
   p.direct = s.linear_solver == "direct";
   return p;
+}
+
+/// Mesh orders forced_bearing_orders.csv is written for (1..this, at most L).
+constexpr int kBearingOrders = 3;
+
+/// forced_bearing_orders.csv rows of one common-period steady state: the dynamic force of every
+/// bearing element with force rows (radial: the (y, z) amplitudes combined; axial: `<b>.axial`;
+/// tilt and torsion springs carry moments only and are left out) at each mesh's orders
+/// 1..min(L, kBearingOrders) (train_element_orders.h: the spring force's harmonic) [N]: the path
+/// of the whine orders into the housing.
+void addBearingOrderRows(const GearTrainModel& model, const TrainSteadyState& state, double speed,
+                         int mesh_harmonics, io::CsvTable& table) {
+  const auto& meshes = model.meshes();
+  const int orders = std::min(mesh_harmonics, kBearingOrders);
+  for (const TrainElement& e : model.elements()) {
+    if (e.kind != "bearing" ||
+        std::all_of(e.moment_rows.begin(), e.moment_rows.end(), [](bool m) { return m; }))
+      continue;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      const double f_m = meshes[m].frequency_ratio * std::abs(speed);
+      for (int l = 1; l <= orders; ++l) {
+        const int h = l * state.mesh_multiple[m];
+        if (h > state.harmonics) break;
+        table.addRow(
+            {speed / kRpm, e.name, meshes[m].name, l, l * f_m, elementForceHarmonic(e, state, h)});
+      }
+    }
+  }
 }
 
 /// Mesh orders the operating deflection shapes are written for (1..this, at most L).
@@ -157,6 +186,8 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   }
   io::CsvTable table(header);
   io::CsvTable orders_table({"speed_rpm", "mesh", "order", "frequency_hz", "amplitude_n"});
+  io::CsvTable bearing_orders(
+      {"speed_rpm", "bearing", "mesh", "order", "frequency_hz", "amplitude_n"});
   std::vector<std::string> tone_header{"speed_rpm", "mesh"};
   const int k = torus ? static_cast<int>(torus_solver->generators().ratio.size()) : 0;
   for (int j = 0; j < k; ++j) tone_header.push_back(fmt::format("harmonic_g{}", j + 1));
@@ -181,6 +212,7 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
       s = pointOf(torus_solver->solve(speed));
     } else {
       const TrainSteadyState state = common->solve(speed);
+      addBearingOrderRows(model, state, speed, steady.mesh_harmonics, bearing_orders);
       housing.add(state);
       s = pointOf(state);
     }
@@ -211,6 +243,7 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
     writeOds(model, *common, ods_speeds, result);
   }
   result.addTable("forced_mesh_orders.csv", orders_table);
+  if (!torus) result.addTable("forced_bearing_orders.csv", bearing_orders);
   if (torus) result.addTable("forced_tones.csv", tones_table);
   Json peaks = Json::object();
   for (std::size_t m = 0; m < meshes.size(); ++m) {

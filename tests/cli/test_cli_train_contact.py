@@ -54,3 +54,13 @@ def test_static_contact_and_ltca_excitation(tmp_path):
     assert summary["results"]["excitation_ltca"]["converged"]
     assert set(summary["results"]["excitation_ltca"]["meshes"]) == {"stage2"}
     assert "forced" in summary["results"]
+    # The whine's path into the housing: every radial bearing's force at each mesh's first three
+    # orders and every speed (forced_bearing_orders.csv; checked against the DFT of the sampled
+    # bearing force in tests/system/train_response_test.cpp), loaded at stage 2's first order.
+    orders = _rows(excited / "forced_bearing_orders.csv")
+    assert {r["bearing"] for r in orders} >= {"input_a", "input_b", "output_a", "output_b"}
+    assert {int(r["order"]) for r in orders} == {1, 2, 3}
+    assert len({r["speed_rpm"] for r in orders}) == 5
+    first = [float(r["amplitude_n"]) for r in orders
+             if r["mesh"] == "stage2" and r["order"] == "1" and "." not in r["bearing"]]
+    assert min(first) > 0.0  # every radial bearing (an axial spring may carry none)

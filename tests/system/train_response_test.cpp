@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <numbers>
 
@@ -13,6 +14,7 @@
 #include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/solvers/time_response.h"
+#include "geardyn/solvers/train_element_orders.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "system/sample_trains.h"
@@ -394,6 +396,57 @@ TEST(TrainReduction, SinglePairTorsionalIsTheSdofGearPairModel) {
   }
   EXPECT_LT(worst, 1e-7 * sdof.mean_force);
   ::testing::Test::RecordProperty("relative_difference", std::to_string(worst / sdof.mean_force));
+}
+
+// Whine through the bearings (issue #36): elementForceHarmonic gives a bearing's force at one
+// harmonic straight from X_h; here it is checked against the DFT of the sampled spring force
+// k J q(t_k) over one base period (64 H samples: the DFT of a trigonometric polynomial of degree
+// H is exact above 2H samples), for every bearing of the flexible helical reducer with varying
+// mesh stiffness, at each mesh's orders 1..3. Both are exact evaluations of the same harmonic:
+// 1e-9 of the largest (round-off of the 64 H-term sums).
+TEST(TrainSteadyState, BearingForceHarmonicsEqualTheDftOfTheSampledForce) {
+  GearTrainSpec spec = testing::flexibleReducer(12.0, 0.05);
+  spec.meshes[0].stiffness = std::make_shared<FourierMeshStiffness>(
+      4e8, std::vector<double>{0.12, 0.05}, std::vector<double>{0.0, 0.3}, 1.6);
+  spec.meshes[1].stiffness = std::make_shared<FourierMeshStiffness>(6e8, std::vector<double>{0.1},
+                                                                    std::vector<double>{0.2}, 1.5);
+  const GearTrainModel model(spec);
+  TrainSteadyOptions options;
+  options.mesh_harmonics = 4;
+  const TrainSteadyState s = solveTrainSteadyState(model, model.inputSpeed(), options);
+  const int samples = 64 * s.harmonics;
+  const Eigen::VectorXd t =
+      Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
+  const Eigen::MatrixXd q = s.displacement(t);
+  int checked = 0;
+  double largest = 0.0;
+  std::vector<std::pair<double, double>> pairs;  // (from X_h, from the DFT)
+  for (const TrainElement& e : model.elements()) {
+    if (e.kind != "bearing") continue;
+    Eigen::MatrixXd local(samples, static_cast<Eigen::Index>(e.dofs.size()));
+    for (std::size_t i = 0; i < e.dofs.size(); ++i) local.col(i) = q.col(e.dofs[i]);
+    const Eigen::MatrixXd force = local * (e.local_stiffness * e.jacobian).transpose();
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      for (int l = 1; l <= 3; ++l) {
+        const int h = l * s.mesh_multiple[m];
+        if (h > s.harmonics) continue;
+        double sum = 0.0;
+        for (Eigen::Index r = 0; r < force.cols(); ++r) {
+          if (e.moment_rows[static_cast<std::size_t>(r)]) continue;
+          std::complex<double> c = 0.0;
+          for (int k = 0; k < samples; ++k)
+            c += force(k, r) * std::polar(1.0, -2.0 * std::numbers::pi * h * k / samples);
+          sum += std::norm(2.0 * c / static_cast<double>(samples));
+        }
+        pairs.emplace_back(elementForceHarmonic(e, s, h), std::sqrt(sum));
+        largest = std::max(largest, std::sqrt(sum));
+        ++checked;
+      }
+    }
+  }
+  ASSERT_GT(checked, 0);
+  ASSERT_GT(largest, 0.0);
+  for (const auto& [ours, dft] : pairs) EXPECT_NEAR(ours, dft, 1e-9 * largest);
 }
 
 }  // namespace
