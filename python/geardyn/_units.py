@@ -18,7 +18,7 @@ _SUFFIXES = sorted([
     ("_rad_s", "rad/s"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"), ("_kg_m2", "kg m^2"),
     ("_kg", "kg"), ("_mm", "mm"), ("_um", "µm"), ("_hz", "Hz"), ("_rpm", "rpm"),
     ("_rad", "rad"), ("_deg", "deg"), ("_pa", "Pa"), ("_j", "J"), ("_s", "s"), ("_m", "m"),
-    ("_n", "N"), ("_percent", "%"),
+    ("_n", "N"), ("_percent", "%"), ("_db", "dB"),
 ], key=lambda pair: -len(pair[0]))
 
 

@@ -397,10 +397,11 @@ def test_old_spellings_work_with_a_warning_naming_the_new_key(tmp_path):
 # --- item 5: units on everything printed -------------------------------------------------------
 
 # One convention for CSV columns and summary keys: the unit ends the name, lower case
-# (docs/development.md, "Result names").
+# (docs/development.md, "Result names"); db is a level in decibels, its reference named where
+# the column is documented (housing_response.csv: re 1e-6 m/s²).
 UNIT_SUFFIX = re.compile(
     r"(^|_)(m|mm|um|n|n_m|n_per_m|n_s_per_m|hz|hz_per_rpm|rpm|s|rad|deg|kg|kg_m2|m_per_s|"
-    r"m_per_s2|rad_per_s|rad_per_s2|periods|nondim|pa|j|us)$")
+    r"m_per_s2|rad_per_s|rad_per_s2|periods|nondim|pa|j|us|db)$")
 # Dimensionless by their meaning: ratios, fractions, counts, flags, Gelman's (2005) normalised
 # statistics (k = K/K̄, e_f = E/x₀: a, m1_k, d_k, r_ke, ...), indices.
 DIMENSIONLESS = re.compile(
