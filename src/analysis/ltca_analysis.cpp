@@ -74,7 +74,8 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
       "tangent stiffness {:.4g} N/m\n",
       force, 1e6 * lo->ste, 1e6 * hi->ste, 1e6 * (hi->ste - lo->ste), mean_tangent);
   text += fmt::format(
-      "  across the face ({} slices): K_Hbeta {:.4f} (largest instantaneous {:.4f}), centre of "
+      "  across the face ({} slices): K_Hbeta {:.4f} [-] (largest instantaneous {:.4f} [-]), "
+      "centre of "
       "load {:+.2f} mm from the mid-face, {:.0f} % of the face loaded\n",
       slices, face.k_hbeta, face.k_hbeta_max, 1e3 * face.centre_of_load,
       100 * face.loaded_fraction);

@@ -176,7 +176,7 @@ TrainLoadedContactResult runTrainContact(const GearTrainModel& model,
                     {"ste_harmonics_m", amplitudes},
                     {"mean_tangent_stiffness_n_per_m", m.mean_tangent_stiffness}};
     lines += fmt::format(
-        "  mesh {:<12} f_ma {:+.3f} um: K_Hbeta {:.4f}, centre of load {:+.2f} mm, loaded STE "
+        "  mesh {:<12} f_ma {:+.3f} um: K_Hbeta {:.4f} [-], centre of load {:+.2f} mm, loaded STE "
         "{:.4g} um peak to peak ({:.4g} um at the mesh order)\n",
         name, 1e6 * m.misalignment.mismatch, m.face.k_hbeta, 1e3 * m.face.centre_of_load,
         1e6 * m.ste_peak_to_peak, amplitudes.empty() ? 0.0 : 1e6 * amplitudes[0]);
@@ -244,7 +244,7 @@ std::optional<GearTrainModel> withLoadedContactExcitation(const GearTrainModel& 
                   {"ste_peak_to_peak_m", m.ste_peak_to_peak}};
     text += fmt::format(
         "  mesh {} excited by its loaded contact: k_t(phi) and e(phi) from {} positions "
-        "(K_Hbeta {:.4f}, loaded STE {:.4g} um peak to peak)\n",
+        "(K_Hbeta {:.4f} [-], loaded STE {:.4g} um peak to peak)\n",
         name, m.face.points.size(), m.face.k_hbeta, 1e6 * m.ste_peak_to_peak);
   }
   summary.results["excitation_ltca"] = {

@@ -475,7 +475,7 @@ def _columns_without_units(path):
 NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d+(?:[eE][-+]?\d+)?|\d+[eE][-+]?\d+)(?![\w.])")
 # A number is followed by its unit, or by "/", "..", "to" or "->" and another number (a pair or
 # a range in one unit).
-AFTER = re.compile(r"\s*(\[-\]|%|µm|um|mm|m/s\^2|N/m|N s/m|N m|N|Hz|rpm|ms|s|rad|deg|kg|m|"
+AFTER = re.compile(r"\s*(\[-\]|%|µm|um|mm|m/s\^2|N/m|N s/m|N m|N|Hz|rpm|ms|s|rad|deg|kg|m|dB|"
                    r"periods|GB|MB)(?![\w/])")
 JOIN = re.compile(r"\s*(/|\.\.|to|->)\s*")
 
