@@ -43,7 +43,7 @@ Json transientJson(const TrainTimeResponse& r) {
            }()}};
 }
 
-/// The plan of the time run, refused before it allocates when a mode the meshes drive has no
+/// The plan of the time run, refused before it allocates when a mode the forcing drives has no
 /// damping (naming the keys that would damp it) or when it would not fit in memory.
 TrainTimePlan planTime(const GearTrainModel& model, double speed, const TrainTimeOptions& options,
                        const AnalysisContext& context) {
@@ -54,10 +54,10 @@ TrainTimePlan planTime(const GearTrainModel& model, double speed, const TrainTim
       std::vector<std::string> keys = dampingKeysOf(model, mode);
       keys.push_back("gearbox.mass_proportional_damping");
       throw InputError("time.duration", "0 (derived)",
-                       fmt::format("a duration > 0 s: the mode at {:.4g} Hz has no damping and the "
-                                   "meshes excite it, so its transient never decays; damp it with "
+                       fmt::format("a duration > 0 s: the mode at {:.4g} Hz has no damping and {} "
+                                   "excite it, so its transient never decays; damp it with "
                                    "{} or give time.duration",
-                                   mode.frequency, fmt::join(keys, ", ")));
+                                   mode.frequency, forcingOf(model), fmt::join(keys, ", ")));
     }
   }
   if (plan.steps <= kMaxTrainTimeSteps) {

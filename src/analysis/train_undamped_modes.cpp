@@ -63,6 +63,22 @@ std::vector<std::string> dampingKeysOf(const GearTrainModel& model, const TrainU
   return keys;
 }
 
+std::string forcingOf(const GearTrainModel& model) {
+  std::vector<std::string> sources;
+  if (!model.meshes().empty()) sources.push_back("the meshes");
+  for (const TrainExcitationTerm& term : model.excitations()) {
+    const std::string section = term.name.substr(0, term.name.find('.'));
+    if (std::find(sources.begin(), sources.end(), section) == sources.end())
+      sources.push_back(section);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    text += (i == 0 ? "" : " and ") + std::string(sources[i] == "the meshes" ? "" : "the ") +
+            sources[i];
+  }
+  return text;
+}
+
 std::string undampedModesWarning(const GearTrainModel& model,
                                  const std::vector<TrainUndampedMode>& modes, double speed_rpm) {
   if (modes.empty()) return "";
@@ -80,21 +96,12 @@ std::string undampedModesWarning(const GearTrainModel& model,
   }
   if (modes.size() > kListed) listed.push_back(fmt::format("{} more", modes.size() - kListed));
   keys.push_back("gearbox.mass_proportional_damping");
-  // What drives the train: its meshes and its other excitation terms (unbalances, runouts,
-  // prescribed bearing displacements), by their keys' sections.
-  std::vector<std::string> sources;
-  if (!model.meshes().empty()) sources.push_back("the meshes");
-  for (const TrainExcitationTerm& term : model.excitations()) {
-    const std::string section = term.name.substr(0, term.name.find('.'));
-    if (std::find(sources.begin(), sources.end(), section) == sources.end())
-      sources.push_back(section);
-  }
-  const std::string forcing = fmt::format("{}", fmt::join(sources, " and the "));
+  const std::string forcing = forcingOf(model);
   std::string consequence;
   if (any_excited)
     consequence =
         fmt::format("a time run cannot reach a steady state while {} excite one", forcing);
-  else if (sources.empty())
+  else if (forcing.empty())
     consequence =
         "nothing forces them (a time run does not wait for them), but a shock would "
         "ring forever";

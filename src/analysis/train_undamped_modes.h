@@ -20,6 +20,10 @@ std::vector<std::string> dampingKeysOf(const GearTrainModel& model, const TrainU
 
 /// One warning line for the undamped modes at `speed_rpm` (empty when there are none): their
 /// frequencies, whether the meshes excite them and the keys that would damp them.
+/// What drives the train, for messages: "the meshes", "the meshes and the unbalances", "the
+/// runouts" … (its meshes, then the sections of its other excitation terms); "" when nothing.
+std::string forcingOf(const GearTrainModel& model);
+
 std::string undampedModesWarning(const GearTrainModel& model,
                                  const std::vector<TrainUndampedMode>& modes, double speed_rpm);
 

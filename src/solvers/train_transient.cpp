@@ -10,8 +10,8 @@ namespace geardyn {
 
 namespace {
 constexpr double kUndamped = 1e-9;  // |ζ| below this is round-off of an undamped mode
-// Each mode the meshes excite decays by this; a mode whose relative start √s_j is below it is
-// not excited (train_transient.h).
+// Each mode the forcing excites decays by this; a mode whose relative start (modalExcitation) is
+// below it is not excited (train_transient.h).
 constexpr double kDecay = 1e-6;
 
 /// Mode j's starting amplitude relative to the modes the forcing drives (TrainTransient): √s_j

@@ -32,9 +32,12 @@ struct TrainUndampedMode {
 /// waited for (a shaft's lateral mode between undamped bearings, orthogonal to every line of
 /// action, has s_j at round-off). Every other mode is waited for until it has decayed by 1e-6,
 /// ln(1e6) / σ_j (σ_j = −Re λ_j): √s_j is only the modal amplitude, and a probe's velocity or
-/// acceleration weights a high mode by its frequency, so its start is not discounted.
+/// acceleration weights a high mode by its frequency, so its start is not discounted. The other
+/// excitations (unbalances, runouts, prescribed bearing displacements) start mode j at about
+/// the cosine between its shape and their force patterns; a mode orthogonal to all of them and
+/// to the meshes (to 1e-6) is not waited for either.
 struct TrainTransient {
-  /// The longest of those times [s]; +inf when a mode the meshes excite has no damping, 0 when
+  /// The longest of those times [s]; +inf when a mode the forcing excites has no damping, 0 when
   /// no mode needs one.
   double decay_time = 0.0;
   double slowest_frequency = 0.0;      ///< [Hz] of the mode that sets decay_time
