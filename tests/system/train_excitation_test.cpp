@@ -181,15 +181,14 @@ TEST(TrainExcitation, OnlyTheModesAnExcitationDrivesAreWaitedFor) {
   for (const TrainUndampedMode& mode : transient.undamped)
     EXPECT_FALSE(mode.excited) << mode.frequency << " Hz";
   const double omega_n = std::sqrt(kStiffness / kMass);
-  EXPECT_NEAR(transient.decay_time, std::log(1e6) / (kZeta * omega_n),
-              1e-9 * transient.decay_time);
+  EXPECT_NEAR(transient.decay_time, std::log(1e6) / (kZeta * omega_n), 1e-9 * transient.decay_time);
 
   spec.bearings[0].cyy = spec.bearings[0].czz = 0.0;
   const TrainTransient undamped = trainTransient(GearTrainModel(spec), speed);
   bool lateral_excited = false;
   for (const TrainUndampedMode& mode : undamped.undamped) {
-    const bool lateral = std::abs(mode.frequency - omega_n / (2.0 * std::numbers::pi)) <
-                         1e-9 * mode.frequency;
+    const bool lateral =
+        std::abs(mode.frequency - omega_n / (2.0 * std::numbers::pi)) < 1e-9 * mode.frequency;
     EXPECT_EQ(mode.excited, lateral) << mode.frequency << " Hz";
     lateral_excited = lateral_excited || (lateral && mode.excited);
   }
