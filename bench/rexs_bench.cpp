@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 
 namespace geardyn {
@@ -23,7 +24,7 @@ void importFile(benchmark::State& state, const char* name) {
     return;
   }
   for (auto _ : state) {
-    const auto imported = io::rexs::importRexsFile(path);
+    const auto imported = config::importRexsFile(path);
     const config::Config config = config::parseConfig(imported.toml, name, config::gearboxSchema());
     benchmark::DoNotOptimize(config.resolved().size());
   }

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <string_view>
 
+#include "geardyn/analysis/geometry_results.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_results.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const geardyn::config::ConfigSchema schema = geardyn::config::geometrySchema();
@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const auto config = geardyn::config::parseConfig(text, "fuzz.toml", schema);
     const geardyn::GearPair pair(geardyn::config::gearPairSpecFromConfig(config));
-    volatile std::size_t length = geardyn::io::toJson(pair).dump().size();
+    volatile std::size_t length = geardyn::analysis::toJson(pair).dump().size();
     (void)length;
   } catch (const geardyn::InputError&) {
     // the expected outcome for bad input

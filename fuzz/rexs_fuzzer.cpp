@@ -15,6 +15,7 @@
 
 #include "geardyn/config/config.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
@@ -49,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                  : readZipped(bytes);
     std::vector<std::string> warnings;
     rexs::normalize(document, warnings);
-    const rexs::RexsImport imported = rexs::importRexsGearbox(document);
+    const rexs::RexsImport imported = geardyn::config::importRexsGearbox(document);
     const auto config = geardyn::config::parseConfig(imported.toml, "fuzz", schema);
     const auto spec = geardyn::config::gearTrainFromConfig(config, warnings);
     volatile std::size_t shafts = spec.shafts.size();

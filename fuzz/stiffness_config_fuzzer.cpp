@@ -6,11 +6,11 @@
 #include <cstdint>
 #include <string_view>
 
+#include "geardyn/analysis/stiffness_results.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/stiffness_results.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const geardyn::config::ConfigSchema schema = geardyn::config::stiffnessSchema();
@@ -25,11 +25,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const geardyn::GearPair pair(geardyn::config::gearPairSpecFromConfig(config));
     const auto models = geardyn::config::buildMeshStiffnessModels(config, pair);
-    const auto results = geardyn::io::stiffnessResultsJson(config, pair, models);
+    const auto results = geardyn::analysis::stiffnessResultsJson(config, pair, models);
     volatile std::size_t length =
         results.dump().size() +
-        geardyn::io::stiffnessCurveTable(config, pair, models).toString().size() +
-        geardyn::io::fourierTable(results["models"]).toString().size();
+        geardyn::analysis::stiffnessCurveTable(config, pair, models).toString().size() +
+        geardyn::analysis::fourierTable(results["models"]).toString().size();
     (void)length;
   } catch (const geardyn::InputError&) {
     // the expected outcome for bad input

@@ -5,10 +5,10 @@
 
 #include <numbers>
 
+#include "geardyn/analysis/geometry_results.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_results.h"
 #include "geardyn/units.h"
 
 namespace py = pybind11;
@@ -169,7 +169,7 @@ void bindGeometry(py::module_& m) {
       .def_property_readonly("mesh_frequency", &GearPair::meshFrequency, "[Hz] or None")
       .def_property_readonly("warnings", &GearPair::warnings, "design warnings (sentences)")
       .def(
-          "to_dict", [](const GearPair& pair) { return jsonToPython(io::toJson(pair)); },
+          "to_dict", [](const GearPair& pair) { return jsonToPython(analysis::toJson(pair)); },
           "The headline numbers, exactly as in summary.json 'results' of `geardyn geometry`.");
 }
 

@@ -6,6 +6,15 @@
 #include <optional>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/geometry_results.h"
+#include "geardyn/analysis/hbm_results.h"
+#include "geardyn/analysis/identify_results.h"
+#include "geardyn/analysis/ltca_results.h"
+#include "geardyn/analysis/rotor_results.h"
+#include "geardyn/analysis/simulate_results.h"
+#include "geardyn/analysis/stats_results.h"
+#include "geardyn/analysis/stiffness_results.h"
+#include "geardyn/analysis/sweep_results.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/geometry_config.h"
@@ -18,15 +27,6 @@
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/geometry_results.h"
-#include "geardyn/io/hbm_results.h"
-#include "geardyn/io/identify_results.h"
-#include "geardyn/io/ltca_results.h"
-#include "geardyn/io/rotor_results.h"
-#include "geardyn/io/simulate_results.h"
-#include "geardyn/io/stats_results.h"
-#include "geardyn/io/stiffness_results.h"
-#include "geardyn/io/sweep_results.h"
 
 namespace py = pybind11;
 

@@ -6,6 +6,7 @@
 
 #include "command.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
@@ -60,7 +61,7 @@ int RexsCommands::runImport() const {
   io::rexs::RexsImportOptions options;
   options.load_case = load_case_;
   options.bearing_stiffness = bearing_stiffness_;
-  const io::rexs::RexsImport imported = io::rexs::importRexsFile(import_file_, options);
+  const io::rexs::RexsImport imported = config::importRexsFile(import_file_, options);
   // The text must read back as a gearbox file (it is what analyses will read).
   std::vector<std::string> model_warnings;
   const config::Config config =
@@ -91,7 +92,7 @@ int RexsCommands::runExport() const {
   std::vector<std::string> warnings;
   config::gearTrainFromConfig(config, warnings);  // refuse what would not build
   warnings.clear();
-  const std::string json = io::rexs::exportRexsJson(config, warnings);
+  const std::string json = io::rexs::exportRexsJson(config.resolved(), warnings);
   io::writeFileAtomic(export_out_, json);
   warnAll(warnings, quiet_);
   if (!quiet_)

@@ -16,13 +16,13 @@
 #include "analysis_command.h"
 #include "command.h"
 #include "geardyn/analysis/run_estimates.h"
+#include "geardyn/analysis/sweep_results.h"
 #include "geardyn/config/config.h"
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/config/renamed_keys.h"
 #include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/result_writer.h"
-#include "geardyn/io/sweep_results.h"
 #include "plotting.h"
 #include "progress.h"
 #include "sweep_runner.h"
@@ -66,10 +66,10 @@ struct BaseFile {
 };
 
 /// Runs one case in-process into its own folder and reads its summary.
-io::SweepCaseRecord runCase(const BaseFile& base, const config::SweepDefinition& study,
-                            long long index, const fs::path& cases_dir) {
+analysis::SweepCaseRecord runCase(const BaseFile& base, const config::SweepDefinition& study,
+                                  long long index, const fs::path& cases_dir) {
   const StudyCase c = study.caseAt(index);
-  io::SweepCaseRecord r;
+  analysis::SweepCaseRecord r;
   r.index = index;
   r.values = c.values;
   r.seed = c.seed;
@@ -90,7 +90,7 @@ io::SweepCaseRecord runCase(const BaseFile& base, const config::SweepDefinition&
     std::vector<std::string> missing;
     for (std::size_t k = 0; k < study.outputs.size(); ++k) {
       bool ok = false;
-      r.outputs[k] = io::outputValue(summary["results"], study.outputs[k].pointer, &ok);
+      r.outputs[k] = analysis::outputValue(summary["results"], study.outputs[k].pointer, &ok);
       if (!ok) missing.push_back(study.outputs[k].pointer);
     }
     if (!missing.empty()) {
@@ -119,13 +119,13 @@ io::SweepCaseRecord runCase(const BaseFile& base, const config::SweepDefinition&
 }
 
 nlohmann::ordered_json outputStatistics(const config::SweepDefinition& study,
-                                        const std::vector<io::SweepCaseRecord>& records) {
+                                        const std::vector<analysis::SweepCaseRecord>& records) {
   nlohmann::ordered_json stats = nlohmann::ordered_json::object();
   for (std::size_t k = 0; k < study.outputs.size(); ++k) {
     // Two passes over the data shifted by its first value (Chan, Golub & LeVeque 1983): the
     // mean of the deviations, then their corrected sum of squares. No cancellation of
     // sum(x²) − n mean², and a constant column has mean x and std 0 exactly.
-    const auto usable = [&](const io::SweepCaseRecord& r) {
+    const auto usable = [&](const analysis::SweepCaseRecord& r) {
       return r.status == "ok" && std::isfinite(r.outputs[k]);
     };
     double shift = NAN, sum = 0, lo = INFINITY, hi = -INFINITY;
@@ -331,10 +331,10 @@ int runSweep(const CommandOptions& options) {
                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (mpi && options.threads == 0) threads = 1;  // one worker per rank unless told otherwise
 
-  std::vector<io::SweepCaseRecord> records;
+  std::vector<analysis::SweepCaseRecord> records;
   std::vector<bool> have;
   std::vector<long long> pending;
-  std::unique_ptr<io::SweepJournal> journal;
+  std::unique_ptr<analysis::SweepJournal> journal;
   long long resumed = 0;
   std::exception_ptr setup_error;
   if (root) {
@@ -347,7 +347,7 @@ int runSweep(const CommandOptions& options) {
       fs::create_directories(cases_dir);
       // A command that reads other files than its base (train's gearbox) has them in the
       // fingerprint too: editing the gearbox file invalidates the journal.
-      journal = std::make_unique<io::SweepJournal>(
+      journal = std::make_unique<analysis::SweepJournal>(
           folder / "sweep_journal.jsonl",
           study.fingerprint(command.load_file ? base.resolved().dump() : ""), options.resume);
     } catch (...) {
@@ -383,7 +383,7 @@ int runSweep(const CommandOptions& options) {
   const CaseFunction run_case = [&](long long index) {
     return runCase(base_file, study, index, cases_dir);
   };
-  const DoneFunction done = [&](const io::SweepCaseRecord& r) {
+  const DoneFunction done = [&](const analysis::SweepCaseRecord& r) {
     journal->append(r);
     records[r.index] = r;
     have[r.index] = true;
@@ -395,7 +395,7 @@ int runSweep(const CommandOptions& options) {
   std::exception_ptr probe_error;
   if (root && !pending.empty()) {
     try {
-      const io::SweepCaseRecord first = run_case(pending.front());
+      const analysis::SweepCaseRecord first = run_case(pending.front());
       done(first);
       pending.erase(pending.begin());
       if (first.status == "missing_output")
@@ -420,9 +420,9 @@ int runSweep(const CommandOptions& options) {
   io::ResultWriter writer(folder);
   // The journal is not listed among the summary's files: a later run's ResultWriter removes
   // listed files, and the journal must survive for --resume.
-  io::writeSweepHdf5(writer.pathFor("sweep.h5"), study, records, base.resolved().dump());
+  analysis::writeSweepHdf5(writer.pathFor("sweep.h5"), study, records, base.resolved().dump());
   writer.recordFile("sweep.h5");
-  writer.writeCsv("sweep.csv", io::sweepTable(study, records));
+  writer.writeCsv("sweep.csv", analysis::sweepTable(study, records));
   long long failed = 0;
   std::map<std::string, long long> by_status;
   for (const auto& r : records) {

@@ -20,7 +20,7 @@ namespace {
 /// Records finished by worker threads, handed to the calling thread.
 class DoneQueue {
  public:
-  void push(io::SweepCaseRecord r) {
+  void push(analysis::SweepCaseRecord r) {
     {
       std::lock_guard<std::mutex> lock(m_);
       q_.push_back(std::move(r));
@@ -28,10 +28,10 @@ class DoneQueue {
     cv_.notify_one();
   }
   /// Waits up to `wait` for records; returns what is there.
-  std::deque<io::SweepCaseRecord> take(std::chrono::microseconds wait) {
+  std::deque<analysis::SweepCaseRecord> take(std::chrono::microseconds wait) {
     std::unique_lock<std::mutex> lock(m_);
     cv_.wait_for(lock, wait, [&] { return !q_.empty(); });
-    std::deque<io::SweepCaseRecord> out;
+    std::deque<analysis::SweepCaseRecord> out;
     out.swap(q_);
     return out;
   }
@@ -39,7 +39,7 @@ class DoneQueue {
  private:
   std::mutex m_;
   std::condition_variable cv_;
-  std::deque<io::SweepCaseRecord> q_;
+  std::deque<analysis::SweepCaseRecord> q_;
 };
 
 /// The shared queue of case indices (local threads and, under MPI, remote ranks).
@@ -166,7 +166,7 @@ void MpiWorld::runCases(const std::vector<long long>& pending, int threads,
       }
       mpi_->send_index(index, source, kTagWork);
       if (!payload.empty()) {
-        done(io::SweepCaseRecord::fromJson(nlohmann::json::parse(payload)));
+        done(analysis::SweepCaseRecord::fromJson(nlohmann::json::parse(payload)));
         ++received;
       }
     }

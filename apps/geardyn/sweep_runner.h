@@ -9,16 +9,16 @@
 #include <functional>
 #include <vector>
 
+#include "geardyn/analysis/sweep_results.h"
 #include "geardyn/config/sweep_config.h"
-#include "geardyn/io/sweep_results.h"
 
 namespace geardyn::cli {
 
 struct MpiTransport;
 
-using CaseFunction = std::function<io::SweepCaseRecord(long long index)>;
+using CaseFunction = std::function<analysis::SweepCaseRecord(long long index)>;
 /// Called on the calling thread (rank 0), one record at a time.
-using DoneFunction = std::function<void(const io::SweepCaseRecord&)>;
+using DoneFunction = std::function<void(const analysis::SweepCaseRecord&)>;
 
 /// Runs the `pending` cases on `threads` worker threads.
 void runCasesOnThreads(const std::vector<long long>& pending, int threads,

@@ -9,8 +9,9 @@
 #include "analysis_command.h"
 #include "geardyn/analysis/analyses.h"
 #include "geardyn/config/output_section.h"
-#include "geardyn/io/rexs/rexs_gearbox.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/error.h"
+#include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
 
 namespace geardyn::cli {
@@ -35,7 +36,7 @@ int runTrain(const CommandOptions& options) {
   if (!io::rexs::isRexsPath(loaded.gearbox_source) || loaded.analysis.has("gearbox.load_case"))
     throw InputError("gearbox.all_load_cases", "true",
                      "only with a REXS gearbox file and without gearbox.load_case");
-  const auto cases = io::rexs::importRexsFile(loaded.gearbox_source).load_cases;
+  const auto cases = config::importRexsFile(loaded.gearbox_source).load_cases;
   if (cases.empty())
     throw InputError("gearbox.all_load_cases", "true",
                      loaded.gearbox_source + " has no load spectrum");

@@ -4,6 +4,14 @@
 
 #include <chrono>
 
+#include "geardyn/analysis/geometry_results.h"
+#include "geardyn/analysis/hbm_results.h"
+#include "geardyn/analysis/identify_results.h"
+#include "geardyn/analysis/ltca_results.h"
+#include "geardyn/analysis/rotor_results.h"
+#include "geardyn/analysis/simulate_results.h"
+#include "geardyn/analysis/stats_results.h"
+#include "geardyn/analysis/stiffness_results.h"
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
@@ -17,14 +25,6 @@
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
-#include "geardyn/io/geometry_results.h"
-#include "geardyn/io/hbm_results.h"
-#include "geardyn/io/identify_results.h"
-#include "geardyn/io/ltca_results.h"
-#include "geardyn/io/rotor_results.h"
-#include "geardyn/io/simulate_results.h"
-#include "geardyn/io/stats_results.h"
-#include "geardyn/io/stiffness_results.h"
 
 namespace geardyn::analysis {
 namespace {

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/geometry_results.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_results.h"
 
 namespace geardyn::analysis {
 
@@ -16,9 +16,9 @@ AnalysisResult geometryAnalysis(const config::Config& config, const AnalysisCont
   AnalysisResult result("geometry", config, context);
   io::RunSummary& summary = result.summary;
   summary.warnings = pair.warnings();
-  summary.results = io::toJson(pair);
-  result.addTable("gears.csv", io::memberTable(pair));
-  result.addTable("tooth_profiles.csv", io::toothProfileTable(pair));
+  summary.results = analysis::toJson(pair);
+  result.addTable("gears.csv", analysis::memberTable(pair));
+  result.addTable("tooth_profiles.csv", analysis::toothProfileTable(pair));
 
   const auto mm = [](double metres) { return metres * 1e3; };
   result.report = fmt::format(

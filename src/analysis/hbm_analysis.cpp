@@ -7,18 +7,18 @@
 #include <numbers>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/hbm_results.h"
+#include "geardyn/analysis/simulate_results.h"
 #include "geardyn/config/hbm_config.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/hbm_results.h"
-#include "geardyn/io/simulate_results.h"
 
 namespace geardyn::analysis {
 namespace {
 
 /// p2p of the stable branches of one sweep at frequency f (linear interpolation between
 /// consecutive stable points that bracket it).
-std::vector<double> stableP2pAt(const std::vector<io::SweepRow>& rows, double f) {
+std::vector<double> stableP2pAt(const std::vector<analysis::SweepRow>& rows, double f) {
   std::vector<double> values;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const auto& a = rows[i - 1];
@@ -74,7 +74,7 @@ ContinuationOptions continuationOptions(const config::Config& config,
 
 /// The sweeps' points as rows, their folds, bifurcations and per-sweep record in summary.json.
 struct SweepRecord {
-  std::vector<io::SweepRow> rows;
+  std::vector<analysis::SweepRow> rows;
   nlohmann::ordered_json folds = nlohmann::ordered_json::array();
   nlohmann::ordered_json bifurcations = nlohmann::ordered_json::array();
   nlohmann::ordered_json sweeps = nlohmann::ordered_json::object();
@@ -88,7 +88,8 @@ SweepRecord recordSweeps(const SweepRuns& runs, HarmonicBalance& hbm, const Gear
   auto& rows = record.rows;
   for (const auto& [which, run] : runs) {
     const std::size_t first = rows.size();
-    for (const auto& p : run.points) rows.push_back(io::sweepRow(hbm, model, p, which, scale));
+    for (const auto& p : run.points)
+      rows.push_back(analysis::sweepRow(hbm, model, p, which, scale));
     for (std::size_t index : run.folds) {
       record.folds.push_back({{"sweep", which},
                               {"frequency", rows[first + index].frequency},
@@ -115,8 +116,8 @@ SweepRecord recordSweeps(const SweepRuns& runs, HarmonicBalance& hbm, const Gear
 
 /// newmark.csv: Newmark runs at `sweep.newmark_frequencies` against the stable branches there.
 void addNewmarkChecks(const config::Config& config, const GearPairModel& model,
-                      const std::vector<io::SweepRow>& rows, double scale, bool nondimensional,
-                      AnalysisResult& result) {
+                      const std::vector<analysis::SweepRow>& rows, double scale,
+                      bool nondimensional, AnalysisResult& result) {
   const auto newmark_frequencies = config.realList("sweep.newmark_frequencies");
   if (newmark_frequencies.empty()) return;
   const std::string u = nondimensional ? "nondim" : "m";
@@ -129,7 +130,7 @@ void addNewmarkChecks(const config::Config& config, const GearPairModel& model,
     spec.mesh_frequency = f * scale / (2.0 * std::numbers::pi);
     const GearPairModel at(spec);
     const TimeResponse r = solveTimeResponse(at, config::timeResponseOptionsFromConfig(config));
-    const io::TimeResponseChannels c = io::channelsOf(at, r);
+    const analysis::TimeResponseChannels c = analysis::channelsOf(at, r);
     const double p2p =
         *std::max_element(c.y.begin(), c.y.end()) - *std::min_element(c.y.begin(), c.y.end());
     const auto candidates = stableP2pAt(rows, f);
@@ -156,8 +157,9 @@ void addNewmarkChecks(const config::Config& config, const GearPairModel& model,
 /// `hbm.detail_frequencies` (solved there from the neighbours' interpolated coefficients).
 void addDetailPeriods(const config::Config& config, HarmonicBalance& hbm,
                       const GearPairModel& model, const SweepRuns& runs,
-                      const std::vector<io::SweepRow>& rows, double scale, bool nondimensional,
-                      StabilityMethod stability_method, AnalysisResult& result) {
+                      const std::vector<analysis::SweepRow>& rows, double scale,
+                      bool nondimensional, StabilityMethod stability_method,
+                      AnalysisResult& result) {
   int detail = 0;
   for (double f : config.realList("hbm.detail_frequencies")) {
     std::vector<double> found;  // p2p of the solutions written at f (the sweeps meet the same ones)
@@ -278,7 +280,7 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
                      {"samples_per_period", hbm_options.samples_per_period},
                      {"natural_frequency", build.natural_frequency / scale}};
   result.addTable("sweep.csv",
-                  io::sweepTable(record.rows, hbm_options.harmonics, build.nondimensional));
+                  analysis::sweepTable(record.rows, hbm_options.harmonics, build.nondimensional));
   addNewmarkChecks(config, model, record.rows, scale, build.nondimensional, result);
   addDetailPeriods(config, hbm, model, runs, record.rows, scale, build.nondimensional,
                    sweep.stability_method, result);

@@ -8,24 +8,24 @@
 #include <numbers>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/identify_results.h"
+#include "geardyn/analysis/rotor_results.h"
 #include "geardyn/config/identify_config.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/identify_results.h"
-#include "geardyn/io/rotor_results.h"
 
 namespace geardyn::analysis {
 
 namespace {
 
 /// The spectra `input.spectra` names (result folders, relative to the configuration's folder).
-std::vector<io::WhirlSpectrumInput> readInputs(const config::Config& config,
-                                               const std::filesystem::path& base) {
-  std::vector<io::WhirlSpectrumInput> inputs;
+std::vector<analysis::WhirlSpectrumInput> readInputs(const config::Config& config,
+                                                     const std::filesystem::path& base) {
+  std::vector<analysis::WhirlSpectrumInput> inputs;
   for (const auto& entry : config.stringList("input.spectra")) {
     std::filesystem::path folder = entry;
     if (folder.is_relative()) folder = base / folder;
-    inputs.push_back(io::readWhirlSpectrum(folder, "input.spectra"));
+    inputs.push_back(analysis::readWhirlSpectrum(folder, "input.spectra"));
   }
   if (inputs.empty()) throw InputError("input.spectra", "[]", "name at least one result folder");
   return inputs;
@@ -35,7 +35,7 @@ std::vector<io::WhirlSpectrumInput> readInputs(const config::Config& config,
 /// input that records one; it must have the known rotor's tooth counts.
 std::optional<LateralRotorSpec> truthOf(const config::Config& config,
                                         const std::filesystem::path& base,
-                                        const std::vector<io::WhirlSpectrumInput>& inputs,
+                                        const std::vector<analysis::WhirlSpectrumInput>& inputs,
                                         const LateralRotorSpec& known) {
   std::optional<LateralRotorSpec> truth;
   if (config.has("truth.rotor_config")) {
@@ -73,9 +73,9 @@ std::pair<double, double> addResimulatedPeaks(const DteIdentification& r,
         std::complex<double> measured = 0.0;
         for (const auto& c : d.peaks[s])
           if (c.name == m.name) measured = c.value;
-        resim.addRow({60.0 * d.pinion_speed, std::string(io::kShaftNames[s]), m.name, m.frequency,
-                      measured.real(), measured.imag(), std::abs(measured), m.value.real(),
-                      m.value.imag(), std::abs(m.value)});
+        resim.addRow({60.0 * d.pinion_speed, std::string(analysis::kShaftNames[s]), m.name,
+                      m.frequency, measured.real(), measured.imag(), std::abs(measured),
+                      m.value.real(), m.value.imag(), std::abs(m.value)});
         worst = std::max(worst, std::abs(measured - m.value));
         largest = std::max(largest, std::abs(measured));
       }
@@ -189,7 +189,7 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
   AnalysisResult result("identify", config, context);
   const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
   const LateralRotorSpec known = config::knownRotorFromConfig(config);
-  const std::vector<io::WhirlSpectrumInput> inputs = readInputs(config, base);
+  const std::vector<analysis::WhirlSpectrumInput> inputs = readInputs(config, base);
   std::vector<MeasuredWhirlPeaks> data;
   for (const auto& in : inputs) data.push_back(in.peaks);
   const std::optional<LateralRotorSpec> truth = truthOf(config, base, inputs, known);
@@ -206,7 +206,7 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
 
   io::RunSummary& summary = result.summary;
   summary.status = r.converged ? "ok" : "not_converged";
-  result.addTable("identified.csv", io::identifiedTable(r, truth));
+  result.addTable("identified.csv", analysis::identifiedTable(r, truth));
   const auto [worst, largest] = addResimulatedPeaks(r, data, result);
 
   nlohmann::ordered_json inputs_json = nlohmann::ordered_json::array();
@@ -230,7 +230,7 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
         {"wall_time_s", seconds},
         {"resimulated_max_difference", worst},
         {"resimulated_relative_difference", largest > 0 ? worst / largest : 0.0}}},
-      {"identified", io::identifiedJson(r)},
+      {"identified", analysis::identifiedJson(r)},
       {"phase_reference",
        "the spectra's (t = 0 of a simulation, the first keyphasor pulse of a "
        "record); probe frame"}};

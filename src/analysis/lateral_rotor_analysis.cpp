@@ -10,11 +10,11 @@
 #include <random>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/rotor_results.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/config/rotor_gearbox.h"
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
-#include "geardyn/io/rotor_results.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/train_response.h"
 
@@ -204,8 +204,9 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
     }
     const GearPairSpectrum spectrum = analyseGearPairRecord(
         channels, time.sample_rate, time.t[time.window_begin], 0.0, setup, spectrum_options);
-    result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
-    result.addTable("full_spectrum.csv", io::fullSpectrumTable(spectrum.display, max_frequency));
+    result.addTable("spectrum_peaks.csv", analysis::whirlPeaksTable(spectrum.peaks));
+    result.addTable("full_spectrum.csv",
+                    analysis::fullSpectrumTable(spectrum.display, max_frequency));
     // Time domain against the exact solution, component by component.
     double largest = 0.0, amplitude_error = 0.0, phase_error = 0.0;
     for (int sh = 0; sh < 2; ++sh)
@@ -222,7 +223,7 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
                                             {"gear", spectrum.coefficient_sigma[1]}};
     summary.results["time_domain"]["extraction"] =
         spectrum.method == WhirlExtraction::kExactBins ? "exact_bins" : "least_squares";
-    summary.results["time_domain"]["peaks"] = io::whirlPeaksJson(spectrum.peaks);
+    summary.results["time_domain"]["peaks"] = analysis::whirlPeaksJson(spectrum.peaks);
     summary.results["time_vs_frequency"] = {
         {"max_relative_amplitude_difference", amplitude_error},
         {"max_phase_difference_rad", phase_error},
@@ -360,13 +361,13 @@ bool addParametricStudy(const config::Config& config, const LateralRotorModel& m
                                     setupOf(m), spectrum_options)
                   .peaks;
     } else {
-      peaks = io::frequencyDomainPeaks(gearboxWhirlResponse(m, config.source() + " " + c.name),
-                                       spectrum_options.frame);
+      peaks = analysis::frequencyDomainPeaks(
+          gearboxWhirlResponse(m, config.source() + " " + c.name), spectrum_options.frame);
     }
     nlohmann::ordered_json case_json = {{"case", c.name}, {"group", c.group}, {"factor", c.factor}};
     for (int sh = 0; sh < 2; ++sh) {
       for (const auto& p : peaks[sh]) {
-        table.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), p.name,
+        table.addRow({c.name, c.group, c.factor, std::string(analysis::kShaftNames[sh]), p.name,
                       p.frequency, std::abs(p.value), std::arg(p.value)});
       }
       std::array<double, 2> rms{whirlRms(peaks[sh], "mesh_"), whirlRms(peaks[sh], "")};
@@ -377,12 +378,12 @@ bool addParametricStudy(const config::Config& config, const LateralRotorModel& m
         if (c.group != "baseline")
           group_change[k][c.group] = std::max(group_change[k][c.group], std::abs(change[k]));
       }
-      totals.addRow({c.name, c.group, c.factor, std::string(io::kShaftNames[sh]), rms[0], change[0],
-                     rms[1], change[1]});
-      case_json[io::kShaftNames[sh]] = {{"mesh_rms_m", rms[0]},
-                                        {"mesh_relative_change", change[0]},
-                                        {"dynamic_rms_m", rms[1]},
-                                        {"dynamic_relative_change", change[1]}};
+      totals.addRow({c.name, c.group, c.factor, std::string(analysis::kShaftNames[sh]), rms[0],
+                     change[0], rms[1], change[1]});
+      case_json[analysis::kShaftNames[sh]] = {{"mesh_rms_m", rms[0]},
+                                              {"mesh_relative_change", change[0]},
+                                              {"dynamic_rms_m", rms[1]},
+                                              {"dynamic_relative_change", change[1]}};
     }
     cases_json.push_back(case_json);
   }
@@ -446,7 +447,7 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
   summary.results["damping"] = {{"pinion_shaft", s.pinion_shaft_damping},
                                 {"gear_shaft", s.gear_shaft_damping},
                                 {"mesh", s.mesh_damping}};
-  summary.results["conventions"] = io::whirlConventionsJson(
+  summary.results["conventions"] = analysis::whirlConventionsJson(
       spectrum_options.frame,
       "t = 0 of the simulation (≡ any multiple of the common period in steady state), where the "
       "pinion and gear angles are their runout phases");
@@ -457,10 +458,10 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
   const auto parts = gearboxWhirlResponse(model, config.source());
   const double frequency_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const auto exact = io::frequencyDomainPeaks(parts, spectrum_options.frame);
-  result.addTable("frequency_components.csv", io::whirlPeaksTable(exact));
+  const auto exact = analysis::frequencyDomainPeaks(parts, spectrum_options.frame);
+  result.addTable("frequency_components.csv", analysis::whirlPeaksTable(exact));
   summary.results["frequency_domain"] = {{"wall_time_s", frequency_seconds},
-                                         {"peaks", io::whirlPeaksJson(exact)}};
+                                         {"peaks", analysis::whirlPeaksJson(exact)}};
 
   std::string text = fmt::format(
       "lateral geared rotor: pinion {:.6g} Hz, gear {:.6g} Hz, mesh {:.6g} Hz, common period "
@@ -483,7 +484,7 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
     for (const auto& c : exact[sh])
       if (c.name.rfind("mesh_1_", 0) == 0) mesh1 = std::max(mesh1, std::abs(c.value));
     text += fmt::format("  {} shaft: static |z| {:.4g} m, largest 1st-mesh whirl {:.4g} m\n",
-                        io::kShaftNames[sh], std::abs(exact[sh].front().value), mesh1);
+                        analysis::kShaftNames[sh], std::abs(exact[sh].front().value), mesh1);
   }
   result.report = text;
   result.numerical_failure = !ok;

@@ -7,12 +7,12 @@
 #include <chrono>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/geometry_results.h"
+#include "geardyn/analysis/ltca_results.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/ltca_config.h"
 #include "geardyn/contact/face_load.h"
 #include "geardyn/error.h"
-#include "geardyn/io/geometry_results.h"
-#include "geardyn/io/ltca_results.h"
 #include "train_loaded_contact_analysis.h"
 
 namespace geardyn::analysis {
@@ -41,7 +41,7 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
                     context.progressFor("ltca: loaded contact", "positions"));
   const double sweep_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.addTable("ltca.csv", io::ltcaTable(points, force));
+  result.addTable("ltca.csv", analysis::ltcaTable(points, force));
   const FaceLoadDistribution face = faceLoadDistribution(
       contact, force, std::vector<LoadedContactPoint>(points.begin(), points.begin() + positions));
   detail::addFaceLoadTables(face, "face_load", result);
@@ -97,7 +97,7 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
         harrisMap(contact, loads, positions, 3, context.progressFor("ltca: Harris map", "loads"));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    result.addTable("harris.csv", io::harrisTable(map));
+    result.addTable("harris.csv", analysis::harrisTable(map));
     const auto best = std::min_element(
         map.begin(), map.end(), [](auto& a, auto& b) { return a.peak_to_peak < b.peak_to_peak; });
     summary.results["harris"] = {{"loads", loads.size()},
@@ -145,7 +145,7 @@ AnalysisResult ltcaAnalysis(const config::Config& config, const AnalysisContext&
     const auto stats = meanExcitationAgainstLoad(
         contact, *design, config.realList("statistics.load_factors"), positions, &k_bar,
         context.progressFor("ltca: statistics against load", "loads"));
-    result.addTable("load_statistics.csv", io::loadStatisticsTable(stats));
+    result.addTable("load_statistics.csv", analysis::loadStatisticsTable(stats));
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (const auto& s : stats) {
       rows.push_back({{"a", s.a},

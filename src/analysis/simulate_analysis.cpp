@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/simulate_results.h"
 #include "geardyn/config/simulate_config.h"
-#include "geardyn/io/simulate_results.h"
 
 namespace geardyn::analysis {
 
@@ -16,15 +16,15 @@ AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisCont
   context.checkBudget("simulate");  // before it allocates
   solver.progress = context.progressFor("simulate", "periods of max_periods");
   const TimeResponse response = solveTimeResponse(model, solver);
-  const io::TimeResponseChannels channels = io::channelsOf(model, response);
+  const analysis::TimeResponseChannels channels = analysis::channelsOf(model, response);
 
   AnalysisResult result("simulate", config, context);
   io::RunSummary& summary = result.summary;
   summary.warnings = build.warnings;
   summary.status = toString(response.status);
-  summary.results = io::timeResponseResultsJson(
+  summary.results = analysis::timeResponseResultsJson(
       build, model, response, channels, static_cast<int>(config.integer("solver.harmonics")));
-  result.addTable("time_response.csv", io::timeResponseTable(channels, build.nondimensional));
+  result.addTable("time_response.csv", analysis::timeResponseTable(channels, build.nondimensional));
 
   std::string& text = result.report;
   text =

@@ -8,10 +8,10 @@
 #include <random>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/rotor_results.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
-#include "geardyn/io/rotor_results.h"
 
 namespace geardyn::analysis {
 
@@ -104,9 +104,9 @@ AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisCont
 
   io::RunSummary& summary = result.summary;
   if (noise > 0.0) summary.seed = seed;
-  result.addTable("spectrum_peaks.csv", io::whirlPeaksTable(spectrum.peaks));
+  result.addTable("spectrum_peaks.csv", analysis::whirlPeaksTable(spectrum.peaks));
   result.addTable("full_spectrum.csv",
-                  io::fullSpectrumTable(
+                  analysis::fullSpectrumTable(
                       spectrum.display,
                       config.optionalReal("spectrum.max_frequency").value_or(1.25 * highest)));
   io::CsvTable history({"t_s", "x1_m", "y1_m", "x2_m", "y2_m"});
@@ -131,15 +131,15 @@ AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisCont
       {"extraction",
        spectrum.method == WhirlExtraction::kExactBins ? "exact_bins" : "least_squares"},
       {"conventions",
-       io::whirlConventionsJson(spectrum_options.frame,
-                                use_keyphasor
-                                    ? "the first keyphasor pulse (pinion angle 0; the gear angle "
-                                      "is taken as 0 there too, the gear-ratio adjustment of "
-                                      "thesis §5.5)"
-                                    : "the record's first sample")},
+       analysis::whirlConventionsJson(
+           spectrum_options.frame,
+           use_keyphasor ? "the first keyphasor pulse (pinion angle 0; the gear angle "
+                           "is taken as 0 there too, the gear-ratio adjustment of "
+                           "thesis §5.5)"
+                         : "the record's first sample")},
       {"coefficient_noise",
        {{"pinion", spectrum.coefficient_sigma[0]}, {"gear", spectrum.coefficient_sigma[1]}}},
-      {"peaks", io::whirlPeaksJson(spectrum.peaks)}};
+      {"peaks", analysis::whirlPeaksJson(spectrum.peaks)}};
   if (!keyphasor_json.is_null()) summary.results["keyphasor"] = keyphasor_json;
   std::string text = fmt::format(
       "full spectra of {} ({} samples at {:g} Hz, {} analysed): pinion {:.6g} Hz, mesh {:.6g} "
@@ -151,8 +151,8 @@ AnalysisResult spectrumAnalysis(const config::Config& config, const AnalysisCont
     const auto top = std::max_element(
         peaks.begin() + 1, peaks.end(),
         [](const auto& a, const auto& b) { return std::abs(a.value) < std::abs(b.value); });
-    text += fmt::format("  {} shaft: largest whirl {} {:.4g} m at {:.6g} Hz\n", io::kShaftNames[sh],
-                        top->name, std::abs(top->value), top->frequency);
+    text += fmt::format("  {} shaft: largest whirl {} {:.4g} m at {:.6g} Hz\n",
+                        analysis::kShaftNames[sh], top->name, std::abs(top->value), top->frequency);
   }
   result.report = text;
   return result;

@@ -5,10 +5,10 @@
 #include <thread>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/simulate_results.h"
+#include "geardyn/analysis/stats_results.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/config/stats_config.h"
-#include "geardyn/io/simulate_results.h"
-#include "geardyn/io/stats_results.h"
 
 namespace geardyn::analysis {
 
@@ -41,12 +41,12 @@ AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext
       mc.progress = context.progressFor("stats: Monte Carlo", "samples");
       const auto samples = runMeanExcitationMonteCarlo(model, mc);
       summary.seed = mc.seed;
-      summary.results["monte_carlo"] = io::monteCarloJson(mc, samples);
-      monte_carlo_tables.emplace_back("monte_carlo.csv", io::monteCarloTable(samples));
+      summary.results["monte_carlo"] = analysis::monteCarloJson(mc, samples);
+      monte_carlo_tables.emplace_back("monte_carlo.csv", analysis::monteCarloTable(samples));
       monte_carlo_tables.emplace_back(
           "histogram.csv",
-          io::histogramTable(samples,
-                             static_cast<int>(config.integer("monte_carlo.histogram_bins"))));
+          analysis::histogramTable(samples,
+                                   static_cast<int>(config.integer("monte_carlo.histogram_bins"))));
     }
     if (config.boolean("stats.simulate")) {
       if (model.contact() != ContactLaw::kLinear) {
@@ -74,7 +74,7 @@ AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext
     }
   }
   context.warnings(summary.warnings);
-  summary.results["mean_excitation"] = io::toJson(stats);
+  summary.results["mean_excitation"] = analysis::toJson(stats);
 
   for (const auto& [name, table] : monte_carlo_tables) result.addTable(name, table);
   std::string text =

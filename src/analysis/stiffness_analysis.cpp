@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include "geardyn/analysis/analyses.h"
+#include "geardyn/analysis/geometry_results.h"
+#include "geardyn/analysis/stiffness_results.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/io/geometry_results.h"
-#include "geardyn/io/stiffness_results.h"
 
 namespace geardyn::analysis {
 
@@ -20,15 +20,15 @@ AnalysisResult stiffnessAnalysis(const config::Config& config, const AnalysisCon
   summary.warnings = pair.warnings();
   summary.warnings.insert(summary.warnings.end(), models.warnings.begin(), models.warnings.end());
   context.warnings(summary.warnings);
-  summary.results = io::stiffnessResultsJson(config, pair, models);
+  summary.results = analysis::stiffnessResultsJson(config, pair, models);
   summary.results["geometry"] = {
       {"contact_ratio_transverse", pair.contactRatioTransverse()},
       {"overlap_ratio", pair.overlapRatio()},
       {"base_pitch_transverse", pair.basePitchTransverse()},
       {"mesh_frequency",
        pair.meshFrequency() ? nlohmann::ordered_json(*pair.meshFrequency()) : nullptr}};
-  result.addTable("mesh_stiffness.csv", io::stiffnessCurveTable(config, pair, models));
-  result.addTable("fourier.csv", io::fourierTable(summary.results["models"]));
+  result.addTable("mesh_stiffness.csv", analysis::stiffnessCurveTable(config, pair, models));
+  result.addTable("fourier.csv", analysis::fourierTable(summary.results["models"]));
 
   std::string& text = result.report;
   text = fmt::format("mesh stiffness of {}/{} teeth, contact ratio [-] {:.6f}\n",

@@ -25,6 +25,7 @@
 #include "geardyn/analysis/run_estimates.h"
 #include "geardyn/config/fe_rotor_config.h"
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
@@ -394,8 +395,7 @@ TrainInputs parseTrainInputs(std::string_view text, const std::string& source,
     load_case = static_cast<int>(analysis.integer("gearbox.load_case"));
   std::vector<std::string> warnings;
   // A REXS file is imported in memory and read by the same gearTrainFromConfig as a TOML one.
-  config::Config gearbox =
-      io::rexs::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
+  config::Config gearbox = config::loadGearboxConfig(path, gearbox_overrides, load_case, warnings);
   return {analysis, gearbox, source, path.string(), warnings};
 }
 

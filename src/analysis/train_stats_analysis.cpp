@@ -9,9 +9,9 @@
 #include <cmath>
 #include <optional>
 
+#include "geardyn/analysis/stats_results.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
-#include "geardyn/io/stats_results.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stats/train_mesh_statistics.h"
@@ -125,7 +125,7 @@ int runTrainStats(const GearTrainModel& model, const config::Config& analysis,
       mesh["mean_excitation_ratio"] = s.excitation->ratio;
       mesh["simulated_mean_excitation_ratio"] = s.simulated_ratio;
       mesh["dynamic_factor"] = s.dynamic_factor;
-      mesh["mean_excitation"] = io::toJson(*s.excitation);
+      mesh["mean_excitation"] = analysis::toJson(*s.excitation);
       mesh["simulated_dynamic_mean_excitation"] = s.simulated_dynamic_mean_excitation;
       text += fmt::format(
           "  {:<16} R {:.6f} [-] (simulated {:.6f} [-]), dynamic factor {:.4f} [-], force rms "

@@ -245,7 +245,7 @@ void readStiffness(const Config& config, GearPairKeys& k) {
   }
   if (type == "ltca") {
     // The mesh linearised about the mean force F: F = K(φ)(δ − E(φ)) with K the tangent
-    // stiffness of the loaded contact and E = δ − F/K (contact/load_statistics.h).
+    // stiffness of the loaded contact and E = δ − F/K (stats/load_statistics.h).
     if (k.nondimensional) {
       throw InputError("model.stiffness.type", "\"ltca\"", "needs SI units (model.units)");
     }

@@ -16,6 +16,7 @@
 #include "geardyn/config/did_you_mean.h"
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/ltca_config.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/config/toml_parse.h"
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
@@ -135,7 +136,7 @@ Config loadLtcaOnGearboxMesh(const std::filesystem::path& file, const ConfigSche
   }
   std::vector<std::string> warnings;
   const Config gearbox =
-      io::rexs::loadGearboxConfig(file.parent_path() / ref, {}, std::nullopt, warnings);
+      config::loadGearboxConfig(file.parent_path() / ref, {}, std::nullopt, warnings);
   const std::vector<std::string> names = gearbox.names("meshes");
   if (std::find(names.begin(), names.end(), mesh) == names.end()) {
     std::string allowed = "a mesh of the gearbox's [meshes]:";

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "geardyn/config/did_you_mean.h"
+#include "geardyn/did_you_mean.h"
 #include "geardyn/error.h"
 
 namespace geardyn::io {
@@ -97,7 +97,7 @@ const std::vector<double>& NumericCsv::column(const std::string& name,
   const auto it = data_.find(name);
   if (it == data_.end()) {
     std::string hint;
-    if (auto match = config::closestMatch(name, names_))
+    if (auto match = closestMatch(name, names_))
       hint = fmt::format("; did you mean \"{}\"?", *match);
     std::string all;
     for (const auto& n : names_) all += (all.empty() ? "" : ", ") + n;

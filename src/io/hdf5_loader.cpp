@@ -29,7 +29,12 @@ const Hdf5ModuleApi& hdf5Module() {
   return *api;
 }
 
+}  // namespace geardyn::io::detail
+
+namespace geardyn::io {
+
 void writeHdf5File(const std::string& path, const Hdf5Content& content) {
+  using namespace detail;
   const std::filesystem::path target(path);
   const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
   std::filesystem::create_directories(folder);
@@ -48,4 +53,4 @@ void writeHdf5File(const std::string& path, const Hdf5Content& content) {
   commitTemporary(temp, target);
 }
 
-}  // namespace geardyn::io::detail
+}  // namespace geardyn::io

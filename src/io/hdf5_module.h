@@ -11,33 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "geardyn/io/hdf5_file.h"
+
 namespace geardyn::io::detail {
 
-/// A dataset to write: 1-D (cols == 0) or 2-D row-major, of one element type.
-struct Hdf5Dataset {
-  enum class Type { kFloat64, kInt64, kUInt64, kString };
-  std::string name;
-  Type type = Type::kFloat64;
-  std::uint64_t rows = 0, cols = 0;
-  std::vector<double> f64;
-  std::vector<std::int64_t> i64;
-  std::vector<std::uint64_t> u64;
-  std::vector<std::string> text;  ///< variable-length UTF-8
-};
-
-/// A root attribute: a number (one float64, stored as a 1-element array) or a UTF-8 string.
-struct Hdf5Attribute {
-  std::string name;
-  bool is_text = false;
-  double number = 0.0;
-  std::string text;
-};
-
-/// A whole file: root attributes (written first), then datasets at the root.
-struct Hdf5Content {
-  std::vector<Hdf5Attribute> attributes;
-  std::vector<Hdf5Dataset> datasets;
-};
+using io::Hdf5Attribute;
+using io::Hdf5Content;
+using io::Hdf5Dataset;
+using io::writeHdf5File;
 
 /// Results of the reading functions.
 enum Hdf5Read : int {
@@ -72,10 +53,6 @@ struct Hdf5ModuleApi {
 /// The loaded module (loaded on the first call; IoError naming where it was searched when it
 /// cannot be loaded).
 const Hdf5ModuleApi& hdf5Module();
-
-/// Writes `content` to `path` atomically (temporary file beside it, then rename) under
-/// hdf5Mutex(); IoError naming the path on failure.
-void writeHdf5File(const std::string& path, const Hdf5Content& content);
 
 }  // namespace geardyn::io::detail
 

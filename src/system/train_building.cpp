@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "geardyn/config/did_you_mean.h"
+#include "geardyn/did_you_mean.h"
 #include "geardyn/error.h"
 
 namespace geardyn::detail {
@@ -15,8 +15,7 @@ namespace {
 [[noreturn]] void unknownName(const std::string& name, const std::string& key,
                               const std::vector<std::string>& known, const char* what) {
   std::string hint;
-  if (auto match = config::closestMatch(name, known))
-    hint = fmt::format("; did you mean \"{}\"?", *match);
+  if (auto match = closestMatch(name, known)) hint = fmt::format("; did you mean \"{}\"?", *match);
   std::string list;
   for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
   throw InputError(key, "\"" + name + "\"",

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "geardyn/config/did_you_mean.h"
+#include "geardyn/did_you_mean.h"
 #include "geardyn/error.h"
 #include "geardyn/system/detail/train_building.h"
 #include "geardyn/system/gear_train_model.h"
@@ -18,7 +18,7 @@ namespace {
 
 /// " (did you mean \"x\"?)" when a candidate is close, else "".
 std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates) {
-  const auto match = config::closestMatch(word, candidates);
+  const auto match = closestMatch(word, candidates);
   return match ? " (did you mean \"" + *match + "\"?)" : "";
 }
 

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geardyn/contact/load_statistics.h"
 #include "geardyn/solvers/time_response.h"
+#include "geardyn/stats/load_statistics.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 #include "support/reference_pairs.h"
 

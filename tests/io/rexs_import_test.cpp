@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/rexs_gearbox_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/rexs/rexs_gearbox.h"
 #include "geardyn/io/rexs/rexs_reader.h"
@@ -42,7 +43,7 @@ struct Imported {
 Imported importFile(const std::string& name, std::optional<int> load_case = {}) {
   io::rexs::RexsImportOptions options;
   options.load_case = load_case;
-  auto rexs = io::rexs::importRexsFile(rexsDir() / name, options);
+  auto rexs = config::importRexsFile(rexsDir() / name, options);
   config::Config config = config::parseConfig(rexs.toml, name, config::gearboxSchema());
   std::vector<std::string> warnings;
   GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
@@ -283,11 +284,11 @@ TEST(RexsImport, RoundTripImportExportImport) {
     SCOPED_TRACE(file);
     const Imported first = importFile(file);
     std::vector<std::string> warnings;
-    const std::string json = io::rexs::exportRexsJson(first.config, warnings);
+    const std::string json = io::rexs::exportRexsJson(first.config.resolved(), warnings);
     auto doc = io::rexs::parseRexsJson(json, "exported.rexsj");
     io::rexs::normalize(doc, warnings);
     io::rexs::checkReferences(doc);
-    const auto again = io::rexs::importRexsGearbox(doc);
+    const auto again = config::importRexsGearbox(doc);
     const config::Config second =
         config::parseConfig(again.toml, "exported.rexsj", config::gearboxSchema());
     expectSameJson(first.config.resolved(), second.resolved(), "");
@@ -299,7 +300,7 @@ std::string errorOf(const std::string& name, const std::string& text) {
   const fs::path path = fs::temp_directory_path() / ("geardyn_rexs_test_" + name);
   std::ofstream(path) << text;
   try {
-    io::rexs::importRexsFile(path);
+    config::importRexsFile(path);
   } catch (const InputError& e) {
     fs::remove(path);
     return e.what();
@@ -345,7 +346,7 @@ TEST(RexsImport, BadInputNamesTheComponent) {
   EXPECT_NE(missing.find("component 99"), std::string::npos) << missing;
   // A document built in code (not through the file reader) is checked by the mapping too.
   EXPECT_THROW(
-      io::rexs::importRexsGearbox(io::rexs::parseRexsXml(smallModel("99", teeth, "mm"), "m")),
+      config::importRexsGearbox(io::rexs::parseRexsXml(smallModel("99", teeth, "mm"), "m")),
       InputError);
   const std::string no_teeth = errorOf("noteeth.rexs", smallModel("4", "", "mm"));
   EXPECT_NE(no_teeth.find("component 4 (cylindrical_gear \"Pinion\") attribute number_of_teeth"),
@@ -407,7 +408,7 @@ const char* kSmallJson = R"({"model": {"version": "1.6", "applicationId": "test"
 
 TEST(RexsImport, SmallGearboxMeshCharacteristicAdditionalMassAndRoundTrip) {
   const auto doc = io::rexs::parseRexsJson(kSmallJson, "small.rexsj");
-  const io::rexs::RexsImport im = io::rexs::importRexsGearbox(doc);
+  const io::rexs::RexsImport im = config::importRexsGearbox(doc);
   const config::Config config = config::parseConfig(im.toml, "small", config::gearboxSchema());
   std::vector<std::string> warnings;
   const GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
@@ -434,11 +435,11 @@ TEST(RexsImport, SmallGearboxMeshCharacteristicAdditionalMassAndRoundTrip) {
   EXPECT_TRUE(im.load_cases.empty());
   // Export → import: the same description, except the mesh model (geardyn's, not REXS's:
   // the characteristic is not written back, the re-import uses the tooth model).
-  const std::string json = io::rexs::exportRexsJson(config, warnings);
+  const std::string json = io::rexs::exportRexsJson(config.resolved(), warnings);
   auto again = io::rexs::parseRexsJson(json, "again.rexsj");
   io::rexs::normalize(again, warnings);
-  const config::Config second = config::parseConfig(io::rexs::importRexsGearbox(again).toml,
-                                                    "again", config::gearboxSchema());
+  const config::Config second =
+      config::parseConfig(config::importRexsGearbox(again).toml, "again", config::gearboxSchema());
   auto a = config.resolved(), b = second.resolved();
   for (auto* j : {&a, &b})
     (*j)["meshes"]["stage"].erase("stiffness"), (*j)["meshes"]["stage"].erase("stiffness_value");
@@ -460,7 +461,7 @@ TEST(RexsImport, TorqueOnTheOutputIsCarriedToTheInput) {
   json = replaced(json, R"("name": "Load", "attributes": [)",
                   R"("name": "Load", "attributes": [{"id": "defines_torque", "boolean": true},
                      {"id": "torque_around_u_axis", "unit": "N m", "floating_point": 200.0},)");
-  const auto im = io::rexs::importRexsGearbox(io::rexs::parseRexsJson(json, "out.rexsj"));
+  const auto im = config::importRexsGearbox(io::rexs::parseRexsJson(json, "out.rexsj"));
   const config::Config config = config::parseConfig(im.toml, "out", config::gearboxSchema());
   std::vector<std::string> warnings;
   const GearTrainSpec spec = config::gearTrainFromConfig(config, warnings);
@@ -475,7 +476,7 @@ TEST(RexsImport, VersionAwareAttributesAndAliases) {
   std::vector<std::string> warnings;
   auto doc = io::rexs::parseRexsJson(replaced(kSmallJson, "\"1.6\"", "\"1.4\""), "old.rexsj");
   io::rexs::normalize(doc, warnings);
-  auto im = io::rexs::importRexsGearbox(doc);
+  auto im = config::importRexsGearbox(doc);
   EXPECT_TRUE(anyWarningContains(
       im.warnings,
       "meshing_stiffness_characteristic is part of REXS from 1.5 on, the file is "
@@ -488,9 +489,9 @@ TEST(RexsImport, VersionAwareAttributesAndAliases) {
                                  "unit \"°\" (first at component 3) is the name before "
                                  "REXS 1.4; read as \"deg\""));
   EXPECT_EQ(warnings.size(), 1u);  // one warning for both gears
-  im = io::rexs::importRexsGearbox(doc);
+  im = config::importRexsGearbox(doc);
   EXPECT_EQ(im.toml,
-            io::rexs::importRexsGearbox(io::rexs::parseRexsJson(kSmallJson, "deg.rexsj")).toml);
+            config::importRexsGearbox(io::rexs::parseRexsJson(kSmallJson, "deg.rexsj")).toml);
   const std::string modulus =
       R"({"id": 12, "type": "material", "name": "Steel", "attributes": [
        {"id": "elastic_modulus", "unit": "N / mm^2", "floating_point": 210000.0}]},

@@ -1,21 +1,12 @@
 #pragma once
 /// \file
-/// Spelling suggestions for unknown configuration keys and choices.
+/// The configuration's spelling suggestions: geardyn/did_you_mean.h under config:: names.
 
-#include <optional>
-#include <string>
-#include <string_view>
-#include <vector>
+#include "geardyn/did_you_mean.h"
 
 namespace geardyn::config {
 
-/// Optimal-string-alignment edit distance (insertions, deletions, substitutions and adjacent
-/// transpositions each cost 1) between a and b.
-int editDistance(std::string_view a, std::string_view b);
-
-/// The candidate closest to `word` if it is close enough to be a plausible misspelling: an edit
-/// distance of at most max(1, |word| / 3), or `word` being a prefix of it; none otherwise.
-std::optional<std::string> closestMatch(std::string_view word,
-                                        const std::vector<std::string>& candidates);
+using geardyn::closestMatch;
+using geardyn::editDistance;
 
 }  // namespace geardyn::config

@@ -10,9 +10,9 @@
 
 #include "geardyn/config/config.h"
 #include "geardyn/config/config_schema.h"
-#include "geardyn/contact/load_statistics.h"
 #include "geardyn/contact/loaded_contact.h"
 #include "geardyn/io/csv_table.h"
+#include "geardyn/stats/load_statistics.h"
 
 namespace geardyn::config {
 

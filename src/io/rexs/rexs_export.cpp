@@ -129,8 +129,7 @@ int addRollingBearing(Writer& w, const std::string& name, const Json& b, Json at
 
 }  // namespace
 
-std::string exportRexsJson(const config::Config& gearbox, std::vector<std::string>& warnings) {
-  const Json& cfg = gearbox.resolved();
+std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) {
   Writer w;
   const int unit = w.add("gear_unit", cfg["gearbox"]["name"].get<std::string>(), Json::array());
   const int casing = w.add("gear_casing", "casing", Json::array());

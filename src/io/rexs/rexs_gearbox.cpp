@@ -8,11 +8,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "geardyn/config/gearbox_config.h"
 #include "geardyn/error.h"
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/io/rexs/rexs_reader.h"
-#include "geardyn/system/gear_train_model.h"
 #include "rexs_mapping.h"
 
 namespace geardyn::io::rexs {
@@ -167,11 +165,11 @@ void addOperatingPoint(GearboxSections& out, const RexsImportOptions& options, R
       probe.add("output", tomlString(model.name(op.output)));
       std::vector<TomlSection> all = sections;
       all.push_back(probe);
-      const config::Config c =
-          config::parseConfig(renderToml(all, ""), doc.source, config::gearboxSchema());
-      std::vector<std::string> ignored;
-      const GearTrainModel m(gearTrainFromConfig(c, ignored));
-      ratio = m.bodies()[m.bodyIndex(model.name(op.torque_shaft))].speed_ratio;
+      if (!options.speed_ratio) {
+        throw InputError("speed_ratio", "(none)",
+                         "the gearbox kinematics (config::importRexsGearbox supplies them)");
+      }
+      ratio = options.speed_ratio(renderToml(all, ""), doc.source, model.name(op.torque_shaft));
     } catch (const InputError& e) {
       read.warn(
           fmt::format("the torque is defined on shaft {} but the speed on {}, and the "
@@ -291,30 +289,6 @@ RexsImport importRexsFile(const std::filesystem::path& file, const RexsImportOpt
   RexsImport result = importRexsGearbox(doc, options);
   result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
   return result;
-}
-
-config::Config loadGearboxConfig(const std::filesystem::path& file,
-                                 const std::vector<std::string>& overrides,
-                                 std::optional<int> load_case, std::vector<std::string>& warnings) {
-  if (!io::rexs::isRexsPath(file)) {
-    if (load_case)
-      throw InputError("gearbox.load_case", std::to_string(*load_case),
-                       "only with a REXS gearbox file (.rexs, .rexsj, .rexsz); " + file.string() +
-                           " is a gearbox TOML file");
-    return config::loadConfigFile(file, config::gearboxSchema(), overrides);
-  }
-  RexsImportOptions options;
-  options.load_case = load_case;
-  RexsImport imported;
-  try {
-    imported = importRexsFile(file, options);
-  } catch (const InputError& e) {
-    // The load case is the analysis file's key (and a sweep's parameter): named as such.
-    if (e.key() != "load_case") throw;
-    throw InputError("gearbox.load_case", e.value(), e.allowed());
-  }
-  warnings.insert(warnings.end(), imported.warnings.begin(), imported.warnings.end());
-  return config::parseConfig(imported.toml, file.string(), config::gearboxSchema(), overrides);
 }
 
 }  // namespace geardyn::io::rexs

@@ -7,11 +7,12 @@
 /// What is mapped, what is not and the defaults: docs/guide/rexs.md.
 
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "geardyn/config/config.h"
 #include "geardyn/io/rexs/rexs_document.h"
 
 namespace geardyn::io::rexs {
@@ -22,6 +23,14 @@ struct RexsImportOptions {
   /// Radial stiffness [N/m] written for bearings that give none (catalogue and concept
   /// bearings); absent: kRexsDefaultBearingStiffness. A warning names every such bearing.
   std::optional<double> bearing_stiffness;
+  /// The gearbox kinematics, for a torque given on another shaft than the input: the speed of
+  /// `shaft` over the input shaft's speed [-] in the gearbox that the TOML text describes
+  /// (`source` names the REXS file in messages); InputError when it cannot be known.
+  /// config::importRexsGearbox supplies it from the gearbox model; empty: not known, and such a
+  /// torque is written as 0 with a warning.
+  std::function<double(const std::string& gearbox_toml, const std::string& source,
+                       const std::string& shaft)>
+      speed_ratio;
 };
 
 /// Radial stiffness [N/m] of a bearing whose REXS component gives none: the order of a
@@ -53,28 +62,24 @@ struct RexsImport {
       rexs_bearings = 0, rexs_couplings = 0;
 };
 
-/// Maps a REXS document onto a gearbox description (InputError naming the component id, type
-/// and attribute for what cannot be understood).
+/// Maps a REXS document onto a gearbox description (the import with the gearbox kinematics is
+/// config::importRexsGearbox, config/rexs_gearbox_config.h) (InputError naming the component id,
+/// type and attribute for what cannot be understood).
 RexsImport importRexsGearbox(const io::rexs::Document& document,
                              const RexsImportOptions& options = {});
 
 /// Reads a .rexs/.rexsj/.rexsz file and maps it.
 RexsImport importRexsFile(const std::filesystem::path& file, const RexsImportOptions& options = {});
 
-/// A gearbox file as a validated configuration: TOML read directly, a REXS file imported in
-/// memory first (its load case from `load_case`; the import's warnings appended). `overrides`
-/// are --set strings applied to the gearbox keys.
-config::Config loadGearboxConfig(const std::filesystem::path& file,
-                                 const std::vector<std::string>& overrides,
-                                 std::optional<int> load_case, std::vector<std::string>& warnings);
-
-/// The gearbox description (a validated gearbox configuration) as REXS JSON, version
+/// The gearbox description (a validated gearbox configuration's resolved keys,
+/// config::Config::resolved()) as REXS JSON, version
 /// kRexsExportVersion: shafts with sections and materials, gears with flanks, parallel stages,
 /// planetary stages with their planets, bearings, couplings and the operating point as one
 /// load case. Importing it gives the same description. What REXS cannot hold (damping, mesh
 /// models, transmission errors, anisotropic bearings, extra masses of shafts) is listed in
 /// `warnings`.
-std::string exportRexsJson(const config::Config& gearbox, std::vector<std::string>& warnings);
+std::string exportRexsJson(const nlohmann::ordered_json& gearbox,
+                           std::vector<std::string>& warnings);
 
 /// The REXS version export writes: 2.0.0, the current one (its file structure is that of 1.x;
 /// units as in its schema: MPa, kg / dm^3, N mm / rad, deg).

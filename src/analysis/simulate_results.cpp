@@ -1,4 +1,4 @@
-#include "geardyn/io/simulate_results.h"
+#include "geardyn/analysis/simulate_results.h"
 
 #include <fmt/format.h>
 
@@ -19,7 +19,7 @@
 #include "geardyn/stiffness/step_stiffness.h"
 #include "geardyn/stiffness/tabulated_stiffness.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
@@ -116,16 +116,16 @@ nlohmann::ordered_json timeResponseResultsJson(const config::GearPairModelBuild&
   return results;
 }
 
-CsvTable timeResponseTable(const TimeResponseChannels& c, bool nondimensional) {
+io::CsvTable timeResponseTable(const TimeResponseChannels& c, bool nondimensional) {
   // Along the transverse line of action (docs/theory/mesh_stiffness.md, "Which plane"); the
   // unit ends each name, or "nondim" for Gelman's nondimensional form.
   const auto unit = [&](const char* si) { return std::string(nondimensional ? "nondim" : si); };
-  CsvTable table({"t_" + unit("s"), "x_transverse_" + unit("m"), "v_transverse_" + unit("m_per_s"),
-                  "y_transverse_" + unit("m"), "mesh_force_transverse_" + unit("n"),
-                  "k_transverse_" + unit("n_per_m")});
+  io::CsvTable table({"t_" + unit("s"), "x_transverse_" + unit("m"),
+                      "v_transverse_" + unit("m_per_s"), "y_transverse_" + unit("m"),
+                      "mesh_force_transverse_" + unit("n"), "k_transverse_" + unit("n_per_m")});
   for (std::size_t j = 0; j < c.t.size(); ++j)
     table.addRow({c.t[j], c.x[j], c.v[j], c.y[j], c.force[j], c.k[j]});
   return table;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

@@ -11,7 +11,7 @@
 #include "geardyn/stats/mean_excitation.h"
 #include "geardyn/stats/monte_carlo.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// Every statistic of a MeanExcitation, by the paper's names.
 nlohmann::ordered_json toJson(const MeanExcitation& s);
@@ -20,7 +20,7 @@ nlohmann::ordered_json toJson(const MeanExcitation& s);
 nlohmann::ordered_json monteCarloJson(const MonteCarloOptions& options,
                                       const std::vector<MonteCarloSample>& samples);
 /// monte_carlo.csv (one row per sample) and histogram.csv (of R).
-CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples);
-CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins);
+io::CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples);
+io::CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

@@ -1,4 +1,4 @@
-#include "geardyn/io/rotor_results.h"
+#include "geardyn/analysis/rotor_results.h"
 
 #include <fmt/format.h>
 
@@ -13,11 +13,12 @@
 #include "geardyn/error.h"
 #include "geardyn/identify/dte_identification.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
-CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks) {
+io::CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks) {
   // Complex whirl radii [m] (z = x + j y) and their phase [rad].
-  CsvTable t({"shaft", "component", "frequency_hz", "re_m", "im_m", "amplitude_m", "phase_rad"});
+  io::CsvTable t(
+      {"shaft", "component", "frequency_hz", "re_m", "im_m", "amplitude_m", "phase_rad"});
   for (int s = 0; s < 2; ++s) {
     for (const auto& c : peaks[s]) {
       t.addRow({std::string(kShaftNames[s]), c.name, c.frequency, c.value.real(), c.value.imag(),
@@ -27,8 +28,8 @@ CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks
   return t;
 }
 
-CsvTable fullSpectrumTable(const std::array<FullSpectrum, 2>& spectra, double max_frequency) {
-  CsvTable t({"shaft", "frequency_hz", "re_m", "im_m", "amplitude_m", "phase_rad"});
+io::CsvTable fullSpectrumTable(const std::array<FullSpectrum, 2>& spectra, double max_frequency) {
+  io::CsvTable t({"shaft", "frequency_hz", "re_m", "im_m", "amplitude_m", "phase_rad"});
   for (int s = 0; s < 2; ++s) {
     const auto& sp = spectra[s];
     for (std::size_t i = 0; i < sp.frequency.size(); ++i) {
@@ -76,4 +77,4 @@ nlohmann::ordered_json whirlConventionsJson(WhirlFrame frame, const std::string&
   };
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

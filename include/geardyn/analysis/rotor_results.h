@@ -15,16 +15,16 @@
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/rotor_response.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// The shaft names used in every table: "pinion" (x₁, y₁) and "gear" (x₂, y₂).
 inline const std::array<const char*, 2> kShaftNames = {"pinion", "gear"};
 
 /// shaft,component,frequency_hz,re,im,amplitude,phase (spectrum_peaks.csv, and the
 /// frequency-domain frequency_components.csv).
-CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks);
+io::CsvTable whirlPeaksTable(const std::array<std::vector<WhirlComponent>, 2>& peaks);
 /// shaft,frequency_hz,re,im,amplitude,phase, |f| ≤ max_frequency (full_spectrum.csv).
-CsvTable fullSpectrumTable(const std::array<FullSpectrum, 2>& spectra, double max_frequency);
+io::CsvTable fullSpectrumTable(const std::array<FullSpectrum, 2>& spectra, double max_frequency);
 /// The peaks as JSON: {shaft: {component: {frequency_hz, amplitude, phase}}}.
 nlohmann::ordered_json whirlPeaksJson(const std::array<std::vector<WhirlComponent>, 2>& peaks);
 
@@ -36,4 +36,4 @@ std::array<std::vector<WhirlComponent>, 2> frequencyDomainPeaks(
 /// The conventions of the reported spectra (summary.json "conventions").
 nlohmann::ordered_json whirlConventionsJson(WhirlFrame frame, const std::string& phase_reference);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

@@ -19,7 +19,7 @@
 #include "geardyn/stiffness/mesh_stiffness.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// results.mesh_stiffness (the primary model) and results.models (every model): mean, min, max,
 /// std, contact ratio, Fourier coefficients; plus the API directional matrix, the ISO factors
@@ -31,11 +31,11 @@ nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const 
 /// mesh_stiffness.csv: roll_angle_rad, mesh_fraction, [t_s,] k_total_transverse_n_per_m
 /// (primary), k_pair_1..n_transverse_n_per_m (primary), k_<model>_transverse_n_per_m for the
 /// others, [ste_transverse_m]: every k and the STE along the transverse line of action.
-CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
-                             const config::MeshStiffnessModels& models);
+io::CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
+                                 const config::MeshStiffnessModels& models);
 
 /// fourier.csv from results.models (stiffnessResultsJson): model, order, cosine, sine,
 /// amplitude, phase_rad, relative_amplitude; order 0 holds the mean.
-CsvTable fourierTable(const nlohmann::ordered_json& results_models);
+io::CsvTable fourierTable(const nlohmann::ordered_json& results_models);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

@@ -15,7 +15,7 @@
 #include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/time_response.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// The time response with derived channels: y = x − e, mesh force k g(y), k.
 struct TimeResponseChannels {
@@ -32,6 +32,6 @@ nlohmann::ordered_json timeResponseResultsJson(const config::GearPairModelBuild&
 
 /// time_response.csv: t_s, x_transverse_m, v_transverse_m_per_s, y_transverse_m,
 /// mesh_force_transverse_n, k_transverse_n_per_m (nondimensional: each unit is "nondim").
-CsvTable timeResponseTable(const TimeResponseChannels& channels, bool nondimensional = false);
+io::CsvTable timeResponseTable(const TimeResponseChannels& channels, bool nondimensional = false);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

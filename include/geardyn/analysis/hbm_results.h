@@ -13,7 +13,7 @@
 #include "geardyn/io/csv_table.h"
 #include "geardyn/solvers/harmonic_balance.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// One row of sweep.csv: a continuation point with its response measures (of the relative
 /// deflection y = x − e).
@@ -29,6 +29,7 @@ struct SweepRow {
 SweepRow sweepRow(HarmonicBalance& hbm, const GearPairModel& model, const SweepPoint& point,
                   const std::string& sweep, double frequency_scale);
 
-CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics, bool nondimensional = false);
+io::CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics,
+                        bool nondimensional = false);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

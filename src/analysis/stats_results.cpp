@@ -1,7 +1,8 @@
-#include "geardyn/io/stats_results.h"
+#include "geardyn/analysis/stats_results.h"
 
 #include <fmt/format.h>
 
+#include "geardyn/analysis/geometry_results.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/output_section.h"
 #include "geardyn/config/simulate_config.h"
@@ -9,9 +10,8 @@
 #include "geardyn/config/stiffness_config.h"
 #include "geardyn/error.h"
 #include "geardyn/io/csv_reader.h"
-#include "geardyn/io/geometry_results.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 nlohmann::ordered_json toJson(const MeanExcitation& s) {
   return {{"m1_k", s.m1_k},
@@ -54,9 +54,9 @@ nlohmann::ordered_json monteCarloJson(const MonteCarloOptions& options,
           {"dynamic_mean_load", json(l, options.baseload)}};
 }
 
-CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples) {
-  CsvTable table({"sample", "ratio", "dynamic_mean_excitation", "r_ke", "d_k", "d_e", "delta_m1_ef",
-                  "phase_fraction"});
+io::CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples) {
+  io::CsvTable table({"sample", "ratio", "dynamic_mean_excitation", "r_ke", "d_k", "d_e",
+                      "delta_m1_ef", "phase_fraction"});
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const auto& s = samples[i];
     table.addRow({static_cast<long long>(i), s.ratio, s.dynamic_mean_excitation, s.r_ke, s.d_k,
@@ -65,7 +65,7 @@ CsvTable monteCarloTable(const std::vector<MonteCarloSample>& samples) {
   return table;
 }
 
-CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins) {
+io::CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins) {
   double lo = samples.front().ratio, hi = lo;
   for (const auto& s : samples) {
     lo = std::min(lo, s.ratio);
@@ -77,11 +77,11 @@ CsvTable histogramTable(const std::vector<MonteCarloSample>& samples, int bins) 
     const int b = std::min(bins - 1, static_cast<int>((s.ratio - lo) / (hi - lo) * bins));
     ++counts[b];
   }
-  CsvTable table({"ratio_low", "ratio_high", "count"});
+  io::CsvTable table({"ratio_low", "ratio_high", "count"});
   for (int b = 0; b < bins; ++b) {
     table.addRow({lo + (hi - lo) * b / bins, lo + (hi - lo) * (b + 1) / bins, counts[b]});
   }
   return table;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

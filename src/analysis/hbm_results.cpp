@@ -1,10 +1,10 @@
-#include "geardyn/io/hbm_results.h"
+#include "geardyn/analysis/hbm_results.h"
 
 #include <cmath>
 
 #include "geardyn/config/hbm_config.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 SweepRow sweepRow(HarmonicBalance& hbm, const GearPairModel& model, const SweepPoint& point,
                   const std::string& sweep, double frequency_scale) {
@@ -45,7 +45,7 @@ SweepRow sweepRow(HarmonicBalance& hbm, const GearPairModel& model, const SweepP
   return row;
 }
 
-CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics, bool nondimensional) {
+io::CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics, bool nondimensional) {
   // x along the transverse line of action; the unit ends each name ("nondim": Ω/ω_n and x₀).
   const std::string x = nondimensional ? "_transverse_nondim" : "_transverse_m";
   std::vector<std::string> columns = {nondimensional ? "frequency_nondim" : "frequency_hz",
@@ -60,23 +60,23 @@ CsvTable sweepTable(const std::vector<SweepRow>& rows, int harmonics, bool nondi
                                       "contact_loss",
                                       "sweep"};
   for (int h = 0; h <= harmonics; ++h) columns.push_back("h" + std::to_string(h) + x);
-  CsvTable table(columns);
+  io::CsvTable table(columns);
   for (const auto& r : rows) {
-    std::vector<CsvCell> cells = {r.frequency,
-                                  static_cast<long long>(r.branch),
-                                  r.p2p,
-                                  r.mean,
-                                  r.max,
-                                  r.min,
-                                  r.rms,
-                                  static_cast<long long>(r.stable),
-                                  static_cast<long long>(r.newton_iterations),
-                                  r.contact_loss,
-                                  r.sweep};
+    std::vector<io::CsvCell> cells = {r.frequency,
+                                      static_cast<long long>(r.branch),
+                                      r.p2p,
+                                      r.mean,
+                                      r.max,
+                                      r.min,
+                                      r.rms,
+                                      static_cast<long long>(r.stable),
+                                      static_cast<long long>(r.newton_iterations),
+                                      r.contact_loss,
+                                      r.sweep};
     for (double a : r.harmonics) cells.emplace_back(a);
     table.addRow(std::move(cells));
   }
   return table;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

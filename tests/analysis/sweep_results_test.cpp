@@ -1,6 +1,8 @@
 // The sweep journal: records survive a kill (a cut last line is dropped), a journal of another
 // study is refused, records round-trip with NaN outputs.
 
+#include "geardyn/analysis/sweep_results.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +11,8 @@
 
 #include "geardyn/config/sweep_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/sweep_results.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 namespace {
 
 namespace fs = std::filesystem;
@@ -58,4 +59,4 @@ TEST(SweepJournal, KeepsWholeRecordsAndDropsACutLine) {
 }
 
 }  // namespace
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

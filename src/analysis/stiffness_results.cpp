@@ -1,4 +1,4 @@
-#include "geardyn/io/stiffness_results.h"
+#include "geardyn/analysis/stiffness_results.h"
 
 #include <fmt/format.h>
 
@@ -16,7 +16,7 @@
 #include "geardyn/stiffness/step_stiffness.h"
 #include "geardyn/units.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 namespace {
 
 using geardyn::units::kDegree;
@@ -155,8 +155,8 @@ nlohmann::ordered_json stiffnessResultsJson(const config::Config& config, const 
   return results;
 }
 
-CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
-                             const config::MeshStiffnessModels& models) {
+io::CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
+                                 const config::MeshStiffnessModels& models) {
   const MeshStiffness& primary = *models.models.front();
   const auto f_m = pair.meshFrequency();
   const config::TransmissionErrorSpec te = config::transmissionErrorFromConfig(config);
@@ -170,12 +170,12 @@ CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
     columns.push_back("k_" + models.models[m]->model() + "_transverse_n_per_m");
   }
   if (te.force > 0.0) columns.push_back("ste_transverse_m");
-  CsvTable table(columns);
+  io::CsvTable table(columns);
   const int n = static_cast<int>(config.integer("mesh_stiffness.positions"));
   const int z1 = pair.spec().pinion.teeth;
   for (int i = 0; i < n; ++i) {
     const double phase = static_cast<double>(i) / n;
-    std::vector<CsvCell> row = {rollAngleFromMeshPhase(phase, z1), phase};
+    std::vector<io::CsvCell> row = {rollAngleFromMeshPhase(phase, z1), phase};
     if (f_m && *f_m > 0.0) row.emplace_back(phase / *f_m);
     row.emplace_back(primary.stiffness(phase));
     for (int j = 0; j < primary.pairCount(); ++j) row.emplace_back(primary.pairStiffness(phase, j));
@@ -187,9 +187,9 @@ CsvTable stiffnessCurveTable(const config::Config& config, const GearPair& pair,
   return table;
 }
 
-CsvTable fourierTable(const nlohmann::ordered_json& results_models) {
-  CsvTable table({"model", "order", "cosine_n_per_m", "sine_n_per_m", "amplitude_n_per_m",
-                  "phase_rad", "relative_amplitude"});
+io::CsvTable fourierTable(const nlohmann::ordered_json& results_models) {
+  io::CsvTable table({"model", "order", "cosine_n_per_m", "sine_n_per_m", "amplitude_n_per_m",
+                      "phase_rad", "relative_amplitude"});
   for (const auto& [name, json] : results_models.items()) {
     const double mean = json["mean"].get<double>();
     table.addRow({name, 0LL, mean, 0.0, mean, 0.0, 1.0});
@@ -203,4 +203,4 @@ CsvTable fourierTable(const nlohmann::ordered_json& results_models) {
   return table;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

@@ -11,17 +11,17 @@
 #include "geardyn/geometry/gear_pair.h"
 #include "geardyn/io/csv_table.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// Headline numbers of a gear pair (summary.json "results"): pair quantities, then one object
 /// per member. SI units; angles in rad with a `_deg` companion.
 nlohmann::ordered_json toJson(const GearPair& pair);
 
 /// One row per member (pinion, gear) with the per-gear quantities; units in the column names.
-CsvTable memberTable(const GearPair& pair);
+io::CsvTable memberTable(const GearPair& pair);
 
 /// Half a tooth of each member (see ToothProfile): columns member, x_m, y_m, in the member's
 /// frame (centre at the origin, tooth centreline along +y).
-CsvTable toothProfileTable(const GearPair& pair);
+io::CsvTable toothProfileTable(const GearPair& pair);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

@@ -32,7 +32,7 @@
 #include "geardyn/io/csv_table.h"
 #include "geardyn/stats/study_design.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// What became of one case.
 struct SweepCaseRecord {
@@ -73,11 +73,11 @@ void writeSweepHdf5(const std::filesystem::path& path, const config::SweepDefini
                     const std::vector<SweepCaseRecord>& records, const std::string& base_config);
 
 /// sweep.csv: case, status, seed, one column per parameter and output, message.
-CsvTable sweepTable(const config::SweepDefinition& study,
-                    const std::vector<SweepCaseRecord>& records);
+io::CsvTable sweepTable(const config::SweepDefinition& study,
+                        const std::vector<SweepCaseRecord>& records);
 
 /// The value of `pointer` in `results` as a number (booleans 0/1); NaN and `ok` false when it
 /// is absent or not a number.
 double outputValue(const nlohmann::json& results, const std::string& pointer, bool* ok);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

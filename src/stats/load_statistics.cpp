@@ -1,4 +1,4 @@
-#include "geardyn/contact/load_statistics.h"
+#include "geardyn/stats/load_statistics.h"
 
 #include <fmt/format.h>
 

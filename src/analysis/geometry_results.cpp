@@ -1,4 +1,4 @@
-#include "geardyn/io/geometry_results.h"
+#include "geardyn/analysis/geometry_results.h"
 
 #include <numbers>
 
@@ -8,7 +8,7 @@
 #include "geardyn/geometry/tooth_profile.h"
 #include "geardyn/units.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 namespace {
 
 using geardyn::units::kDegree;
@@ -71,11 +71,11 @@ nlohmann::ordered_json toJson(const GearPair& pair) {
   return json;
 }
 
-CsvTable memberTable(const GearPair& pair) {
-  CsvTable table({"member", "teeth", "pitch_radius_m", "base_radius_m", "tip_radius_m",
-                  "root_radius_m", "operating_pitch_radius_m", "form_radius_m",
-                  "active_profile_start_radius_m", "tip_thickness_normal_m", "tip_clearance_m",
-                  "undercut", "mass_kg", "polar_inertia_kg_m2", "diametral_inertia_kg_m2"});
+io::CsvTable memberTable(const GearPair& pair) {
+  io::CsvTable table({"member", "teeth", "pitch_radius_m", "base_radius_m", "tip_radius_m",
+                      "root_radius_m", "operating_pitch_radius_m", "form_radius_m",
+                      "active_profile_start_radius_m", "tip_thickness_normal_m", "tip_clearance_m",
+                      "undercut", "mass_kg", "polar_inertia_kg_m2", "diametral_inertia_kg_m2"});
   const auto add = [&](const char* name, const GearGeometry& g, int teeth) {
     table.addRow({std::string(name), static_cast<long long>(teeth), g.pitch_radius, g.base_radius,
                   g.tip_radius, g.root_radius, g.operating_pitch_radius, g.form_radius,
@@ -88,8 +88,8 @@ CsvTable memberTable(const GearPair& pair) {
   return table;
 }
 
-CsvTable toothProfileTable(const GearPair& pair) {
-  CsvTable table({"member", "x_m", "y_m"});
+io::CsvTable toothProfileTable(const GearPair& pair) {
+  io::CsvTable table({"member", "x_m", "y_m"});
   for (Member member : {Member::kPinion, Member::kGear}) {
     const std::string name = member == Member::kPinion ? "pinion" : "gear";
     for (const auto& p : computeToothProfile(pair, member).points) {
@@ -99,4 +99,4 @@ CsvTable toothProfileTable(const GearPair& pair) {
   return table;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

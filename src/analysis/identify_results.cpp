@@ -1,4 +1,4 @@
-#include "geardyn/io/identify_results.h"
+#include "geardyn/analysis/identify_results.h"
 
 #include <fmt/format.h>
 
@@ -6,16 +6,16 @@
 #include <fstream>
 #include <numbers>
 
+#include "geardyn/analysis/rotor_results.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/config/identify_config.h"
 #include "geardyn/config/output_section.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/error.h"
-#include "geardyn/io/rotor_results.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/stiffness/iso6336_stiffness.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 namespace {
 
 nlohmann::ordered_json number(double v) {
@@ -161,17 +161,18 @@ nlohmann::ordered_json identifiedJson(const DteIdentification& r) {
       {"runout", {{"pinion", phasorJson(r.pinion_runout)}, {"gear", phasorJson(r.gear_runout)}}}};
 }
 
-CsvTable identifiedTable(const DteIdentification& r, const std::optional<LateralRotorSpec>& truth) {
+io::CsvTable identifiedTable(const DteIdentification& r,
+                             const std::optional<LateralRotorSpec>& truth) {
   // Each row in its parameter's unit (the unit column); error: relative, or in rad for phases.
-  CsvTable t({"parameter", "harmonic", "unit", "value", "ci_low", "ci_high", "identifiable", "true",
-              "error"});
+  io::CsvTable t({"parameter", "harmonic", "unit", "value", "ci_low", "ci_high", "identifiable",
+                  "true", "error"});
   const auto add = [&](const std::string& name, long long harmonic, const IdentifiedValue& v,
                        std::optional<double> exact, bool phase) {
     const std::string unit = phase                      ? "rad"
                              : name == "mesh_stiffness" ? "N/m"
                              : name == "mesh_damping"   ? "N s/m"
                                                         : "m";
-    std::vector<CsvCell> row{
+    std::vector<io::CsvCell> row{
         name, harmonic, unit, v.value, v.low, v.high, static_cast<long long>(v.identifiable)};
     if (exact) {
       row.push_back(*exact);
@@ -211,4 +212,4 @@ CsvTable identifiedTable(const DteIdentification& r, const std::optional<Lateral
   return t;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

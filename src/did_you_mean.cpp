@@ -1,9 +1,9 @@
-#include "geardyn/config/did_you_mean.h"
+#include "geardyn/did_you_mean.h"
 
 #include <algorithm>
 #include <limits>
 
-namespace geardyn::config {
+namespace geardyn {
 
 int editDistance(std::string_view a, std::string_view b) {
   const std::size_t n = a.size();
@@ -41,4 +41,4 @@ std::optional<std::string> closestMatch(std::string_view word,
   return std::nullopt;
 }
 
-}  // namespace geardyn::config
+}  // namespace geardyn

@@ -1,6 +1,6 @@
 /// Study definition, journal and result files of `geardyn sweep` (see sweep_io.h).
 
-#include "geardyn/io/sweep_results.h"
+#include "geardyn/analysis/sweep_results.h"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -18,7 +18,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 namespace fs = std::filesystem;
 
 nlohmann::json SweepCaseRecord::toJson() const {
@@ -66,7 +66,7 @@ SweepJournal::SweepJournal(const fs::path& path, const std::string& fingerprint,
     }
   }
   // Rewrite the journal with the kept lines (atomically), then append to it.
-  writeFileAtomic(path, kept);
+  io::writeFileAtomic(path, kept);
   fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND);
   if (fd_ < 0) throw IoError("cannot open " + path.string());
 }
@@ -103,15 +103,15 @@ double outputValue(const nlohmann::json& results, const std::string& pointer, bo
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-CsvTable sweepTable(const config::SweepDefinition& study,
-                    const std::vector<SweepCaseRecord>& records) {
+io::CsvTable sweepTable(const config::SweepDefinition& study,
+                        const std::vector<SweepCaseRecord>& records) {
   std::vector<std::string> columns{"case", "status", "seed"};
   for (const auto& p : study.parameters) columns.push_back(p.key);
   for (const auto& o : study.outputs) columns.push_back(o.name);
   columns.push_back("message");
-  CsvTable table(columns);
+  io::CsvTable table(columns);
   for (const auto& r : records) {
-    std::vector<CsvCell> row{r.index, r.status, std::to_string(r.seed)};
+    std::vector<io::CsvCell> row{r.index, r.status, std::to_string(r.seed)};
     for (const auto& v : r.values) {
       if (v.is_number())
         row.push_back(v.get<double>());
@@ -127,4 +127,4 @@ CsvTable sweepTable(const config::SweepDefinition& study,
   return table;
 }
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis

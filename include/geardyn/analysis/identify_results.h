@@ -15,7 +15,7 @@
 #include "geardyn/identify/dte_identification.h"
 #include "geardyn/io/csv_table.h"
 
-namespace geardyn::io {
+namespace geardyn::analysis {
 
 /// One input spectrum: the folder, the peaks in the probe frame, their noise, and the rotor
 /// configuration when the folder was written by `geardyn rotor` (its truth).
@@ -36,6 +36,7 @@ nlohmann::ordered_json identifiedJson(const DteIdentification& r);
 
 /// parameter,harmonic,value,ci_low,ci_high,identifiable,true,error (error: relative for
 /// magnitudes, absolute [rad] for phases; empty without a truth).
-CsvTable identifiedTable(const DteIdentification& r, const std::optional<LateralRotorSpec>& truth);
+io::CsvTable identifiedTable(const DteIdentification& r,
+                             const std::optional<LateralRotorSpec>& truth);
 
-}  // namespace geardyn::io
+}  // namespace geardyn::analysis
