@@ -253,15 +253,21 @@ def plot_train(result_dir, save=False):
     if "contact" in results:
         figures["mesh_contact.png"] = mesh_contact_figure(folder, summary, title)
     if "forced" in results:
-        figures["forced_response.png"] = _forced(folder, summary, title)
+        # A train without meshes (a rotor with an unbalance) has no mesh forces to draw here.
+        if results["forced"].get("meshes"):
+            figures["forced_response.png"] = _forced(folder, summary, title)
         if (folder / "forced_mesh_orders.csv").exists():
-            figures["whine_orders.png"] = whine_orders_figure(folder, summary, title)
+            figure = whine_orders_figure(folder, summary, title)
+            if figure is not None:
+                figures["whine_orders.png"] = figure
         if (folder / "forced_tones.csv").exists():
             figures["forced_tones.png"] = train_tones_figure(folder, summary, title)
         if (folder / "housing_response.csv").exists():
             figures["housing_response.png"] = train_housing_figure(folder, summary, title)
     if "time" in results and (folder / "time_history.csv").exists():
-        figures["time_history.png"] = train_time_figure(folder, summary, title)
+        figure = train_time_figure(folder, summary, title)
+        if figure is not None:
+            figures["time_history.png"] = figure
     if "runup" in results and (folder / "runup.csv").exists():
         figures["runup.png"] = train_runup_figure(folder, title)
         figures["waterfall.png"] = train_waterfall_figure(folder, title)

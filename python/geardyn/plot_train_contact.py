@@ -99,7 +99,9 @@ def whine_orders_figure(folder, summary, title):
     response wrote forced_bearing_orders.csv, the force every bearing transmits at each mesh's
     first order (the path of the whine into the housing)."""
     table = _read_columns(folder / "forced_mesh_orders.csv")
-    meshes = list(dict.fromkeys(table["mesh"]))
+    meshes = list(dict.fromkeys(table.get("mesh") or []))
+    if not meshes:
+        return None  # a train without meshes (a rotor with an unbalance) has no whine orders
     bearing_file = folder / "forced_bearing_orders.csv"
     bearings = _read_columns(bearing_file) if bearing_file.exists() else None
     rows = 2 if bearings and bearings["mesh"] else 1

@@ -32,46 +32,73 @@ def _fastest_mesh_period_ms(summary):
     return 1e3 / max(frequencies) if frequencies else None
 
 
-def _forces(table, name):
-    """Newmark's and the steady state's (or None) mesh force of `name` [kN]."""
-    steady = table.get("steady_mesh_force_" + name + "_normal_n")
-    return (1e-3 * np.asarray(table["mesh_force_" + name + "_normal_n"]),
-            1e-3 * np.asarray(steady) if steady else None)
+#: What the figure draws per row: the mesh forces, or (a train without meshes, e.g. a rotor with
+#: an unbalance) the bearing forces: (column prefix, column suffix, axis label).
+_MESH = ("mesh_force_", "_normal_n", "mesh force")
+_BEARING = ("bearing_force_", "_y_n", "bearing force y")
+#: The figure's title per kind.
+_TITLE = {_MESH: "dynamic mesh forces", _BEARING: "dynamic bearing forces (y)"}
 
 
-def _whole_record(table, t_ms, shown, summary, title):
+def _names(table, kind):
+    prefix, suffix, _ = kind
+    return [n[len(prefix):-len(suffix)] for n in table
+            if n.startswith(prefix) and n.endswith(suffix)]
+
+
+def _force_unit(table, shown, kind):
+    """(scale, unit) for the drawn forces: kN, or N when they all stay below 1 kN (a rotor's
+    unbalance forces would read as zeros in kN)."""
+    prefix, suffix, _ = kind
+    largest = max(np.max(np.abs(table[prefix + name + suffix])) for name in shown)
+    return (1e-3, "kN") if largest >= 1e3 else (1.0, "N")
+
+
+def _forces(table, name, kind, scale):
+    """Newmark's and the steady state's (or None) force of `name`, times `scale`."""
+    prefix, suffix, _ = kind
+    steady = table.get("steady_" + prefix + name + suffix)
+    return (scale * np.asarray(table[prefix + name + suffix]),
+            scale * np.asarray(steady) if steady else None)
+
+
+def _whole_record(table, t_ms, shown, summary, title, kind):
+    scale, unit = _force_unit(table, shown, kind)
     figure, axes = plt.subplots(len(shown), 1, figsize=(10.5, 2.2 * len(shown) + 0.6),
                                 sharex=True, squeeze=False, layout="constrained")
     for ax, name in zip(axes[:, 0], shown):
-        newmark, steady = _forces(table, name)
+        newmark, steady = _forces(table, name, kind, scale)
         ax.plot(t_ms, newmark, lw=1.4, label="Newmark")
         if steady is not None:
             ax.plot(t_ms, steady, "--", lw=1.0, color="k", label="frequency-domain steady state")
-        ax.set_ylabel(f"{name}\nmesh force [kN]", fontsize=8)
+        ax.set_ylabel(f"{name}\n{kind[2]} [{unit}]", fontsize=8)
         ax.grid(alpha=0.3)
     axes[0, 0].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     axes[-1, 0].set_xlabel("time in the steady-state window [ms]")
     speed = summary["results"]["time"]["speed_rpm"]
-    figure.suptitle(f"{title}: dynamic mesh forces at {speed:g} rpm", fontsize=9)
+    figure.suptitle(f"{title}: {_TITLE[kind]} at {speed:g} rpm", fontsize=9)
     return figure
 
 
 def train_time_figure(folder, summary, title):
     table = _read_columns(folder / "time_history.csv")
     t_ms = 1e3 * (np.asarray(table["t_s"]) - table["t_s"][0])
-    meshes = [n[len("mesh_force_"):-len("_normal_n")] for n in table
-              if n.startswith("mesh_force_") and n.endswith("_normal_n")]
-    shown = meshes[:4]
-    period = _fastest_mesh_period_ms(summary)
-    window = _ZOOM_PERIODS * period if period else t_ms[-1] / 20
+    kind = _MESH if _names(table, _MESH) else _BEARING
+    shown = _names(table, kind)[:4]
+    if not shown:
+        return None  # nothing with a force to draw (no mesh, no bearing)
+    period = _fastest_mesh_period_ms(summary) if kind is _MESH else None
+    # Without meshes the record is a few periods of the slowest excitation: drawn whole.
+    window = _ZOOM_PERIODS * period if period else t_ms[-1]
     if t_ms[-1] <= 2 * window:
-        return _whole_record(table, t_ms, shown, summary, title)
+        return _whole_record(table, t_ms, shown, summary, title, kind)
     zoom = t_ms >= t_ms[-1] - window
+    scale, unit = _force_unit(table, shown, kind)
     figure, axes = plt.subplots(len(shown), 2, figsize=(11.5, 2.3 * len(shown) + 0.8),
                                 squeeze=False, layout="constrained",
                                 gridspec_kw={"width_ratios": [1.6, 1.0]})
     for row, name in enumerate(shown):
-        newmark, steady = _forces(table, name)
+        newmark, steady = _forces(table, name, kind, scale)
         whole, near = axes[row]
         bins = int(round(t_ms[-1] / period)) if period else _BINS
         tc, lo, hi = _envelope(t_ms, newmark, bins)
@@ -83,7 +110,7 @@ def train_time_figure(folder, summary, title):
             whole.plot(tc, hi, "--", color="k", lw=0.8)
         whole.axvspan(t_ms[-1] - window, t_ms[-1], color="tab:orange", alpha=0.15, lw=0,
                       label="zoom window" if row == 0 else None)
-        whole.set_ylabel(f"{name}\nmesh force [kN]", fontsize=8)
+        whole.set_ylabel(f"{name}\n{kind[2]} [{unit}]", fontsize=8)
         near.plot(t_ms[zoom], newmark[zoom], lw=1.4, color="tab:blue", label="Newmark")
         if steady is not None:
             near.plot(t_ms[zoom], steady[zoom], "--", lw=1.0, color="k",
@@ -93,7 +120,7 @@ def train_time_figure(folder, summary, title):
             ax.tick_params(labelsize=7)
     axes[0, 1].legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.08), ncols=2,
                       borderaxespad=0)
-    axes[0, 0].set_title("the recorded window: Newmark's extremes per mesh cycle (band), the "
+    axes[0, 0].set_title("the recorded window: Newmark's extremes per cycle (band), the "
                          "steady state's (dashed), the zoom (orange)", fontsize=8)
     axes[0, 1].set_title(f"its last {window:.3g} ms"
                          + (f" ({_ZOOM_PERIODS} periods of the fastest mesh)" if period else ""),
@@ -101,5 +128,5 @@ def train_time_figure(folder, summary, title):
     axes[-1, 0].set_xlabel("time in the steady-state window [ms]")
     axes[-1, 1].set_xlabel("time in the steady-state window [ms]")
     speed = summary["results"]["time"]["speed_rpm"]
-    figure.suptitle(f"{title}: dynamic mesh forces at {speed:g} rpm", fontsize=9)
+    figure.suptitle(f"{title}: {_TITLE[kind]} at {speed:g} rpm", fontsize=9)
     return figure

@@ -76,6 +76,122 @@ TrainTimePlan planTime(const GearTrainModel& model, double speed, const TrainTim
   return plan;
 }
 
+/// The radial bearing elements (rows u_y, u_z of the relative displacement: a stiffness
+/// bearing's two, a rolling bearing's first two of five; system/train_elements.cpp): the
+/// columns bearing_force_<name>_y_n and _z_n of time_history.csv.
+std::vector<const TrainElement*> radialBearings(const GearTrainModel& model) {
+  std::vector<const TrainElement*> out;
+  for (const TrainElement& e : model.elements()) {
+    if (e.kind == "bearing" && e.jacobian.rows() >= 2 && !e.moment_rows[0] && !e.moment_rows[1] &&
+        e.name.find('.') == std::string::npos)
+      out.push_back(&e);
+  }
+  return out;
+}
+
+/// The radial bearings' spring forces (k J q[dofs])_{y,z} over a record [N] (the static load
+/// included), Newmark's and the steady state's, and the largest distance between the two force
+/// vectors against the steady state's peak-to-peak (the larger of its y and z ranges): the
+/// comparison of a train without meshes (a rotor with an unbalance, whose bearing force turns at
+/// a constant magnitude).
+class BearingForces {
+ public:
+  explicit BearingForces(std::size_t n)
+      : worst_(n, 0.0), low_(n, {HUGE_VAL, HUGE_VAL}), high_(n, {-HUGE_VAL, -HUGE_VAL}) {}
+  /// Appends sample k's columns to `row`: Newmark's (y, z) forces per bearing, then the steady
+  /// state's (q: its displacements on the record's times; null: no comparison).
+  void add(const std::vector<const TrainElement*>& bearings,
+           const Eigen::Ref<const Eigen::RowVectorXd>& newmark, const Eigen::MatrixXd* q,
+           Eigen::Index k, std::vector<io::CsvCell>& row) {
+    std::vector<Eigen::Vector2d> newmark_force(bearings.size());
+    for (std::size_t b = 0; b < bearings.size(); ++b) {
+      newmark_force[b] = force(*bearings[b], newmark);
+      row.push_back(newmark_force[b](0));
+      row.push_back(newmark_force[b](1));
+    }
+    if (!q) return;
+    for (std::size_t b = 0; b < bearings.size(); ++b) {
+      const Eigen::Vector2d f = force(*bearings[b], q->row(k));
+      row.push_back(f(0));
+      row.push_back(f(1));
+      worst_[b] = std::max(worst_[b], (f - newmark_force[b]).norm());
+      low_[b] = low_[b].cwiseMin(f), high_[b] = high_[b].cwiseMax(f);
+    }
+  }
+  /// Per bearing: the largest |F_Newmark − F_steady| over the record relative to the steady
+  /// state's peak-to-peak (0 where it has none).
+  nlohmann::ordered_json differences(const std::vector<const TrainElement*>& bearings) const {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (std::size_t b = 0; b < bearings.size(); ++b) {
+      const double p2p = (high_[b] - low_[b]).maxCoeff();
+      out[bearings[b]->name] = p2p > 0 ? worst_[b] / p2p : 0.0;
+    }
+    return out;
+  }
+
+ private:
+  static Eigen::Vector2d force(const TrainElement& e,
+                               const Eigen::Ref<const Eigen::RowVectorXd>& q) {
+    Eigen::VectorXd local(static_cast<Eigen::Index>(e.dofs.size()));
+    for (std::size_t i = 0; i < e.dofs.size(); ++i)
+      local(static_cast<Eigen::Index>(i)) = q(e.dofs[i]);
+    return (e.local_stiffness * (e.jacobian * local)).head<2>();
+  }
+  std::vector<double> worst_;
+  std::vector<Eigen::Vector2d> low_, high_;
+};
+
+/// The frequency-domain steady state a time run is compared with, on the run's times `t`: the
+/// common-period balance, or on the torus of the mesh phases (train_torus.h) when the common
+/// period needs more than forced.torus_above harmonics (its peaks, orders and q(t) stand in for
+/// the balance's, which would need thousands of harmonics). `compare` is false, with a warning,
+/// when neither can be solved.
+struct SteadyReference {
+  bool compare = true, torus = false;
+  TrainSteadyOptions options;
+  TrainSteadyState state;
+  Eigen::MatrixXd q;  ///< rows: the times t, cols: DOFs [m, rad]
+  int base_harmonics = 0;
+  Clock::time_point start;
+};
+
+SteadyReference steadyReference(const GearTrainModel& model, const config::Config& analysis,
+                                double speed, const Eigen::VectorXd& t, io::RunSummary& summary) {
+  SteadyReference ref;
+  ref.start = Clock::now();
+  ref.options.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
+  ref.options.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
+  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1 << 30);
+  const int common_harmonics =
+      ref.options.mesh_harmonics *
+      (base.mesh_multiple.empty()
+           ? 1
+           : *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end()));
+  ref.torus = common_harmonics > analysis.integer("forced.torus_above");
+  ref.base_harmonics = common_harmonics;
+  try {
+    if (ref.torus) {
+      TrainTorusOptions options = config::trainTorusOptionsFromConfig(analysis);
+      options.mesh_harmonics = ref.options.mesh_harmonics;
+      options.group_harmonics = std::max(options.group_harmonics, options.mesh_harmonics);
+      TrainTorusState torus = TrainTorusSolver(model, options).solve(speed);
+      ref.q = torus.displacement(t);
+      ref.state.mesh_force_max = torus.mesh_force_max;
+      ref.state.mesh_force_min = torus.mesh_force_min;
+      ref.state.mesh_force_harmonics = torus.mesh_force_harmonics;
+      ref.state.mesh_multiple = base.mesh_multiple;
+    } else {
+      ref.state = solveTrainSteadyState(model, speed, ref.options);
+      ref.q = ref.state.displacement(t);
+      ref.base_harmonics = ref.state.harmonics;
+    }
+  } catch (const InputError& e) {
+    ref.compare = false;
+    summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
+  }
+  return ref;
+}
+
 }  // namespace
 
 int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
@@ -96,50 +212,28 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
     return 1;
   }
   // The frequency-domain steady state on the same window, for the comparison a user would make.
-  TrainSteadyOptions steady;
-  steady.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
-  steady.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
+  const SteadyReference ref = steadyReference(model, analysis, speed, r.t, summary);
+  const bool compare = ref.compare, torus = ref.torus;
+  const TrainSteadyState& s = ref.state;
+  const Eigen::MatrixXd& q = ref.q;
+  const TrainSteadyOptions& steady = ref.options;
   std::vector<std::string> header{"t_s"};
   for (const TrainMesh& m : model.meshes()) header.push_back("mesh_force_" + m.name + "_normal_n");
-  bool compare = true;
-  TrainSteadyState s;
-  Eigen::MatrixXd q;
-  const auto steady_start = Clock::now();
-  // A long common period (more than forced.torus_above harmonics) is compared on the torus of
-  // the mesh phases (train_torus.h): its peaks, orders and q(t) stand in for the common-period
-  // balance's, which would need thousands of harmonics.
-  const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1 << 30);
-  const int common_harmonics =
-      steady.mesh_harmonics *
-      (base.mesh_multiple.empty()
-           ? 1
-           : *std::max_element(base.mesh_multiple.begin(), base.mesh_multiple.end()));
-  const bool torus = common_harmonics > analysis.integer("forced.torus_above");
-  int base_harmonics = common_harmonics;
-  try {
-    if (torus) {
-      TrainTorusOptions options = config::trainTorusOptionsFromConfig(analysis);
-      options.mesh_harmonics = steady.mesh_harmonics;
-      options.group_harmonics = std::max(options.group_harmonics, options.mesh_harmonics);
-      TrainTorusState t = TrainTorusSolver(model, options).solve(speed);
-      q = t.displacement(r.t);
-      s.mesh_force_max = t.mesh_force_max, s.mesh_force_min = t.mesh_force_min;
-      s.mesh_force_harmonics = t.mesh_force_harmonics;
-      s.mesh_multiple = base.mesh_multiple;
-    } else {
-      s = solveTrainSteadyState(model, speed, steady);
-      q = s.displacement(r.t);
-      base_harmonics = s.harmonics;
-    }
-  } catch (const InputError& e) {
-    compare = false;
-    summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
-  }
+  const auto steady_start = ref.start;
   if (compare) {
     for (const TrainMesh& m : model.meshes())
       header.push_back("steady_mesh_force_" + m.name + "_normal_n");
   }
+  const std::vector<const TrainElement*> bearings = radialBearings(model);
+  for (const char* prefix : {"", "steady_"}) {
+    if (*prefix && !compare) break;
+    for (const TrainElement* b : bearings) {
+      header.push_back(fmt::format("{}bearing_force_{}_y_n", prefix, b->name));
+      header.push_back(fmt::format("{}bearing_force_{}_z_n", prefix, b->name));
+    }
+  }
   io::CsvTable table(header);
+  BearingForces bearing_forces(bearings.size());
   // The steady state's mesh forces on the record's times (also the truncation check's base).
   Eigen::MatrixXd steady_force(compare ? r.t.size() : 0, r.mesh_force.cols());
   Json differences = Json::object();
@@ -155,6 +249,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
         row.push_back(f);
       }
     }
+    bearing_forces.add(bearings, r.displacement.row(k), compare ? &q : nullptr, k, row);
     table.addRow(row);
   }
   result.addTable("time_history.csv", table);
@@ -216,6 +311,15 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   constexpr double kAgreement = 0.05;
   std::string status = r.status;
   std::vector<std::string> disagreeing;
+  // A train without meshes (a rotor with an unbalance) is compared by its bearing forces.
+  const Json bearing_differences = compare ? bearing_forces.differences(bearings) : Json();
+  if (model.meshes().empty() && compare) {
+    for (const auto& [bearing, difference] : bearing_differences.items()) {
+      if (difference.get<double>() > kAgreement)
+        disagreeing.push_back(
+            fmt::format("bearing {} {:.3g} %", bearing, 100.0 * difference.get<double>()));
+    }
+  }
   for (const auto& [mesh, difference] : differences.items()) {
     if (difference.get<double>() > kAgreement) {
       const std::string own =
@@ -233,9 +337,10 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
     status = "differs_from_steady_state";
     summary.warnings.push_back(fmt::format(
         "time: Newmark and the frequency-domain steady state differ by more than {:g} % of the "
-        "mesh force's p2p ({}): one has not converged; raise time.steps_per_mesh_period and "
+        "{} force's p2p ({}): one has not converged; raise time.steps_per_mesh_period and "
         "time.mesh_harmonics, or give a longer time.duration",
-        100.0 * kAgreement, fmt::join(disagreeing, ", ")));
+        100.0 * kAgreement, model.meshes().empty() ? "bearing" : "mesh",
+        fmt::join(disagreeing, ", ")));
   }
   const double steady_seconds = compare ? secondsSince(steady_start) : 0.0;
   summary.results["time"] = {
@@ -250,6 +355,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
       {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
       {"steady_state_method", torus ? "torus" : "common_period"},
       {"max_difference_to_steady_state_relative_to_p2p", differences},
+      {"bearing_force_difference_to_steady_state_relative_to_p2p", bearing_differences},
       {"steady_state_truncation_relative_to_p2p", truncation.empty() ? Json() : truncation},
       {"mesh_force_harmonics", harmonics}};
   if (r.transient) {
@@ -258,10 +364,10 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   }
   text += fmt::format(
       "time: {} Newmark steps of {:.3g} s in {:.2f} s{}\n", r.steps, r.time_step, seconds,
-      compare ? fmt::format(
-                    "; steady state for the comparison ({}) in {:.2f} s",
-                    torus ? std::string("torus") : fmt::format("{} base harmonics", base_harmonics),
-                    steady_seconds)
+      compare ? fmt::format("; steady state for the comparison ({}) in {:.2f} s",
+                            torus ? std::string("torus")
+                                  : fmt::format("{} base harmonics", ref.base_harmonics),
+                            steady_seconds)
               : std::string());
   writeTrainProbes(model, analysis, speed, r, compare && !torus ? &s : nullptr, result, text);
   record = r;

@@ -422,7 +422,8 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .unit("s")
       .min(0.0)
       .defaultValue(0.0)
-      .doc("Δt (0: the fastest mesh period / steps_per_mesh_period)");
+      .doc("Δt (0: the fastest mesh period / steps_per_mesh_period; a train without meshes: "
+           "the period of its fastest excitation order, e.g. an unbalance's 1x)");
   schema.integer("time.steps_per_mesh_period").min(8).defaultValue(128).doc("for the default Δt");
   schema.integer("time.record_periods")
       .min(1)

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <utility>
 
@@ -342,12 +343,23 @@ double TrainNewmarkStepper::meshForce(int mesh) const {
 TrainTimePlan planTrainTimeResponse(const GearTrainModel& model, double input_speed,
                                     const TrainTimeOptions& options) {
   options.validate();
-  if (model.meshes().empty()) throw InputError("meshes", "", "a train with at least one mesh");
+  if (model.meshes().empty() && model.excitations().empty()) {
+    throw InputError("meshes", "(none)",
+                     "a train that something drives: at least one mesh, unbalance, runout or "
+                     "bearing excitation");
+  }
   if (!(std::abs(input_speed) > 0.0)) {
     throw InputError("operating_point.speed_rpm", "0", "a speed != 0 for a time response");
   }
+  // The fastest forcing [Hz per rad/s of input speed]: a mesh frequency, or (a train without
+  // meshes, e.g. a rotor with an unbalance) the fastest excitation order |ν| Ω / 2π; the
+  // default step resolves its period by steps_per_mesh_period.
   double fastest = 0.0;
   for (const TrainMesh& m : model.meshes()) fastest = std::max(fastest, m.frequency_ratio);
+  if (model.meshes().empty()) {
+    for (const TrainExcitationTerm& e : model.excitations())
+      fastest = std::max(fastest, std::abs(e.ratio) / (2.0 * std::numbers::pi));
+  }
   fastest *= std::abs(input_speed);
   TrainTimePlan plan;
   // The common period of all meshes (1e9 base harmonics: no limit for the time domain).
@@ -390,7 +402,7 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
                                       [](const TrainUndampedMode& m) { return m.excited; });
     throw InputError("time.duration", "0 (derived)",
                      fmt::format("a duration > 0 s: the mode at {:.4g} Hz has no damping and the "
-                                 "meshes excite it, so its transient never decays (damp it, or "
+                                 "forcing excites it, so its transient never decays (damp it, or "
                                  "give time.duration)",
                                  excited->frequency));
   }

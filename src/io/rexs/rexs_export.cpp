@@ -127,37 +127,92 @@ int addRollingBearing(Writer& w, const std::string& name, const Json& b, Json at
   return id;
 }
 
-}  // namespace
+/// One export (exportRexsJson): the configuration read, the REXS components written so far with
+/// the ids of the shafts and gears they refer to, and the warnings about what REXS cannot hold.
+/// Each step writes one kind of component, in the order the relations need them.
+class Exporter {
+ public:
+  Exporter(const Json& cfg, std::vector<std::string>& warnings)
+      : cfg(cfg), warnings(warnings), op(cfg["operating_point"]) {
+    unit = w.add("gear_unit", cfg["gearbox"]["name"].get<std::string>(), Json::array());
+    casing = w.add("gear_casing", "casing", Json::array());
+    w.part(unit, "gear_unit", casing, "gear_casing");
+  }
+  /// Every component, then the operating point as the one load case: the REXS JSON text.
+  std::string json() {
+    shafts();
+    gearsAndMeshes();
+    planetaryStages();
+    bearings();
+    couplingsAndDisks();
+    return document();
+  }
 
-std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) {
+ private:
+  Json shaftAttributes(double x, bool input) const;
+  /// The shaft's sections from the gearbox's section lists (one diameter: every section).
+  void addSections(int shaft, const std::vector<double>& l, const std::vector<double>& o,
+                   const std::vector<double>& in, const std::string& name);
+  /// A gear (or ring gear) on `shaft` at u [m] with its two flanks and material.
+  int addGear(const std::string& name, const Json& g, int shaft, bool ring, double u);
+  void shafts();
+  void gearsAndMeshes();
+  void planetaryStages();
+  void bearings();
+  void couplingsAndDisks();
+  std::string document();
+
+  const Json& cfg;
+  std::vector<std::string>& warnings;
+  const Json& op;
   Writer w;
-  const int unit = w.add("gear_unit", cfg["gearbox"]["name"].get<std::string>(), Json::array());
-  const int casing = w.add("gear_casing", "casing", Json::array());
-  w.part(unit, "gear_unit", casing, "gear_casing");
+  int unit = 0, casing = 0;
   std::map<std::string, int> shaft_id, gear_id;
-  std::map<std::string, std::vector<double>> section_outer, section_start;
-  const Json& op = cfg["operating_point"];
-  auto shaftAttributes = [&](double x, bool input) {
-    return Json::array({vec("support_vector", "mm", {x * 1000, 0.0, 0.0}),
-                        vec("u_axis_vector", "none", {1.0, 0.0, 0.0}),
-                        {{"id", "defines_speed"}, {"unit", "none"}, {"boolean", input}}});
-  };
-  auto addSections = [&](int shaft, const std::vector<double>& l, const std::vector<double>& o,
-                         const std::vector<double>& in, const std::string& name) {
-    double u = 0.0;
-    for (std::size_t i = 0; i < l.size(); ++i) {
-      const double d = o.size() == 1 ? o[0] : o[i];
-      const double di = in.empty() ? 0.0 : in.size() == 1 ? in[0] : in[i];
-      const int s = w.add(
-          "shaft_section", fmt::format("{} section {}", name, i + 1),
-          {real("u_coordinate_on_shaft", "mm", u * 1000), real("length", "mm", l[i] * 1000),
-           real("outer_diameter_begin", "mm", d * 1000), real("outer_diameter_end", "mm", d * 1000),
-           real("inner_diameter_begin", "mm", di * 1000),
-           real("inner_diameter_end", "mm", di * 1000)});
-      w.part(shaft, "shaft", s, "shaft_section");
-      u += l[i];
-    }
-  };
+};
+
+Json Exporter::shaftAttributes(double x, bool input) const {
+  return Json::array({vec("support_vector", "mm", {x * 1000, 0.0, 0.0}),
+                      vec("u_axis_vector", "none", {1.0, 0.0, 0.0}),
+                      {{"id", "defines_speed"}, {"unit", "none"}, {"boolean", input}}});
+}
+
+void Exporter::addSections(int shaft, const std::vector<double>& l, const std::vector<double>& o,
+                           const std::vector<double>& in, const std::string& name) {
+  double u = 0.0;
+  for (std::size_t i = 0; i < l.size(); ++i) {
+    const double d = o.size() == 1 ? o[0] : o[i];
+    const double di = in.empty() ? 0.0 : in.size() == 1 ? in[0] : in[i];
+    const int s = w.add(
+        "shaft_section", fmt::format("{} section {}", name, i + 1),
+        {real("u_coordinate_on_shaft", "mm", u * 1000), real("length", "mm", l[i] * 1000),
+         real("outer_diameter_begin", "mm", d * 1000), real("outer_diameter_end", "mm", d * 1000),
+         real("inner_diameter_begin", "mm", di * 1000),
+         real("inner_diameter_end", "mm", di * 1000)});
+    w.part(shaft, "shaft", s, "shaft_section");
+    u += l[i];
+  }
+}
+
+int Exporter::addGear(const std::string& name, const Json& g, int shaft, bool ring, double u) {
+  const int id = w.add(ring ? "ring_gear" : "cylindrical_gear", name,
+                       {{{"id", "number_of_teeth"}, {"unit", "none"}, {"integer", g["teeth"]}},
+                        real("normal_module", "mm", g["module"].get<double>() * 1000),
+                        real("helix_angle_reference_diameter", "deg", g["helix_angle_deg"]),
+                        real("face_width", "mm", g["face_width"].get<double>() * 1000),
+                        real("u_coordinate_on_shaft", "mm", u * 1000)});
+  w.part(shaft, "shaft", id, ring ? "ring_gear" : "cylindrical_gear");
+  const Json flank_attrs = {real("normal_pressure_angle", "deg", g["pressure_angle_deg"]),
+                            real("addendum_modification_coefficient", "none", g["profile_shift"])};
+  const int left = w.add("cylindrical_gear_flank", name + " left flank", flank_attrs);
+  const int right = w.add("cylindrical_gear_flank", name + " right flank", flank_attrs);
+  w.relate("flank", {{id, "gear", ""}, {left, "left", ""}, {right, "right", ""}});
+  const int m = w.add("material", name + " material",
+                      material(g["youngs_modulus"], g["poisson_ratio"], g["density"]));
+  w.relate("reference", {{id, "origin", ""}, {m, "referenced", "material"}});
+  return id;
+}
+
+void Exporter::shafts() {
   for (const auto& [name, s] : cfg["shafts"].items()) {
     const int id =
         w.add("shaft", name, shaftAttributes(s["axial_offset"].get<double>(), name == op["input"]));
@@ -185,25 +240,9 @@ std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) 
       w.part(id, "shaft", lumped, "additional_mass");
     }
   }
-  auto addGear = [&](const std::string& name, const Json& g, int shaft, bool ring, double u) {
-    const int id = w.add(ring ? "ring_gear" : "cylindrical_gear", name,
-                         {{{"id", "number_of_teeth"}, {"unit", "none"}, {"integer", g["teeth"]}},
-                          real("normal_module", "mm", g["module"].get<double>() * 1000),
-                          real("helix_angle_reference_diameter", "deg", g["helix_angle_deg"]),
-                          real("face_width", "mm", g["face_width"].get<double>() * 1000),
-                          real("u_coordinate_on_shaft", "mm", u * 1000)});
-    w.part(shaft, "shaft", id, ring ? "ring_gear" : "cylindrical_gear");
-    const Json flank_attrs = {
-        real("normal_pressure_angle", "deg", g["pressure_angle_deg"]),
-        real("addendum_modification_coefficient", "none", g["profile_shift"])};
-    const int left = w.add("cylindrical_gear_flank", name + " left flank", flank_attrs);
-    const int right = w.add("cylindrical_gear_flank", name + " right flank", flank_attrs);
-    w.relate("flank", {{id, "gear", ""}, {left, "left", ""}, {right, "right", ""}});
-    const int m = w.add("material", name + " material",
-                        material(g["youngs_modulus"], g["poisson_ratio"], g["density"]));
-    w.relate("reference", {{id, "origin", ""}, {m, "referenced", "material"}});
-    return id;
-  };
+}
+
+void Exporter::gearsAndMeshes() {
   for (const auto& [name, g] : cfg["gears"].items())
     gear_id[name] = addGear(name, g, shaft_id.at(g["shaft"]), g["internal"], g["position"]);
   for (const auto& [name, m] : cfg["meshes"].items()) {
@@ -227,6 +266,9 @@ std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) 
                          ": the mesh-stiffness model and transmission error "
                          "are geardyn's; not exported");
   }
+}
+
+void Exporter::planetaryStages() {
   for (const auto& [name, p] : cfg["planetary"].items()) {
     const int st = w.add("planetary_stage", name, Json::array());
     w.part(unit, "gear_unit", st, "planetary_stage");
@@ -291,6 +333,9 @@ std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) 
                          ".pin_tangential_stiffness: REXS bearings are "
                          "isotropic; the radial value is exported");
   }
+}
+
+void Exporter::bearings() {
   for (const auto& [name, b] : cfg["bearings"].items()) {
     const bool held = b["k_torsion"].get<double>() > 0 && b["other_shaft"] == "";
     Json attrs = {
@@ -319,6 +364,9 @@ std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) 
                          ": REXS holds one radial stiffness and no damping; "
                          "kyy exported, kzz, cross terms and damping not");
   }
+}
+
+void Exporter::couplingsAndDisks() {
   for (const auto& [name, c] : cfg["couplings"].items()) {
     const int id =
         w.add("coupling", name,
@@ -337,6 +385,9 @@ std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) 
                           real("moment_of_inertia_w_axis", "kg m^2", d["diametral_inertia"])});
     w.part(shaft_id.at(d["shaft"]), "shaft", id, "additional_mass");
   }
+}
+
+std::string Exporter::document() {
   // The operating point as the one load case.
   const int in_load = w.add("external_load", "input load",
                             {{{"id", "defines_torque"}, {"unit", "none"}, {"boolean", true}},
@@ -363,6 +414,12 @@ std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) 
                 {"components", w.components_},
                 {"load_spectrum", {{"id", 1}, {"load_cases", Json::array({load_case})}}}};
   return Json{{"model", model}}.dump(2) + "\n";
+}
+
+}  // namespace
+
+std::string exportRexsJson(const Json& cfg, std::vector<std::string>& warnings) {
+  return Exporter(cfg, warnings).json();
 }
 
 }  // namespace geardyn::io::rexs

@@ -1,0 +1,96 @@
+"""geardyn train `time` on a train without meshes: a flexible Jeffcott rotor driven only by an
+unbalance steps by the excitation's period, writes its bearing forces (Newmark and the
+frequency-domain steady state) and agrees with the steady state; a train that nothing drives is
+refused naming the key (exit 2)."""
+
+import json
+
+from cli_support import run
+
+JEFFCOTT = """
+[gearbox]
+name = "Jeffcott rotor"
+dofs = "full"
+
+[shafts.rotor]
+section_lengths = [0.3, 0.3]
+outer_diameters = [0.02]
+flexible = true
+stiffness_proportional_damping = 2e-5
+
+[disks.wheel]
+shaft = "rotor"
+position = 0.3
+mass = 10.0
+polar_inertia = 0.05
+diametral_inertia = 0.025
+
+[bearings.left]
+shaft = "rotor"
+position = 0.0
+kyy = 1e8
+kzz = 1e8
+cyy = 200.0
+czz = 200.0
+
+[bearings.right]
+shaft = "rotor"
+position = 0.6
+kyy = 1e8
+kzz = 1e8
+cyy = 200.0
+czz = 200.0
+
+[operating_point]
+input = "rotor"
+speed_rpm = 3000.0
+torque = 0.0
+output = "rotor"
+
+[analysis]
+run = ["time"]
+"""
+
+UNBALANCE = """
+[unbalances.wheel]
+shaft = "rotor"
+position = 0.3
+mass_eccentricity = 1e-4
+phase_deg = 0.0
+"""
+
+
+def test_unbalanced_rotor_time_run_agrees_with_its_steady_state(tmp_path):
+    path = tmp_path / "jeffcott.toml"
+    path.write_text(JEFFCOTT + UNBALANCE)
+    result = run("train", path, "--out", tmp_path / "out", "--quiet")
+    assert result.returncode == 0, result.stderr
+    time = json.loads((tmp_path / "out" / "summary.json").read_text())["results"]["time"]
+    assert time["status"] == "completed"
+    # 128 steps per period of the unbalance (1x, 50 Hz): the default step of a train without
+    # meshes.
+    assert abs(time["time_step_s"] - 1.0 / (50.0 * 128)) < 1e-12
+    # Newmark (average acceleration) against the steady state: the period error (ωΔt)²/12 =
+    # 2.0e-4 at 128 steps per period is the expected difference (measured 3.0e-4); 2e-3 leaves
+    # room for the phase it accumulates over the recorded periods, and fails on a missing or
+    # wrong force.
+    differences = time["bearing_force_difference_to_steady_state_relative_to_p2p"]
+    assert set(differences) == {"left", "right"}
+    assert all(0.0 < d < 2e-3 for d in differences.values()), differences
+    header = (tmp_path / "out" / "time_history.csv").read_text().splitlines()[0].split(",")
+    assert header == ["t_s"] + [f"{p}bearing_force_{b}_{a}_n" for p in ("", "steady_")
+                                for b in ("left", "right") for a in ("y", "z")]
+    # The unbalance force m e Ω² = 1e-4 × (100π)² = 9.87 N: the run speed (50 Hz) lies above the
+    # rotor's first bending critical (29.4 Hz), where its response is mass-controlled, so each
+    # bearing of this symmetric rotor transmits less than that (measured 2.74 N).
+    rows = (tmp_path / "out" / "time_history.csv").read_text().splitlines()[1:]
+    peak = max(abs(float(r.split(",")[1])) for r in rows)
+    assert 0.0 < peak < 1e-4 * (100.0 * 3.141592653589793) ** 2
+
+
+def test_train_that_nothing_drives_is_refused_naming_the_key(tmp_path):
+    path = tmp_path / "still.toml"
+    path.write_text(JEFFCOTT)
+    result = run("train", path, "--out", tmp_path / "out", "--quiet")
+    assert result.returncode == 2
+    assert "meshes" in result.stderr and "unbalance" in result.stderr, result.stderr
