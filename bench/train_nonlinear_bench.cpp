@@ -166,7 +166,7 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       hill += std::chrono::duration<double>(t3 - t2).count();
       iterations += p.iterations;
       ++points;
-      // Untimed: the Arnoldi's operator applications and whether the 2n + 4 nearest 0 sufficed.
+      // Untimed: the Arnoldi's operator applications and whether the 2n + 8 nearest 0 sufficed.
       const detail::TrainHillResult r = detail::trainHillExponents(hbm.hillProblem(h, false));
       operations += r.operations;
       certified += r.computed < 4 * static_cast<int>(hbm.hillProblem(h, true).M.rows());
