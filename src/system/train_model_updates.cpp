@@ -92,7 +92,10 @@ GearTrainModel GearTrainModel::withParameters(GearTrainSpec spec) const {
     meshes_changed = true;
   }
   const bool torque_changed = now.input_torque != was.input_torque;
-  if ((meshes_changed || torque_changed) &&
+  // Unloaded before and after (a free-vibration study): every mesh force is zero whatever the
+  // stiffnesses, so no flank changes (the two torsional solves cost ~2 µs of a ~10 µs set).
+  const bool unloaded = now.input_torque == 0.0 && was.input_torque == 0.0;
+  if ((meshes_changed || torque_changed) && !unloaded &&
       flanks(out.torsionalMeshForces()) != flanks(torsionalMeshForces())) {
     return GearTrainModel(std::move(out.spec_), memory_limit_);
   }
