@@ -222,19 +222,12 @@ std::string SweepDefinition::fingerprint(const std::string& base_inputs) const {
   return fnv1a(resolved.dump() + "\n" + readText(base) + base_inputs);
 }
 
-SweepDefinition loadSweepDefinition(const fs::path& file,
-                                    const std::vector<std::string>& extra_set) {
-  toml::table root;
-  try {
-    root = parseTomlFile(file);
-  } catch (const toml::parse_error& e) {
-    if (!fs::exists(file)) throw InputError("config", file.string(), "an existing file");
-    throw InputError("config", file.string(),
-                     fmt::format("valid TOML ({} at line {})", std::string(e.description()),
-                                 e.source().begin.line));
-  }
-  // --set study.KEY=VALUE changes the study itself (study.parameters.<key> a swept key); other
-  // --set values are fixed overrides of the base configuration.
+namespace {
+
+/// --set study.KEY=VALUE changes the study itself (study.parameters.<key> a swept key): applied
+/// to `root`; the other --set values are returned, fixed overrides of the base configuration.
+std::vector<std::string> applyStudySets(toml::table& root,
+                                        const std::vector<std::string>& extra_set) {
   std::vector<std::string> base_set;
   for (const auto& e : extra_set) {
     const auto eq = e.find('=');
@@ -264,7 +257,11 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
     if (!table) throw InputError("--set", e, "study.parameters is a table in the file");
     parsed.get("v")->visit([&](auto&& value) { table->insert_or_assign(leaf, value); });
   }
-  SweepDefinition d;
+  return base_set;
+}
+
+/// The file's top-level keys besides [study]: title and [output].
+void readTopLevel(const toml::table& root, SweepDefinition& d) {
   for (const auto& [k, v] : root) {
     const std::string key(k.str());
     if (key == "title") {
@@ -280,12 +277,12 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
       unknownKey("", key, {"title", "study", "output"});
     }
   }
-  const toml::table* study = root["study"].as_table();
-  if (!study) throw InputError("study", "", "a [study] section");
-  for (const auto& [k, v] : *study) {
-    if (std::find(kStudyKeys.begin(), kStudyKeys.end(), std::string(k.str())) == kStudyKeys.end())
-      unknownKey("study", std::string(k.str()), kStudyKeys);
-  }
+}
+
+/// [study]'s scalar keys (command, base, design, samples, seed, seed_key, keep_case_results, set),
+/// with the command line's base overrides appended to `set`.
+void readStudyKeys(const toml::table* study, const fs::path& file,
+                   const std::vector<std::string>& base_set, SweepDefinition& d) {
   auto str = [&](const char* key, const std::string& fallback, bool required) {
     const toml::node* n = study->get(key);
     if (!n) {
@@ -337,6 +334,10 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
     // The sweep's own plots follow the command line's output.plots too.
     if (e.rfind("output.plots=", 0) == 0) d.plots = e.substr(13) == "true";
   }
+}
+
+/// study.outputs: "name=/json/pointer" or "/json/pointer" (named by the pointer), distinct names.
+void readOutputs(const toml::table* study, SweepDefinition& d) {
   const toml::array* outputs = study->get("outputs") ? study->get("outputs")->as_array() : nullptr;
   if (!outputs || outputs->empty())
     throw InputError("study.outputs", "",
@@ -358,6 +359,10 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
       throw InputError("study.outputs", "\"" + o.name + "\"", "distinct output names");
     d.outputs.push_back(o);
   }
+}
+
+/// study.parameters in the order of the file (toml++ keeps tables sorted by key).
+void readParameters(const toml::table* study, SweepDefinition& d) {
   const toml::table* params =
       study->get("parameters") ? study->get("parameters")->as_table() : nullptr;
   if (!params || params->empty())
@@ -371,7 +376,10 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
   for (const auto& [position, key] : order)
     d.parameters.push_back(parameterOf(key, *params->get(key), d.design));
   (void)d.caseCount();  // validates the design as a whole
+}
 
+/// The study as resolved (defaults filled in), recorded in the sweep's results.
+nlohmann::ordered_json resolvedStudy(const SweepDefinition& d) {
   nlohmann::ordered_json params_json = nlohmann::ordered_json::object();
   for (const auto& p : d.parameters) {
     nlohmann::ordered_json j = {{"distribution", toString(p.distribution)}};
@@ -389,12 +397,40 @@ SweepDefinition loadSweepDefinition(const fs::path& file,
   }
   nlohmann::ordered_json outputs_json = nlohmann::ordered_json::object();
   for (const auto& o : d.outputs) outputs_json[o.name] = o.pointer;
-  d.resolved = {{"title", d.title},        {"command", d.command},
-                {"base", d.base.string()}, {"design", toString(d.design)},
-                {"samples", d.samples},    {"seed", d.seed},
-                {"seed_key", d.seed_key},  {"set", d.set},
-                {"outputs", outputs_json}, {"parameters", params_json},
-                {"cases", d.caseCount()}};
+  return {{"title", d.title},        {"command", d.command},
+          {"base", d.base.string()}, {"design", toString(d.design)},
+          {"samples", d.samples},    {"seed", d.seed},
+          {"seed_key", d.seed_key},  {"set", d.set},
+          {"outputs", outputs_json}, {"parameters", params_json},
+          {"cases", d.caseCount()}};
+}
+
+}  // namespace
+
+SweepDefinition loadSweepDefinition(const fs::path& file,
+                                    const std::vector<std::string>& extra_set) {
+  toml::table root;
+  try {
+    root = parseTomlFile(file);
+  } catch (const toml::parse_error& e) {
+    if (!fs::exists(file)) throw InputError("config", file.string(), "an existing file");
+    throw InputError("config", file.string(),
+                     fmt::format("valid TOML ({} at line {})", std::string(e.description()),
+                                 e.source().begin.line));
+  }
+  const std::vector<std::string> base_set = applyStudySets(root, extra_set);
+  SweepDefinition d;
+  readTopLevel(root, d);
+  const toml::table* study = root["study"].as_table();
+  if (!study) throw InputError("study", "", "a [study] section");
+  for (const auto& [k, v] : *study) {
+    if (std::find(kStudyKeys.begin(), kStudyKeys.end(), std::string(k.str())) == kStudyKeys.end())
+      unknownKey("study", std::string(k.str()), kStudyKeys);
+  }
+  readStudyKeys(study, file, base_set, d);
+  readOutputs(study, d);
+  readParameters(study, d);
+  d.resolved = resolvedStudy(d);
   return d;
 }
 
