@@ -192,6 +192,64 @@ SteadyReference steadyReference(const GearTrainModel& model, const config::Confi
   return ref;
 }
 
+/// How far the steady state itself is from converged (a stiffness with jumps, such as the
+/// potential-energy model's, needs many harmonics): the largest change of its mesh forces over
+/// the window `t` when its mesh harmonics are doubled, per mesh, relative to the p2p (empty when
+/// twice the harmonics exceed forced.max_base_harmonics).
+Json steadyTruncation(const GearTrainModel& model, double speed, const TrainSteadyOptions& steady,
+                      const Eigen::VectorXd& t, const TrainSteadyState& s,
+                      const Eigen::MatrixXd& steady_force) {
+  Json truncation = Json::object();
+  TrainSteadyOptions doubled = steady;
+  doubled.mesh_harmonics *= 2;
+  try {
+    const Eigen::MatrixXd q2 = solveTrainSteadyState(model, speed, doubled).displacement(t);
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      const TrainMesh& mesh = model.meshes()[m];
+      const auto column = static_cast<Eigen::Index>(m);
+      double change = 0.0;
+      for (Eigen::Index k = 0; k < t.size(); ++k) {
+        change = std::max(change, std::abs(steady_force(k, column) -
+                                           mesh.force(t(k), speed, q2.row(k).transpose())));
+      }
+      const double p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
+      truncation[model.meshes()[m].name] = p2p > 0 ? change / p2p : 0.0;
+    }
+  } catch (const InputError&) {
+    // Twice the harmonics exceed forced.max_base_harmonics: not estimated (null).
+  }
+  return truncation;
+}
+
+/// Mesh-force harmonics of the Newmark window (whole common periods) against the balance's:
+/// pointwise values near a stiffness jump converge slowly in both methods (Gibbs, step size),
+/// the harmonics at the mesh orders quickly. Orders 1..3 per mesh.
+Json meshForceHarmonics(const GearTrainModel& model, const config::Config& analysis,
+                        const TrainSteadyState& s, const TrainTimeResponse& r) {
+  Json harmonics = Json::object();
+  const int periods = static_cast<int>(analysis.integer("time.record_periods"));
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    const Eigen::VectorXd f = r.mesh_force.col(static_cast<Eigen::Index>(m));
+    const double scale = s.mesh_force_harmonics[m][0];
+    Json orders = Json::array();
+    for (int l = 1; l <= 3 && l <= static_cast<int>(s.mesh_force_harmonics[m].size()); ++l) {
+      const double step =
+          2.0 * std::numbers::pi * l * s.mesh_multiple[m] * periods / static_cast<double>(f.size());
+      std::complex<double> sum = 0.0;
+      for (Eigen::Index k = 0; k < f.size(); ++k) sum += f(k) * std::polar(1.0, -step * k);
+      const double newmark = 2.0 * std::abs(sum) / static_cast<double>(f.size());
+      const double hbm = s.mesh_force_harmonics[m][l - 1];
+      orders.push_back(
+          {{"order", l},
+           {"newmark_n", newmark},
+           {"steady_state_n", hbm},
+           {"difference_relative_to_order_1", scale > 0 ? std::abs(newmark - hbm) / scale : 0.0}});
+    }
+    harmonics[model.meshes()[m].name] = orders;
+  }
+  return harmonics;
+}
+
 }  // namespace
 
 int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
@@ -253,56 +311,14 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
     table.addRow(row);
   }
   result.addTable("time_history.csv", table);
-  // How far the steady state itself is from converged (a stiffness with jumps, such as the
-  // potential-energy model's, needs many harmonics): the largest change of its mesh forces
-  // over the window when its mesh harmonics are doubled, per mesh, relative to the p2p.
-  Json truncation = Json::object();
-  if (compare && !torus) {
-    TrainSteadyOptions doubled = steady;
-    doubled.mesh_harmonics *= 2;
-    try {
-      const Eigen::MatrixXd q2 = solveTrainSteadyState(model, speed, doubled).displacement(r.t);
-      for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-        const TrainMesh& mesh = model.meshes()[m];
-        const auto column = static_cast<Eigen::Index>(m);
-        double change = 0.0;
-        for (Eigen::Index k = 0; k < r.t.size(); ++k) {
-          change = std::max(change, std::abs(steady_force(k, column) -
-                                             mesh.force(r.t(k), speed, q2.row(k).transpose())));
-        }
-        const double p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
-        truncation[model.meshes()[m].name] = p2p > 0 ? change / p2p : 0.0;
-      }
-    } catch (const InputError&) {
-      // Twice the harmonics exceed forced.max_base_harmonics: not estimated (null).
-    }
-  }
-  // Mesh-force harmonics of the Newmark window (whole common periods) against the balance's:
-  // pointwise values near a stiffness jump converge slowly in both methods (Gibbs, step size),
-  // the harmonics at the mesh orders quickly.
-  Json harmonics = Json::object();
+  const Json truncation = compare && !torus
+                              ? steadyTruncation(model, speed, steady, r.t, s, steady_force)
+                              : Json::object();
+  const Json harmonics = compare ? meshForceHarmonics(model, analysis, s, r) : Json::object();
   if (compare) {
-    const int periods = static_cast<int>(analysis.integer("time.record_periods"));
     for (std::size_t m = 0; m < model.meshes().size(); ++m) {
       const double p2p = s.mesh_force_max[m] - s.mesh_force_min[m];
       differences[model.meshes()[m].name] = p2p > 0 ? worst[m] / p2p : 0.0;
-      const Eigen::VectorXd f = r.mesh_force.col(static_cast<Eigen::Index>(m));
-      const double scale = s.mesh_force_harmonics[m][0];
-      Json orders = Json::array();
-      for (int l = 1; l <= 3 && l <= static_cast<int>(s.mesh_force_harmonics[m].size()); ++l) {
-        const double step = 2.0 * std::numbers::pi * l * s.mesh_multiple[m] * periods /
-                            static_cast<double>(f.size());
-        std::complex<double> sum = 0.0;
-        for (Eigen::Index k = 0; k < f.size(); ++k) sum += f(k) * std::polar(1.0, -step * k);
-        const double newmark = 2.0 * std::abs(sum) / static_cast<double>(f.size());
-        const double hbm = s.mesh_force_harmonics[m][l - 1];
-        orders.push_back({{"order", l},
-                          {"newmark_n", newmark},
-                          {"steady_state_n", hbm},
-                          {"difference_relative_to_order_1",
-                           scale > 0 ? std::abs(newmark - hbm) / scale : 0.0}});
-      }
-      harmonics[model.meshes()[m].name] = orders;
     }
   }
   // Newmark from the static state and the balance are two solutions of one periodic problem:

@@ -228,48 +228,29 @@ Component::Kind kindOf(const std::string& name) {
   return Component::kGearBackward;
 }
 
-}  // namespace
-
-DteIdentification jointIdentification(const LateralRotorSpec& known,
-                                      const std::vector<MeasuredWhirlPeaks>& data, int harmonics,
-                                      const IdentificationOptions& options,
-                                      const DteIdentification& start) {
-  double largest = 0.0;
-  for (const auto& d : data)
-    for (int s = 0; s < 2; ++s)
-      for (const auto& c : d.peaks[s]) largest = std::max(largest, std::abs(c.value));
-  if (!(largest > 0.0)) {
-    throw InputError("input.spectra", "all peaks zero", "nothing to identify from");
-  }
-  if (!(options.mesh_damping_ratio > 0.0) || !(options.mesh_damping_ratio_sd > 0.0)) {
-    throw InputError(
-        "identify.mesh_damping_ratio",
-        fmt::format("{:g} (sd {:g})", options.mesh_damping_ratio, options.mesh_damping_ratio_sd),
-        "the damping-ratio prior needs a ratio > 0 and a relative sd > 0 (fix c_m "
-        "with prior.mesh_damping instead)");
-  }
-  Problem p{known, data, harmonics, options};
-  p.scale = largest;
-  p.k_ref = known.pinion_shaft_stiffness + known.gear_shaft_stiffness;
-  p.m_eff = meshDampingMass(known.pinion_mass, known.gear_mass);
+/// The components compared, their measured values and weights, and the priors that fix a
+/// parameter (p.scale set: the largest measured peak).
+void setUpProblem(Problem& p) {
+  p.k_ref = p.known.pinion_shaft_stiffness + p.known.gear_shaft_stiffness;
+  p.m_eff = meshDampingMass(p.known.pinion_mass, p.known.gear_mass);
   p.components.push_back({"static", Component::kStatic, 0});
-  for (int i = 1; i <= harmonics; ++i) {
+  for (int i = 1; i <= p.harmonics; ++i) {
     p.components.push_back({fmt::format("mesh_{}_fwd", i), Component::kMeshForward, i});
     p.components.push_back({fmt::format("mesh_{}_bwd", i), Component::kMeshBackward, i});
   }
   for (const char* n : {"pinion_1x_fwd", "pinion_1x_bwd", "gear_1x_fwd", "gear_1x_bwd"})
     p.components.push_back({n, kindOf(n), 0});
-  for (const auto& d : data) {
+  for (const auto& d : p.data) {
     std::array<double, 2> s;
     std::array<std::vector<Complex>, 2> values;
     for (int k = 0; k < 2; ++k) {
-      s[k] = std::max(d.coefficient_sigma[k], 1e-8 * largest) / std::sqrt(2.0);
+      s[k] = std::max(d.coefficient_sigma[k], 1e-8 * p.scale) / std::sqrt(2.0);
       for (const auto& c : p.components) values[k].push_back(peakOf(d, k, c.name));
     }
     p.sigma.push_back(s);
     p.measured.push_back(values);
   }
-  const auto& ks = options.mesh_stiffness;
+  const auto& ks = p.options.mesh_stiffness;
   if (ks.value) {
     if (!(*ks.value > 0.0) || !(ks.relative_sd >= 0.0)) {
       throw InputError("prior.mesh_stiffness",
@@ -281,15 +262,20 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
       p.fixed[0] = p.k_ref / *ks.value;
     }
   }
-  const auto& cs = options.mesh_damping;
+  const auto& cs = p.options.mesh_damping;
   if (cs.value && (!(*cs.value > 0.0) || !(cs.relative_sd >= 0.0))) {
     throw InputError("prior.mesh_damping",
                      fmt::format("{:g} (relative sd {:g})", *cs.value, cs.relative_sd),
                      "a value > 0 and a relative standard deviation >= 0");
   }
-  const int n = p.parameters();
+}
 
-  // Starting point: the best of a grid in s and the three-step estimate.
+/// Starting point: the best of a grid in the compliance s and the three-step estimate `start`.
+Eigen::VectorXd bestStart(Problem& p, const DteIdentification& start) {
+  const int n = p.parameters();
+  const auto& ks = p.options.mesh_stiffness;
+  const auto& cs = p.options.mesh_damping;
+  const IdentificationOptions& options = p.options;
   std::vector<double> candidates;
   if (start.mesh_stiffness.value > 0.0 && std::isfinite(start.mesh_stiffness.value))
     candidates.push_back(p.k_ref / start.mesh_stiffness.value);
@@ -315,13 +301,19 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
     throw InputError("input.spectra", "(no finite start)", "the data give no finite fit");
   }
 
-  // Levenberg–Marquardt.
-  DteIdentification r;
-  r.method = IdentificationMethod::kJoint;
-  r.spec = known;
+  return best;
+}
+
+/// Levenberg–Marquardt from `t`, then undamped Gauss–Newton polish while it does not raise the
+/// cost: the fitted parameters, with r.iterations and r.converged, `res` and `cost` at them.
+Eigen::VectorXd leastSquares(Problem& p, const Eigen::VectorXd& best, DteIdentification& r,
+                             Eigen::VectorXd& res, double& cost) {
+  const int n = p.parameters();
+  const IdentificationOptions& options = p.options;
   Eigen::VectorXd t = best;
-  Eigen::VectorXd res = p.residual(t);
-  double cost = res.squaredNorm(), lambda = 1e-3;
+  res = p.residual(t);
+  cost = res.squaredNorm();
+  double lambda = 1e-3;
   r.converged = false;
   for (r.iterations = 0; r.iterations < options.max_iterations; ++r.iterations) {
     if (options.progress) options.progress(r.iterations, options.max_iterations);
@@ -367,7 +359,14 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
     if (step.norm() < 1e-14 * (1.0 + t.norm())) break;
   }
 
-  // Covariance.
+  return t;
+}
+
+/// The parameters' covariance: the SVD pseudo-inverse of JᵀJ at `t`, inflated by χ²/dof when
+/// above 1, rows of fixed parameters zero; r.chi_square and r.degrees_of_freedom set.
+Eigen::MatrixXd parameterCovariance(Problem& p, const Eigen::VectorXd& t,
+                                    const Eigen::VectorXd& res, double cost, DteIdentification& r) {
+  const int n = p.parameters();
   const Eigen::MatrixXd j = p.jacobian(t);
   const int free_count = n - (p.free[0] ? 0 : 1) - (p.free[1] ? 0 : 1);
   r.chi_square = cost;
@@ -386,6 +385,15 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
   for (int k = 0; k < 2; ++k)
     if (!p.free[k]) cov.row(k).setZero(), cov.col(k).setZero();
 
+  return cov;
+}
+
+/// The identified values with their 95 % intervals (k_m, c_m, mean TE, TE harmonics, runouts).
+void identifiedValues(Problem& p, const Eigen::VectorXd& t, const Eigen::MatrixXd& cov,
+                      DteIdentification& r) {
+  const IdentificationOptions& options = p.options;
+  const auto& ks = p.options.mesh_stiffness;
+  const int harmonics = p.harmonics;
   const double w = options.identifiable_width;
   // k_m = k_ref / s: the interval of s mapped; open to +inf when it reaches s <= 0.
   {
@@ -423,6 +431,38 @@ DteIdentification jointIdentification(const LateralRotorSpec& known,
   r.pinion_runout = phasorFrom({t[k] * L, t[k + 1] * L}, cov.block<2, 2>(k, k) * (L * L), w, true);
   r.gear_runout =
       phasorFrom({t[k + 2] * L, t[k + 3] * L}, cov.block<2, 2>(k + 2, k + 2) * (L * L), w, false);
+}
+
+}  // namespace
+
+DteIdentification jointIdentification(const LateralRotorSpec& known,
+                                      const std::vector<MeasuredWhirlPeaks>& data, int harmonics,
+                                      const IdentificationOptions& options,
+                                      const DteIdentification& start) {
+  double largest = 0.0;
+  for (const auto& d : data)
+    for (int s = 0; s < 2; ++s)
+      for (const auto& c : d.peaks[s]) largest = std::max(largest, std::abs(c.value));
+  if (!(largest > 0.0)) {
+    throw InputError("input.spectra", "all peaks zero", "nothing to identify from");
+  }
+  if (!(options.mesh_damping_ratio > 0.0) || !(options.mesh_damping_ratio_sd > 0.0)) {
+    throw InputError(
+        "identify.mesh_damping_ratio",
+        fmt::format("{:g} (sd {:g})", options.mesh_damping_ratio, options.mesh_damping_ratio_sd),
+        "the damping-ratio prior needs a ratio > 0 and a relative sd > 0 (fix c_m "
+        "with prior.mesh_damping instead)");
+  }
+  Problem p{known, data, harmonics, options};
+  p.scale = largest;
+  setUpProblem(p);
+  DteIdentification r;
+  r.method = IdentificationMethod::kJoint;
+  r.spec = known;
+  Eigen::VectorXd res;
+  double cost = 0.0;
+  const Eigen::VectorXd t = leastSquares(p, bestStart(p, start), r, res, cost);
+  identifiedValues(p, t, parameterCovariance(p, t, res, cost, r), r);
   writeBack(r);
   if (!std::isfinite(r.spec.mesh_stiffness) || !(r.spec.mesh_stiffness > 0.0)) {
     // The fit's compliance is not physical (≤ 0): the model to re-simulate uses a rigid-like
