@@ -280,22 +280,10 @@ RunEstimate estimateSweep(const config::SweepDefinition& study, const config::Co
   return e;
 }
 
-}  // namespace
-
-int runSweep(const CommandOptions& options) {
-  std::unique_ptr<MpiWorld> mpi;
-  if (launchedByMpi()) mpi = std::make_unique<MpiWorld>();
-  const bool root = !mpi || mpi->rank() == 0;
-  config::SweepDefinition study =
-      config::loadSweepDefinition(options.config_file, options.overrides);
-  const auto commands = allCommands();
-  const Command& command = findCommand(commands, study.command);
-  // The base configuration with the study's fixed overrides must load: a typo in a key fails here,
-  // before any case runs (each case's own values are checked by the case).
-  const BaseFile base_file(command, study.base);
-  const config::ConfigSchema& base_schema = base_file.schema;
-  const config::Config base = base_file.load(study.set);
-  for (const auto& note : base.notes()) warn(note);
+/// The study's keys that the base command renamed (seed_key, swept parameters): warned once and
+/// rewritten, except a swept key whose unit changed, which each case reads and converts.
+void applyRenamedStudyKeys(config::SweepDefinition& study,
+                           const config::ConfigSchema& base_schema) {
   for (std::string* key : {&study.seed_key}) {
     if (const std::string* renamed = base_schema.aliasTarget(*key)) {
       warn(fmt::format("study.seed_key: {} is deprecated: write {}", *key, *renamed));
@@ -317,6 +305,81 @@ int runSweep(const CommandOptions& options) {
     warn(fmt::format("study.parameters.{} is deprecated: write {}", p.key, *renamed));
     p.key = *renamed;
   }
+}
+
+/// sweep.h5, sweep.csv, the summary (its status, warnings per failed case, output statistics)
+/// and the plots of a finished sweep; the exit code.
+int writeSweepResults(const CommandOptions& options, const config::SweepDefinition& study,
+                      const config::Config& base,
+                      const std::vector<analysis::SweepCaseRecord>& records, long long resumed,
+                      long long computed, const std::string& workers, double elapsed,
+                      const fs::path& folder, const fs::path& cases_dir) {
+  const long long total = study.caseCount();
+  std::error_code ec;
+  if (fs::is_empty(cases_dir, ec)) fs::remove(cases_dir, ec);  // nothing kept
+  io::ResultWriter writer(folder);
+  // The journal is not listed among the summary's files: a later run's ResultWriter removes
+  // listed files, and the journal must survive for --resume.
+  analysis::writeSweepHdf5(writer.pathFor("sweep.h5"), study, records, base.resolved().dump());
+  writer.recordFile("sweep.h5");
+  writer.writeCsv("sweep.csv", analysis::sweepTable(study, records));
+  long long failed = 0;
+  std::map<std::string, long long> by_status;
+  for (const auto& r : records) {
+    ++by_status[r.status];
+    failed += r.status != "ok";
+  }
+  io::RunSummary summary;
+  summary.command = "sweep";
+  summary.config_source = options.config_file.string();
+  summary.config = {{"study", study.resolved}, {"base_config", base.resolved()}};
+  summary.seed = study.seed;
+  summary.status = failed == 0 ? "ok" : "cases_failed";
+  for (const auto& r : records) {
+    if (r.status != "ok" && summary.warnings.size() < 20)
+      summary.warnings.push_back(fmt::format("case {}: {}: {}", r.index, r.status, r.message));
+  }
+  summary.results = {{"cases", total},
+                     {"by_status", by_status},
+                     {"resumed", resumed},
+                     {"computed", computed},
+                     {"workers", workers},
+                     {"wall_time_s", elapsed},
+                     {"journal", "sweep_journal.jsonl"},
+                     {"outputs", outputStatistics(study, records)}};
+  auto path = writer.writeSummary(summary);
+  if (study.plots) {
+    for (const auto& file : drawPlots("sweep", writer.folder())) writer.recordFile(file);
+    path = writer.writeSummary(summary);
+  }
+  if (failed > 0) {
+    std::cerr << fmt::format("geardyn sweep: {} of {} cases did not succeed (see sweep.csv)\n",
+                             failed, total);
+  }
+  report(options,
+         fmt::format("sweep of `{}`: {} cases ({} computed, {} resumed, {} failed) in "
+                     "{:.3g} s\nresults: {}\n",
+                     study.command, total, computed, resumed, failed, elapsed, path.string()));
+  return failed == 0 ? kExitOk : kExitNumericalFailure;
+}
+
+}  // namespace
+
+int runSweep(const CommandOptions& options) {
+  std::unique_ptr<MpiWorld> mpi;
+  if (launchedByMpi()) mpi = std::make_unique<MpiWorld>();
+  const bool root = !mpi || mpi->rank() == 0;
+  config::SweepDefinition study =
+      config::loadSweepDefinition(options.config_file, options.overrides);
+  const auto commands = allCommands();
+  const Command& command = findCommand(commands, study.command);
+  // The base configuration with the study's fixed overrides must load: a typo in a key fails here,
+  // before any case runs (each case's own values are checked by the case).
+  const BaseFile base_file(command, study.base);
+  const config::ConfigSchema& base_schema = base_file.schema;
+  const config::Config base = base_file.load(study.set);
+  for (const auto& note : base.notes()) warn(note);
+  applyRenamedStudyKeys(study, base_schema);
   rejectSweptOverrides(study, options);
   checkStudyValues(study, base_file, base, options.config_file);
   if (!study.seed_key.empty() && !base_schema.findKey(study.seed_key))
@@ -414,54 +477,10 @@ int runSweep(const CommandOptions& options) {
   }
   if (!root) return kExitOk;
 
-  const double elapsed = progress.elapsed();
-  std::error_code ec;
-  if (fs::is_empty(cases_dir, ec)) fs::remove(cases_dir, ec);  // nothing kept
-  io::ResultWriter writer(folder);
-  // The journal is not listed among the summary's files: a later run's ResultWriter removes
-  // listed files, and the journal must survive for --resume.
-  analysis::writeSweepHdf5(writer.pathFor("sweep.h5"), study, records, base.resolved().dump());
-  writer.recordFile("sweep.h5");
-  writer.writeCsv("sweep.csv", analysis::sweepTable(study, records));
-  long long failed = 0;
-  std::map<std::string, long long> by_status;
-  for (const auto& r : records) {
-    ++by_status[r.status];
-    failed += r.status != "ok";
-  }
-  io::RunSummary summary;
-  summary.command = "sweep";
-  summary.config_source = options.config_file.string();
-  summary.config = {{"study", study.resolved}, {"base_config", base.resolved()}};
-  summary.seed = study.seed;
-  summary.status = failed == 0 ? "ok" : "cases_failed";
-  for (const auto& r : records) {
-    if (r.status != "ok" && summary.warnings.size() < 20)
-      summary.warnings.push_back(fmt::format("case {}: {}: {}", r.index, r.status, r.message));
-  }
-  summary.results = {{"cases", total},
-                     {"by_status", by_status},
-                     {"resumed", resumed},
-                     {"computed", computed},
-                     {"workers", mpi ? fmt::format("{} MPI ranks", mpi->size())
-                                     : fmt::format("{} threads", threads)},
-                     {"wall_time_s", elapsed},
-                     {"journal", "sweep_journal.jsonl"},
-                     {"outputs", outputStatistics(study, records)}};
-  auto path = writer.writeSummary(summary);
-  if (study.plots) {
-    for (const auto& file : drawPlots("sweep", writer.folder())) writer.recordFile(file);
-    path = writer.writeSummary(summary);
-  }
-  if (failed > 0) {
-    std::cerr << fmt::format("geardyn sweep: {} of {} cases did not succeed (see sweep.csv)\n",
-                             failed, total);
-  }
-  report(options,
-         fmt::format("sweep of `{}`: {} cases ({} computed, {} resumed, {} failed) in "
-                     "{:.3g} s\nresults: {}\n",
-                     study.command, total, computed, resumed, failed, elapsed, path.string()));
-  return failed == 0 ? kExitOk : kExitNumericalFailure;
+  return writeSweepResults(
+      options, study, base, records, resumed, computed,
+      mpi ? fmt::format("{} MPI ranks", mpi->size()) : fmt::format("{} threads", threads),
+      progress.elapsed(), folder, cases_dir);
 }
 
 }  // namespace geardyn::cli
