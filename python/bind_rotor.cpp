@@ -84,9 +84,8 @@ py::dict phasorDict(const IdentifiedPhasor& p) {
   return d;
 }
 
-}  // namespace
-
-void bindRotor(py::module_& m) {
+/// geardyn.LateralRotor: Rao's 4-DOF rotor description.
+void bindLateralRotorSpec(py::module_& m) {
   py::class_<LateralRotorSpec>(
       m, "LateralRotor",
       "The 4-DOF lateral geared rotor of Rao (2023), SI units; the keyword "
@@ -202,7 +201,10 @@ void bindRotor(py::module_& m) {
           py::arg("steady_tolerance") = 1e-6,
           "Dormand-Prince from rest: {'t', 'eta' (N x 4: x1, y1, x2, y2 [m]), 'sample_rate', "
           "'transient_end', 'window' (steady whole common periods), 'status', 'message'}.");
+}
 
+/// The lateral rotor's responses and the identification from Python.
+void bindRotorFunctions(py::module_& m) {
   m.def(
       "full_spectrum",
       [](const Array& x, const Array& y, double sample_rate, const std::string& window) {
@@ -293,6 +295,13 @@ void bindRotor(py::module_& m) {
       "Gear-mesh DTE parameters from whirl peaks (a list of gear_whirl_peaks results, one per "
       "speed; probe frame). `known` supplies masses, shafts, gravity and teeth. Returns values "
       "with 95 % intervals and identifiability, and 'rotor' (the identified LateralRotor).");
+}
+
+}  // namespace
+
+void bindRotor(py::module_& m) {
+  bindLateralRotorSpec(m);
+  bindRotorFunctions(m);
 }
 
 }  // namespace geardyn::python

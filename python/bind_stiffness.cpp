@@ -52,9 +52,8 @@ py::object mapValues(const py::object& x, const F& f) {
   return std::move(out);
 }
 
-}  // namespace
-
-void bindStiffness(py::module_& m) {
+/// geardyn.MeshStiffness: k(φ) of any model, its table and Fourier form.
+void bindMeshStiffnessBase(py::module_& m) {
   py::class_<MeshStiffness, std::shared_ptr<MeshStiffness>>(
       m, "MeshStiffness",
       "Mesh stiffness over one mesh period as a function of the mesh phase (mesh periods; "
@@ -94,7 +93,10 @@ void bindStiffness(py::module_& m) {
           py::arg("order") = 10,
           "mean, min, max, std [N/m] and Fourier coefficients up to `order`: k = mean + "
           "sum(cosine_i cos(2 pi i phase) + sine_i sin(2 pi i phase))");
+}
 
+/// The mesh-stiffness models (constant, step, Fourier, potential energy, ...).
+void bindMeshStiffnessModels(py::module_& m) {
   py::class_<ConstantMeshStiffness, MeshStiffness, std::shared_ptr<ConstantMeshStiffness>>(
       m, "ConstantMeshStiffness", "A constant mesh stiffness (API, ISO 6336 mean).")
       .def(py::init<std::string, double, double>(), py::arg("name"), py::arg("value"),
@@ -173,7 +175,10 @@ void bindStiffness(py::module_& m) {
       .def_property_readonly("contact_end", &PotentialEnergyMeshStiffness::contactEnd,
                              "[m] from T1")
       .def_property_readonly("warnings", &PotentialEnergyMeshStiffness::warnings);
+}
 
+/// Phase conventions and the stiffness builders from a configuration.
+void bindStiffnessFunctions(py::module_& m) {
   m.def("mesh_phase_from_roll_angle", &meshPhaseFromRollAngle, py::arg("roll_angle"),
         py::arg("pinion_teeth"), "mesh phase of a pinion roll angle [rad]: theta z1 / (2 pi)");
   m.def("roll_angle_from_mesh_phase", &rollAngleFromMeshPhase, py::arg("phase"),
@@ -222,6 +227,14 @@ void bindStiffness(py::module_& m) {
       },
       py::arg("pair"), py::arg("c_m") = 0.8, py::arg("material_factor") = true,
       "ISO 6336-1 method B: c', c_gamma_alpha [N/(mm um)] and the mean mesh stiffness [N/m]");
+}
+
+}  // namespace
+
+void bindStiffness(py::module_& m) {
+  bindMeshStiffnessBase(m);
+  bindMeshStiffnessModels(m);
+  bindStiffnessFunctions(m);
 }
 
 }  // namespace geardyn::python
