@@ -27,6 +27,7 @@ packages=(
   libopenmpi-dev openmpi-bin  # mpirun -n N geardyn sweep
   chromium chromium-driver python3-selenium  # the HTML report's test in headless Chromium
   calculix-ccx gmsh python3-gmsh  # [housing]: ccx assembles K, M of the user's deck; gmsh meshes the example's box
+  libsuitesparse-dev  # [housing]: CHOLMOD's supernodal Cholesky (METIS ordering) of the housing's K_oo
 )
 # npm fetches plotly.js for `geardyn report`; Debian's npm only if no npm is on PATH (a NodeSource
 # nodejs brings its own and conflicts with Debian's).

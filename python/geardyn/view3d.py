@@ -1,6 +1,7 @@
 """The interactive 3-D view of a gear train's result: its shafts, gears, planets, carriers,
-bearings, couplings and disks as shaded solids (three.js, embedded), a mode list where a click
-animates the mode, and the Campbell diagram linked to it.
+bearings, couplings and disks as shaded solids (three.js, embedded), a flexible housing's outer
+surface (semi-transparent, at rest: its modal motion is not drawn yet), a mode list where a
+click animates the mode, and the Campbell diagram linked to it.
 
 The geometry comes from the train's ``summary.json`` (``results.geometry``, written by
 ``geardyn train``, with the body each part moves with) and ``bodies.csv`` (every body's rest
@@ -23,7 +24,7 @@ import json
 import math
 import pathlib
 
-from . import _embed
+from . import _embed, _housing_surface
 
 _HERE = pathlib.Path(__file__).resolve().parent
 # Mode shapes of this many modes at most go into the page: a 270-DOF train has 270 modes, the
@@ -243,7 +244,16 @@ def view_data(folder, summary):
     return {"title": name or summary.get("config", {}).get("title") or "gear train",
             "speed_rpm": speed, "bodies": [{"name": b["name"], "c": b["c"], "r": _round(b["r"], 6)} for b in bodies],
             "geometry": geometry, "modes": modes, "campbell": _campbell(folder, len(modes)),
-            "ods": _ods(folder, index, bodies)}
+            "ods": _ods(folder, index, bodies), "housing_surface": _housing(summary)}
+
+
+def _housing(summary):
+    """The housing's outer surface (_housing_surface.outer_surface) in metres, or None."""
+    deck = summary.get("results", {}).get("housing", {}).get("deck")
+    if not deck:
+        return None
+    units = summary.get("config", {}).get("gearbox_description", {}).get("housing", {}).get("units")
+    return _housing_surface.outer_surface(deck, 1e-3 if units == "mm_t_s" else 1.0)
 
 
 def _script_json(value):

@@ -69,6 +69,20 @@ window.geardynScene = (function () {
         s.mesh.scale.set(s.e.radius, len, s.e.radius);
       });
     }
+    // A flexible housing's outer surface (view3d.py, _housing_surface.py), semi-transparent and
+    // at rest; not picked by the hover (the parts inside it are).
+    if (data.housing_surface) {
+      var hs = data.housing_surface, skin = new THREE.BufferGeometry();
+      skin.setAttribute('position', new THREE.Float32BufferAttribute(hs.positions, 3));
+      skin.setIndex(hs.triangles);
+      skin.computeVertexNormals();
+      var housing = new THREE.Mesh(skin, new THREE.MeshStandardMaterial({
+        color: 0x8fa3b8, transparent: true, opacity: 0.15, side: THREE.DoubleSide,
+        depthWrite: false, roughness: 0.8, flatShading: true}));
+      housing.userData.housing = true;
+      housing.renderOrder = 1;
+      world.add(housing);
+    }
     var rest = new Float64Array(6 * bodies.length);
     place(rest);
     // The train's size from its parts at rest; a train long along its shafts is seen from the
@@ -128,7 +142,9 @@ window.geardynScene = (function () {
         var r = renderer.domElement.getBoundingClientRect(), name = null;
         mouse.set((ev.clientX - r.left) / r.width * 2 - 1, -(ev.clientY - r.top) / r.height * 2 + 1);
         ray.setFromCamera(mouse, camera);
-        var hit = ray.intersectObject(world, true).filter(function (h) { return h.object.isMesh; })[0];
+        var hit = ray.intersectObject(world, true).filter(function (h) {
+          return h.object.isMesh && !h.object.userData.housing;
+        })[0];
         for (var o = hit && hit.object; o && !name; o = o.parent) {
           var i = nodes.indexOf(o);
           if (o.userData.label) name = o.userData.label;

@@ -12,10 +12,15 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
+#include "cholmod_module.h"
 #include "geardyn/error.h"
+#include "geardyn/module_loader.h"
 
 namespace geardyn {
 namespace {
@@ -32,24 +37,100 @@ double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+/// CHOLMOD's functions (cholmod_module.h), or null when libgeardyn_cholmod.so cannot be loaded
+/// or GEARDYN_SPARSE_CHOLESKY=simplicial asks for Eigen's factorisation (the bench's comparison).
+const detail::CholmodModuleApi* cholmodModule() {
+  const char* choice = std::getenv("GEARDYN_SPARSE_CHOLESKY");
+  if (choice != nullptr && std::strcmp(choice, "simplicial") == 0) return nullptr;
+  static const detail::CholmodModuleApi* api = []() -> const detail::CholmodModuleApi* {
+    try {
+      using Entry = const detail::CholmodModuleApi* (*)();
+      const auto entry = reinterpret_cast<Entry>(
+          loadModuleSymbol("libgeardyn_cholmod.so", "geardyn_cholmod_module"));
+      const detail::CholmodModuleApi* loaded = entry();
+      return loaded->version == detail::kCholmodModuleVersion ? loaded : nullptr;
+    } catch (const IoError&) {
+      return nullptr;  // built without SuiteSparse, or the module is missing: Eigen's LDLᵀ
+    }
+  }();
+  return api;
+}
+
+/// K_oo factorised once: CHOLMOD's supernodal Cholesky with METIS ordering (cholmod_module.h
+/// says why), or Eigen's SimplicialLDLT with AMD when the module is not available.
+class KooFactor {
+ public:
+  explicit KooFactor(const SparseMatrix& Koo) : n_(Koo.rows()), api_(cholmodModule()) {
+    if (api_ != nullptr) {
+      SparseMatrix lower = Koo.triangularView<Eigen::Lower>();
+      lower.makeCompressed();
+      int status = detail::kCholmodFailed;
+      double entries = 0.0;
+      factor_ = api_->factorise(static_cast<int>(n_), lower.outerIndexPtr(), lower.innerIndexPtr(),
+                                lower.valuePtr(), &status, &entries);
+      if (factor_ == nullptr && status == detail::kCholmodFailed) {
+        throw std::runtime_error("housing reduction: CHOLMOD could not factorise K_oo");
+      }
+      positive_ = factor_ != nullptr;
+      return;
+    }
+    ldlt_ = std::make_unique<Ldlt>(Koo);
+    positive_ = ldlt_->info() == Eigen::Success && (ldlt_->vectorD().array() > 0.0).all();
+  }
+  ~KooFactor() {
+    if (factor_ != nullptr) api_->release(factor_);
+  }
+  KooFactor(const KooFactor&) = delete;
+  KooFactor& operator=(const KooFactor&) = delete;
+  bool positiveDefinite() const { return positive_; }
+  Eigen::Index rows() const { return n_; }
+  /// B ← K_oo⁻¹ B.
+  void solveInPlace(Eigen::MatrixXd& B) const {
+    if (factor_ != nullptr) {
+      if (api_->solve(factor_, static_cast<int>(B.cols()), B.data()) != 0) {
+        throw std::runtime_error("housing reduction: CHOLMOD's solve failed");
+      }
+      return;
+    }
+    B = ldlt_->solve(B).eval();
+  }
+  /// y = K_oo⁻¹ x for contiguous vectors of rows() entries.
+  void solve(const double* x, double* y) const {
+    Eigen::Map<const Eigen::VectorXd> in(x, n_);
+    Eigen::Map<Eigen::VectorXd> out(y, n_);
+    if (factor_ != nullptr) {
+      out = in;
+      if (api_->solve(factor_, 1, y) != 0) {
+        throw std::runtime_error("housing reduction: CHOLMOD's solve failed");
+      }
+      return;
+    }
+    out = ldlt_->solve(in);
+  }
+
+ private:
+  Eigen::Index n_ = 0;
+  const detail::CholmodModuleApi* api_ = nullptr;
+  void* factor_ = nullptr;
+  std::unique_ptr<Ldlt> ldlt_;
+  bool positive_ = false;
+};
+
 /// y = K_oo⁻¹ x with K_oo factorised once, in Spectra's shift-invert operator interface (the
 /// shift is 0: K_oo is positive definite, its seats held by the interface).
 class InverseOp {
  public:
   using Scalar = double;
-  explicit InverseOp(const Ldlt& ldlt) : ldlt_(ldlt) {}
-  Eigen::Index rows() const { return ldlt_.rows(); }
-  Eigen::Index cols() const { return ldlt_.cols(); }
+  explicit InverseOp(const KooFactor& factor) : factor_(factor) {}
+  Eigen::Index rows() const { return factor_.rows(); }
+  Eigen::Index cols() const { return factor_.rows(); }
   void set_shift(const Scalar& sigma) {
     if (sigma != 0.0) throw std::logic_error("InverseOp: only the shift 0 is factorised");
   }
-  void perform_op(const Scalar* x_in, Scalar* y_out) const {
-    Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
-    Eigen::Map<Eigen::VectorXd>(y_out, rows()) = ldlt_.solve(x);
-  }
+  void perform_op(const Scalar* x_in, Scalar* y_out) const { factor_.solve(x_in, y_out); }
 
  private:
-  const Ldlt& ldlt_;
+  const KooFactor& factor_;
 };
 
 /// Where each mesh DOF goes: the interface (seat s, rigid) or interior column j.
@@ -134,10 +215,10 @@ Eigen::Vector3d tieSeat(const HousingNodeSet& seat, int s,
 
 /// The `nev` lowest fixed-interface modes by shift-invert Lanczos on the factorised K_oo
 /// (Spectra's SymGEigsShiftSolver, shift 0), ascending.
-void lanczosModes(const SparseMatrix& Moo, const Ldlt& ldlt, Eigen::Index nev, Eigen::MatrixXd& Phi,
-                  Eigen::VectorXd& lambda) {
+void lanczosModes(const SparseMatrix& Moo, const KooFactor& factor, Eigen::Index nev,
+                  Eigen::MatrixXd& Phi, Eigen::VectorXd& lambda) {
   const Eigen::Index no = Moo.rows();
-  InverseOp op(ldlt);
+  InverseOp op(factor);
   Spectra::SparseSymMatProd<double> bop(Moo);
   const Eigen::Index ncv = std::min<Eigen::Index>(no, std::max<Eigen::Index>(2 * nev + 1, 20));
   Spectra::SymGEigsShiftSolver<InverseOp, Spectra::SparseSymMatProd<double>,
@@ -160,7 +241,7 @@ void lanczosModes(const SparseMatrix& Moo, const Ldlt& ldlt, Eigen::Index nev, E
 /// factor of K_oo the constraint modes need, asking for twice as many until the highest found
 /// lies above the cut-off (a second factorisation of K_oo − ω_c² M_oo to count them by Sylvester's
 /// law of inertia cost as much as the first; issue #37's reduction budget).
-void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const Ldlt& ldlt,
+void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const KooFactor& factor,
                          const CraigBamptonOptions& options, Eigen::MatrixXd& Phi,
                          Eigen::VectorXd& lambda) {
   const Eigen::Index no = Koo.rows();
@@ -180,7 +261,7 @@ void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const
   } else {
     Eigen::Index nev = by_cutoff ? std::min<Eigen::Index>(12, no / 2) : m;
     while (true) {
-      lanczosModes(Moo, ldlt, nev, Phi, lambda);
+      lanczosModes(Moo, factor, nev, Phi, lambda);
       if (!by_cutoff || lambda(lambda.size() - 1) >= w * w || nev >= no / 2) break;
       nev = std::min<Eigen::Index>(2 * nev, no / 2);
     }
@@ -264,19 +345,20 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
   const Eigen::MatrixXd Kbb = Tb.transpose() * KTb, Mbb = Tb.transpose() * MTb;
 
   const auto t_factor = Clock::now();
-  Ldlt ldlt(Koo);
+  const KooFactor factor(Koo);
   red.factorisation_s = secondsSince(t_factor);
-  if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0.0).any()) {
+  if (!factor.positiveDefinite()) {
     throw InputError(key, "the housing with its seats held",
                      "a housing whose interior is held by its seats (K_oo positive definite): "
                      "check that every part of the mesh is connected to a seat or a *BOUNDARY");
   }
-  const Eigen::MatrixXd Psi = -ldlt.solve(Kob);
+  Eigen::MatrixXd Psi = -Kob;
+  factor.solveInPlace(Psi);
 
   Eigen::MatrixXd Phi;
   Eigen::VectorXd lambda;
   const auto t_modes = Clock::now();
-  fixedInterfaceModes(Koo, Moo, ldlt, options, Phi, lambda);
+  fixedInterfaceModes(Koo, Moo, factor, options, Phi, lambda);
   red.modes_s = secondsSince(t_modes);
   const Eigen::Index m = Phi.cols();
   red.mode_frequencies_hz = lambda.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);

@@ -28,22 +28,50 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
   out->k = terms.k;
   out->c = terms.c;
   out->beta = spec.stiffness_proportional_damping;
-  out->Jc = out->J.cast<std::complex<double>>();
-  out->Wc = out->W.cast<std::complex<double>>();
-  out->Phic = out->Phi.cast<std::complex<double>>();
+  const Eigen::Index r = out->W.rows(), n_h = out->W.cols();
+  out->P.resize(r * r, n_h);
+  for (Eigen::Index k = 0; k < n_h; ++k) {
+    Eigen::Map<Eigen::MatrixXd>(out->P.col(k).data(), r, r) =
+        out->W.col(k) * out->W.col(k).transpose();
+  }
   return out;
 }
+
+namespace {
+
+using Complex = std::complex<double>;
+
+/// A x for a real A and a complex x: two real products (a quarter of the work each of a complex
+/// one).
+Eigen::MatrixXcd realTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
+  Eigen::MatrixXcd out(A.rows(), x.cols());
+  out.real() = A * x.real();
+  out.imag() = A * x.imag();
+  return out;
+}
+
+/// Aᵀ x likewise.
+Eigen::MatrixXcd realTransposeTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
+  Eigen::MatrixXcd out(A.cols(), x.cols());
+  out.real() = A.transpose() * x.real();
+  out.imag() = A.transpose() * x.imag();
+  return out;
+}
+
+}  // namespace
 
 void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt,
                                       double w) {
   const Complex iw(0.0, w);
   dinv_ =
       ((1.0 + iw * h.beta) * h.lambda.cast<Complex>().array() - Complex(w * w)).inverse().matrix();
-  const Eigen::MatrixXcd G = h.Wc * dinv_.asDiagonal() * h.Wc.transpose();
+  const auto r = h.k.rows();
+  const Eigen::VectorXcd g = realTimes(h.P, dinv_);  // vec G, G = W diag(1/d) Wᵀ
+  const Eigen::Map<const Eigen::MatrixXcd> G(g.data(), r, r);
   const Eigen::MatrixXcd Z = h.k.cast<Complex>() + iw * h.c.cast<Complex>();
-  const auto r = Z.rows();
   Zeff_ = (Eigen::MatrixXcd::Identity(r, r) + Z * G).partialPivLu().solve(Z);
-  lu_.compute(Dtt + h.Jc.transpose() * (Zeff_ - Z) * h.Jc);
+  lu_.compute(Dtt + realTransposeTimes(
+                        h.J, realTimes(h.J.transpose(), (Zeff_ - Z).transpose()).transpose()));
 }
 
 Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
@@ -54,15 +82,15 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
   // then Φᵀ f_h and g vanish and two n_h × n_h products per column are skipped.
   if (rhs.bottomRows(n_h).isZero(0.0)) {
     out.topRows(n_t) = lu_.solve(rhs.topRows(n_t));
-    const Eigen::MatrixXcd F = Zeff_ * (h.Jc * out.topRows(n_t));  // bearing forces
-    out.bottomRows(n_h) = h.Phic * (dinv_.asDiagonal() * (h.Wc.transpose() * F));
+    const Eigen::MatrixXcd F = Zeff_ * realTimes(h.J, out.topRows(n_t));  // bearing forces
+    out.bottomRows(n_h) = realTimes(h.Phi, dinv_.asDiagonal() * realTransposeTimes(h.W, F));
     return out;
   }
-  const Eigen::MatrixXcd p = h.Phic.transpose() * rhs.bottomRows(n_h);  // Φᵀ f_h
-  const Eigen::MatrixXcd g = h.Wc * (dinv_.asDiagonal() * p);           // J_H D_h0⁻¹ f_h
-  out.topRows(n_t) = lu_.solve(rhs.topRows(n_t) + h.Jc.transpose() * (Zeff_ * g));
-  const Eigen::MatrixXcd F = Zeff_ * (h.Jc * out.topRows(n_t) - g);  // bearing forces
-  out.bottomRows(n_h) = h.Phic * (dinv_.asDiagonal() * (h.Wc.transpose() * F + p));
+  const Eigen::MatrixXcd p = realTransposeTimes(h.Phi, rhs.bottomRows(n_h));  // Φᵀ f_h
+  const Eigen::MatrixXcd g = realTimes(h.W, dinv_.asDiagonal() * p);          // J_H D_h0⁻¹ f_h
+  out.topRows(n_t) = lu_.solve(rhs.topRows(n_t) + realTransposeTimes(h.J, Zeff_ * g));
+  const Eigen::MatrixXcd F = Zeff_ * (realTimes(h.J, out.topRows(n_t)) - g);  // bearing forces
+  out.bottomRows(n_h) = realTimes(h.Phi, dinv_.asDiagonal() * (realTransposeTimes(h.W, F) + p));
   return out;
 }
 

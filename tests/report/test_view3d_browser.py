@@ -29,6 +29,9 @@ CASES = {
     "view3d_two_stage_flexible": ("train_two_stage_flexible",
                                   ['analysis.run=["modal","campbell","forced"]', "forced.points=6"]),
     "view3d_lin_parker_4_planets": ("train_lin_parker1999", ["planetary.stage.planets=4"]),
+    # The two-stage reducer in the gmsh box (issue 37; its deck from the example's fixture, the
+    # reduction from the cache beside it): the housing's skin in the view.
+    "view3d_two_stage_housing": ("train_two_stage_reducer_housing", ["forced.points=6"]),
 }
 
 
@@ -225,6 +228,51 @@ def _screenshot(chromium, mode, name):
     shot = chromium.screenshot(OUT / "screenshots" / name, "gd-view3d-0")
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 20_000
     chromium.driver.execute_script("document.getElementById('gd-view3d-0').gdView.setPlaying(true);")
+
+
+def test_housing_surface_is_the_decks_closed_skin():
+    """_housing_surface.outer_surface: two hexahedra sharing a face have 10 outer quads (20
+    triangles, 12 corners); the example box's skin (C3D10, corner faces) is closed: every edge
+    lies in exactly two triangles."""
+    from geardyn import _housing_surface
+
+    deck = OUT / "two_hexahedra.inp"
+    deck.parent.mkdir(parents=True, exist_ok=True)
+    deck.write_text("*NODE\n" + "".join(f"{i + 1}, {x}, {y}, {z}\n" for i, (x, y, z) in enumerate(
+        [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1),
+         (2, 0, 0), (2, 1, 0), (2, 0, 1), (2, 1, 1)]))
+        + "*ELEMENT, TYPE=C3D8, ELSET=E\n1, 1, 2, 3, 4, 5, 6, 7, 8\n2, 2, 9, 10, 3, 6, 11, 12, 7\n")
+    two = _housing_surface.outer_surface(deck, 1e-3)
+    assert len(two["triangles"]) == 3 * 20 and len(two["positions"]) == 3 * 12
+    assert max(two["positions"]) == pytest.approx(2e-3)  # scaled to metres
+    box = _housing_surface.outer_surface(SOURCE / "examples" / "gearboxes" / "two_stage_reducer_box.inp")
+    edges = {}
+    t = box["triangles"]
+    for k in range(0, len(t), 3):
+        for a, b in ((t[k], t[k + 1]), (t[k + 1], t[k + 2]), (t[k + 2], t[k])):
+            edges[(min(a, b), max(a, b))] = edges.get((min(a, b), max(a, b)), 0) + 1
+    assert set(edges.values()) == {2}, "an open or non-manifold skin"
+
+
+def test_housed_reducer_view_draws_the_housing(runs, chromium):
+    """The box housing's outer surface drawn semi-transparent around the train (at rest: its
+    modal motion is not drawn yet); the page stays small; screenshot of the first housing mode."""
+    _, page = runs["view3d_two_stage_housing"]
+    assert page.stat().st_size <= 5_000_000, page.stat().st_size
+    seen = chromium.open(page)
+    assert seen["views_rendered"] == 1 and seen["console"] == [], seen
+    triangles = chromium.driver.execute_script(
+        "return JSON.parse(document.getElementById('gd-view3d-0-data').textContent)"
+        ".housing_surface.triangles.length / 3;")
+    assert triangles > 1000
+    modes = _modes(chromium)
+    # The first mode of type "housing" in modes.csv (the box on the bearings, 605.0 Hz: the
+    # example's expect line); the view's own mode types count the bodies' motion only.
+    housing = next(i for i, m in enumerate(modes) if m[1] == pytest.approx(604.99, rel=5e-4))
+    _screenshot(chromium, housing, "view3d_two_stage_housing_first_housing_mode.png")
+    image = _canvas_image(chromium)
+    assert _differing(image, (0xf3, 0xf5, 0xf7)) > 0.1 * image.size[0] * image.size[1]
+    assert chromium.page_console() == []
 
 
 def test_python_result_shows_the_view_inline(chromium, tmp_path):

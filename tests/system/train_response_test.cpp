@@ -17,6 +17,7 @@
 #include "geardyn/solvers/train_element_orders.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
+#include "system/mesh_force_sample.h"
 #include "system/sample_trains.h"
 
 namespace geardyn {
@@ -123,10 +124,7 @@ void compareTimeAndFrequencyDomain(const GearTrainModel& model, double speed) {
     ASSERT_GT(p2p, 1e-3 * std::abs(hbm.mesh_force_mean[m])) << "no dynamics to compare";
     double worst = 0.0;
     for (Eigen::Index k = 0; k < t.size(); ++k) {
-      const double phi = mesh.phaseAt(t(k), speed);
-      double d = 0.0;
-      for (std::size_t i = 0; i < mesh.dofs.size(); ++i) d += mesh.gradient[i] * q(k, mesh.dofs[i]);
-      const double f = mesh.stiffness->stiffness(phi) * (d - mesh.transmission_error.value(phi));
+      const double f = testing::meshForceAt(mesh, q.row(k), t(k), speed);
       worst = std::max(worst, std::abs(f - newmark.mesh_force(k, m)));
     }
     EXPECT_LT(worst, 5e-3 * p2p) << mesh.name << ": worst " << worst / p2p << " of p2p";

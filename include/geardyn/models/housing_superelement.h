@@ -15,8 +15,9 @@
 ///      K_cb = [K_bb + K_bo Ψ, 0; 0, Λ],
 ///      M_cb = [M_bb + M_bo Ψ + Ψᵀ M_ob + Ψᵀ M_oo Ψ, (M_bo + Ψᵀ M_oo) Φ; sym, I].
 ///    The modes are found by shift-invert Lanczos (Spectra's SymGEigsShiftSolver) on the sparse
-///    K_oo, M_oo with K_oo factorised once (SimplicialLDLT, the factor the constraint modes use):
-///    twice as many are asked for until the highest found lies above the cut-off.
+///    K_oo, M_oo with K_oo factorised once (CHOLMOD's supernodal Cholesky with METIS ordering in
+///    libgeardyn_cholmod.so, or Eigen's SimplicialLDLT without it; the factor the constraint
+///    modes use): twice as many are asked for until the highest found lies above the cut-off.
 /// With no modes the superelement is Guyan's static condensation K_bb − K_bo K_oo⁻¹ K_ob.
 
 #include <Eigen/Core>

@@ -10,7 +10,10 @@
 ///   [D_tt − Jᵀ Z J + Jᵀ Z_eff J] q_t = f_t + Jᵀ Z_eff g,   g = W diag(1/d) Φᵀ f_h,
 ///   q_h = Φ diag(1/d) (Wᵀ F + Φᵀ f_h),   F = Z_eff (J q_t − g) (the bearing forces).
 /// Per frequency: r² n_h for G, r³ for Z_eff and the train's own n_t × n_t LU, instead of an LU
-/// of n_t + n_h.
+/// of n_t + n_h. G is one real (r² × n_h) product with the complex 1/d, vec G = P (1/d) with P's
+/// column k the outer product vec(w_k w_kᵀ) precomputed, and Φ, W, J enter the solves as real
+/// matrices times the real and imaginary parts of a complex operand: a real product costs a
+/// quarter of a complex one, two of them half (bench/housing_bench.cpp, BM_ForcedPerSpeed).
 
 #include <Eigen/Dense>
 #include <memory>
@@ -28,7 +31,8 @@ struct HousingCondensation {
   Eigen::VectorXd lambda;  ///< ω_k² [1/s²]
   Eigen::MatrixXd k, c;    ///< r × r: the rows' stiffness and damping (with the gearbox's β k)
   double beta = 0.0;       ///< the housing's β_h [s]
-  Eigen::MatrixXcd Jc, Wc, Phic;  ///< J, W, Φ as complex matrices (the solves' operands)
+  /// r² × n_h: column k is vec(w_k w_kᵀ), w_k = W's column k (G = W diag(1/d) Wᵀ as P (1/d)).
+  Eigen::MatrixXd P;
   /// The condensation of `model`'s housing; null without a housing or when the housing is not
   /// held (a zero eigenvalue: the exact path then factorises the whole block).
   static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
