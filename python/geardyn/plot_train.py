@@ -227,6 +227,33 @@ def _forced(folder, summary, title, axes=None):
     return figure
 
 
+def _bearing_forced(folder, summary, title):
+    """A train without meshes (a rotor driven by an unbalance, a runout or a bearing excitation):
+    the dynamic force every bearing transmits against speed (forced_response.csv's
+    dynamic_<bearing>_n, the amplitude of its spring force), the rotor's Bode plot."""
+    table = _read_columns(folder / "forced_response.csv")
+    speeds = table["speed_rpm"]
+    gearbox = summary["config"].get("gearbox_description") or summary["config"]
+    names = [b for b in gearbox.get("bearings", {}) if "dynamic_" + b + "_n" in table]
+    if not names:
+        return None
+    figure, ax = plt.subplots(figsize=(10.5, 4.5), layout="constrained")
+    values = [v for b in names for v in table["dynamic_" + b + "_n"]]
+    floor = log_floor(values) or 1e-12
+    for b in names:
+        ax.semilogy(speeds, [max(v, floor) for v in table["dynamic_" + b + "_n"]], lw=1.2, label=b)
+    operating = abs(summary["results"]["kinematics"]["input_speed_rpm"])
+    if operating:
+        ax.axvline(operating, color="tab:red", lw=0.8, ls=":", label="operating speed")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
+    ax.set_xlabel("input speed [rpm]")
+    ax.set_ylabel("dynamic bearing force [N]")
+    ax.set_title(f"{title}: forced response of the bearings to the unbalances, runouts and "
+                 "bearing excitations (frequency domain)", fontsize=9)
+    return figure
+
+
 def _train_title(summary):
     return summary["config"].get("gearbox", {}).get("name") or \
         summary["config"].get("gearbox_description", {}).get("gearbox", {}).get("name") or "gear train"
@@ -253,9 +280,11 @@ def plot_train(result_dir, save=False):
     if "contact" in results:
         figures["mesh_contact.png"] = mesh_contact_figure(folder, summary, title)
     if "forced" in results:
-        # A train without meshes (a rotor with an unbalance) has no mesh forces to draw here.
-        if results["forced"].get("meshes"):
-            figures["forced_response.png"] = _forced(folder, summary, title)
+        # A train without meshes (a rotor with an unbalance) has bearing forces to draw instead.
+        figure = (_forced(folder, summary, title) if results["forced"].get("meshes")
+                  else _bearing_forced(folder, summary, title))
+        if figure is not None:
+            figures["forced_response.png"] = figure
         if (folder / "forced_mesh_orders.csv").exists():
             figure = whine_orders_figure(folder, summary, title)
             if figure is not None:
