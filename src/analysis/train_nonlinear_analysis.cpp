@@ -418,7 +418,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
       throw InputError("bearings." + b.name + ".model", "\"nonlinear\"",
                        "\"linearised\" with the torus balance (nonlinear.method = \"torus\", or "
                        "meshes without a short common period): the full bearing law is "
-                       "validated in the common-period balance and the time analysis only");
+                       "validated in the common-period balance and its Newmark checks only");
     }
     return runTrainNonlinearTorus(model, analysis, result, text, context);
   }

@@ -34,10 +34,11 @@ void addRollingBearingKeys(ConfigSchema& schema, const std::string& prefix) {
       .choices({"linearised", "nonlinear"})
       .defaultValue("linearised")
       .doc(
-          "with a `type` from the geometry, what the train nonlinear and time analyses use: "
-          "\"linearised\", the tangent stiffness at the static deflection (as every linear "
-          "analysis); \"nonlinear\", the full load-deflection law with the clearance (elements "
-          "leave contact) on the radial displacement (planar DOFs)");
+          "with a `type` from the geometry, what the train nonlinear analysis (its harmonic "
+          "balance and Newmark checks) uses: \"linearised\", the tangent stiffness at the static "
+          "deflection (as every linear analysis, `time` included); \"nonlinear\", the full "
+          "load-deflection law with the clearance (elements leave contact) on the radial "
+          "displacement (planar DOFs)");
   schema.string(prefix + "arrangement")
       .choices({"single", "back_to_back", "face_to_face"})
       .defaultValue("single")
