@@ -259,6 +259,14 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
   checkTrainProbes(model, analysis, speed);
+  for (const TrainClearanceBearing& b : model.clearanceBearings()) {
+    if (!b.rolling) continue;
+    summary.warnings.push_back(fmt::format(
+        "time: bearings.{}.model = \"nonlinear\" acts in the nonlinear analysis (and its Newmark "
+        "checks); the time analysis is linear and uses the bearing linearised at the static "
+        "deflection",
+        b.name));
+  }
   const TrainTimeOptions options = config::trainTimeOptionsFromConfig(analysis);
   const TrainTimePlan plan = planTime(model, speed, options, context);
   const TrainTimeResponse r = solveTrainTimeResponse(

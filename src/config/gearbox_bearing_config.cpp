@@ -30,6 +30,15 @@ void addRollingBearingKeys(ConfigSchema& schema, const std::string& prefix) {
           "\"stiffness\": the stiffness keys (kyy, ...); else a rolling bearing from its "
           "geometry (ISO/TS 16281): nonlinear and coupled in (y, z, x, tilts), solved in the "
           "static deflection and linearised there for the linear analyses");
+  schema.string(prefix + "model")
+      .choices({"linearised", "nonlinear"})
+      .defaultValue("linearised")
+      .doc(
+          "with a `type` from the geometry, what the train nonlinear analysis (its harmonic "
+          "balance and Newmark checks) uses: \"linearised\", the tangent stiffness at the static "
+          "deflection (as every linear analysis, `time` included); \"nonlinear\", the full "
+          "load-deflection law with the clearance (elements leave contact) on the radial "
+          "displacement (planar DOFs)");
   schema.string(prefix + "arrangement")
       .choices({"single", "back_to_back", "face_to_face"})
       .defaultValue("single")
@@ -189,6 +198,17 @@ std::shared_ptr<const RollingBearing> rollingBearingFromConfig(const Config& con
     }
     throw;
   }
+}
+
+bool fullBearingLawFromConfig(const Config& config, const std::string& prefix, bool rolling) {
+  const std::string model = config.string(prefix + "model");
+  if (model == "nonlinear" && !rolling) {
+    throw InputError(
+        prefix + "model", "\"nonlinear\"",
+        "\"linearised\" with type = \"stiffness\": the full law is a rolling bearing's "
+        "from its geometry (a stiffness bearing with play: radial_clearance)");
+  }
+  return model == "nonlinear";
 }
 
 }  // namespace geardyn::config::detail

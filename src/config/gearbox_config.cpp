@@ -172,6 +172,7 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     b.radial_clearance = config.real(p + "radial_clearance");
     b.rolling = detail::rollingBearingFromConfig(config, p, b.radial_clearance);
     if (b.rolling) b.radial_clearance = 0.0;  // in the geometry
+    b.full_law = detail::fullBearingLawFromConfig(config, p, b.rolling != nullptr);
     spec.bearings.push_back(b);
   }
   for (const std::string& name : config.names("disks")) {

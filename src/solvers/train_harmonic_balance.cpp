@@ -358,11 +358,10 @@ Eigen::VectorXd TrainHarmonicBalance::startingGuess(double omega) {
   linearized_ = false;
   for (int b = 0; b < bearings_; ++b) {  // the journal onto the bearing surface (header)
     const int c = meshes_ + 2 * b;
-    const double radius = std::hypot(u(c * n_), u((c + 1) * n_));
-    if (!(radius > 0.0)) continue;  // unloaded: no direction to move along
-    const double scale = 1.0 + model_.clearanceBearings()[b].clearance / radius;
-    u(c * n_) *= scale;
-    u((c + 1) * n_) *= scale;
+    const Eigen::Vector2d mean = model_.clearanceBearings()[b].loadedDisplacement(
+        Eigen::Vector2d(u(c * n_), u((c + 1) * n_)));
+    u(c * n_) = mean(0);
+    u((c + 1) * n_) = mean(1);
   }
   return u;
 }
@@ -487,7 +486,7 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
       const int c = meshes_ + 2 * b;
       S.block(c, c, 2, 2) = bearing.meanStiffness({delta_(i0, c), delta_(i0, c + 1)},
                                                   {delta_(i1, c), delta_(i1, c + 1)}) -
-                            bearing.stiffness * Eigen::Matrix2d::Identity();
+                            bearing.linearStiffness();
     }
     y.noalias() = PQ * rhs;
     w.noalias() = Vt * y;

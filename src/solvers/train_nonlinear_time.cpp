@@ -190,7 +190,7 @@ void TrainNonlinearNewmark::eventState(std::vector<long long>& out) const {
   const auto& bearings = model_.clearanceBearings();
   for (std::size_t b = 0; b < bearings.size(); ++b) {
     const int c = meshes_ + 2 * static_cast<int>(b);
-    out[2 * meshes_ + b] = delta_.segment<2>(c).norm() > bearings[b].clearance;
+    out[2 * meshes_ + b] = bearings[b].touching(delta_.segment<2>(c));
   }
 }
 

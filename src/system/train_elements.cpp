@@ -143,8 +143,13 @@ void GearTrainModel::buildElements() {
       }
       add(b.name, "bearing", parts, k, c);
       if (b.radial_clearance > 0.0) {
-        clearance_bearings_.push_back(
-            {b.name, elements_.back().dofs, elements_.back().jacobian, b.kyy, b.radial_clearance});
+        TrainClearanceBearing cb;
+        cb.name = b.name;
+        cb.dofs = elements_.back().dofs;
+        cb.jacobian = elements_.back().jacobian;
+        cb.stiffness = b.kyy;
+        cb.clearance = b.radial_clearance;
+        clearance_bearings_.push_back(std::move(cb));
       }
     }
     // Axial spring on the axis, tilt springs about y and z (full DOFs).

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -74,6 +75,14 @@ void GearTrainModel::addRollingBearing(const TrainBearingSpec& b, const std::str
                          {b.c_torsion, "c_torsion", "N m s/rad"}}) {
     detail::requireNonNegative(v.value, key + "." + v.name, v.unit);
   }
+  if ((b.full_law || b.nonlinear_law) && spec_.dofs != TrainDofs::kPlanar) {
+    throw InputError(key + ".model", "\"nonlinear\"",
+                     fmt::format("\"linearised\" with gearbox.dofs = \"{}\": the full bearing law "
+                                 "in the nonlinear analyses acts on (u_y, u_z) with planar DOFs "
+                                 "only (the axial and tilt rows of a full-DOF bearing are not "
+                                 "nonlinear coordinates of the harmonic balance)",
+                                 toString(spec_.dofs)));
+  }
   if (spec_.dofs == TrainDofs::kTorsional) {
     warnings_.push_back(fmt::format(
         "{}: a {} bearing acts only on translations and tilts; ignored with gearbox.dofs = "
@@ -109,6 +118,16 @@ void GearTrainModel::addRollingBearing(const TrainBearingSpec& b, const std::str
     elements_.push_back(e);
     element_damping_.push_back(J.transpose() * c * J);
   }
+  if (b.nonlinear_law) {  // the full law in the nonlinear solvers (bearing_clearance.h)
+    TrainClearanceBearing cb;
+    cb.name = b.name;
+    cb.dofs = dofs;
+    cb.jacobian = J.topRows(2);
+    cb.clearance = std::max(0.0, 0.5 * b.nonlinear_law->geometry().clearance);
+    cb.rolling = b.nonlinear_law;
+    cb.linear = k.topLeftCorner<2, 2>();
+    clearance_bearings_.push_back(std::move(cb));
+  }
   if (b.rolling) {
     const int index = static_cast<int>(&b - spec_.bearings.data());
     rolling_bearings_.push_back({b.name, index, b.rolling, dofs, J});
@@ -123,6 +142,7 @@ GearTrainModel GearTrainModel::linearisedAt(const Eigen::Ref<const Eigen::Vector
     rb.bearing->evaluate(rb.displacement(q), F, &K);
     TrainBearingSpec& b = spec.bearings[rb.spec_index];
     b.stiffness_matrix = 0.5 * (K + K.transpose());
+    if (b.full_law) b.nonlinear_law = b.rolling;
     b.rolling = nullptr;
   }
   return GearTrainModel(std::move(spec), memory_limit_);

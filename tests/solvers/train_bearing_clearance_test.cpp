@@ -47,7 +47,9 @@ GearTrainSpec clearancePair(double c) {
 }
 
 TEST(BearingClearance, ForceLawAndItsJacobian) {
-  TrainClearanceBearing b{"b", {}, {}, 2e8, 1e-5};
+  TrainClearanceBearing b;
+  b.stiffness = 2e8;
+  b.clearance = 1e-5;
   Eigen::Matrix2d J;
   EXPECT_EQ(b.contactForce({6e-6, -7e-6}, &J), Eigen::Vector2d::Zero());  // |u| < c
   EXPECT_EQ(J, Eigen::Matrix2d::Zero());
@@ -144,16 +146,6 @@ TEST(BearingClearance, VanishingClearanceIsTheLinearSteadyState) {
         << c;
   }
   EXPECT_GT(X.norm(), 0.0);
-}
-
-/// Continuation in the base (mesh) frequency from `from` to `to` [Hz], without stability.
-ContinuationResult sweepUp(TrainHarmonicBalance& hbm, double from, double to) {
-  ContinuationOptions c;
-  c.start = kTwoPi * from;
-  c.stop = kTwoPi * to;
-  c.stability = false;
-  deriveContinuationSteps(c, 0.0, 0.05, hbm.harmonics());
-  return continueInFrequency(hbm, c);
 }
 
 /// Peak to peak over one period of the clearance bearing's radial displacement |u| and of the

@@ -50,6 +50,17 @@ inline void expectJacobianMatchesCentralDifferences(TrainHarmonicBalance& hbm,
   EXPECT_LT((dw - (rp - rm) / (2 * h)).norm(), 1e-5 * dw.norm()) << label;
 }
 
+/// Continuation in the base (mesh) frequency from `from` to `to` [Hz], without stability, the
+/// steps derived for ζ = 0.05 (deriveContinuationSteps).
+inline ContinuationResult sweepUp(TrainHarmonicBalance& hbm, double from, double to) {
+  ContinuationOptions c;
+  c.start = 2 * std::numbers::pi * from;
+  c.stop = 2 * std::numbers::pi * to;
+  c.stability = false;
+  deriveContinuationSteps(c, 0.0, 0.05, hbm.harmonics());
+  return continueInFrequency(hbm, c);
+}
+
 /// The largest difference between the real Fourier coefficients X of every DOF (column 0 the
 /// mean, 2h − 1 and 2h cos and sin) and TrainSteadySolver's complex ones, h = 0..H.
 inline double linearSteadyStateDifference(const Eigen::MatrixXd& X, const TrainSteadyState& linear,

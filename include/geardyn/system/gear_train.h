@@ -149,6 +149,13 @@ struct TrainBearingSpec {
   /// A linearised bearing: its 5×5 tangent stiffness over (u_y, u_z, u_x, θ_y, θ_z) [N/m,
   /// N/rad, N m/m, N m/rad], replacing the stiffness keys (GearTrainModel::linearisedAt).
   std::optional<Eigen::Matrix<double, 5, 5>> stiffness_matrix;
+  /// bearings.<name>.model = "nonlinear" (a `rolling` bearing, planar DOFs): the nonlinear
+  /// analyses (train nonlinear, time) take its full load–deflection law with the clearance
+  /// (bearing_clearance.h); false ("linearised"): its tangent at the static deflection.
+  bool full_law = false;
+  /// Set by GearTrainModel::linearisedAt for a full-law bearing: the law the nonlinear solvers
+  /// apply, the linear analyses using stiffness_matrix.
+  std::shared_ptr<const RollingBearing> nonlinear_law;
 };
 
 /// A coupling between two coaxial shafts (motor to input, output to load): torsional and

@@ -22,4 +22,8 @@ std::shared_ptr<const RollingBearing> rollingBearingFromConfig(const Config& con
                                                                const std::string& prefix,
                                                                double radial_clearance);
 
+/// `model` = "nonlinear" (true) or "linearised"; InputError naming the key for "nonlinear"
+/// without a bearing from its geometry (`rolling` false).
+bool fullBearingLawFromConfig(const Config& config, const std::string& prefix, bool rolling);
+
 }  // namespace geardyn::config::detail
