@@ -155,6 +155,11 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
     steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
     torus_options.per_mesh_harmonics = per_mesh;
     torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
+    if (analysis.string("forced.torus_truncation") != "box" &&
+        analysis.string("forced.torus_truncation") != "diamond") {
+      torus_options.truncation = TorusTruncation::kProduct;
+      torus_options.mesh_order_weights = estimate.envelope;
+    }
   }
   // Base harmonics the common period needs: L_m × the multiple of its base, the largest.
   int common_harmonics = 0;
@@ -275,11 +280,14 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                             {"harmonics", g.harmonics[j]},
                             {"meshes", members}});
     }
-    forced["torus"] = {{"generators", generators},
-                       {"truncation", analysis.string("forced.torus_truncation")},
-                       {"tones", torus_solver->toneCount()},
-                       {"max_gmres_iterations", max_iterations},
-                       {"direct_solves", direct}};
+    forced["torus"] = {
+        {"generators", generators},
+        {"truncation", torus_options.truncation == TorusTruncation::kProduct   ? "product"
+                       : torus_options.truncation == TorusTruncation::kDiamond ? "diamond"
+                                                                               : "box"},
+        {"tones", torus_solver->toneCount()},
+        {"max_gmres_iterations", max_iterations},
+        {"direct_solves", direct}};
   }
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     forced["mesh_harmonics_per_mesh"][meshes[m].name] = per_mesh[m];
