@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -99,30 +100,60 @@ void addBearingOrderRows(const GearTrainModel& model, const TrainSteadyState& st
 /// Mesh orders the operating deflection shapes are written for (1..this, at most L).
 constexpr int kOdsOrders = 3;
 
-/// forced_ods.csv: the operating deflection shapes of the common-period steady state, the
-/// complex amplitude of every DOF at each mesh's orders 1..kOdsOrders, q_l(t) = Re[Q e^{i l ω_m
-/// t}] (the unit column: m or rad) with Q = 2 X_h, h = l × the mesh's multiple of the base
-/// frequency (train_response.h: q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]) [m, rad], at the operating
-/// speed and at each mesh's largest dynamic factor (`speeds`, rad/s; duplicates skipped).
-void writeOds(const GearTrainModel& model, const TrainSteadySolver& solver,
+/// Per mesh, the complex amplitudes Q of every DOF at its orders 1..(at most kOdsOrders) at one
+/// speed, q_l(t) = Re[Q e^{i l ω_m t}] [m, rad].
+using OdsShapes = std::vector<std::vector<Eigen::VectorXcd>>;
+
+/// The common-period steady state's shapes: Q = 2 X_h, h = l × the mesh's multiple of the base
+/// frequency (train_response.h: q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]).
+OdsShapes odsShapes(const TrainSteadyState& s, std::size_t meshes) {
+  OdsShapes out(meshes);
+  for (std::size_t m = 0; m < meshes; ++m) {
+    for (int l = 1; l <= kOdsOrders && l * s.mesh_multiple[m] <= s.harmonics; ++l) {
+      out[m].push_back(2.0 * s.harmonic.col(l * s.mesh_multiple[m]));
+    }
+  }
+  return out;
+}
+
+/// The torus steady state's shapes: Q = 2 X_n at the tone n = l P_m e_{j(m)} of the mesh's own
+/// generator (train_torus.h: q(t) = Σ_n X_n e^{i n·θ}, X_{−n} = conj X_n), while it is in T.
+OdsShapes odsShapes(const TrainTorusState& s, std::size_t meshes) {
+  OdsShapes out(meshes);
+  for (std::size_t m = 0; m < meshes; ++m) {
+    for (int l = 1; l <= kOdsOrders; ++l) {
+      Eigen::VectorXi n = Eigen::VectorXi::Zero(s.tones.rows());
+      n(s.mesh_generator[m]) = l * s.mesh_multiple[m];
+      Eigen::Index t = 0;
+      while (t < s.tones.cols() && s.tones.col(t) != n) ++t;
+      if (t == s.tones.cols()) break;
+      out[m].push_back(2.0 * s.harmonic.col(t));
+    }
+  }
+  return out;
+}
+
+/// forced_ods.csv: the operating deflection shapes of the steady state (either balance), the
+/// complex amplitude of every DOF at each mesh's orders 1..kOdsOrders (the unit column: m or
+/// rad), at the operating speed and at each mesh's largest dynamic factor (`speeds`, rad/s;
+/// duplicates skipped); `shapes(speed)` solves one speed.
+void writeOds(const GearTrainModel& model, const std::function<OdsShapes(double)>& shapes,
               std::vector<double> speeds, AnalysisResult& result) {
   io::CsvTable ods({"speed_rpm", "mesh", "order", "frequency_hz", "dof", "unit", "real", "imag"});
   std::sort(speeds.begin(), speeds.end());
   speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
   for (double speed : speeds) {
     if (speed == 0.0) continue;
-    const TrainSteadyState s = solver.solve(speed);
+    const OdsShapes shape = shapes(speed);
     for (std::size_t m = 0; m < model.meshes().size(); ++m) {
       const double f_m = model.meshes()[m].frequency_ratio * std::abs(speed);
-      for (int l = 1; l <= kOdsOrders; ++l) {
-        const int h = l * s.mesh_multiple[m];
-        if (h > s.harmonics) break;
+      for (std::size_t l = 1; l <= shape[m].size(); ++l) {
         for (int i = 0; i < model.dofCount(); ++i) {
-          const std::complex<double> q = 2.0 * s.harmonic(i, h);
+          const std::complex<double> q = shape[m][l - 1](i);
           const std::string name = model.dofName(i);
           const bool angle = name.find("theta") != std::string::npos;
-          ods.addRow({speed / kRpm, model.meshes()[m].name, l, l * f_m, name, angle ? "rad" : "m",
-                      q.real(), q.imag()});
+          ods.addRow({speed / kRpm, model.meshes()[m].name, static_cast<int>(l),
+                      static_cast<double>(l) * f_m, name, angle ? "rad" : "m", q.real(), q.imag()});
         }
       }
     }
@@ -242,11 +273,16 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
     table.addRow(row);
   }
   result.addTable("forced_response.csv", table);
-  if (!torus) {
-    std::vector<double> ods_speeds = worst_speed;
-    ods_speeds.push_back(model.inputSpeed());
-    writeOds(model, *common, ods_speeds, result);
-  }
+  std::vector<double> ods_speeds = worst_speed;
+  ods_speeds.push_back(model.inputSpeed());
+  const std::size_t r = meshes.size();
+  writeOds(
+      model,
+      [&](double speed) {
+        return torus ? odsShapes(torus_solver->solve(speed), r)
+                     : odsShapes(common->solve(speed), r);
+      },
+      ods_speeds, result);
   result.addTable("forced_mesh_orders.csv", orders_table);
   if (!torus) result.addTable("forced_bearing_orders.csv", bearing_orders);
   if (torus) result.addTable("forced_tones.csv", tones_table);
