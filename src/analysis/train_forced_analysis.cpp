@@ -7,13 +7,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <complex>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <optional>
+#include <thread>
 
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
@@ -67,6 +70,43 @@ ForcedPoint pointOf(TrainTorusState&& s) {
   p.iterations = s.iterations;
   p.direct = s.linear_solver == "direct";
   return p;
+}
+
+/// Every speed's torus steady state (speed 0 skipped) on the worker threads (context.threads,
+/// 0: all hardware threads; each takes the next speed), progress reported as speeds finish.
+std::vector<ForcedPoint> solveTorusSpeeds(const TrainTorusSolver& solver,
+                                          const std::vector<double>& speeds,
+                                          const AnalysisContext& context,
+                                          const ProgressCallback& progress) {
+  std::vector<ForcedPoint> points(speeds.size());
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min<std::size_t>(
+      speeds.size(), context.threads > 0 ? static_cast<unsigned>(context.threads) : hardware);
+  std::atomic<std::size_t> next{0};
+  std::size_t finished = 0;
+  std::mutex lock;
+  std::exception_ptr failure;
+  const auto work = [&] {
+    for (std::size_t i = next++; i < speeds.size(); i = next++) {
+      try {
+        if (speeds[i] != 0.0) points[i] = pointOf(solver.solve(speeds[i]));
+      } catch (...) {
+        const std::lock_guard<std::mutex> guard(lock);
+        if (!failure) failure = std::current_exception();
+        next = speeds.size();
+      }
+      if (progress) {
+        const std::lock_guard<std::mutex> guard(lock);
+        progress(static_cast<double>(++finished), static_cast<double>(speeds.size()));
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return points;
 }
 
 /// Mesh orders forced_bearing_orders.csv is written for (1..this, at most L).
@@ -239,13 +279,16 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
   // The housing's response points (common period only: the torus keeps no DOF harmonics).
   HousingResponseTable housing(model);
+  // The torus speeds on the worker threads (the solver is thread-safe), in order afterwards.
+  std::vector<ForcedPoint> torus_points;
+  if (torus) torus_points = solveTorusSpeeds(*torus_solver, speeds, context, progress);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
-    if (progress) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
+    if (progress && !torus) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
     if (speeds[i] == 0.0) continue;
     const double speed = speeds[i];
     ForcedPoint s;
     if (torus) {
-      s = pointOf(torus_solver->solve(speed));
+      s = std::move(torus_points[i]);
     } else {
       const TrainSteadyState state = common->solve(speed);
       addBearingOrderRows(model, state, speed, steady.mesh_harmonics, bearing_orders);
