@@ -47,3 +47,24 @@ def test_torus_ods_equals_the_common_period_ods(tmp_path):
         worst = max(worst, abs(qa - qb) / largest)
     assert worst < 1e-8, worst
     assert {r["order"] for r in b} == {"1", "2", "3"}
+
+
+def test_nonlinear_torus_tables_are_plotted(tmp_path):
+    """The hunting-tooth reducer (z 19/71 + 21/59) with 20 µm of backlash at both meshes,
+    100 N m, through stage 1's contact loss (10 000-15 000 rpm, 4 harmonics per mesh on the
+    torus): nonlinear_tones.png draws the mesh orders of nonlinear_mesh_orders.csv and the
+    combination tones of nonlinear_tones.csv along the continuation, one panel per mesh."""
+    hunting = EXAMPLES / "train_hunting_tooth_reducer.toml"
+    sets = ['analysis.run=["nonlinear"]', 'nonlinear.method="torus"', "nonlinear.torus_mesh_harmonics=4",
+            'nonlinear.direction="up"', "nonlinear.speed_min_rpm=10000", "nonlinear.speed_max_rpm=15000",
+            "operating_point.torque=100"]
+    for mesh in ("stage1", "stage2"):
+        sets += [f'meshes.{mesh}.contact="backlash"', f"meshes.{mesh}.backlash=20e-6"]
+    result = run("train", hunting, "--out", tmp_path, *[a for s in sets for a in ("--set", s)])
+    assert result.returncode == 0, result.stderr
+    points = rows(tmp_path / "nonlinear_torus.csv")
+    assert max(float(r["contact_loss_stage1"]) for r in points) > 0.1  # through contact loss
+    orders = rows(tmp_path / "nonlinear_mesh_orders.csv")
+    assert {(r["mesh"], r["order"]) for r in orders} >= {(m, str(o)) for m in ("stage1", "stage2") for o in (1, 2, 3)}
+    png = tmp_path / "nonlinear_tones.png"
+    assert png.exists() and png.stat().st_size > 20_000
