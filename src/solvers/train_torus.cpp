@@ -240,7 +240,8 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
     block_[t] = t == 0 ? 0 : (t % 2 == 1 ? (t + 1) / 2 : -(t / 2));
   }
   // Neighbours n − l P_m e_{j(m)} through mesh m's stiffness harmonic l.
-  neighbour_.assign(static_cast<std::size_t>(T) * r, std::vector<int>(2 * L + 1, -1));
+  stride_ = 2 * L + 1;
+  neighbour_.assign(static_cast<std::size_t>(T) * r * stride_, -1);
   for (int t = 0; t < T; ++t) {
     for (int m = 0; m < r; ++m) {
       const int j = generators_.mesh_generator[m], P = generators_.mesh_multiple[m];
@@ -248,7 +249,8 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
         Eigen::VectorXi other = tones_.col(t);
         other(j) -= l * P;
         if (l == 0 || std::abs(other(j)) > N[j]) continue;
-        neighbour_[static_cast<std::size_t>(t) * r + m][L + l] = position[boxIndex(other, N)];
+        neighbour_[(static_cast<std::size_t>(t) * r + m) * stride_ + L + l] =
+            position[boxIndex(other, N)];
       }
     }
   }
@@ -360,7 +362,7 @@ TrainTorusState TrainTorusSolver::solve(double input_speed) const {
   for (int m = 0; m < r; ++m) {
     for (int l = -L; l <= L; ++l) {
       // The tone l P_m e_j: the neighbour of the zero tone through harmonic −l.
-      const int t = l == 0 ? 0 : neighbour_[m][L - l];
+      const int t = l == 0 ? 0 : neighbourRow(m)[L - l];
       if (t < 0) continue;
       const double w = kTwoPi * s.tone_frequency(t);
       phi(m, t) += ke_hat_[m][L + l] + Complex(0.0, w) * meshes[m].damping * e_hat_[m][L + l];
@@ -403,14 +405,15 @@ void TrainTorusSolver::applyCondensed(const std::vector<Eigen::MatrixXcd>& B,
   Eigen::VectorXcd w(r);
   for (Eigen::Index t = 0; t < static_cast<Eigen::Index>(B.size()); ++t) {
     for (int m = 0; m < r; ++m) {
-      const std::vector<int>& nb = neighbour_[t * r + m];
+      const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
       Complex sum = 0.0;
       for (int l = -L; l <= L; ++l) {
         if (nb[L + l] >= 0) sum += k_hat_[m][L + l] * x(nb[L + l] * r + m);
       }
       w(m) = sum;
     }
-    y.segment(t * r, r) = x.segment(t * r, r) + B[t] * w;
+    y.segment(t * r, r) = x.segment(t * r, r);
+    y.segment(t * r, r).noalias() += B[t] * w;  // no temporary
   }
 }
 
@@ -428,7 +431,7 @@ Eigen::VectorXcd TrainTorusSolver::solveCondensed(const std::vector<Eigen::Matri
     for (std::size_t a = 0; a < line.size(); ++a) {
       const int t = line[a] / r, i = line[a] % r;
       for (int m = 0; m < r; ++m) {
-        const std::vector<int>& nb = neighbour_[static_cast<std::size_t>(t) * r + m];
+        const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
         for (int l = -L; l <= L; ++l) {
           const int u = nb[L + l] * r + m;
           if (nb[L + l] < 0 || line_of_[u] != static_cast<int>(id)) continue;
@@ -470,7 +473,7 @@ Eigen::VectorXcd TrainTorusSolver::solveCondensed(const std::vector<Eigen::Matri
     for (int t = 0; t < T; ++t) {
       for (int i = 0; i < r; ++i) entries.emplace_back(t * r + i, t * r + i, 1.0);
       for (int m = 0; m < r; ++m) {
-        const std::vector<int>& nb = neighbour_[static_cast<std::size_t>(t) * r + m];
+        const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
         for (int l = -L; l <= L; ++l) {
           if (nb[L + l] < 0) continue;
           for (int i = 0; i < r; ++i) {
@@ -510,7 +513,7 @@ void TrainTorusSolver::recover(TrainTorusState& s, const std::vector<Eigen::Matr
     Eigen::VectorXcd w = phi.col(t);
     for (int m = 0; m < r; ++m) {
       for (int l = -L; l <= L; ++l) {
-        const int other = neighbour_[static_cast<std::size_t>(t) * r + m][L + l];
+        const int other = neighbourRow(static_cast<std::size_t>(t) * r + m)[L + l];
         if (other >= 0) w(m) -= k_hat_[m][L + l] * delta(other * r + m);
       }
     }

@@ -138,7 +138,11 @@ class TrainTorusSolver {
   std::vector<int> negative_;  // index of −n
   std::vector<int> block_;     // HarmonicBlocks index of n (>0: n itself, <0: conj of −n)
   // [tone * r + m][L + l]: index of the tone n − l P_m e_{j(m)} (−1: outside T).
-  std::vector<std::vector<int>> neighbour_;
+  std::vector<int> neighbour_;  // flat, 2L + 1 per unknown (tone * r + m)
+  int stride_ = 1;              // 2L + 1
+  const int* neighbourRow(std::size_t unknown) const noexcept {
+    return neighbour_.data() + unknown * static_cast<std::size_t>(stride_);
+  }
   std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
   std::vector<std::vector<int>> lines_;  // preconditioner blocks: unknown indices t r + m
   std::vector<int> line_of_, local_of_;  // unknown → its line and its place in it
