@@ -201,6 +201,24 @@ void writeOds(const GearTrainModel& model, const std::function<OdsShapes(double)
   result.addTable("forced_ods.csv", ods);
 }
 
+/// The derived truncation (train_truncation.h) into both solvers' options, and on the torus the
+/// product index set weighted by its estimate unless forced.torus_truncation says "box" or
+/// "diamond"; returns L_m per mesh.
+std::vector<int> deriveTruncation(const GearTrainModel& model, const std::vector<double>& speeds,
+                                  const config::Config& analysis, TrainSteadyOptions& steady,
+                                  TrainTorusOptions& torus_options) {
+  const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
+  steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
+  torus_options.per_mesh_harmonics = estimate.per_mesh;
+  torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
+  const std::string truncation = analysis.string("forced.torus_truncation");
+  if (truncation != "box" && truncation != "diamond") {
+    torus_options.truncation = TorusTruncation::kProduct;
+    torus_options.mesh_order_weights = estimate.envelope;
+  }
+  return estimate.per_mesh;
+}
+
 }  // namespace
 
 void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
@@ -219,19 +237,9 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
   // Without forced.mesh_harmonics: L_m per mesh from the problem (train_truncation.h).
   const bool derived = !analysis.has("forced.mesh_harmonics");
-  std::vector<int> per_mesh(model.meshes().size(), steady.mesh_harmonics);
-  if (derived) {
-    const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
-    per_mesh = estimate.per_mesh;
-    steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
-    torus_options.per_mesh_harmonics = per_mesh;
-    torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
-    if (analysis.string("forced.torus_truncation") != "box" &&
-        analysis.string("forced.torus_truncation") != "diamond") {
-      torus_options.truncation = TorusTruncation::kProduct;
-      torus_options.mesh_order_weights = estimate.envelope;
-    }
-  }
+  const std::vector<int> per_mesh =
+      derived ? deriveTruncation(model, speeds, analysis, steady, torus_options)
+              : std::vector<int>(model.meshes().size(), steady.mesh_harmonics);
   // Base harmonics the common period needs: L_m × the multiple of its base, the largest.
   int common_harmonics = 0;
   const std::vector<int> multiples =
