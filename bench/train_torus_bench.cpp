@@ -3,10 +3,16 @@
 // - the hunting-tooth reducer (z 19/71 + 21/59, 12 DOFs): common period 71 stage-1 mesh
 //   periods, H = 710 (one iteration: ~15 s), against the torus of two generators (441 tones);
 // - the two-stage reducer of the examples (z 23/51 + 17/47): common period 3 mesh periods,
-//   H = 30, against the torus with one generator (the same tones) and with two (forced).
-// Measured (Release, 2 cores shared with 4 other builds, CPU time per speed): hunting-tooth
-// reducer 9.6 s common period against 5.7 ms torus (9 GMRES iterations, 441 tones); two-stage
-// reducer 2.4 ms common period, 1.7 ms torus with one generator, 5.8 ms with two.
+//   H = 30, against the torus with one generator (the same tones) and with two (forced);
+// and `forced` at its default settings on the hunting-tooth reducer (derived truncation 22/25,
+// product index set against the box of the same N_j) and the truncation estimate.
+// Measured in one run (Release, CPU time per speed, load average 8 on 2 cores, 26 Nov 2026):
+// hunting-tooth reducer at L = 10: common period 7559 ms, torus 3.96 ms (9 GMRES iterations,
+// 441 tones): ratio 1900; two-stage reducer: common period 1.29 ms, torus with one generator
+// 1.09 ms (ratio 0.85), with two 3.87 ms. Default settings: product 16.3 ms (1427 tones, 9
+// iterations), box 29.2 ms (2295 tones), the estimate 55 ms per sweep: 200 speeds ≈ 3.4 s of
+// CPU on one thread (the common period at the derived H = 1562 is not run: r(2H + 1) = 6250
+// dense unknowns, ~10³ times the 710 case).
 // Run alone: cmake --build build --target geardyn_torus_bench && build/bench/geardyn_torus_bench
 
 #include <benchmark/benchmark.h>
@@ -18,6 +24,7 @@
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
+#include "geardyn/solvers/train_truncation.h"
 
 namespace geardyn {
 namespace {
@@ -69,6 +76,46 @@ BENCHMARK(BM_TorusPerSpeed)
     ->Args({1, 100})
     ->Args({1, 10})
     ->Unit(benchmark::kMillisecond);
+
+// `forced` at its default settings: the derived truncation over the default 200-speed sweep
+// (train_truncation.h) and, range(1) = 1, the product index set weighted by its estimate (the
+// default), 0: the box of the same N_j; one speed (the operating speed).
+void BM_TorusDerivedPerSpeed(benchmark::State& state) {
+  const GearTrainModel model(gearbox(kTrains[state.range(0)]));
+  std::vector<double> speeds;
+  for (int i = 0; i < 200; ++i) speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / 199.0));
+  const MeshHarmonicsEstimate e = estimateMeshHarmonics(model, speeds);
+  TrainTorusOptions options;
+  options.mesh_harmonics = e.harmonics;
+  options.per_mesh_harmonics = e.per_mesh;
+  options.group_harmonics = std::max(100, e.harmonics);
+  if (state.range(1) == 1) {
+    options.truncation = TorusTruncation::kProduct;
+    options.mesh_order_weights = e.envelope;
+  }
+  const TrainTorusSolver solver(model, options);
+  int iterations = 0;
+  for (auto _ : state) {
+    auto s = solver.solve(model.inputSpeed());
+    iterations = s.iterations;
+    benchmark::DoNotOptimize(s.harmonic.data());
+  }
+  state.counters["tones"] = solver.toneCount();
+  state.counters["gmres_iterations"] = iterations;
+}
+BENCHMARK(BM_TorusDerivedPerSpeed)->Args({0, 1})->Args({0, 0})->Unit(benchmark::kMillisecond);
+
+// The truncation estimate itself over the default 200 speeds (once per sweep).
+void BM_TruncationEstimate(benchmark::State& state) {
+  const GearTrainModel model(gearbox(kTrains[state.range(0)]));
+  std::vector<double> speeds;
+  for (int i = 0; i < 200; ++i) speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / 199.0));
+  for (auto _ : state) {
+    auto e = estimateMeshHarmonics(model, speeds);
+    benchmark::DoNotOptimize(e.per_mesh.data());
+  }
+}
+BENCHMARK(BM_TruncationEstimate)->Arg(0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace geardyn

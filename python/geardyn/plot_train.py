@@ -16,6 +16,7 @@ from .plot_train_runup import train_runup_figure, train_waterfall_figure
 from .plot_train_stats import train_stats_figure
 from .plot_train_time import train_time_figure
 from .plot_train_tones import train_tones_figure
+from .plot_train_nonlinear_tones import train_nonlinear_tones_figure
 
 _TYPE_COLOURS = {"rotational": "tab:red", "translational": "tab:blue", "planet": "tab:green",
                  "mixed": "tab:purple", "outside": "0.3", "": "0.3"}
@@ -265,7 +266,8 @@ def plot_train(result_dir, save=False):
     points, plot_train_housing.py), time_history.png,
     runup.png and waterfall.png (plot_train_runup.py), mesh_statistics.png
     (plot_train_stats.py), mesh_misalignment.png, mesh_contact.png and whine_orders.png
-    (plot_train_contact.py), and nonlinear_response.png of the analyses run; written into the folder when `save`."""
+    (plot_train_contact.py), and nonlinear_response.png (common period) or nonlinear_tones.png (torus,
+    plot_train_nonlinear_tones.py) of the analyses run; written into the folder when `save`."""
     folder = pathlib.Path(result_dir)
     summary = _read_summary(folder)
     title = _train_title(summary)
@@ -303,5 +305,10 @@ def plot_train(result_dir, save=False):
     if "stats" in results and (folder / "mesh_statistics.csv").exists():
         figures["mesh_statistics.png"] = train_stats_figure(folder, title)
     if "nonlinear" in results:
-        figures["nonlinear_response.png"] = train_nonlinear_figure(folder, title=title)
+        # On the torus (nonlinear_torus.csv, no per-sweep tables): the orders and tones along
+        # the continuation; the common-period sweeps: the response curves.
+        if results["nonlinear"].get("method") == "torus":
+            figures["nonlinear_tones.png"] = train_nonlinear_tones_figure(folder, summary, title)
+        else:
+            figures["nonlinear_response.png"] = train_nonlinear_figure(folder, title=title)
     return finish(figures, folder, save)

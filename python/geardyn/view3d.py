@@ -183,7 +183,7 @@ def _campbell(folder, count):
 
 
 def _ods(folder, index, bodies):
-    """The operating deflection shapes of forced_ods.csv (common-period forced response):
+    """The operating deflection shapes of forced_ods.csv (forced response, either method):
     [{speed_rpm, mesh, order, frequency_hz, largest_m, re, im}], each normalised like a mode,
     with its largest displacement (rotations at the part's radius) [m]."""
     path = folder / "forced_ods.csv"

@@ -7,12 +7,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <optional>
+#include <thread>
 
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
@@ -68,6 +72,43 @@ ForcedPoint pointOf(TrainTorusState&& s) {
   return p;
 }
 
+/// Every speed's torus steady state (speed 0 skipped) on the worker threads (context.threads,
+/// 0: all hardware threads; each takes the next speed), progress reported as speeds finish.
+std::vector<ForcedPoint> solveTorusSpeeds(const TrainTorusSolver& solver,
+                                          const std::vector<double>& speeds,
+                                          const AnalysisContext& context,
+                                          const ProgressCallback& progress) {
+  std::vector<ForcedPoint> points(speeds.size());
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min<std::size_t>(
+      speeds.size(), context.threads > 0 ? static_cast<unsigned>(context.threads) : hardware);
+  std::atomic<std::size_t> next{0};
+  std::size_t finished = 0;
+  std::mutex lock;
+  std::exception_ptr failure;
+  const auto work = [&] {
+    for (std::size_t i = next++; i < speeds.size(); i = next++) {
+      try {
+        if (speeds[i] != 0.0) points[i] = pointOf(solver.solve(speeds[i]));
+      } catch (...) {
+        const std::lock_guard<std::mutex> guard(lock);
+        if (!failure) failure = std::current_exception();
+        next = speeds.size();
+      }
+      if (progress) {
+        const std::lock_guard<std::mutex> guard(lock);
+        progress(static_cast<double>(++finished), static_cast<double>(speeds.size()));
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return points;
+}
+
 /// Mesh orders forced_bearing_orders.csv is written for (1..this, at most L).
 constexpr int kBearingOrders = 3;
 
@@ -99,35 +140,83 @@ void addBearingOrderRows(const GearTrainModel& model, const TrainSteadyState& st
 /// Mesh orders the operating deflection shapes are written for (1..this, at most L).
 constexpr int kOdsOrders = 3;
 
-/// forced_ods.csv: the operating deflection shapes of the common-period steady state, the
-/// complex amplitude of every DOF at each mesh's orders 1..kOdsOrders, q_l(t) = Re[Q e^{i l ω_m
-/// t}] (the unit column: m or rad) with Q = 2 X_h, h = l × the mesh's multiple of the base
-/// frequency (train_response.h: q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]) [m, rad], at the operating
-/// speed and at each mesh's largest dynamic factor (`speeds`, rad/s; duplicates skipped).
-void writeOds(const GearTrainModel& model, const TrainSteadySolver& solver,
+/// Per mesh, the complex amplitudes Q of every DOF at its orders 1..(at most kOdsOrders) at one
+/// speed, q_l(t) = Re[Q e^{i l ω_m t}] [m, rad].
+using OdsShapes = std::vector<std::vector<Eigen::VectorXcd>>;
+
+/// The common-period steady state's shapes: Q = 2 X_h, h = l × the mesh's multiple of the base
+/// frequency (train_response.h: q(t) = Re[X_0 + 2 Σ X_h e^{i h ω₀ t}]).
+OdsShapes odsShapes(const TrainSteadyState& s, std::size_t meshes) {
+  OdsShapes out(meshes);
+  for (std::size_t m = 0; m < meshes; ++m) {
+    for (int l = 1; l <= kOdsOrders && l * s.mesh_multiple[m] <= s.harmonics; ++l) {
+      out[m].push_back(2.0 * s.harmonic.col(l * s.mesh_multiple[m]));
+    }
+  }
+  return out;
+}
+
+/// The torus steady state's shapes: Q = 2 X_n at the tone n = l P_m e_{j(m)} of the mesh's own
+/// generator (train_torus.h: q(t) = Σ_n X_n e^{i n·θ}, X_{−n} = conj X_n), while it is in T.
+OdsShapes odsShapes(const TrainTorusState& s, std::size_t meshes) {
+  OdsShapes out(meshes);
+  for (std::size_t m = 0; m < meshes; ++m) {
+    for (int l = 1; l <= kOdsOrders; ++l) {
+      Eigen::VectorXi n = Eigen::VectorXi::Zero(s.tones.rows());
+      n(s.mesh_generator[m]) = l * s.mesh_multiple[m];
+      Eigen::Index t = 0;
+      while (t < s.tones.cols() && s.tones.col(t) != n) ++t;
+      if (t == s.tones.cols()) break;
+      out[m].push_back(2.0 * s.harmonic.col(t));
+    }
+  }
+  return out;
+}
+
+/// forced_ods.csv: the operating deflection shapes of the steady state (either balance), the
+/// complex amplitude of every DOF at each mesh's orders 1..kOdsOrders (the unit column: m or
+/// rad), at the operating speed and at each mesh's largest dynamic factor (`speeds`, rad/s;
+/// duplicates skipped); `shapes(speed)` solves one speed.
+void writeOds(const GearTrainModel& model, const std::function<OdsShapes(double)>& shapes,
               std::vector<double> speeds, AnalysisResult& result) {
   io::CsvTable ods({"speed_rpm", "mesh", "order", "frequency_hz", "dof", "unit", "real", "imag"});
   std::sort(speeds.begin(), speeds.end());
   speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
   for (double speed : speeds) {
     if (speed == 0.0) continue;
-    const TrainSteadyState s = solver.solve(speed);
+    const OdsShapes shape = shapes(speed);
     for (std::size_t m = 0; m < model.meshes().size(); ++m) {
       const double f_m = model.meshes()[m].frequency_ratio * std::abs(speed);
-      for (int l = 1; l <= kOdsOrders; ++l) {
-        const int h = l * s.mesh_multiple[m];
-        if (h > s.harmonics) break;
+      for (std::size_t l = 1; l <= shape[m].size(); ++l) {
         for (int i = 0; i < model.dofCount(); ++i) {
-          const std::complex<double> q = 2.0 * s.harmonic(i, h);
+          const std::complex<double> q = shape[m][l - 1](i);
           const std::string name = model.dofName(i);
           const bool angle = name.find("theta") != std::string::npos;
-          ods.addRow({speed / kRpm, model.meshes()[m].name, l, l * f_m, name, angle ? "rad" : "m",
-                      q.real(), q.imag()});
+          ods.addRow({speed / kRpm, model.meshes()[m].name, static_cast<int>(l),
+                      static_cast<double>(l) * f_m, name, angle ? "rad" : "m", q.real(), q.imag()});
         }
       }
     }
   }
   result.addTable("forced_ods.csv", ods);
+}
+
+/// The derived truncation (train_truncation.h) into both solvers' options, and on the torus the
+/// product index set weighted by its estimate unless forced.torus_truncation says "box" or
+/// "diamond"; returns L_m per mesh.
+std::vector<int> deriveTruncation(const GearTrainModel& model, const std::vector<double>& speeds,
+                                  const config::Config& analysis, TrainSteadyOptions& steady,
+                                  TrainTorusOptions& torus_options) {
+  const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
+  steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
+  torus_options.per_mesh_harmonics = estimate.per_mesh;
+  torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
+  const std::string truncation = analysis.string("forced.torus_truncation");
+  if (truncation != "box" && truncation != "diamond") {
+    torus_options.truncation = TorusTruncation::kProduct;
+    torus_options.mesh_order_weights = estimate.envelope;
+  }
+  return estimate.per_mesh;
 }
 
 }  // namespace
@@ -148,14 +237,9 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   TrainTorusOptions torus_options = config::trainTorusOptionsFromConfig(analysis);
   // Without forced.mesh_harmonics: L_m per mesh from the problem (train_truncation.h).
   const bool derived = !analysis.has("forced.mesh_harmonics");
-  std::vector<int> per_mesh(model.meshes().size(), steady.mesh_harmonics);
-  if (derived) {
-    const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
-    per_mesh = estimate.per_mesh;
-    steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
-    torus_options.per_mesh_harmonics = per_mesh;
-    torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
-  }
+  const std::vector<int> per_mesh =
+      derived ? deriveTruncation(model, speeds, analysis, steady, torus_options)
+              : std::vector<int>(model.meshes().size(), steady.mesh_harmonics);
   // Base harmonics the common period needs: L_m × the multiple of its base, the largest.
   int common_harmonics = 0;
   const std::vector<int> multiples =
@@ -203,13 +287,16 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
   const ProgressCallback progress = context.progressFor("train: forced response", "speeds");
   // The housing's response points (common period only: the torus keeps no DOF harmonics).
   HousingResponseTable housing(model);
+  // The torus speeds on the worker threads (the solver is thread-safe), in order afterwards.
+  std::vector<ForcedPoint> torus_points;
+  if (torus) torus_points = solveTorusSpeeds(*torus_solver, speeds, context, progress);
   for (std::size_t i = 0; i < speeds.size(); ++i) {
-    if (progress) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
+    if (progress && !torus) progress(static_cast<double>(i), static_cast<double>(speeds.size()));
     if (speeds[i] == 0.0) continue;
     const double speed = speeds[i];
     ForcedPoint s;
     if (torus) {
-      s = pointOf(torus_solver->solve(speed));
+      s = std::move(torus_points[i]);
     } else {
       const TrainSteadyState state = common->solve(speed);
       addBearingOrderRows(model, state, speed, steady.mesh_harmonics, bearing_orders);
@@ -237,11 +324,16 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
     table.addRow(row);
   }
   result.addTable("forced_response.csv", table);
-  if (!torus) {
-    std::vector<double> ods_speeds = worst_speed;
-    ods_speeds.push_back(model.inputSpeed());
-    writeOds(model, *common, ods_speeds, result);
-  }
+  std::vector<double> ods_speeds = worst_speed;
+  ods_speeds.push_back(model.inputSpeed());
+  const std::size_t r = meshes.size();
+  writeOds(
+      model,
+      [&](double speed) {
+        return torus ? odsShapes(torus_solver->solve(speed), r)
+                     : odsShapes(common->solve(speed), r);
+      },
+      ods_speeds, result);
   result.addTable("forced_mesh_orders.csv", orders_table);
   if (!torus) result.addTable("forced_bearing_orders.csv", bearing_orders);
   if (torus) result.addTable("forced_tones.csv", tones_table);
@@ -275,11 +367,14 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                             {"harmonics", g.harmonics[j]},
                             {"meshes", members}});
     }
-    forced["torus"] = {{"generators", generators},
-                       {"truncation", analysis.string("forced.torus_truncation")},
-                       {"tones", torus_solver->toneCount()},
-                       {"max_gmres_iterations", max_iterations},
-                       {"direct_solves", direct}};
+    forced["torus"] = {
+        {"generators", generators},
+        {"truncation", torus_options.truncation == TorusTruncation::kProduct   ? "product"
+                       : torus_options.truncation == TorusTruncation::kDiamond ? "diamond"
+                                                                               : "box"},
+        {"tones", torus_solver->toneCount()},
+        {"max_gmres_iterations", max_iterations},
+        {"direct_solves", direct}};
   }
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     forced["mesh_harmonics_per_mesh"][meshes[m].name] = per_mesh[m];

@@ -15,7 +15,7 @@
 namespace geardyn::analysis::detail {
 
 /// Runs [forced] on `model`: forced_response.csv, forced_mesh_orders.csv, forced_tones.csv
-/// (torus), forced_ods.csv (common period: the operating deflection shapes at the operating
+/// (torus), forced_ods.csv (either method: the operating deflection shapes at the operating
 /// speed and at each mesh's largest dynamic factor), summary.results["forced"] with the method,
 /// and report lines in `text`.
 void runTrainForced(const GearTrainModel& model, const config::Config& analysis,

@@ -402,11 +402,19 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
           "base harmonics (mesh_harmonics × the largest mesh multiple of the base) above which "
           "auto uses the torus; also the most one generator's group of meshes may need");
   schema.string("forced.torus_truncation")
-      .choices({"box", "diamond"})
-      .defaultValue("box")
+      .choices({"auto", "box", "diamond", "product"})
+      .defaultValue("auto")
       .doc(
-          "torus tones kept: box |n_j| <= N_j (every sideband of every kept mesh order), or "
-          "diamond Σ|n_j|/N_j <= 1 (fewer tones for three or more generators)");
+          "torus tones kept: box |n_j| <= N_j (every sideband of every kept mesh order), "
+          "diamond Σ|n_j|/N_j <= 1 (fewer tones for three or more generators), or product: the "
+          "box's tones whose estimated relative amplitude Π_j a_j(|n_j|) (the derived "
+          "truncation's orders) is >= forced.torus_floor; auto: product when mesh_harmonics is "
+          "derived, else box");
+  schema.real("forced.torus_floor")
+      .min(1e-12)
+      .max(0.5)
+      .defaultValue(1e-2)
+      .doc("product truncation: the smallest estimated relative amplitude of a tone kept");
   schema.section("time", "Newmark time response at one speed to the periodic steady state.");
   schema.real("time.speed_rpm").unit("rpm").optional().doc("input speed (default: operating)");
   schema.real("time.duration")
@@ -482,9 +490,20 @@ TrainTorusOptions trainTorusOptionsFromConfig(const config::Config& analysis) {
     o.mesh_harmonics = static_cast<int>(analysis.integer("forced.mesh_harmonics"));
   }
   o.group_harmonics = static_cast<int>(analysis.integer("forced.torus_above"));
-  o.truncation = analysis.string("forced.torus_truncation") == "diamond" ? TorusTruncation::kDiamond
-                                                                         : TorusTruncation::kBox;
+  const std::string truncation = analysis.string("forced.torus_truncation");
+  o.truncation = truncation == "diamond" ? TorusTruncation::kDiamond : TorusTruncation::kBox;
+  o.product_floor = analysis.real("forced.torus_floor");
   o.validate();
+  // The product truncation weighs the tones by the derived truncation's estimate: the forced
+  // analysis sets it (mesh_order_weights) when mesh_harmonics is derived; "auto" is the box here.
+  if (truncation == "product") {
+    if (analysis.has("forced.mesh_harmonics")) {
+      throw InputError("forced.torus_truncation", truncation,
+                       "\"box\" or \"diamond\" with forced.mesh_harmonics given (the product "
+                       "truncation weighs the tones by the derived truncation's estimate)");
+    }
+    o.truncation = TorusTruncation::kProduct;
+  }
   return o;
 }
 

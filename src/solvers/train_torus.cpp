@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <stdexcept>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
@@ -46,6 +47,48 @@ bool positive(const Eigen::VectorXi& n) {
   return false;
 }
 
+/// The smallest 2^a 3^b 5^c >= n (a size FFTW transforms fastest).
+int smoothSize(int n) {
+  for (int size = std::max(n, 1);; ++size) {
+    int rest = size;
+    for (int p : {2, 3, 5}) {
+      while (rest % p == 0) rest /= p;
+    }
+    if (rest == 1) return size;
+  }
+}
+
+/// Per generator j, harmonics n = 0..N_j: the product truncation's weight a_j(n)
+/// (TrainTorusOptions::mesh_order_weights); all ones for the box and the diamond.
+std::vector<std::vector<double>> generatorWeights(const TrainTorusOptions& options,
+                                                  const TrainTorusGenerators& g) {
+  std::vector<std::vector<double>> out;
+  if (options.truncation == TorusTruncation::kProduct &&
+      options.mesh_order_weights.size() != g.mesh_generator.size()) {
+    throw std::invalid_argument("TrainTorusOptions::mesh_order_weights: one list per mesh");
+  }
+  for (std::size_t j = 0; j < g.harmonics.size(); ++j) {
+    std::vector<double> a(g.harmonics[j] + 1, 1.0);
+    if (options.truncation == TorusTruncation::kProduct) {
+      for (int n = 1; n <= g.harmonics[j]; ++n) {
+        a[n] = 0.0;
+        for (std::size_t m = 0; m < g.mesh_generator.size(); ++m) {
+          if (g.mesh_generator[m] != static_cast<int>(j)) continue;
+          const std::vector<double>& w = options.mesh_order_weights[m];
+          const int l = (n + g.mesh_multiple[m] - 1) / g.mesh_multiple[m];
+          if (l <= static_cast<int>(w.size())) a[n] = std::max(a[n], w[l - 1]);
+        }
+      }
+      // Non-increasing (a kept tone keeps every tone between it and the origin), and never
+      // below the floor (the pure harmonics of the box).
+      for (int n = g.harmonics[j] - 1; n >= 1; --n) a[n] = std::max(a[n], a[n + 1]);
+      for (double& v : a) v = std::min(1.0, std::max(v, options.product_floor));
+    }
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
 }  // namespace
 
 void TrainTorusOptions::validate() const {
@@ -66,6 +109,12 @@ void TrainTorusOptions::validate() const {
     if (Lm < 1 || Lm > mesh_harmonics) {
       throw InputError("forced.mesh_harmonics", std::to_string(Lm),
                        fmt::format("per mesh an integer in [1, {}] (the largest)", mesh_harmonics));
+    }
+  }
+  if (truncation == TorusTruncation::kProduct ||
+      product_floor != TrainTorusOptions{}.product_floor) {
+    if (!(product_floor > 0.0 && product_floor < 1.0)) {
+      throw InputError("forced.torus_floor", fmt::format("{:g}", product_floor), "in (0, 1)");
     }
   }
   if (!(tolerance > 0.0 && tolerance < 1e-3)) {
@@ -154,20 +203,26 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
         "forced.mesh_harmonics", std::to_string(L),
         fmt::format("fewer harmonics: the torus of {} generators needs {} tones", k, box));
   }
+  const std::vector<std::vector<double>> weight = generatorWeights(options, generators_);
   // The tone set: the zero tone, then every positive tone n followed by −n.
   std::vector<Eigen::VectorXi> list;
   if (k > 0) list.push_back(Eigen::VectorXi::Zero(k));
   Eigen::VectorXi n(k);
   for (long long index = 0; index < box; ++index) {
     long long rest = index;
-    double weight = 0.0;
+    double radius = 0.0;  // of the diamond
     for (int j = 0; j < k; ++j) {
       n(j) = static_cast<int>(rest % (2 * N[j] + 1)) - N[j];
       rest /= 2 * N[j] + 1;
-      weight += std::abs(n(j)) / static_cast<double>(N[j]);
+      radius += std::abs(n(j)) / static_cast<double>(N[j]);
     }
     if (!positive(n)) continue;
-    if (options.truncation == TorusTruncation::kDiamond && weight > 1.0 + 1e-12) continue;
+    if (options.truncation == TorusTruncation::kDiamond && radius > 1.0 + 1e-12) continue;
+    if (options.truncation == TorusTruncation::kProduct) {
+      double product = 1.0;
+      for (int j = 0; j < k; ++j) product *= weight[j][std::abs(n(j))];
+      if (product < options.product_floor) continue;
+    }
     list.push_back(n);
     list.push_back(-n);
   }
@@ -185,7 +240,8 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
     block_[t] = t == 0 ? 0 : (t % 2 == 1 ? (t + 1) / 2 : -(t / 2));
   }
   // Neighbours n − l P_m e_{j(m)} through mesh m's stiffness harmonic l.
-  neighbour_.assign(static_cast<std::size_t>(T) * r, std::vector<int>(2 * L + 1, -1));
+  stride_ = 2 * L + 1;
+  neighbour_.assign(static_cast<std::size_t>(T) * r * stride_, -1);
   for (int t = 0; t < T; ++t) {
     for (int m = 0; m < r; ++m) {
       const int j = generators_.mesh_generator[m], P = generators_.mesh_multiple[m];
@@ -193,7 +249,8 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
         Eigen::VectorXi other = tones_.col(t);
         other(j) -= l * P;
         if (l == 0 || std::abs(other(j)) > N[j]) continue;
-        neighbour_[static_cast<std::size_t>(t) * r + m][L + l] = position[boxIndex(other, N)];
+        neighbour_[(static_cast<std::size_t>(t) * r + m) * stride_ + L + l] =
+            position[boxIndex(other, N)];
       }
     }
   }
@@ -228,11 +285,21 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
   const Eigen::MatrixXd& Komega = model.centripetal();
   rigid_at_every_speed_ = rigid_.cols() == 0 || Komega.size() == 0 ||
                           (Komega * rigid_).norm() <= 1e-12 * Komega.norm() * rigid_.norm();
-  // Grid points per generator: 8 per highest harmonic (at least 32), the grid capped at 2^20
-  // points (the transforms are matrix products: any size).
+  // Grid points per generator: enough for the products k δ up to 2 N_j without aliasing
+  // (4 N_j + 2) and 80 per period of the group's fastest mesh (8 per period of its 10th order:
+  // the mesh force's peak to ~0.05 %), at least 32, rounded up to a 2^a 3^b 5^c size; the grid
+  // capped at 2^20 points.
   long long points = 1;
   for (int j = 0; j < k; ++j) {
-    samples_.push_back(options.samples > 0 ? options.samples : std::max(32, 8 * N[j]));
+    int fastest = 1;
+    for (int m = 0; m < r; ++m) {
+      if (generators_.mesh_generator[m] == j) {
+        fastest = std::max(fastest, generators_.mesh_multiple[m]);
+      }
+    }
+    samples_.push_back(options.samples > 0
+                           ? options.samples
+                           : smoothSize(std::max({32, 4 * N[j] + 2, 80 * fastest})));
     if (samples_.back() < 2 * N[j] + 2) {
       throw InputError("forced.torus_samples", std::to_string(options.samples),
                        fmt::format(">= {} (2 × the {} harmonics of generator {} + 2)", 2 * N[j] + 2,
@@ -295,7 +362,7 @@ TrainTorusState TrainTorusSolver::solve(double input_speed) const {
   for (int m = 0; m < r; ++m) {
     for (int l = -L; l <= L; ++l) {
       // The tone l P_m e_j: the neighbour of the zero tone through harmonic −l.
-      const int t = l == 0 ? 0 : neighbour_[m][L - l];
+      const int t = l == 0 ? 0 : neighbourRow(m)[L - l];
       if (t < 0) continue;
       const double w = kTwoPi * s.tone_frequency(t);
       phi(m, t) += ke_hat_[m][L + l] + Complex(0.0, w) * meshes[m].damping * e_hat_[m][L + l];
@@ -338,14 +405,15 @@ void TrainTorusSolver::applyCondensed(const std::vector<Eigen::MatrixXcd>& B,
   Eigen::VectorXcd w(r);
   for (Eigen::Index t = 0; t < static_cast<Eigen::Index>(B.size()); ++t) {
     for (int m = 0; m < r; ++m) {
-      const std::vector<int>& nb = neighbour_[t * r + m];
+      const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
       Complex sum = 0.0;
       for (int l = -L; l <= L; ++l) {
         if (nb[L + l] >= 0) sum += k_hat_[m][L + l] * x(nb[L + l] * r + m);
       }
       w(m) = sum;
     }
-    y.segment(t * r, r) = x.segment(t * r, r) + B[t] * w;
+    y.segment(t * r, r) = x.segment(t * r, r);
+    y.segment(t * r, r).noalias() += B[t] * w;  // no temporary
   }
 }
 
@@ -363,7 +431,7 @@ Eigen::VectorXcd TrainTorusSolver::solveCondensed(const std::vector<Eigen::Matri
     for (std::size_t a = 0; a < line.size(); ++a) {
       const int t = line[a] / r, i = line[a] % r;
       for (int m = 0; m < r; ++m) {
-        const std::vector<int>& nb = neighbour_[static_cast<std::size_t>(t) * r + m];
+        const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
         for (int l = -L; l <= L; ++l) {
           const int u = nb[L + l] * r + m;
           if (nb[L + l] < 0 || line_of_[u] != static_cast<int>(id)) continue;
@@ -376,13 +444,19 @@ Eigen::VectorXcd TrainTorusSolver::solveCondensed(const std::vector<Eigen::Matri
   const detail::ComplexOperator apply = [&](const Eigen::VectorXcd& x, Eigen::VectorXcd& y) {
     applyCondensed(B, x, y);
   };
+  std::size_t longest = 0;
+  for (const std::vector<int>& line : lines_) longest = std::max(longest, line.size());
+  Eigen::VectorXcd scratch(static_cast<Eigen::Index>(longest));
   const detail::ComplexOperator precondition = [&](const Eigen::VectorXcd& x, Eigen::VectorXcd& y) {
     y.resize(x.size());
     for (std::size_t id = 0; id < lines_.size(); ++id) {
       const std::vector<int>& line = lines_[id];
-      Eigen::VectorXcd local(line.size());
+      auto local = scratch.head(static_cast<Eigen::Index>(line.size()));
       for (std::size_t a = 0; a < line.size(); ++a) local(a) = x(line[a]);
-      local = line_lu[id].solve(local);
+      const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu = line_lu[id];
+      local = lu.permutationP() * local;  // in place (Eigen permutes by cycles)
+      lu.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(local);
+      lu.matrixLU().triangularView<Eigen::Upper>().solveInPlace(local);
       for (std::size_t a = 0; a < line.size(); ++a) y(line[a]) = local(a);
     }
   };
@@ -399,7 +473,7 @@ Eigen::VectorXcd TrainTorusSolver::solveCondensed(const std::vector<Eigen::Matri
     for (int t = 0; t < T; ++t) {
       for (int i = 0; i < r; ++i) entries.emplace_back(t * r + i, t * r + i, 1.0);
       for (int m = 0; m < r; ++m) {
-        const std::vector<int>& nb = neighbour_[static_cast<std::size_t>(t) * r + m];
+        const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
         for (int l = -L; l <= L; ++l) {
           if (nb[L + l] < 0) continue;
           for (int i = 0; i < r; ++i) {
@@ -439,7 +513,7 @@ void TrainTorusSolver::recover(TrainTorusState& s, const std::vector<Eigen::Matr
     Eigen::VectorXcd w = phi.col(t);
     for (int m = 0; m < r; ++m) {
       for (int l = -L; l <= L; ++l) {
-        const int other = neighbour_[static_cast<std::size_t>(t) * r + m][L + l];
+        const int other = neighbourRow(static_cast<std::size_t>(t) * r + m)[L + l];
         if (other >= 0) w(m) -= k_hat_[m][L + l] * delta(other * r + m);
       }
     }

@@ -46,6 +46,8 @@ MeshHarmonicsEstimate estimateMeshHarmonics(const GearTrainModel& model,
   out.per_mesh.assign(r, options.min_harmonics);
   out.worst_speed_index.assign(r, 0);
   out.relative_orders.assign(r, std::vector<double>(orders, 0.0));
+  out.per_speed.assign(speeds.size(), std::vector<int>(r, options.min_harmonics));
+  out.envelope.assign(r, std::vector<double>(orders, 0.0));
   if (r == 0) return out;
   // The static mean state under the mean meshes (rigid-body modes held by a mass-weighted
   // penalty, as in the balances) and each mesh's mean force W_m = k̄_m (δ̄_m − ē_m) [N].
@@ -143,6 +145,10 @@ MeshHarmonicsEstimate estimateMeshHarmonics(const GearTrainModel& model,
       if (!(largest > floor) && largest <= kRoundOff * mean_force) continue;
       int L = E;  // the smallest L with every order above it below the floor
       while (L > 1 && force[L] <= floor) --L;
+      out.per_speed[s][m] = std::clamp(L, options.min_harmonics, options.max_harmonics);
+      for (int l = 1; l <= E; ++l) {
+        out.envelope[m][l - 1] = std::max(out.envelope[m][l - 1], force[l] / largest);
+      }
       if (L >= needed) {
         needed = L;
         out.worst_speed_index[m] = static_cast<int>(s);

@@ -32,6 +32,10 @@ CASES = {
     # The two-stage reducer in the gmsh box (issue 37; its deck from the example's fixture, the
     # reduction from the cache beside it): the housing's skin in the view.
     "view3d_two_stage_housing": ("train_two_stage_reducer_housing", ["forced.points=6"]),
+    # The hunting-tooth reducer (z 19/71 + 21/59): forced on the torus of the mesh phases
+    # (issue 32), with modes for the view; 6 speeds.
+    "view3d_hunting_torus": ("train_hunting_tooth_reducer",
+                             ['analysis.run=["modal","forced"]', "forced.points=6"]),
 }
 
 
@@ -207,6 +211,33 @@ def test_flexible_reducer_view_draws_moves_and_follows_the_mode_list(runs, chrom
     torsional = next(i for i, m in enumerate(modes) if m[2] == "torsional")
     assert modes[torsional][1] == pytest.approx(158.587, rel=1e-4)
     _screenshot(chromium, torsional, "view3d_two_stage_flexible_first_torsional.png")
+    assert chromium.page_console() == []
+
+
+def test_hunting_reducer_view_shows_the_torus_operating_deflection_shapes(runs, chromium):
+    """The torus method writes forced_ods.csv like the common-period method (issue 32 for
+    issue 38): mesh orders 1-3 of each mesh at the operating speed and at each mesh's largest
+    dynamic factor; the view lists them and animates the one chosen."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import Select
+
+    folder, page = runs["view3d_hunting_torus"]
+    summary = json.loads((folder / "summary.json").read_text())["results"]["forced"]
+    assert summary["method"] == "torus" and len(summary["torus"]["generators"]) == 2
+    rows = _csv(folder / "forced_ods.csv")
+    speeds = {float(r["speed_rpm"]) for r in rows}
+    assert len(rows) == len(speeds) * 2 * 3 * 12  # 2 meshes × orders 1-3 × 12 DOFs
+    seen = chromium.open(page)
+    assert seen["views"] == 1 and seen["views_rendered"] == 1, seen
+    assert seen["console"] == [], seen["console"]
+    ods = chromium.driver.execute_script(
+        "return JSON.parse(document.getElementById('gd-view3d-0-data').textContent).ods"
+        ".map(function (o) { return [o.frequency_hz, o.mesh, o.order]; });")
+    assert len(ods) == len(speeds) * 2 * 3
+    Select(chromium.driver.find_element(By.CSS_SELECTOR, "#gd-view3d-0 .gd-v3-ods select")).select_by_value("4")
+    title = _title(chromium)
+    assert title[0].startswith("ODS at ") and title[1] == pytest.approx(ods[4][0], rel=1e-12)
+    chromium.screenshot(OUT / "screenshots" / "view3d_hunting_torus_ods.png", "gd-view3d-0")
     assert chromium.page_console() == []
 
 

@@ -32,7 +32,7 @@ namespace detail {
 class TorusFft;
 }
 
-enum class TorusTruncation { kBox, kDiamond };
+enum class TorusTruncation { kBox, kDiamond, kProduct };
 
 struct TrainTorusOptions {
   int mesh_harmonics = 10;  ///< L: harmonics of each mesh frequency kept (>= 1)
@@ -43,8 +43,16 @@ struct TrainTorusOptions {
   /// meshes sharing one generator may need; a mesh that would exceed it starts a new generator.
   int group_harmonics = 100;
   TorusTruncation truncation = TorusTruncation::kBox;
+  /// kProduct: per mesh, the estimated relative force orders a_m(l), l = 1, 2, ...
+  /// (MeshHarmonicsEstimate::envelope). Generator j's weight at harmonic n is the largest
+  /// a_m(⌈n / P_m⌉) over its meshes made non-increasing in n (a_j(0) = 1, never below the
+  /// floor: every pure harmonic of the box is kept); tone n is kept when
+  /// Π_j a_j(|n_j|) >= product_floor (docs/theory/torus_harmonic_balance.md, "The index set").
+  std::vector<std::vector<double>> mesh_order_weights;
+  double product_floor = 1e-2;  ///< [-]
   /// Grid points per generator period for the mesh forces' peaks and spectra; 0: derived,
-  /// 8 per highest harmonic of that generator and >= 32, the grid capped at 2^20 points.
+  /// max(4 N_j + 2, 80 × the group's largest P_m, 32) rounded up to a 2^a 3^b 5^c size, the
+  /// grid capped at 2^20 points.
   int samples = 0;
   int sparse_dofs = 64;      ///< as TrainSteadyOptions::sparse_dofs
   double tolerance = 1e-13;  ///< GMRES: ‖b − A x‖ <= tolerance ‖b‖ on the condensed system
@@ -130,7 +138,11 @@ class TrainTorusSolver {
   std::vector<int> negative_;  // index of −n
   std::vector<int> block_;     // HarmonicBlocks index of n (>0: n itself, <0: conj of −n)
   // [tone * r + m][L + l]: index of the tone n − l P_m e_{j(m)} (−1: outside T).
-  std::vector<std::vector<int>> neighbour_;
+  std::vector<int> neighbour_;  // flat, 2L + 1 per unknown (tone * r + m)
+  int stride_ = 1;              // 2L + 1
+  const int* neighbourRow(std::size_t unknown) const noexcept {
+    return neighbour_.data() + unknown * static_cast<std::size_t>(stride_);
+  }
   std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
   std::vector<std::vector<int>> lines_;  // preconditioner blocks: unknown indices t r + m
   std::vector<int> line_of_, local_of_;  // unknown → its line and its place in it

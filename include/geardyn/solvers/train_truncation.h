@@ -33,6 +33,12 @@ struct MeshHarmonicsEstimate {
   /// Per mesh: the estimated force orders at that speed, l = 1..E, relative to the largest [-].
   std::vector<std::vector<double>> relative_orders;
   bool capped = false;  ///< some mesh needs more than max_harmonics
+  /// Per speed (index in `speeds`) and mesh: the smallest L meeting the fraction at that speed
+  /// alone, in [min_harmonics, max_harmonics] (the per-speed truncation of the forced sweep).
+  std::vector<std::vector<int>> per_speed;
+  /// Per mesh: the envelope over the speeds of the estimated force orders relative to each
+  /// speed's largest, l = 1..E [-] (the weights of the torus's product truncation).
+  std::vector<std::vector<double>> envelope;
 };
 
 /// For every mesh m and input speed Ω [rad/s]: the mesh alone, its deflection harmonics
