@@ -67,12 +67,17 @@ def _kinetic_shares(real, imag, bodies):
 
 
 def _mode_type(row, shares):
-    """A mode's type: the planetary stage type when the train has one (Lin & Parker 1999:
-    rotational, translational, planet), else the motion holding over 60 % of its kinetic
-    energy (torsional, lateral, axial, tilting) or "coupled" with the largest share."""
+    """A mode's type: "housing" for a flexible housing's own mode, the planetary stage type when
+    the train has one (Lin & Parker 1999: rotational, translational, planet), else the motion
+    holding over 60 % of its kinetic energy (torsional, lateral, axial, tilting) or "coupled"
+    with the largest share."""
     stage = (row.get("stage_type") or "").strip()
     if abs(_number(row.get("frequency_hz"))) < 1e-6:
         return "rigid body" + (f" ({stage})" if stage else "")
+    # A flexible housing's own mode (modes.csv: most of its kinetic energy in the housing),
+    # whose motion the train's bodies barely share.
+    if (row.get("mode_type") or "").strip() == "housing":
+        return "housing"
     if stage:
         return stage.replace("/", ", ")
     kind, share = max(shares.items(), key=lambda kv: kv[1])

@@ -298,8 +298,13 @@ def test_housed_reducer_view_draws_the_housing(runs, chromium):
     assert triangles > 1000
     modes = _modes(chromium)
     # The first mode of type "housing" in modes.csv (the box on the bearings, 605.0 Hz: the
-    # example's expect line); the view's own mode types count the bodies' motion only.
+    # example's expect line), named so in the view's mode list too (it was "lateral": the
+    # bodies' share of its little motion).
     housing = next(i for i, m in enumerate(modes) if m[1] == pytest.approx(604.99, rel=5e-4))
+    assert modes[housing][2] == "housing", modes[housing]
+    folder, _ = runs["view3d_two_stage_housing"]
+    csv_types = {int(r["mode"]): r["mode_type"] for r in _csv(folder / "modes.csv")}
+    assert all((m[2] == "housing") == (csv_types[m[0]] == "housing") for m in modes), modes
     _screenshot(chromium, housing, "view3d_two_stage_housing_first_housing_mode.png")
     image = _canvas_image(chromium)
     assert _differing(image, (0xf3, 0xf5, 0xf7)) > 0.1 * image.size[0] * image.size[1]
