@@ -41,16 +41,17 @@ Driver meshDriver(const config::Config& config, const std::string& p, const Trai
                    fmt::format("one of the mesh's gears, \"{}\" or \"{}\"", m.gear_a, m.gear_b));
 }
 
-}  // namespace
+/// The gear named `gear` (InputError on `key` naming it when there is none).
+const TrainGearSpec& gearNamed(const GearTrainSpec& spec, const std::string& gear,
+                               const std::string& key) {
+  for (const auto& g : spec.gears) {
+    if (g.name == gear) return g;
+  }
+  throw InputError(key, "\"" + gear + "\"", "the name of a gear in [gears.<name>]");
+}
 
-GearTrainSpec gearTrainFromConfig(const config::Config& config,
-                                  std::vector<std::string>& warnings) {
-  GearTrainSpec spec;
-  spec.name = config.string("gearbox.name");
-  spec.dofs = parseTrainDofs(config.string("gearbox.dofs"), "gearbox.dofs");
-  spec.mass_proportional_damping = config.real("gearbox.mass_proportional_damping");
-  spec.gravity = config.real("gearbox.gravity");
-  spec.stiffness_proportional_damping = config.real("gearbox.stiffness_proportional_damping");
+/// [shafts.*]: rigid bodies and flexible (beam) shafts.
+void readShafts(const config::Config& config, GearTrainSpec& spec) {
   for (const std::string& name : config.names("shafts")) {
     const std::string p = "shafts." + name + ".";
     TrainShaftSpec s;
@@ -70,6 +71,12 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     s.stiffness_proportional_damping = config.real(p + "stiffness_proportional_damping");
     spec.shafts.push_back(std::move(s));
   }
+}
+
+/// [gears.*] on their shafts (a bore from the shaft's section when not given), with the
+/// geometry's plausibility notes.
+void readGears(const config::Config& config, GearTrainSpec& spec,
+               std::vector<std::string>& warnings) {
   for (const std::string& name : config.names("gears")) {
     const std::string p = "gears." + name;
     spec.gears.push_back({name, config.string(p + ".shaft"), config::gearSpecFromConfig(config, p),
@@ -81,12 +88,12 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     }
     for (auto& note : plausibilityNotes(spec.gears.back().gear, p)) warnings.push_back(note);
   }
-  auto gear_named = [&](const std::string& gear, const std::string& key) -> const TrainGearSpec& {
-    for (const auto& g : spec.gears) {
-      if (g.name == gear) return g;
-    }
-    throw InputError(key, "\"" + gear + "\"", "the name of a gear in [gears.<name>]");
-  };
+}
+
+/// [meshes.*]: each pair's stiffness model, transmission error and contact, from its gears
+/// (external pairs and ring meshes).
+void readMeshes(const config::Config& config, GearTrainSpec& spec,
+                std::vector<std::string>& warnings) {
   for (const std::string& name : config.names("meshes")) {
     const std::string p = "meshes." + name + ".";
     const auto gears = config.stringList(p + "gears");
@@ -103,8 +110,8 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     m.damping_ratio = config.real(p + "damping_ratio");
     m.damping = config.optionalReal(p + "damping");
     m.transmission_error = teFromConfig(config, p);
-    const TrainGearSpec& a = gear_named(m.gear_a, p + "gears");
-    const TrainGearSpec& b = gear_named(m.gear_b, p + "gears");
+    const TrainGearSpec& a = gearNamed(spec, m.gear_a, p + "gears");
+    const TrainGearSpec& b = gearNamed(spec, m.gear_b, p + "gears");
     const double width = std::min(a.gear.face_width, b.gear.face_width);
     double base_helix = 0.0;  // β_b [rad]
     if (a.internal || b.internal) {
@@ -154,6 +161,10 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     }
     spec.meshes.push_back(std::move(m));
   }
+}
+
+/// [bearings.*]: stiffness keys or a rolling bearing's geometry, clearance and law.
+void readBearings(const config::Config& config, GearTrainSpec& spec) {
   for (const std::string& name : config.names("bearings")) {
     const std::string p = "bearings." + name + ".";
     TrainBearingSpec b;
@@ -175,6 +186,10 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     b.full_law = detail::fullBearingLawFromConfig(config, p, b.rolling != nullptr);
     spec.bearings.push_back(b);
   }
+}
+
+/// [disks.*] and [couplings.*].
+void readDisksAndCouplings(const config::Config& config, GearTrainSpec& spec) {
   for (const std::string& name : config.names("disks")) {
     const std::string p = "disks." + name + ".";
     spec.disks.push_back({name, config.string(p + "shaft"), config.real(p + "position"),
@@ -191,7 +206,12 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
                               config.real(p + "c_torsion"), config.real(p + "k_lateral"),
                               config.real(p + "c_lateral"), config.real(p + "ratio")});
   }
-  readGearboxExcitations(config, spec);
+}
+
+/// [planetary.*]: sun, ring and carrier by name, the planet gear, pins, and the sun-planet and
+/// ring-planet meshes' stiffness, transmission error and contact.
+void readPlanetaryStages(const config::Config& config, GearTrainSpec& spec,
+                         std::vector<std::string>& warnings) {
   for (const std::string& name : config.names("planetary")) {
     const std::string p = "planetary." + name + ".";
     PlanetaryStageSpec st;
@@ -221,8 +241,8 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     }
     st.pin_position_errors = config.realList(p + "pin_position_errors");
     st.carrier_frame_terms = config.boolean(p + "carrier_frame_terms");
-    const TrainGearSpec& sun = gear_named(st.sun, p + "sun");
-    const TrainGearSpec& ring = gear_named(st.ring, p + "ring");
+    const TrainGearSpec& sun = gearNamed(spec, st.sun, p + "sun");
+    const TrainGearSpec& ring = gearNamed(spec, st.ring, p + "ring");
     GearPairSpec sp;
     sp.pinion = sun.gear;
     sp.gear = st.planet;
@@ -260,6 +280,11 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
     st.ring_planet_contact = contactFromConfig(config, p + "ring_planet.", nullptr);
     spec.stages.push_back(std::move(st));
   }
+}
+
+/// [operating_point]: input and output shafts, speed (with its plausibility note) and torque.
+void readOperatingPoint(const config::Config& config, GearTrainSpec& spec,
+                        std::vector<std::string>& warnings) {
   spec.operating.input_shaft = config.string("operating_point.input");
   spec.operating.output_shaft = config.string("operating_point.output");
   spec.operating.input_speed = config.real("operating_point.speed_rpm") * kRpm;
@@ -271,6 +296,26 @@ GearTrainSpec gearTrainFromConfig(const config::Config& config,
   spec.operating.input_torque = config.real("operating_point.torque");
   spec.operating.input_position = config.optionalReal("operating_point.input_position");
   spec.operating.output_position = config.optionalReal("operating_point.output_position");
+}
+
+}  // namespace
+
+GearTrainSpec gearTrainFromConfig(const config::Config& config,
+                                  std::vector<std::string>& warnings) {
+  GearTrainSpec spec;
+  spec.name = config.string("gearbox.name");
+  spec.dofs = parseTrainDofs(config.string("gearbox.dofs"), "gearbox.dofs");
+  spec.mass_proportional_damping = config.real("gearbox.mass_proportional_damping");
+  spec.gravity = config.real("gearbox.gravity");
+  spec.stiffness_proportional_damping = config.real("gearbox.stiffness_proportional_damping");
+  readShafts(config, spec);
+  readGears(config, spec, warnings);
+  readMeshes(config, spec, warnings);
+  readBearings(config, spec);
+  readDisksAndCouplings(config, spec);
+  readGearboxExcitations(config, spec);
+  readPlanetaryStages(config, spec, warnings);
+  readOperatingPoint(config, spec, warnings);
   return spec;
 }
 
