@@ -288,23 +288,8 @@ void addRunUpSection(config::ConfigSchema& schema) {
           "it), the static deflection there, or rest");
 }
 
-}  // namespace
-
-config::ConfigSchema trainSchema(bool inline_gearbox) {
-  config::ConfigSchema schema(
-      "train",
-      "Any gear train (shafts, gears, meshes, bearings, couplings, planetary stages): kinematics "
-      "and mesh phasing, static load sharing, modal analysis with Lin & Parker mode types, "
-      "Campbell diagram with critical speeds of every shaft and mesh order, frequency-domain "
-      "forced response (linear harmonic balance over the common period), Newmark time "
-      "response with the time-varying stiffness of every mesh, and the nonlinear steady state "
-      "with contact loss and backlash at every mesh (harmonic balance condensed on the mesh "
-      "deflections, continuation with folds and stability).");
-  if (inline_gearbox) {
-    addGearboxSections(schema);
-  } else {
-    schema.section("gearbox", "The gearbox this analysis is run on.");
-  }
+/// gearbox.file, .load_case and .all_load_cases: which gearbox the analyses run on.
+void addGearboxFileKeys(config::ConfigSchema& schema) {
   schema.string("gearbox.file")
       .optional()
       .doc(
@@ -321,12 +306,10 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .doc(
           "with a REXS gearbox file: run the analyses at every load case of its spectrum, each "
           "into <out>/load_case_<id>/");
-  schema.section("analysis", "What to run.");
-  schema.stringList("analysis.run")
-      .choices({"static", "contact", "modal", "campbell", "forced", "time", "runup", "nonlinear",
-                "stats"})
-      .defaultValue(nlohmann::ordered_json::array({"static", "modal"}))
-      .doc("analyses, in any combination");
+}
+
+/// [contact]: system deflection with the loaded tooth contact across the face.
+void addContactSection(config::ConfigSchema& schema) {
   schema.section("contact",
                  "System deflection coupled with the loaded tooth contact across the face of every "
                  "external mesh (full DOFs): misalignment, load distribution, K_Hbeta, loaded STE; "
@@ -359,6 +342,10 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .doc(
           "load cases as multiples of the operating torque, each coupled anew: K_Hbeta and the "
           "loaded STE harmonics against load (contact_load_cases.csv); empty: none");
+}
+
+/// [modal] and [campbell].
+void addModalSections(config::ConfigSchema& schema) {
   schema.section("modal", "Modes at one speed.");
   schema.integer("modal.modes").min(0).defaultValue(0).doc("lowest modes reported (0: all)");
   schema.real("modal.speed_rpm")
@@ -373,6 +360,10 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(20)
       .defaultValue(3)
       .doc("mesh-order lines 1× … n× of every mesh frequency");
+}
+
+/// [forced]: the frequency-domain steady state over a speed range (common period or torus).
+void addForcedSection(config::ConfigSchema& schema) {
   schema.section("forced", "Frequency-domain steady state over a speed range (gear whine).");
   addSpeedRange(schema, "forced", 200, "0.1 × the operating speed");
   schema.integer("forced.mesh_harmonics")
@@ -415,6 +406,10 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .max(0.5)
       .defaultValue(1e-2)
       .doc("product truncation: the smallest estimated relative amplitude of a tone kept");
+}
+
+/// [time] (Newmark at one speed) and [stats] (mesh statistics of its record).
+void addTimeAndStatsSections(config::ConfigSchema& schema) {
   schema.section("time", "Newmark time response at one speed to the periodic steady state.");
   schema.real("time.speed_rpm").unit("rpm").optional().doc("input speed (default: operating)");
   schema.real("time.duration")
@@ -457,6 +452,36 @@ config::ConfigSchema trainSchema(bool inline_gearbox) {
       .doc(
           "input torque the profile modifications were designed for: each mesh's baseload F₀ is "
           "its static force at this torque (default: the operating torque, a = 1)");
+}
+
+}  // namespace
+
+config::ConfigSchema trainSchema(bool inline_gearbox) {
+  config::ConfigSchema schema(
+      "train",
+      "Any gear train (shafts, gears, meshes, bearings, couplings, planetary stages): kinematics "
+      "and mesh phasing, static load sharing, modal analysis with Lin & Parker mode types, "
+      "Campbell diagram with critical speeds of every shaft and mesh order, frequency-domain "
+      "forced response (linear harmonic balance over the common period), Newmark time "
+      "response with the time-varying stiffness of every mesh, and the nonlinear steady state "
+      "with contact loss and backlash at every mesh (harmonic balance condensed on the mesh "
+      "deflections, continuation with folds and stability).");
+  if (inline_gearbox) {
+    addGearboxSections(schema);
+  } else {
+    schema.section("gearbox", "The gearbox this analysis is run on.");
+  }
+  addGearboxFileKeys(schema);
+  schema.section("analysis", "What to run.");
+  schema.stringList("analysis.run")
+      .choices({"static", "contact", "modal", "campbell", "forced", "time", "runup", "nonlinear",
+                "stats"})
+      .defaultValue(nlohmann::ordered_json::array({"static", "modal"}))
+      .doc("analyses, in any combination");
+  addContactSection(schema);
+  addModalSections(schema);
+  addForcedSection(schema);
+  addTimeAndStatsSections(schema);
   addProbesSection(schema);
   addRunUpSection(schema);
   addNonlinearSection(schema);
