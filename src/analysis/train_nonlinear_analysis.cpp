@@ -197,6 +197,97 @@ io::CsvTable sweepTable(const GearTrainModel& model, const std::vector<Row>& row
   return table;
 }
 
+/// One bifurcation of a sweep as summary.json lists it: type, speed, base frequency and the
+/// p2p mesh deflections (and clearance bearings' radial p2p) of its point.
+Json bifurcationJson(const GearTrainModel& model, TrainHarmonicBalance& hbm,
+                     const std::string& which, const Row& r, BifurcationType type, double scale) {
+  Json j = {{"sweep", which},
+            {"type", toString(type)},
+            {"speed_rpm", r.omega / scale},
+            {"base_frequency_hz", r.omega / kTwoPi},
+            {"p2p_deflection_m", perMesh(model, r.p2p_deflection)}};
+  if (hbm.bearingCount() > 0) {
+    Json radial = Json::object();
+    for (int k = 0; k < hbm.bearingCount(); ++k)
+      radial[model.clearanceBearings()[k].name] = r.p2p_radial[k];
+    j["p2p_radial_m"] = radial;
+  }
+  return j;
+}
+
+/// Per mesh: the point of the largest p2p deflection over every sweep (its force, speed,
+/// sweep and stability).
+Json meshPeaks(const GearTrainModel& model, TrainHarmonicBalance& hbm, const std::vector<Row>& all,
+               double scale) {
+  Json peaks = Json::object();
+  for (int m = 0; m < hbm.meshCount(); ++m) {
+    const Row* best = nullptr;
+    for (const Row& r : all) {
+      if (!best || r.p2p_deflection[m] > best->p2p_deflection[m]) best = &r;
+    }
+    if (best) {
+      peaks[model.meshes()[m].name] = {{"p2p_deflection_m", best->p2p_deflection[m]},
+                                       {"p2p_force_n", best->p2p_force[m]},
+                                       {"speed_rpm", best->omega / scale},
+                                       {"sweep", best->sweep},
+                                       {"stable", best->stable}};
+    }
+  }
+  return peaks;
+}
+
+/// Per clearance bearing: its largest orbit over every sweep, and whether the journal leaves
+/// contact anywhere.
+Json journalPeaks(const GearTrainModel& model, TrainHarmonicBalance& hbm,
+                  const std::vector<Row>& all, double scale) {
+  Json journals = Json::object();  // per clearance bearing: its largest orbit, contact loss
+  for (int b = 0; b < hbm.bearingCount(); ++b) {
+    const Row* best = nullptr;
+    bool loss = false;
+    for (const Row& r : all) {
+      if (!best || r.max_radial[b] > best->max_radial[b]) best = &r;
+      loss = loss || r.journal_loss[b];
+    }
+    if (best) {
+      const TrainClearanceBearing& bearing = model.clearanceBearings()[b];
+      journals[bearing.name] = {{"radial_clearance_m", bearing.clearance},
+                                {"max_radial_m", best->max_radial[b]},
+                                {"p2p_radial_m", best->p2p_radial[b]},
+                                {"speed_rpm", best->omega / scale},
+                                {"sweep", best->sweep},
+                                {"contact_loss_somewhere", loss}};
+    }
+  }
+  return journals;
+}
+
+/// The Newmark checks' lines of the text report.
+std::string newmarkChecksText(const Json& checks) {
+  std::string text;
+  for (const Json& c : checks) {
+    if (c.contains("max_relative_difference")) {
+      text += fmt::format("  Newmark at {:g} rpm (solution {}): {}, p2p within {:.2g} %\n",
+                          c["speed_rpm"].get<double>(), c["solution"].get<std::size_t>(),
+                          c["newmark_status"].get<std::string>(),
+                          100 * c["max_relative_difference"].get<double>());
+    }
+  }
+  return text;
+}
+
+/// Per mesh: its multiple of the base frequency [-], and (into `per_rpm`) its frequency per
+/// rpm of input speed [Hz/rpm].
+Json meshMultiplesJson(const GearTrainModel& model, TrainHarmonicBalance& hbm, double scale,
+                       Json& per_rpm) {
+  Json multiples = Json::object();
+  per_rpm = Json::object();
+  for (int m = 0; m < hbm.meshCount(); ++m) {
+    multiples[model.meshes()[m].name] = hbm.meshMultiples()[m];
+    per_rpm[model.meshes()[m].name] = hbm.meshMultiples()[m] * scale / kTwoPi;
+  }
+  return multiples;
+}
+
 }  // namespace
 
 /// One continuation sweep with its table rows (computed by the balance that ran it).
@@ -362,18 +453,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
     const std::string file = "nonlinear_" + which + ".csv";
     result.addTable(file, sweepTable(model, rows, scale, sweep.stability));
     for (const Bifurcation& b : run.bifurcations) {
-      const Row& r = rows[b.index];
-      Json j = {{"sweep", which},
-                {"type", toString(b.type)},
-                {"speed_rpm", r.omega / scale},
-                {"base_frequency_hz", r.omega / kTwoPi},
-                {"p2p_deflection_m", perMesh(model, r.p2p_deflection)}};
-      if (hbm.bearingCount() > 0) {
-        Json radial = Json::object();
-        for (int k = 0; k < hbm.bearingCount(); ++k)
-          radial[model.clearanceBearings()[k].name] = r.p2p_radial[k];
-        j["p2p_radial_m"] = radial;
-      }
+      const Json j = bifurcationJson(model, hbm, which, rows[b.index], b.type, scale);
       bifurcations.push_back(j);
       if (b.type == BifurcationType::kFold) folds.push_back(j);
     }
@@ -398,43 +478,10 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
     text += fmt::format("  {} ({} sweep) at {:.6g} rpm\n", b["type"].get<std::string>(),
                         b["sweep"].get<std::string>(), b["speed_rpm"].get<double>());
   }
-  Json peaks = Json::object();
-  for (int m = 0; m < hbm.meshCount(); ++m) {
-    const Row* best = nullptr;
-    for (const Row& r : all) {
-      if (!best || r.p2p_deflection[m] > best->p2p_deflection[m]) best = &r;
-    }
-    if (best) {
-      peaks[model.meshes()[m].name] = {{"p2p_deflection_m", best->p2p_deflection[m]},
-                                       {"p2p_force_n", best->p2p_force[m]},
-                                       {"speed_rpm", best->omega / scale},
-                                       {"sweep", best->sweep},
-                                       {"stable", best->stable}};
-    }
-  }
-  Json journals = Json::object();  // per clearance bearing: its largest orbit, contact loss
-  for (int b = 0; b < hbm.bearingCount(); ++b) {
-    const Row* best = nullptr;
-    bool loss = false;
-    for (const Row& r : all) {
-      if (!best || r.max_radial[b] > best->max_radial[b]) best = &r;
-      loss = loss || r.journal_loss[b];
-    }
-    if (best) {
-      const TrainClearanceBearing& bearing = model.clearanceBearings()[b];
-      journals[bearing.name] = {{"radial_clearance_m", bearing.clearance},
-                                {"max_radial_m", best->max_radial[b]},
-                                {"p2p_radial_m", best->p2p_radial[b]},
-                                {"speed_rpm", best->omega / scale},
-                                {"sweep", best->sweep},
-                                {"contact_loss_somewhere", loss}};
-    }
-  }
-  Json multiples = Json::object(), per_rpm = Json::object();
-  for (int m = 0; m < hbm.meshCount(); ++m) {
-    multiples[model.meshes()[m].name] = hbm.meshMultiples()[m];
-    per_rpm[model.meshes()[m].name] = hbm.meshMultiples()[m] * scale / kTwoPi;
-  }
+  const Json peaks = meshPeaks(model, hbm, all, scale);
+  const Json journals = journalPeaks(model, hbm, all, scale);
+  Json per_rpm;
+  const Json multiples = meshMultiplesJson(model, hbm, scale, per_rpm);
   summary.results["nonlinear"] = {{"method", "common_period"},
                                   {"harmonics", options.harmonics},
                                   {"samples", options.samples},
@@ -464,14 +511,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
   const Json checks =
       newmarkChecks(model, analysis, hbm, runs, scale, sweep.stability, result, context);
   if (!checks.empty()) summary.results["nonlinear"]["newmark_checks"] = checks;
-  for (const Json& c : checks) {
-    if (c.contains("max_relative_difference")) {
-      text += fmt::format("  Newmark at {:g} rpm (solution {}): {}, p2p within {:.2g} %\n",
-                          c["speed_rpm"].get<double>(), c["solution"].get<std::size_t>(),
-                          c["newmark_status"].get<std::string>(),
-                          100 * c["max_relative_difference"].get<double>());
-    }
-  }
+  text += newmarkChecksText(checks);
   text += fmt::format("nonlinear: H = {}, N = {}, {} points in {:.2f} s ({:.2f} ms a point)\n",
                       options.harmonics, options.samples, points, sweep_seconds,
                       points > 0 ? 1e3 * sweep_seconds / points : 0.0);
