@@ -219,6 +219,34 @@ std::vector<int> deriveTruncation(const GearTrainModel& model, const std::vector
   return estimate.per_mesh;
 }
 
+/// summary.json's forced.torus: the generators (their orders and harmonics, the meshes on
+/// each), the truncation, the tone count and the linear solves' effort.
+Json torusJson(const GearTrainModel& model, const TrainTorusSolver& solver,
+               const TrainTorusOptions& torus_options, int max_iterations, int direct) {
+  const auto& meshes = model.meshes();
+  const TrainTorusGenerators& g = solver.generators();
+  Json generators = Json::array();
+  for (std::size_t j = 0; j < g.ratio.size(); ++j) {
+    Json members = Json::array();
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      if (g.mesh_generator[m] == static_cast<int>(j)) {
+        members.push_back({{"mesh", meshes[m].name}, {"multiple", g.mesh_multiple[m]}});
+      }
+    }
+    // g_j per input revolution: the generator's events per turn of the input shaft.
+    generators.push_back({{"order", g.ratio[j] * 2.0 * std::numbers::pi},
+                          {"harmonics", g.harmonics[j]},
+                          {"meshes", members}});
+  }
+  return {{"generators", generators},
+          {"truncation", torus_options.truncation == TorusTruncation::kProduct   ? "product"
+                         : torus_options.truncation == TorusTruncation::kDiamond ? "diamond"
+                                                                                 : "box"},
+          {"tones", solver.toneCount()},
+          {"max_gmres_iterations", max_iterations},
+          {"direct_solves", direct}};
+}
+
 }  // namespace
 
 void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
@@ -352,30 +380,8 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
                  {"mesh_harmonics_per_mesh", Json::object()},
                  {"method", torus ? "torus" : "common_period"},
                  {"common_period_harmonics", common_harmonics}};
-  if (torus) {
-    const TrainTorusGenerators& g = torus_solver->generators();
-    Json generators = Json::array();
-    for (std::size_t j = 0; j < g.ratio.size(); ++j) {
-      Json members = Json::array();
-      for (std::size_t m = 0; m < meshes.size(); ++m) {
-        if (g.mesh_generator[m] == static_cast<int>(j)) {
-          members.push_back({{"mesh", meshes[m].name}, {"multiple", g.mesh_multiple[m]}});
-        }
-      }
-      // g_j per input revolution: the generator's events per turn of the input shaft.
-      generators.push_back({{"order", g.ratio[j] * 2.0 * std::numbers::pi},
-                            {"harmonics", g.harmonics[j]},
-                            {"meshes", members}});
-    }
-    forced["torus"] = {
-        {"generators", generators},
-        {"truncation", torus_options.truncation == TorusTruncation::kProduct   ? "product"
-                       : torus_options.truncation == TorusTruncation::kDiamond ? "diamond"
-                                                                               : "box"},
-        {"tones", torus_solver->toneCount()},
-        {"max_gmres_iterations", max_iterations},
-        {"direct_solves", direct}};
-  }
+  if (torus)
+    forced["torus"] = torusJson(model, *torus_solver, torus_options, max_iterations, direct);
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     forced["mesh_harmonics_per_mesh"][meshes[m].name] = per_mesh[m];
   }
