@@ -22,6 +22,126 @@ namespace {
 using detail::PointJacobian;
 using detail::requireNonNegative;
 
+/// Every name is used once: shafts, gears, meshes, bearings, couplings, stages and disks share
+/// one name space.
+void checkUniqueNames(const GearTrainSpec& spec) {
+  std::set<std::string> names;
+  auto unique = [&](const std::string& name, const std::string& key) {
+    if (name.empty()) throw InputError(key, "\"\"", "a non-empty name");
+    if (!names.insert(name).second) {
+      throw InputError(key, "\"" + name + "\"",
+                       "a name used once: shafts, gears, meshes, bearings, couplings and stages "
+                       "share one name space");
+    }
+  };
+  for (const auto& s : spec.shafts) unique(s.name, "shafts." + s.name);
+  for (const auto& g : spec.gears) unique(g.name, "gears." + g.name);
+  for (const auto& m : spec.meshes) unique(m.name, "meshes." + m.name);
+  for (const auto& b : spec.bearings) unique(b.name, "bearings." + b.name);
+  for (const auto& c : spec.couplings) unique(c.name, "couplings." + c.name);
+  for (const auto& st : spec.stages) unique(st.name, "planetary." + st.name);
+  for (const auto& d : spec.disks) unique(d.name, "disks." + d.name);
+}
+
+/// A shaft's own mass, inertias, axial offset and beam damping are physical.
+void checkShaftSpec(const TrainShaftSpec& shaft, const std::string& key) {
+  requireNonNegative(shaft.mass, key + ".mass", "kg");
+  requireNonNegative(shaft.polar_inertia, key + ".polar_inertia", "kg m^2");
+  requireNonNegative(shaft.diametral_inertia, key + ".diametral_inertia", "kg m^2");
+  if (!std::isfinite(shaft.axial_offset)) {
+    throw InputError(key + ".axial_offset", fmt::format("{:g} m", shaft.axial_offset),
+                     "a finite position");
+  }
+  if (!(shaft.stiffness_proportional_damping >= 0.0) ||
+      !std::isfinite(shaft.stiffness_proportional_damping) ||
+      (!shaft.flexible && shaft.stiffness_proportional_damping != 0.0)) {
+    throw InputError(key + ".stiffness_proportional_damping",
+                     fmt::format("{:g} s", shaft.stiffness_proportional_damping),
+                     shaft.flexible ? "a finite β >= 0 s"
+                                    : "0 on a rigid shaft (it damps beam elements: flexible = "
+                                      "true)");
+  }
+}
+
+/// The planets of stage s: one body each, in the stage's carrier frame (full DOFs: in the sun
+/// gear's mid-face plane, the lumped part a disk of the face width unless its diametral inertia
+/// is given).
+std::vector<TrainBody> planetBodies(const GearTrainSpec& spec, std::size_t s,
+                                    std::vector<std::string>& warnings) {
+  const bool full = spec.dofs == TrainDofs::kFull;
+  const PlanetaryStageSpec& st = spec.stages[s];
+  std::vector<TrainBody> bodies;
+  const std::string key = "planetary." + st.name;
+  if (st.planets < 1 || st.planets > 32) {
+    throw InputError(key + ".planets", std::to_string(st.planets), "an integer in [1, 32]");
+  }
+  st.planet.validate(key + ".planet");
+  requireNonNegative(st.planet_mass, key + ".planet_mass", "kg");
+  requireNonNegative(st.planet_inertia, key + ".planet_inertia", "kg m^2");
+  const GearBodyMass planet_body = gearBodyMass(st.planet);
+  // Full DOFs: the planets turn in the sun gear's mid-face plane; the lumped part is a disk
+  // of the face width b unless its diametral inertia is given.
+  double axial = 0.0, diametral = 0.0;
+  if (full) {
+    const int sun = detail::gearIndexOf(spec, st.sun, key + ".sun");
+    const TrainGearSpec& g = spec.gears[sun];
+    axial = spec.shafts[detail::shaftIndexOf(spec, g.shaft, "gears." + g.name + ".shaft")]
+                .axial_offset +
+            g.position;
+    const double b = st.planet.face_width;
+    diametral = st.planet_diametral_inertia >= 0.0
+                    ? st.planet_diametral_inertia
+                    : 0.5 * st.planet_inertia + st.planet_mass * b * b / 12.0;
+    if (st.planet_body) diametral += planet_body.diametral_inertia;
+  }
+  for (int n = 0; n < st.planets; ++n) {
+    TrainBody body;
+    body.name = fmt::format("{}.planet{}", st.name, n + 1);
+    body.kind = TrainBodyKind::kPlanet;
+    body.stage = static_cast<int>(s);
+    body.planet = n;
+    body.mass = st.planet_mass + (st.planet_body ? planet_body.mass : 0.0);
+    body.polar_inertia = st.planet_inertia + (st.planet_body ? planet_body.polar_inertia : 0.0);
+    body.axial = axial;
+    body.diametral_inertia = diametral;
+    bodies.push_back(body);
+  }
+  if (full && st.carrier_frame_terms) {
+    warnings.push_back(fmt::format(
+        "{}: with gearbox.dofs = \"full\" the stage is the fixed-frame lumped model (planets "
+        "held at their positions); the carrier-frame Coriolis and centripetal terms are "
+        "formulated for planar DOFs (set carrier_frame_terms = false to silence this)",
+        key));
+  }
+  return bodies;
+}
+
+/// A rigid body (a rigid shaft's, a planet's) has the inertias its DOFs need, naming the key
+/// that would give them.
+void checkRigidBodyInertia(const GearTrainSpec& spec, const TrainBody& body) {
+  if (!(body.polar_inertia > 0.0)) {
+    throw InputError(body.kind == TrainBodyKind::kPlanet
+                         ? "planetary." + spec.stages[body.stage].name + ".planet_inertia"
+                         : "shafts." + body.name + ".polar_inertia",
+                     "0 kg m^2",
+                     "a body needs a polar inertia > 0 (its own, its sections' or its gears')");
+  }
+  if (spec.dofs != TrainDofs::kTorsional && !(body.mass > 0.0)) {
+    throw InputError(body.kind == TrainBodyKind::kPlanet
+                         ? "planetary." + spec.stages[body.stage].name + ".planet_mass"
+                         : "shafts." + body.name + ".mass",
+                     "0 kg", "planar and full DOFs need a mass > 0 on every body");
+  }
+  if (spec.dofs == TrainDofs::kFull && !(body.diametral_inertia > 0.0)) {
+    throw InputError(body.kind == TrainBodyKind::kPlanet
+                         ? "planetary." + spec.stages[body.stage].name + ".planet_diametral_inertia"
+                         : "shafts." + body.name + ".diametral_inertia",
+                     "0 kg m^2",
+                     "full DOFs need a diametral inertia > 0 on every rigid shaft (its own, "
+                     "its sections', gears' or disks')");
+  }
+}
+
 }  // namespace
 
 std::string toString(TrainDofs dofs) {
@@ -147,23 +267,7 @@ std::string GearTrainModel::dofName(int i) const {
 
 void GearTrainModel::buildBodies() {
   if (spec_.shafts.empty()) throw InputError("shafts", "", "at least one shaft");
-  std::set<std::string> names;
-  auto unique = [&](const std::string& name, const std::string& key) {
-    if (name.empty()) throw InputError(key, "\"\"", "a non-empty name");
-    if (!names.insert(name).second) {
-      throw InputError(key, "\"" + name + "\"",
-                       "a name used once: shafts, gears, meshes, bearings, couplings and stages "
-                       "share one name space");
-    }
-  };
-  for (const auto& s : spec_.shafts) unique(s.name, "shafts." + s.name);
-  for (const auto& g : spec_.gears) unique(g.name, "gears." + g.name);
-  for (const auto& m : spec_.meshes) unique(m.name, "meshes." + m.name);
-  for (const auto& b : spec_.bearings) unique(b.name, "bearings." + b.name);
-  for (const auto& c : spec_.couplings) unique(c.name, "couplings." + c.name);
-  for (const auto& st : spec_.stages) unique(st.name, "planetary." + st.name);
-  for (const auto& d : spec_.disks) unique(d.name, "disks." + d.name);
-
+  checkUniqueNames(spec_);
   const bool full = spec_.dofs == TrainDofs::kFull;
   shaft_nodes_.assign(spec_.shafts.size(), {});
   std::vector<detail::MassSum> rigid(spec_.shafts.size());
@@ -175,22 +279,7 @@ void GearTrainModel::buildBodies() {
                        "false with dofs = \"" + toString(spec_.dofs) +
                            "\" (a flexible shaft needs gearbox.dofs = \"full\")");
     }
-    requireNonNegative(shaft.mass, key + ".mass", "kg");
-    requireNonNegative(shaft.polar_inertia, key + ".polar_inertia", "kg m^2");
-    requireNonNegative(shaft.diametral_inertia, key + ".diametral_inertia", "kg m^2");
-    if (!std::isfinite(shaft.axial_offset)) {
-      throw InputError(key + ".axial_offset", fmt::format("{:g} m", shaft.axial_offset),
-                       "a finite position");
-    }
-    if (!(shaft.stiffness_proportional_damping >= 0.0) ||
-        !std::isfinite(shaft.stiffness_proportional_damping) ||
-        (!shaft.flexible && shaft.stiffness_proportional_damping != 0.0)) {
-      throw InputError(key + ".stiffness_proportional_damping",
-                       fmt::format("{:g} s", shaft.stiffness_proportional_damping),
-                       shaft.flexible ? "a finite β >= 0 s"
-                                      : "0 on a rigid shaft (it damps beam elements: flexible = "
-                                        "true)");
-    }
+    checkShaftSpec(shaft, key);
     if (shaft.flexible) {
       buildShaftNodes(static_cast<int>(s));
       shaft_body_.push_back(shaft_nodes_[s].front());
@@ -248,77 +337,14 @@ void GearTrainModel::buildBodies() {
   }
   // Planets: one body each, in the stage's carrier frame.
   for (std::size_t s = 0; s < spec_.stages.size(); ++s) {
-    const PlanetaryStageSpec& st = spec_.stages[s];
-    const std::string key = "planetary." + st.name;
-    if (st.planets < 1 || st.planets > 32) {
-      throw InputError(key + ".planets", std::to_string(st.planets), "an integer in [1, 32]");
-    }
-    st.planet.validate(key + ".planet");
-    requireNonNegative(st.planet_mass, key + ".planet_mass", "kg");
-    requireNonNegative(st.planet_inertia, key + ".planet_inertia", "kg m^2");
-    const GearBodyMass planet_body = gearBodyMass(st.planet);
-    // Full DOFs: the planets turn in the sun gear's mid-face plane; the lumped part is a disk
-    // of the face width b unless its diametral inertia is given.
-    double axial = 0.0, diametral = 0.0;
-    if (full) {
-      const int sun = detail::gearIndexOf(spec_, st.sun, key + ".sun");
-      const TrainGearSpec& g = spec_.gears[sun];
-      axial = spec_.shafts[detail::shaftIndexOf(spec_, g.shaft, "gears." + g.name + ".shaft")]
-                  .axial_offset +
-              g.position;
-      const double b = st.planet.face_width;
-      diametral = st.planet_diametral_inertia >= 0.0
-                      ? st.planet_diametral_inertia
-                      : 0.5 * st.planet_inertia + st.planet_mass * b * b / 12.0;
-      if (st.planet_body) diametral += planet_body.diametral_inertia;
-    }
-    for (int n = 0; n < st.planets; ++n) {
-      TrainBody body;
-      body.name = fmt::format("{}.planet{}", st.name, n + 1);
-      body.kind = TrainBodyKind::kPlanet;
-      body.stage = static_cast<int>(s);
-      body.planet = n;
-      body.mass = st.planet_mass + (st.planet_body ? planet_body.mass : 0.0);
-      body.polar_inertia = st.planet_inertia + (st.planet_body ? planet_body.polar_inertia : 0.0);
-      body.axial = axial;
-      body.diametral_inertia = diametral;
-      bodies_.push_back(body);
-    }
-    if (full && st.carrier_frame_terms) {
-      warnings_.push_back(fmt::format(
-          "{}: with gearbox.dofs = \"full\" the stage is the fixed-frame lumped model (planets "
-          "held at their positions); the carrier-frame Coriolis and centripetal terms are "
-          "formulated for planar DOFs (set carrier_frame_terms = false to silence this)",
-          key));
-    }
+    for (TrainBody& body : planetBodies(spec_, s, warnings_)) bodies_.push_back(std::move(body));
   }
   const int per = dofsPerBody();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     bodies_[b].first_dof = static_cast<int>(b) * per;
     const int shaft = bodies_[b].shaft;
     if (shaft >= 0 && spec_.shafts[shaft].flexible) continue;  // the beams carry mass
-    if (!(bodies_[b].polar_inertia > 0.0)) {
-      throw InputError(bodies_[b].kind == TrainBodyKind::kPlanet
-                           ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_inertia"
-                           : "shafts." + bodies_[b].name + ".polar_inertia",
-                       "0 kg m^2",
-                       "a body needs a polar inertia > 0 (its own, its sections' or its gears')");
-    }
-    if (spec_.dofs != TrainDofs::kTorsional && !(bodies_[b].mass > 0.0)) {
-      throw InputError(bodies_[b].kind == TrainBodyKind::kPlanet
-                           ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_mass"
-                           : "shafts." + bodies_[b].name + ".mass",
-                       "0 kg", "planar and full DOFs need a mass > 0 on every body");
-    }
-    if (spec_.dofs == TrainDofs::kFull && !(bodies_[b].diametral_inertia > 0.0)) {
-      throw InputError(
-          bodies_[b].kind == TrainBodyKind::kPlanet
-              ? "planetary." + spec_.stages[bodies_[b].stage].name + ".planet_diametral_inertia"
-              : "shafts." + bodies_[b].name + ".diametral_inertia",
-          "0 kg m^2",
-          "full DOFs need a diametral inertia > 0 on every rigid shaft (its own, "
-          "its sections', gears' or disks')");
-    }
+    checkRigidBodyInertia(spec_, bodies_[b]);
   }
   checkDenseFits(static_cast<double>(bodies_.size()) * per, "gearbox.dofs", toString(spec_.dofs));
   dof_count_ = static_cast<int>(bodies_.size()) * per;
