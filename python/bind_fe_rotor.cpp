@@ -73,9 +73,8 @@ struct FeRotorHandle {
   }
 };
 
-}  // namespace
-
-void bindFeRotor(py::module_& m) {
+/// geardyn.FeTimeResponse: a time response's record.
+void bindFeTimeResponse(py::module_& m) {
   py::class_<FeTimeResponse, std::shared_ptr<FeTimeResponse>>(
       m, "FeTimeResponse", "Newmark response of the FE geared rotor at the recorded channels.")
       .def_readonly("t", &FeTimeResponse::t, "[s]")
@@ -105,32 +104,29 @@ void bindFeRotor(py::module_& m) {
       .def_readonly("factorisations", &FeTimeResponse::factorisations)
       .def_readonly("message", &FeTimeResponse::message)
       .def_property_readonly("status", [](const FeTimeResponse& r) { return toString(r.status); });
+}
 
+/// geardyn.FeGearedRotor's construction from a configuration and its model's properties.
+void bindFeRotorModel(py::class_<FeRotorHandle, std::shared_ptr<FeRotorHandle>>& c) {
   using Handle = FeRotorHandle;
-  py::class_<Handle, std::shared_ptr<Handle>>(
-      m, "FeGearedRotor",
-      "The finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3): build it from a "
-      "`geardyn rotor` configuration with [model] type = \"fe_geared_rotor\". Its time response, "
-      "modes and Campbell diagram come from the gear train it is (the solvers of `geardyn "
-      "rotor`).")
-      .def(py::init([](const std::string& config, std::vector<std::string> overrides,
-                       const std::string& stiffness) {
-             // The gearbox the modes come from has the chosen model as its mesh stiffness.
-             if (!stiffness.empty()) overrides.push_back("mesh.stiffness=" + stiffness);
-             auto h = std::make_shared<Handle>(
-                 Handle{config::loadConfigFile(config, config::feRotorSchema(), overrides),
-                        {},
-                        nullptr,
-                        nullptr});
-             h->pair = config::gearPairSpecFromConfig(h->config);
-             h->model = std::make_shared<FeGearedRotor>(
-                 config::feRotorSpecFromConfig(h->config, stiffness).spec);
-             return h;
-           }),
-           py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
-           py::arg("stiffness") = "",
-           "config: path of the TOML file; overrides: [\"key=value\", ...] as --set; stiffness: "
-           "a [mesh_stiffness] model name (default: mesh.stiffness)")
+  c.def(py::init([](const std::string& config, std::vector<std::string> overrides,
+                    const std::string& stiffness) {
+          // The gearbox the modes come from has the chosen model as its mesh stiffness.
+          if (!stiffness.empty()) overrides.push_back("mesh.stiffness=" + stiffness);
+          auto h = std::make_shared<Handle>(
+              Handle{config::loadConfigFile(config, config::feRotorSchema(), overrides),
+                     {},
+                     nullptr,
+                     nullptr});
+          h->pair = config::gearPairSpecFromConfig(h->config);
+          h->model = std::make_shared<FeGearedRotor>(
+              config::feRotorSpecFromConfig(h->config, stiffness).spec);
+          return h;
+        }),
+        py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
+        py::arg("stiffness") = "",
+        "config: path of the TOML file; overrides: [\"key=value\", ...] as --set; stiffness: "
+        "a [mesh_stiffness] model name (default: mesh.stiffness)")
       .def_property_readonly("dof_count", [](const Handle& h) { return h.model->dofCount(); })
       .def_property_readonly("dof_names",
                              [](const Handle& h) {
@@ -170,34 +166,39 @@ void bindFeRotor(py::module_& m) {
           py::return_value_policy::reference_internal, "F [N, N m]")
       .def_property_readonly(
           "mean_mesh_stiffness", [](const Handle& h) { return h.model->meanMeshStiffness(); },
-          "[N/m]")
-      .def(
-          "time_response",
-          [](const Handle& h, double duration, double time_step, std::vector<std::string> channels,
-             bool start_from_static) {
-            const FeGearedRotor& r = *h.model;
-            FeTimeOptions o;
-            o.duration = duration;
-            o.time_step = time_step;
-            o.start_from_static = start_from_static;
-            for (const auto& name : channels) {
-              int found = -1;
-              for (int i = 0; i < r.dofCount(); ++i)
-                if (r.dofName(i) == name) found = i;
-              if (found < 0) throw InputError("channels", name, "a name of dof_names");
-              o.channels.push_back(found);
-            }
-            auto response = std::make_shared<FeTimeResponse>();
-            {
-              py::gil_scoped_release release;
-              *response = solveFeRotorTimeResponse(r, h.pair, o);
-            }
-            return response;
-          },
-          py::kw_only(), py::arg("duration") = 0.5, py::arg("time_step") = 1e-5,
-          py::arg("channels") = std::vector<std::string>{}, py::arg("start_from_static") = false,
-          "Newmark (γ = 1/2, β = 1/4) over `duration` [s] with step `time_step` [s] at the "
-          "configured speed profile; channels: DOF names (default all).")
+          "[N/m]");
+}
+
+/// geardyn.FeGearedRotor's analyses: time response, modes and Campbell diagram.
+void bindFeRotorAnalyses(py::class_<FeRotorHandle, std::shared_ptr<FeRotorHandle>>& c) {
+  using Handle = FeRotorHandle;
+  c.def(
+       "time_response",
+       [](const Handle& h, double duration, double time_step, std::vector<std::string> channels,
+          bool start_from_static) {
+         const FeGearedRotor& r = *h.model;
+         FeTimeOptions o;
+         o.duration = duration;
+         o.time_step = time_step;
+         o.start_from_static = start_from_static;
+         for (const auto& name : channels) {
+           int found = -1;
+           for (int i = 0; i < r.dofCount(); ++i)
+             if (r.dofName(i) == name) found = i;
+           if (found < 0) throw InputError("channels", name, "a name of dof_names");
+           o.channels.push_back(found);
+         }
+         auto response = std::make_shared<FeTimeResponse>();
+         {
+           py::gil_scoped_release release;
+           *response = solveFeRotorTimeResponse(r, h.pair, o);
+         }
+         return response;
+       },
+       py::kw_only(), py::arg("duration") = 0.5, py::arg("time_step") = 1e-5,
+       py::arg("channels") = std::vector<std::string>{}, py::arg("start_from_static") = false,
+       "Newmark (γ = 1/2, β = 1/4) over `duration` [s] with step `time_step` [s] at the "
+       "configured speed profile; channels: DOF names (default all).")
       .def(
           "modal",
           [](Handle& h, double speed_rpm, int modes) {
@@ -254,6 +255,20 @@ void bindFeRotor(py::module_& m) {
           py::arg("speeds_rpm"), py::arg("modes") = 8,
           "Campbell diagram (the train's, as `geardyn rotor` campbell): tracked modes over pinion "
           "speeds [rpm] (frequency_hz: speeds × modes), the order lines and the critical speeds.");
+}
+
+}  // namespace
+
+void bindFeRotor(py::module_& m) {
+  bindFeTimeResponse(m);
+  py::class_<FeRotorHandle, std::shared_ptr<FeRotorHandle>> rotor(
+      m, "FeGearedRotor",
+      "The finite-element two-shaft geared rotor (Visnadi & de Castro 2021 §3): build it from a "
+      "`geardyn rotor` configuration with [model] type = \"fe_geared_rotor\". Its time response, "
+      "modes and Campbell diagram come from the gear train it is (the solvers of `geardyn "
+      "rotor`).");
+  bindFeRotorModel(rotor);
+  bindFeRotorAnalyses(rotor);
 }
 
 }  // namespace geardyn::python
