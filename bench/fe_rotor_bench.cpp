@@ -12,7 +12,6 @@
 #include "geardyn/solvers/fe_rotor_response.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/potential_energy_stiffness.h"
-#include "geardyn/system/fe_rotor_train.h"
 #include "geardyn/system/gear_train_model.h"
 #include "support/fe_rotor_cases.h"
 
@@ -22,12 +21,12 @@ namespace {
 constexpr double kRpm = std::numbers::pi / 30.0;
 
 /// The Visnadi rotor with `elements` per shaft (5 → 6 nodes × 5 DOFs × 2 shafts = 60 DOFs).
-FeGearedRotorSpec rotorSpec(int elements, double start_rpm, double end_rpm, double duration) {
+FeRotorModel rotor(int elements, double start_rpm, double end_rpm, double duration) {
   static const GearPair pair(testing::visnadiPairSpec(0.0));
   static const auto pe = std::make_shared<PotentialEnergyMeshStiffness>(pair);
-  auto spec = testing::visnadiFeRotorSpec(pe, 0.0, elements);
-  spec.speed = {start_rpm * kRpm, end_rpm * kRpm, 0.0, duration};
-  return spec;
+  testing::FeRotorCase c = testing::visnadiFeRotor(pe, 0.0, elements);
+  c.setSpeed({start_rpm * kRpm, end_rpm * kRpm, 0.0, duration});
+  return c.model();
 }
 
 /// Steps `stepper` from rest, one step per benchmark iteration.
@@ -44,9 +43,8 @@ void timeSteps(benchmark::State& state, Stepper& stepper, int dofs) {
 /// The FE rotor's time response step: the train's stepper over the rotor's own DOFs (60 for 5
 /// elements per shaft: the train's axial DOFs held), fe_rotor_response.h.
 void BM_FeNewmarkStep(benchmark::State& state) {
-  const FeGearedRotor model(rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0));
-  const GearTrainModel train(feRotorTimeTrain(model, testing::visnadiPairSpec(0.0)));
-  TrainNewmarkStepper stepper = feRotorStepper(model, train, FeTimeOptions{});
+  const FeRotorModel model = rotor(static_cast<int>(state.range(0)), 500, 500, 1.0);
+  TrainNewmarkStepper stepper = feRotorStepper(model, FeTimeOptions{});
   timeSteps(state, stepper, model.dofCount());
 }
 BENCHMARK(BM_FeNewmarkStep)
@@ -56,13 +54,13 @@ BENCHMARK(BM_FeNewmarkStep)
     ->Arg(10)
     ->Unit(benchmark::kMicrosecond);
 
-/// The same rotor as a whole gear train (system/fe_rotor_train.h: full DOFs, so 72 DOFs for 60,
+/// The same rotor as a whole gear train (system/fe_rotor_model.h: full DOFs, so 72 DOFs for 60,
 /// the axial ones integrated too) stepped by the train's Newmark stepper (dense path), against
 /// BM_FeNewmarkStep in the same run (issue #31: ≤ 2.1 µs for the 60-DOF rotor).
 void BM_FeRotorTrainNewmarkStep(benchmark::State& state) {
-  const FeGearedRotorSpec spec = rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0);
-  const GearTrainModel model(gearTrainFromFeRotor(spec, testing::visnadiPairSpec(0.0)));
-  TrainNewmarkStepper stepper(model, spec.speed.start, FeTimeOptions{}.time_step,
+  const FeRotorModel fe = rotor(static_cast<int>(state.range(0)), 500, 500, 1.0);
+  const GearTrainModel& model = fe.train();
+  TrainNewmarkStepper stepper(model, fe.speed().start, FeTimeOptions{}.time_step,
                               NewmarkParameters::averageAcceleration(), false);
   timeSteps(state, stepper, model.dofCount());
 }
@@ -73,10 +71,10 @@ BENCHMARK(BM_FeRotorTrainNewmarkStep)
 
 /// The textbook step: assemble K + k(φ) v vᵀ and the effective matrix, LU-factorise, solve.
 void BM_FeNewmarkStepRefactorising(benchmark::State& state) {
-  const FeGearedRotor model(rotorSpec(static_cast<int>(state.range(0)), 500, 500, 1.0));
+  const FeRotorModel model = rotor(static_cast<int>(state.range(0)), 500, 500, 1.0);
   const int n = model.dofCount();
   const double dt = 1e-5, b = 0.25, g = 0.5;
-  const Eigen::MatrixXd D = model.damping() + model.spec().speed.start * model.gyroscopic();
+  const Eigen::MatrixXd D = model.damping() + model.speed().start * model.gyroscopic();
   const Eigen::VectorXd& w = model.meshVector();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(n), v = q, a = q;
   double t = 0.0;
@@ -107,12 +105,12 @@ BENCHMARK(BM_FeNewmarkStepRefactorising)
 /// every 0.1 % of the top speed.
 void BM_FeRun(benchmark::State& state) {
   const bool runup = state.range(0) == 1;
-  const FeGearedRotor model(rotorSpec(5, runup ? 1000 : 1500, runup ? 2000 : 1500, 0.5));
+  const FeRotorModel model = rotor(5, runup ? 1000 : 1500, runup ? 2000 : 1500, 0.5);
   FeTimeOptions o;
   o.duration = 0.5;
   o.channels = {0};
   for (auto _ : state) {
-    const FeTimeResponse r = solveFeRotorTimeResponse(model, testing::visnadiPairSpec(0.0), o);
+    const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
     benchmark::DoNotOptimize(r.displacement.data());
     state.counters["factorisations"] = r.factorisations;
   }

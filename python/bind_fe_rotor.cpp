@@ -1,4 +1,4 @@
-/// Python bindings of the finite-element geared rotor (models/fe_geared_rotor.h), its Newmark
+/// Python bindings of the finite-element geared rotor (system/fe_rotor_model.h), its Newmark
 /// response, modal analysis and Campbell diagram (all three by the gear train's solvers, as
 /// `geardyn rotor`). The model is built from a `geardyn rotor`
 /// configuration file (with `[model] type = "fe_geared_rotor"`) and overrides with the same
@@ -55,12 +55,11 @@ py::dict modeDict(const TrainMode& m, const std::vector<int>& train_dof) {
   return d;
 }
 
-/// The Python FeGearedRotor: the FE model, its configuration (the gearbox it is, for the
-/// train's modal solver) and its gear pair (the train the time response steps).
+/// The Python FeGearedRotor: the model (the gearbox it is, with the file's numbering) and its
+/// configuration (for the train's modal solver).
 struct FeRotorHandle {
   config::Config config;
-  GearPairSpec pair;
-  std::shared_ptr<FeGearedRotor> model;
+  std::shared_ptr<FeRotorModel> model;
   std::shared_ptr<analysis::FeRotorTrain> train;  // built on first use by modal / campbell
 
   const analysis::FeRotorTrain& gearTrain() {
@@ -109,24 +108,21 @@ void bindFeTimeResponse(py::module_& m) {
 /// geardyn.FeGearedRotor's construction from a configuration and its model's properties.
 void bindFeRotorModel(py::class_<FeRotorHandle, std::shared_ptr<FeRotorHandle>>& c) {
   using Handle = FeRotorHandle;
-  c.def(py::init([](const std::string& config, std::vector<std::string> overrides,
-                    const std::string& stiffness) {
-          // The gearbox the modes come from has the chosen model as its mesh stiffness.
-          if (!stiffness.empty()) overrides.push_back("mesh.stiffness=" + stiffness);
-          auto h = std::make_shared<Handle>(
-              Handle{config::loadConfigFile(config, config::feRotorSchema(), overrides),
-                     {},
-                     nullptr,
-                     nullptr});
-          h->pair = config::gearPairSpecFromConfig(h->config);
-          h->model = std::make_shared<FeGearedRotor>(
-              config::feRotorSpecFromConfig(h->config, stiffness).spec);
-          return h;
-        }),
-        py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
-        py::arg("stiffness") = "",
-        "config: path of the TOML file; overrides: [\"key=value\", ...] as --set; stiffness: "
-        "a [mesh_stiffness] model name (default: mesh.stiffness)")
+  c.def(
+       py::init([](const std::string& config, std::vector<std::string> overrides,
+                   const std::string& stiffness) {
+         // The gearbox the modes come from has the chosen model as its mesh stiffness.
+         if (!stiffness.empty()) overrides.push_back("mesh.stiffness=" + stiffness);
+         auto h = std::make_shared<Handle>(Handle{
+             config::loadConfigFile(config, config::feRotorSchema(), overrides), nullptr, nullptr});
+         config::FeRotorBuild build = config::feRotorFromConfig(h->config, stiffness);
+         h->model = std::make_shared<FeRotorModel>(std::move(build.train), std::move(build.layout));
+         return h;
+       }),
+       py::arg("config"), py::arg("overrides") = std::vector<std::string>{},
+       py::arg("stiffness") = "",
+       "config: path of the TOML file; overrides: [\"key=value\", ...] as --set; stiffness: "
+       "a [mesh_stiffness] model name (default: mesh.stiffness)")
       .def_property_readonly("dof_count", [](const Handle& h) { return h.model->dofCount(); })
       .def_property_readonly("dof_names",
                              [](const Handle& h) {
@@ -176,7 +172,7 @@ void bindFeRotorAnalyses(py::class_<FeRotorHandle, std::shared_ptr<FeRotorHandle
        "time_response",
        [](const Handle& h, double duration, double time_step, std::vector<std::string> channels,
           bool start_from_static) {
-         const FeGearedRotor& r = *h.model;
+         const FeRotorModel& r = *h.model;
          FeTimeOptions o;
          o.duration = duration;
          o.time_step = time_step;
@@ -191,7 +187,7 @@ void bindFeRotorAnalyses(py::class_<FeRotorHandle, std::shared_ptr<FeRotorHandle
          auto response = std::make_shared<FeTimeResponse>();
          {
            py::gil_scoped_release release;
-           *response = solveFeRotorTimeResponse(r, h.pair, o);
+           *response = solveFeRotorTimeResponse(r, o);
          }
          return response;
        },

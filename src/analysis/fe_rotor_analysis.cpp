@@ -39,11 +39,11 @@ struct SteadyAnalysis {
   double last_change = 0.0;  // max |q(t) − q(t − T_m)| / max |q| over the last mesh period
 };
 
-SteadyAnalysis analyseSteady(const config::Config& config, const FeGearedRotor& model,
+SteadyAnalysis analyseSteady(const config::Config& config, const FeRotorModel& model,
                              const FeTimeResponse& r) {
   SteadyAnalysis a;
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
-  const double f_mesh = model.spec().speed.start * model.spec().pinion_teeth / kTwoPi;
+  const double f_mesh = model.speed().start * model.pinionTeeth() / kTwoPi;
   const int harmonics = static_cast<int>(config.integer("time.harmonics"));
   for (int h = 1; h <= harmonics && h * f_mesh < fs / 2; ++h) {
     a.orders.push_back(h);
@@ -90,35 +90,41 @@ std::string dofUnit(const std::string& name) {
   return name.compare(dot == std::string::npos ? 0 : dot + 1, 1, "r") == 0 ? "rad" : "m";
 }
 
-std::vector<std::string> channelNames(const FeGearedRotor& model, const FeTimeResponse& r) {
+std::vector<std::string> channelNames(const FeRotorModel& model, const FeTimeResponse& r) {
   std::vector<std::string> names;
   for (int c : r.channels) names.push_back(model.dofName(c));
   return names;
 }
 
-nlohmann::ordered_json modelJson(const FeGearedRotor& model, const std::string& stiffness) {
-  const auto& s = model.spec();
+nlohmann::ordered_json modelJson(const FeRotorModel& model, const std::string& stiffness) {
+  const GearTrainSpec& s = model.train().spec();
   double mass = 0.0;
-  for (const auto& shaft : s.shafts) {
-    for (const auto& e : shaft.elements) mass += e.density * e.area() * e.length;
-    for (const auto& d : shaft.disks) mass += d.mass;
-  }
-  return {{"type", "fe_geared_rotor"},
-          {"dofs", model.dofCount()},
-          {"nodes", {s.shafts[0].nodeCount(), s.shafts[1].nodeCount()}},
-          {"mass_kg", mass},
-          {"mesh_stiffness_model", stiffness},
-          {"mean_mesh_stiffness_n_per_m", model.meanMeshStiffness()},
-          {"line_of_action_angle_deg", s.mesh.line_of_action_angle * 180.0 / std::numbers::pi},
-          {"base_helix_angle_deg", s.mesh.base_helix_angle * 180.0 / std::numbers::pi},
-          {"pinion_base_radius_m", s.mesh.pinion_base_radius},
-          {"gear_base_radius_m", s.mesh.gear_base_radius},
-          {"nominal_mesh_force_n", model.nominalMeshForce()},
-          {"gear_speed_ratio", model.spinRatio(1)},
-          {"mesh_frequency_hz", s.speed.start * s.pinion_teeth / kTwoPi}};
+  for (const TrainShaftSpec& shaft : s.shafts)
+    for (std::size_t e = 0; e < shaft.section_lengths.size(); ++e)
+      mass += shaft.density * std::numbers::pi / 4.0 * shaft.section_lengths[e] *
+              (std::pow(shaft.outer_diameters[e], 2) - std::pow(shaft.inner_diameters[e], 2));
+  for (const TrainDiskSpec& d : s.disks) mass += d.mass;
+  const TrainMesh& mesh = model.train().meshes().front();
+  return {
+      {"type", "fe_geared_rotor"},
+      {"dofs", model.dofCount()},
+      {"nodes", {model.nodeCount(0), model.nodeCount(1)}},
+      {"mass_kg", mass},
+      {"mesh_stiffness_model", stiffness},
+      {"mean_mesh_stiffness_n_per_m", model.meanMeshStiffness()},
+      {"line_of_action_angle_deg", model.layout().line_of_action_angle * 180.0 / std::numbers::pi},
+      // β_b < 0 for a right-hand pinion (feRotorFromConfig)
+      {"base_helix_angle_deg",
+       -std::copysign(std::abs(mesh.base_helix_angle), s.gears.front().gear.helix_angle) * 180.0 /
+           std::numbers::pi},
+      {"pinion_base_radius_m", mesh.base_radius_a},
+      {"gear_base_radius_m", mesh.base_radius_b},
+      {"nominal_mesh_force_n", model.nominalMeshForce()},
+      {"gear_speed_ratio", model.spinRatio(1)},
+      {"mesh_frequency_hz", model.speed().start * model.pinionTeeth() / kTwoPi}};
 }
 
-io::CsvTable timeHistoryTable(const FeGearedRotor& model, const FeTimeResponse& r, int every) {
+io::CsvTable timeHistoryTable(const FeRotorModel& model, const FeTimeResponse& r, int every) {
   // The mesh acts along the contact normal (docs/theory/mesh_stiffness.md, "Which plane").
   std::vector<std::string> columns{"t_s", "speed_rpm", "mesh_stiffness_normal_n_per_m",
                                    "mesh_force_normal_n"};
@@ -186,11 +192,11 @@ void reportDivergence(const FeTimeResponse& r, std::vector<std::string>& warning
 /// The run-up: order tracking of the mesh order and 1× in windows, a waterfall of the first
 /// channel's acceleration, the speed of the largest mesh-order response per channel, and the
 /// Campbell crossings of the mesh line within the speed range.
-void runUpOutputs(const config::Config& config, const FeGearedRotor& model, const FeTimeResponse& r,
+void runUpOutputs(const config::Config& config, const FeRotorModel& model, const FeTimeResponse& r,
                   AnalysisResult& result, nlohmann::ordered_json& results, std::string& text) {
   const double dt = config.real("time.time_step"), fs = 1.0 / dt;
   const int window = static_cast<int>(std::llround(config.real("time.runup_window") / dt));
-  const std::vector<double> orders{static_cast<double>(model.spec().pinion_teeth), 1.0};
+  const std::vector<double> orders{static_cast<double>(model.pinionTeeth()), 1.0};
   const auto names = channelNames(model, r);
   io::CsvTable track_table({"channel", "unit", "t_s", "speed_rpm", "mesh_order_displacement",
                             "mesh_order_acceleration", "x1_displacement"});
@@ -217,7 +223,7 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
   const std::string waterfall_unit = dofUnit(names.front()) + "/s^2";
   const double fmax = config.has("time.spectrum_max_frequency")
                           ? config.real("time.spectrum_max_frequency")
-                          : 1.25 * model.spec().speed.maxSpeed() * orders[0] / kTwoPi;
+                          : 1.25 * model.speed().maxSpeed() * orders[0] / kTwoPi;
   for (Eigen::Index start = 0; start + window <= r.acceleration.rows(); start += window) {
     const AmplitudeSpectrum s = amplitudeSpectrum(r.acceleration.col(0).segment(start, window), fs);
     double speed = 0.0;
@@ -228,7 +234,7 @@ void runUpOutputs(const config::Config& config, const FeGearedRotor& model, cons
   }
   result.addTable("waterfall.csv", waterfall);
   // Where the Campbell diagram puts the mesh-line crossings inside the ramp.
-  const auto& p = model.spec().speed;
+  const auto& p = model.speed();
   const double lo = std::min(p.start, p.end), hi = std::max(p.start, p.end);
   std::vector<double> speeds;
   for (int i = 0; i <= 40; ++i) speeds.push_back(lo + (hi - lo) * i / 40.0);
@@ -266,14 +272,13 @@ std::string dampingRatioText(double zeta) {
 
 int runTime(const config::Config& config, const AnalysisContext& context, io::RunSummary& summary,
             AnalysisResult& result, std::string& text) {
-  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
+  config::FeRotorBuild build = config::feRotorFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), build.warnings.begin(), build.warnings.end());
-  const FeGearedRotor model(build.spec);
+  const FeRotorModel model(std::move(build.train), std::move(build.layout));
   context.checkBudget("rotor_fe_time", model.dofCount());
   FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.progress = context.progressFor("rotor: Newmark", "steps");
-  const FeTimeResponse r =
-      solveFeRotorTimeResponse(model, config::gearPairSpecFromConfig(config), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
   reportDivergence(r, summary.warnings);
   summary.results["model"] = modelJson(model, build.stiffness_model);
   summary.results["time"] = {{"status", toString(r.status)},
@@ -286,10 +291,10 @@ int runTime(const config::Config& config, const AnalysisContext& context, io::Ru
   text += fmt::format("  {}\n", r.message);
   if (!r.converged()) return kFailed;
   const auto names = channelNames(model, r);
-  if (model.spec().speed.constant() && model.spec().speed.start == 0.0) {
+  if (model.speed().constant() && model.speed().start == 0.0) {
     summary.results["steady"] = nullptr;  // at rest: no mesh period, no harmonics
     text += "  at rest (speed.speed_rpm = 0): no mesh harmonics\n";
-  } else if (model.spec().speed.constant()) {
+  } else if (model.speed().constant()) {
     const SteadyAnalysis a = analyseSteady(config, model, r);
     // unit: of the channel's displacement (m or rad); its acceleration is in unit/s².
     io::CsvTable harmonics(
@@ -334,15 +339,15 @@ nlohmann::ordered_json modeJson(const TrainMode& m) {
 /// The model and its train (the file's gearbox).
 struct FeRotorModels {
   config::FeRotorBuild build;
-  std::unique_ptr<FeGearedRotor> model;
+  std::unique_ptr<FeRotorModel> model;
   FeRotorTrain train;
 };
 
 FeRotorModels buildModels(const config::Config& config, io::RunSummary& summary) {
   FeRotorModels m;
-  m.build = config::feRotorSpecFromConfig(config);
+  m.build = config::feRotorFromConfig(config);
   summary.warnings.insert(summary.warnings.end(), m.build.warnings.begin(), m.build.warnings.end());
-  m.model = std::make_unique<FeGearedRotor>(m.build.spec);
+  m.model = std::make_unique<FeRotorModel>(m.build.train, m.build.layout);
   // The gearbox reader's warnings are about the same gears and mesh-stiffness model, which the
   // file's own build has just reported in the file's keys.
   std::vector<std::string> same_warnings;
@@ -354,7 +359,7 @@ FeRotorModels buildModels(const config::Config& config, io::RunSummary& summary)
 int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
              std::string& text) {
   const FeRotorModels models = buildModels(config, summary);
-  const FeGearedRotor& model = *models.model;
+  const FeRotorModel& model = *models.model;
   const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
                                                       : config.real("speed.speed_rpm")) *
                        kRpm;
@@ -389,7 +394,7 @@ int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResu
 int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
                 std::string& text) {
   const FeRotorModels models = buildModels(config, summary);
-  const FeGearedRotor& model = *models.model;
+  const FeRotorModel& model = *models.model;
   const auto speeds = config::campbellSpeedsFromConfig(config);
   const TrainCampbell d = feRotorCampbell(models.train, model, speeds,
                                           static_cast<int>(config.integer("campbell.modes")),
@@ -441,23 +446,27 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
   if (models.empty()) throw InputError("compare.models", "[]", "at least one model");
   struct Case {
     std::string name;
-    std::unique_ptr<FeGearedRotor> model;
+    std::unique_ptr<FeRotorModel> model;
     FeTimeResponse response;
     double mean = 0.0;
     std::vector<std::string> warnings;
   };
   std::vector<Case> cases;
   for (const auto& name : models) {
-    config::FeRotorBuild build = config::feRotorSpecFromConfig(config, name);
-    Case c{name, std::make_unique<FeGearedRotor>(build.spec), {}, 0.0, build.warnings};
+    config::FeRotorBuild build = config::feRotorFromConfig(config, name);
+    Case c{name,
+           std::make_unique<FeRotorModel>(std::move(build.train), std::move(build.layout)),
+           {},
+           0.0,
+           build.warnings};
     c.mean = c.model->meanMeshStiffness();
     cases.push_back(std::move(c));
   }
-  if (!cases.front().model->spec().speed.constant()) {
+  if (!cases.front().model->speed().constant()) {
     throw InputError("speed.end_speed_rpm", "",
                      "compare_stiffness runs at constant speed (no end_speed_rpm)");
   }
-  if (!(cases.front().model->spec().speed.start > 0.0)) {
+  if (!(cases.front().model->speed().start > 0.0)) {
     throw InputError("speed.speed_rpm", "0 rpm",
                      "a speed > 0 rpm: the comparison is of mesh harmonics");
   }
@@ -466,7 +475,6 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
   std::vector<FeTimeOptions> time_options;
   for (const Case& c : cases)
     time_options.push_back(config::feTimeOptionsFromConfig(config, *c.model));
-  const GearPairSpec pair = config::gearPairSpecFromConfig(config);
   const unsigned threads =
       context.threads > 0 ? context.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
@@ -476,7 +484,7 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
     pool.emplace_back([&] {
       for (std::size_t i; (i = next++) < cases.size();) {
         try {
-          cases[i].response = solveFeRotorTimeResponse(*cases[i].model, pair, time_options[i]);
+          cases[i].response = solveFeRotorTimeResponse(*cases[i].model, time_options[i]);
         } catch (...) {
           errors[i] = std::current_exception();
         }
@@ -510,7 +518,7 @@ int runCompare(const config::Config& config, const AnalysisContext& context,
     for (int k = 0; k <= 200; ++k)
       stiffness.addRow({c.name, k / 200.0, c.model->meshStiffness(k / 200.0)});
     const MeshStiffnessSummary s =
-        summarizeMeshStiffness(c.model->spec().mesh_stiffness.operator*(), 1);
+        summarizeMeshStiffness(*c.model->train().meshes().front().stiffness, 1);
     per_model[c.name] = {{"mean_stiffness_n_per_m", c.mean},
                          {"min_stiffness_n_per_m", s.min},
                          {"max_stiffness_n_per_m", s.max},

@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "geardyn/config/fe_rotor_gearbox.h"
-#include "geardyn/system/fe_rotor_train.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -31,13 +30,12 @@ int extraAxialDofs(const FeRotorTrain& train) {
 
 }  // namespace
 
-FeRotorTrain feRotorTrain(const config::Config& config, const FeGearedRotor& fe,
+FeRotorTrain feRotorTrain(const config::Config& config, const FeRotorModel& fe,
                           std::vector<std::string>& warnings) {
   FeRotorTrain t;
-  t.model = std::make_unique<GearTrainModel>(
-      config::feRotorGearTrain(config, warnings, config::FeUnbalances::kOmit));
-  t.without_axial = !fe.spec().axial;
-  t.train_dof = feRotorTrainDofs(fe, *t.model);
+  t.model = std::make_unique<GearTrainModel>(config::feRotorGearTrain(config, warnings));
+  t.without_axial = !fe.axial();
+  t.train_dof = fe.trainDofs();  // the translated train is fe's: the same DOFs
   return t;
 }
 
@@ -53,13 +51,13 @@ std::vector<TrainMode> feRotorModes(const FeRotorTrain& train, double pinion_spe
   return found;
 }
 
-std::vector<TrainOrderLine> feRotorOrderLines(const FeGearedRotor& fe) {
+std::vector<TrainOrderLine> feRotorOrderLines(const FeRotorModel& fe) {
   return {{"1x pinion", 1.0 / kTwoPi},
           {"1x gear", std::abs(fe.spinRatio(1)) / kTwoPi},
-          {"mesh", static_cast<double>(fe.spec().pinion_teeth) / kTwoPi}};
+          {"mesh", static_cast<double>(fe.pinionTeeth()) / kTwoPi}};
 }
 
-TrainCampbell feRotorCampbell(const FeRotorTrain& train, const FeGearedRotor& fe,
+TrainCampbell feRotorCampbell(const FeRotorTrain& train, const FeRotorModel& fe,
                               const std::vector<double>& speeds, int modes,
                               double max_damping_ratio) {
   // The tracks start from the lowest modes at the first speed: as many more as there are

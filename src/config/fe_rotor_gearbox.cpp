@@ -13,7 +13,6 @@
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/geometry_config.h"
 #include "geardyn/error.h"
-#include "geardyn/system/fe_rotor_train.h"
 
 namespace geardyn::config {
 namespace {
@@ -65,18 +64,13 @@ void addMeshStiffnessTables(std::string& out, const Json& table, const std::stri
 }
 
 /// Refuses what a gearbox description cannot say, naming the FE rotor file's key.
-void checkTranslatable(const Config& config, const FeGearedRotorSpec& spec) {
+void checkTranslatable(const Config& config, const FeRotorLayout& layout) {
   const bool helical = config.real("pinion.helix_angle_deg") != 0.0;
-  if (helical && !spec.axial) {
+  if (helical && !layout.axial) {
     throw InputError("model.axial", "false",
                      "true for a helical pair in a gearbox description: a gearbox keeps the "
                      "axial DOFs the helical mesh loads (model.axial = false holds them "
                      "rigidly); give each shaft's bearings k_axial");
-  }
-  if (helical && config.string("model.contact_point") != "pitch_point") {
-    throw InputError("model.contact_point", quoted(config.string("model.contact_point")),
-                     "\"pitch_point\" for a helical pair in a gearbox description (its mesh "
-                     "force acts at one physical point)");
   }
   if (config.string("pair.driver") != "pinion") {
     throw InputError("pair.driver", quoted(config.string("pair.driver")),
@@ -84,7 +78,7 @@ void checkTranslatable(const Config& config, const FeGearedRotorSpec& spec) {
   }
 }
 
-std::string gearboxText(const Config& config, const FeGearedRotorSpec& fe,
+std::string gearboxText(const Config& config, const FeRotorLayout& layout,
                         const GearTrainSpec& train) {
   const Json& resolved = config.resolved();
   std::string out = fmt::format(
@@ -121,7 +115,7 @@ std::string gearboxText(const Config& config, const FeGearedRotorSpec& fe,
     out += fmt::format("\n[gears.{}]\n", gear.name);
     out += fmt::format("shaft = {}\n", quoted(gear.shaft));
     out += fmt::format("position = {}   # m, node {}\n", tomlReal(gear.position),
-                       fe.shafts[g].gear_node);
+                       layout.gear_nodes[g]);
     out += "body = false   # its body is one of the disks\n";
     addTable(out, resolved.at(members[g]));
   }
@@ -155,6 +149,13 @@ std::string gearboxText(const Config& config, const FeGearedRotorSpec& fe,
       out += fmt::format("{} = {}\n", key, tomlReal(v));
     }
   }
+  for (const TrainUnbalanceSpec& u : train.unbalances) {
+    out += fmt::format("\n[unbalances.{}]\n", u.name);
+    out += fmt::format("shaft = {}\n", quoted(u.shaft));
+    out += fmt::format("position = {}   # m\n", tomlReal(u.position));
+    out += fmt::format("mass_eccentricity = {}   # kg m\n", tomlReal(u.mass_eccentricity));
+    out += fmt::format("phase_deg = {}   # deg\n", tomlReal(u.phase * 180.0 / std::numbers::pi));
+  }
   const TrainMeshSpec& m = train.meshes.front();
   out += fmt::format("\n[meshes.{}]\n", m.name);
   out += fmt::format("gears = [{}, {}]\n", quoted(m.gear_a), quoted(m.gear_b));
@@ -184,15 +185,10 @@ std::string gearboxText(const Config& config, const FeGearedRotorSpec& fe,
 
 }  // namespace
 
-std::string feRotorGearboxToml(const Config& config, FeUnbalances unbalances) {
-  FeRotorBuild build = feRotorSpecFromConfig(config);
-  const FeGearedRotor validated(build.spec);  // errors name the FE rotor file's keys
-  checkTranslatable(config, build.spec);
-  if (unbalances == FeUnbalances::kOmit) {
-    for (FeShaftSpec& shaft : build.spec.shafts) shaft.unbalances.clear();
-  }
-  const GearTrainSpec train = gearTrainFromFeRotor(build.spec, gearPairSpecFromConfig(config));
-  return gearboxText(config, build.spec, train);
+std::string feRotorGearboxToml(const Config& config) {
+  const FeRotorBuild build = feRotorFromConfig(config);
+  checkTranslatable(config, build.layout);
+  return gearboxText(config, build.layout, build.train);
 }
 
 std::optional<std::string> feRotorGearbox(const Config& config) {
@@ -203,10 +199,9 @@ std::optional<std::string> feRotorGearbox(const Config& config) {
   return feRotorGearboxToml(config);
 }
 
-GearTrainSpec feRotorGearTrain(const Config& config, std::vector<std::string>& warnings,
-                               FeUnbalances unbalances) {
-  const Config gearbox = parseConfig(feRotorGearboxToml(config, unbalances),
-                                     config.source() + " (as a gearbox)", gearboxSchema());
+GearTrainSpec feRotorGearTrain(const Config& config, std::vector<std::string>& warnings) {
+  const Config gearbox =
+      parseConfig(feRotorGearboxToml(config), config.source() + " (as a gearbox)", gearboxSchema());
   return gearTrainFromConfig(gearbox, warnings);
 }
 

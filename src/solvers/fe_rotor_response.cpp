@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "geardyn/error.h"
-#include "geardyn/system/fe_rotor_train.h"
 
 namespace geardyn {
 
@@ -29,35 +28,22 @@ std::string toString(FeTimeStatus status) {
   return status == FeTimeStatus::kCompleted ? "completed" : "diverged";
 }
 
-GearTrainSpec feRotorTimeTrain(const FeGearedRotor& model, const GearPairSpec& pair) {
-  FeGearedRotorSpec spec = model.spec();
-  for (FeShaftSpec& shaft : spec.shafts) shaft.unbalances.clear();
-  return gearTrainFromFeRotor(spec, pair);
-}
-
-TrainNewmarkStepper feRotorStepper(const FeGearedRotor& model, const GearTrainModel& train,
-                                   const FeTimeOptions& options) {
+TrainNewmarkStepper feRotorStepper(const FeRotorModel& model, const FeTimeOptions& options) {
   options.validate();
   TrainStepperSetup setup;
-  setup.dofs = feRotorTrainDofs(model, train);
+  setup.dofs = model.trainDofs();
   setup.static_load = model.staticLoad();
-  if (model.hasUnbalance()) {
-    setup.force = [&model](double t, Eigen::Ref<Eigen::VectorXd> f) {
-      model.addUnbalanceForce(t, f);
-    };
-  }
-  const SpeedProfile& p = model.spec().speed;
+  const SpeedProfile& p = model.speed();
   if (p.constant()) {
-    return TrainNewmarkStepper(train, p.start, options.time_step, options.newmark, std::nullopt,
-                               std::move(setup));
+    return TrainNewmarkStepper(model.train(), p.start, options.time_step, options.newmark,
+                               std::nullopt, std::move(setup));
   }
   const TrainSpeedRamp ramp{p.start, p.end, p.ramp_end - p.ramp_start, p.ramp_start};
-  return TrainNewmarkStepper(train, ramp, options.time_step, options.newmark,
+  return TrainNewmarkStepper(model.train(), ramp, options.time_step, options.newmark,
                              options.gyro_speed_tolerance, std::nullopt, std::move(setup));
 }
 
-FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const GearPairSpec& pair,
-                                        const FeTimeOptions& options) {
+FeTimeResponse solveFeRotorTimeResponse(const FeRotorModel& model, const FeTimeOptions& options) {
   options.validate();
   FeTimeResponse r;
   const int n = model.dofCount();
@@ -76,8 +62,7 @@ FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const GearPa
   r.acceleration.resize(samples, nc);
   r.t.reserve(samples);
 
-  const GearTrainModel train(feRotorTimeTrain(model, pair));
-  TrainNewmarkStepper stepper = feRotorStepper(model, train, options);
+  TrainNewmarkStepper stepper = feRotorStepper(model, options);
   const Eigen::VectorXd q0 =
       options.start_from_static ? stepper.staticDeflection(0.0) : Eigen::VectorXd::Zero(n);
   stepper.reset(0.0, q0, Eigen::VectorXd::Zero(n));
@@ -89,7 +74,7 @@ FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const GearPa
       r.acceleration(row, j) = stepper.acceleration()(r.channels[j]);
     }
     r.t.push_back(stepper.time());
-    r.speed.push_back(model.spec().speed.speed(stepper.time()));
+    r.speed.push_back(model.speed().speed(stepper.time()));
     r.mesh_stiffness.push_back(stepper.meshStiffness(0));
     r.mesh_force.push_back(stepper.meshForce(0));
     ++row;

@@ -6,31 +6,31 @@
 
 #include "geardyn/analysis/fe_rotor_modes.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <numbers>
 
-#include "geardyn/system/fe_rotor_train.h"
+#include "geardyn/models/timoshenko_shaft_element.h"
 #include "support/fe_rotor_cases.h"
 
 namespace geardyn {
 namespace {
 
 using testing::constantMesh;
-using testing::visnadiFeRotorSpec;
+using testing::visnadiFeRotor;
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 /// The rotor's train (the spur pair of `spec`) and its DOF map, as analysis::feRotorTrain
 /// builds it from a file.
-analysis::FeRotorTrain trainOf(const FeGearedRotor& fe) {
+analysis::FeRotorTrain trainOf(const FeRotorModel& fe) {
   analysis::FeRotorTrain t;
-  t.model = std::make_unique<GearTrainModel>(
-      gearTrainFromFeRotor(fe.spec(), testing::visnadiPairSpec(0.0)));
-  t.train_dof = feRotorTrainDofs(fe, *t.model);
-  t.without_axial = !fe.spec().axial;
+  t.model = std::make_unique<GearTrainModel>(fe.train().spec());
+  t.train_dof = fe.trainDofs();
+  t.without_axial = !fe.axial();
   return t;
 }
 
@@ -44,31 +44,40 @@ analysis::FeRotorTrain trainOf(const FeGearedRotor& fe) {
 ///   ω_fwd/bwd = [±I_p Ω + √((I_p Ω)² + 4 I_d k_θ)] / (2 I_d).
 constexpr double kClamp = 1e12;
 
-FeGearedRotorSpec tiltingDisk(int shaft_with_disk) {
-  auto spec = visnadiFeRotorSpec(constantMesh(1.0), 0.0, 2, 0.0);
+testing::FeRotorCase tiltingDisk(int shaft_with_disk) {
+  testing::FeRotorCase c = visnadiFeRotor(constantMesh(1.0), 0.0, 2, 0.0);
+  c.train.disks.clear();
+  c.train.bearings.clear();
+  c.layout.bearing_nodes = {};
   for (int s = 0; s < 2; ++s) {
-    FeShaftSpec& shaft = spec.shafts[s];
-    shaft.disks.clear();
-    shaft.bearings.clear();
     for (int node = 0; node < 3; ++node) {
-      FeBearing b;
-      b.node = node;
+      TrainBearingSpec b;
+      b.name = fmt::format("b{}{}", s, node);
+      b.shaft = c.train.shafts[s].name;
+      b.position = c.position(s, node);
       b.kyy = b.kzz = b.k_tilt = kClamp;
       if (node == 0 && s == shaft_with_disk) b.k_tilt = 2e5;
-      shaft.bearings.push_back(b);
+      c.train.bearings.push_back(b);
+      c.layout.bearing_nodes[s].push_back(node);
     }
-    shaft.gear_node = 1;
+    c.train.shafts[s].stiffness_proportional_damping = 0.0;
   }
-  spec.shafts[shaft_with_disk].disks.push_back({0, 10.0, 0.2, 0.1});
-  spec.stiffness_proportional = 0.0;
-  return spec;
+  c.train.disks.push_back({"disk", c.train.shafts[shaft_with_disk].name, 0.0, 10.0, 0.2, 0.1});
+  return c;
 }
 
 /// I_d, I_p and k_θ of node 0's tilt: the disk's plus the first element's node-0 terms, with
 /// the clamped translations of nodes 0 and 1 condensed out statically (each lowers k_θ by
 /// (6EI/L²)²/k_clamp ~ 5e-5).
-std::array<double, 3> tiltingDiskParameters(const FeGearedRotorSpec& spec, int shaft) {
-  const ShaftSegment& e = spec.shafts[shaft].elements[0];
+std::array<double, 3> tiltingDiskParameters(const testing::FeRotorCase& c, int shaft) {
+  const TrainShaftSpec& s = c.train.shafts[shaft];
+  ShaftSegment e;
+  e.length = s.section_lengths[0];
+  e.outer_diameter = s.outer_diameters[0];
+  e.inner_diameter = s.inner_diameters[0];
+  e.youngs_modulus = s.youngs_modulus;
+  e.shear_modulus = s.youngs_modulus / (2.0 * (1.0 + s.poisson_ratio));
+  e.density = s.density;
   const ElementMatrix ke = shaftElementStiffness(e);
   const int uz1 = kNodeDofs + kUz;
   return {0.1 + shaftElementMass(e)(kRy, kRy), 0.2 + shaftElementGyroscopic(e)(kRy, kRz),
@@ -78,15 +87,15 @@ std::array<double, 3> tiltingDiskParameters(const FeGearedRotorSpec& spec, int s
 
 TEST(FeRotorModes, DiskGyroscopicSplitMatchesClosedForm) {
   for (int shaft : {0, 1}) {
-    auto spec = tiltingDisk(shaft);
+    testing::FeRotorCase c = tiltingDisk(shaft);
     for (double speed : {0.0, 500.0, 3000.0}) {
-      spec.speed = {speed, speed, 0, 0};
-      const FeGearedRotor m(spec);
+      c.setSpeed({speed, speed, 0, 0});
+      const FeRotorModel m = c.model();
       const analysis::FeRotorTrain train = trainOf(m);
       std::vector<TrainMode> modes;
       for (TrainMode& mode : analysis::feRotorModes(train, speed, 40, 0.99))
         if (mode.whirl != "torsional") modes.push_back(std::move(mode));
-      const auto [Id, Ip, k] = tiltingDiskParameters(spec, shaft);
+      const auto [Id, Ip, k] = tiltingDiskParameters(c, shaft);
       const double own = std::abs(m.spinRatio(shaft)) * speed;
       const double root = std::sqrt(Ip * Ip * own * own + 4 * Id * k);
       const double fwd = (Ip * own + root) / (2 * Id) / kTwoPi;
@@ -109,7 +118,7 @@ TEST(FeRotorModes, DiskGyroscopicSplitMatchesClosedForm) {
 // eigenproblem (λ² M + λ (C + Ω G₁) + K + k̄ v vᵀ) φ = 0 (residual 1e-8: the train's matrices
 // are the FE rotor's to 1e-12, amplified by the conditioning).
 TEST(FeRotorModes, ModesSatisfyTheFeRotorsQuadraticEigenproblem) {
-  const FeGearedRotor m(visnadiFeRotorSpec(constantMesh(3e8)));
+  const FeRotorModel m = visnadiFeRotor(constantMesh(3e8)).model();
   const double speed = 300.0;
   const analysis::FeRotorTrain train = trainOf(m);
   const auto modes = analysis::feRotorModes(train, speed, 16, 0.99);
@@ -137,8 +146,8 @@ TEST(FeRotorModes, ModesSatisfyTheFeRotorsQuadraticEigenproblem) {
 }
 
 TEST(FeRotorModes, CampbellTracksModesAndFindsTheCriticalSpeed) {
-  const auto spec = tiltingDisk(0);
-  const FeGearedRotor m(spec);
+  const testing::FeRotorCase c = tiltingDisk(0);
+  const FeRotorModel m = c.model();
   const analysis::FeRotorTrain train = trainOf(m);
   std::vector<double> speeds;
   for (int i = 0; i <= 40; ++i) speeds.push_back(100.0 * i);
@@ -155,7 +164,7 @@ TEST(FeRotorModes, CampbellTracksModesAndFindsTheCriticalSpeed) {
   // The forward whirl meets 1× where ω = Ω: I_d Ω² − I_p Ω² − k_θ = 0 has no root for
   // I_p > I_d; the backward one where I_d Ω² + I_p Ω² = k_θ → Ω = √(k_θ/(I_d + I_p)).
   // Linear interpolation between speeds 100 rad/s apart: 1e-3.
-  const auto [Id, Ip, k] = tiltingDiskParameters(spec, 0);
+  const auto [Id, Ip, k] = tiltingDiskParameters(c, 0);
   std::vector<TrainCriticalSpeed> pinion;
   for (const auto& c : d.critical_speeds)
     if (c.line == "1x pinion" && (c.mode == tilt[0] || c.mode == tilt[1])) pinion.push_back(c);

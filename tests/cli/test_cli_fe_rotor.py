@@ -78,9 +78,9 @@ def test_modal_analysis_lists_modes_and_shapes(tmp_path):
     ("pinion_shaft.gear_nod=1", "pinion_shaft.gear_nod", "gear_node"),  # unknown key: did-you-mean
     ("time.outputs=[\"pinion_shaft.7.uy\"]", "time.outputs", "pinion_shaft.7.uy"),
     ("time.outputs=[\"gear_shaft.1.ux\"]", "time.outputs", "model.axial"),
-    ("pinion_shaft.bearings.nodes=[0, 5]", "pinion_shaft.bearings[1].node", "[0, 2]"),
+    ("pinion_shaft.bearings.nodes=[0, 5]", "pinion_shaft.bearings.nodes", "[0, 2]"),
     ("gear_shaft.bearings.kyy=[7e7, 7e7, 7e7]", "gear_shaft.bearings.kyy", "one value or 2"),
-    ("gear_shaft.bearings.czz=[-150.0]", "gear_shaft.bearings[0]", ">= 0"),
+    ("gear_shaft.bearings.czz=[-150.0]", "gear_shaft.bearings.czz", ">= 0"),
     ("pinion_shaft.element_lengths=[0.1, nan]", "pinion_shaft.element_lengths", "finite"),
     ("pinion_shaft.element_lengths=[0.1, -0.1]", "pinion_shaft.element_lengths", "> 0"),
     ("model.axial=true", "pinion_shaft.bearings.k_axial", "axial"),

@@ -6,6 +6,7 @@ import csv
 import json
 
 import pytest
+import tomllib
 
 from cli_support import EXAMPLES, run
 
@@ -65,12 +66,26 @@ def test_the_train_modal_table_of_the_printed_gearbox_is_the_rotors(tmp_path):
     assert ours[0]["frequency_hz"] == pytest.approx(666.976, rel=1e-5)  # the example's number
 
 
-def test_a_file_with_unbalance_is_refused_naming_the_key(tmp_path):
+def test_a_files_unbalance_is_the_gearboxs_unbalance(tmp_path):
+    # The unbalance becomes [unbalances.<shaft>_unbalance<i>] at its node's position, and the
+    # printed gearbox is a valid `train` file.
     result = run("rotor", MODAL, "--print-gearbox", "--set", "pinion_shaft.unbalance.nodes=[1]",
-                 "--set", "pinion_shaft.unbalance.amount=[1e-5]")
-    assert result.returncode == 2, result.stdout + result.stderr
-    assert "pinion_shaft.unbalance.nodes" in result.stderr, result.stderr
-    assert result.stdout == ""
+                 "--set", "pinion_shaft.unbalance.amount=[1e-5]",
+                 "--set", "pinion_shaft.unbalance.phase_deg=[45.0]")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "[unbalances.pinion_shaft_unbalance0]" in result.stdout
+    gearbox = tomllib.loads(result.stdout)
+    unbalance = gearbox["unbalances"]["pinion_shaft_unbalance0"]
+    assert unbalance["shaft"] == "pinion_shaft"
+    assert unbalance["position"] == pytest.approx(0.1, rel=1e-15)  # node 1: one 100 mm element
+    assert unbalance["mass_eccentricity"] == pytest.approx(1e-5, rel=1e-15)
+    assert unbalance["phase_deg"] == pytest.approx(45.0, rel=1e-15)
+    (tmp_path / "g.toml").write_text(result.stdout)
+    analysis = tmp_path / "modal.toml"
+    analysis.write_text('[gearbox]\nfile = "g.toml"\n\n[analysis]\nrun = ["modal"]\n\n'
+                        "[output]\nplots = false\n")
+    check = run("train", analysis, "--out", tmp_path / "train")
+    assert check.returncode == 0, check.stdout + check.stderr
 
 
 def test_a_helical_file_without_axial_dofs_is_refused_naming_the_key():

@@ -33,14 +33,14 @@ double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 }
 
 struct Translated {
-  std::unique_ptr<FeGearedRotor> fe;
+  std::unique_ptr<FeRotorModel> fe;
   std::unique_ptr<GearTrainModel> train;
   std::vector<int> map;  // train DOF of each FE DOF
 };
 
 Translated translate(const config::Config& config) {
   Translated t;
-  t.fe = std::make_unique<FeGearedRotor>(config::feRotorSpecFromConfig(config).spec);
+  t.fe = std::make_unique<FeRotorModel>(config::feRotorModelFromConfig(config));
   const config::Config gearbox =
       config::parseConfig(config::feRotorGearboxToml(config), "printed", config::gearboxSchema());
   std::vector<std::string> warnings;
@@ -123,9 +123,10 @@ TEST(FeRotorGearbox, TheTrainsModesAreTheFeRotorsModes) {
 
 TEST(FeRotorGearbox, WhatAGearboxCannotSayIsRefusedNamingTheKey) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"pinion_shaft.unbalance.nodes=[1]", "pinion_shaft.unbalance.amount=[1e-5]"},
-       "pinion_shaft.unbalance.nodes"},
       {{"pinion.helix_angle_deg=5.0", "gear.helix_angle_deg=-5.0"}, "model.axial"},
+      {{"pinion.helix_angle_deg=5.0", "gear.helix_angle_deg=-5.0",
+        "model.contact_point=base_tangent_points"},
+       "model.contact_point"},
       {{"pair.driver=gear"}, "pair.driver"}};
   for (const auto& [overrides, key] : cases) {
     try {
@@ -135,11 +136,44 @@ TEST(FeRotorGearbox, WhatAGearboxCannotSayIsRefusedNamingTheKey) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
     }
   }
-  // The modal analyses leave unbalances out (their modes do not depend on them).
-  EXPECT_NO_THROW(config::feRotorGearboxToml(
+}
+
+// The unbalances are the gearbox's: printed as [unbalances.<shaft>_unbalance<i>] at their
+// nodes' positions, read back exactly.
+TEST(FeRotorGearbox, UnbalancesBecomeTheGearboxsUnbalances) {
+  const config::Config config =
       example("rotor_visnadi2021_modal.toml",
-              {"pinion_shaft.unbalance.nodes=[1]", "pinion_shaft.unbalance.amount=[1e-5]"}),
-      config::FeUnbalances::kOmit));
+              {"gear_shaft.unbalance.nodes=[1, 2]", "gear_shaft.unbalance.amount=[1e-5, 2e-5]",
+               "gear_shaft.unbalance.phase_deg=[30.0]"});
+  std::vector<std::string> warnings;
+  const GearTrainSpec train = config::feRotorGearTrain(config, warnings);
+  ASSERT_EQ(train.unbalances.size(), 2u);
+  EXPECT_EQ(train.unbalances[1].name, "gear_shaft_unbalance1");
+  EXPECT_EQ(train.unbalances[1].shaft, "gear_shaft");
+  EXPECT_DOUBLE_EQ(train.unbalances[1].position, 0.2);
+  EXPECT_DOUBLE_EQ(train.unbalances[1].mass_eccentricity, 2e-5);
+  EXPECT_NEAR(train.unbalances[1].phase, 30.0 * std::numbers::pi / 180.0, 1e-15);
+}
+
+// The FE rotor file's own checks name its keys (the gearbox's would name others).
+TEST(FeRotorGearbox, TheFileIsCheckedNamingItsKeys) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"gear_shaft.bearings.kyy=[-1.0]"}, "gear_shaft.bearings.kyy"},
+      {{"pinion_shaft.outer_diameters=[0.03, 0.0]"}, "pinion_shaft.outer_diameters"},
+      {{"model.axial=true"}, "pinion_shaft.bearings.k_axial"},
+      {{"pinion_shaft.gear_node=7"}, "pinion_shaft.gear_node"},
+      {{"load.load_node=3"}, "load.load_node"},
+      {{"gear_shaft.disks.nodes=[5]", "gear_shaft.disks.mass=[1.0]",
+        "gear_shaft.disks.polar_inertia=[0.0]", "gear_shaft.disks.diametral_inertia=[0.0]"},
+       "gear_shaft.disks.nodes"}};
+  for (const auto& [overrides, key] : cases) {
+    try {
+      config::feRotorFromConfig(example("rotor_visnadi2021_modal.toml", overrides));
+      ADD_FAILURE() << key << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key().rfind(key, 0), 0u) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -37,14 +37,12 @@ struct Response {
 };
 
 Response respond(const config::Config& config, const std::string& stiffness) {
-  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config, stiffness);
-  const FeGearedRotor model(build.spec);
+  const FeRotorModel model = config::feRotorModelFromConfig(config, stiffness);
   FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.channels.clear();
   for (int s = 0; s < 2; ++s)
     for (int d : {kUy, kUz}) o.channels.push_back(model.dofIndex(s, 0, d));
-  const FeTimeResponse r =
-      solveFeRotorTimeResponse(model, config::gearPairSpecFromConfig(config), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
   EXPECT_TRUE(r.converged());
   const double f_mesh = 500.0 / 60.0 * 25.0, fs = 1.0 / o.time_step;
   const long long period = std::llround(fs / f_mesh), n = 40 * period;
@@ -123,8 +121,7 @@ TEST(VisnadiCompare, QualitativeFindingsOfThePaperHold) {
 TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
   const config::Config config = exampleConfig({"analysis.type=time", "speed.speed_rpm=1200",
                                                "speed.end_speed_rpm=2000", "time.duration=2.0"});
-  const config::FeRotorBuild build = config::feRotorSpecFromConfig(config);
-  const FeGearedRotor model(build.spec);
+  const FeRotorModel model = config::feRotorModelFromConfig(config);
   std::vector<double> speeds;
   for (int i = 0; i <= 40; ++i) speeds.push_back((1200.0 + 20.0 * i) * kRpm);
   // The Campbell diagram of the file's gearbox (config/fe_rotor_gearbox.h), from the train's
@@ -134,8 +131,8 @@ TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
   TrainModalOptions mo;
   mo.modes = 6;
   mo.keep_rigid = false;
-  const TrainCampbell d = trainCampbell(
-      train, speeds, mo, {{"mesh", model.spec().pinion_teeth / (2 * std::numbers::pi)}});
+  const TrainCampbell d =
+      trainCampbell(train, speeds, mo, {{"mesh", model.pinionTeeth() / (2 * std::numbers::pi)}});
   double predicted = 0.0;
   for (const auto& c : d.critical_speeds)
     if (c.line == "mesh" && c.mode == 0) predicted = c.speed;
@@ -145,8 +142,7 @@ TEST(VisnadiRunUp, PassesTheCriticalSpeedTheCampbellDiagramPredicts) {
   FeTimeOptions o = config::feTimeOptionsFromConfig(config, model);
   o.channels = {model.dofIndex(1, 1, kRx)};
   o.start_from_static = true;  // no start-up transient in the first windows
-  const FeTimeResponse r =
-      solveFeRotorTimeResponse(model, config::gearPairSpecFromConfig(config), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(model, o);
   ASSERT_TRUE(r.converged());
   const OrderTrack track =
       trackOrders(r.acceleration.col(0), 1.0 / o.time_step, r.speed, {25.0}, 2000);

@@ -24,17 +24,16 @@ TEST(FeRotorNewmarkAllocation, TheCounterSeesAllocations) {
 
 TEST(FeRotorNewmarkAllocation, StepsAllocateNothingAtConstantSpeedOrAlongARunUp) {
   const GearPair pair(testing::visnadiPairSpec(5.0));
-  auto spec =
-      testing::visnadiFeRotorSpec(std::make_shared<PotentialEnergyMeshStiffness>(pair), 5.0, 4);
-  spec.shafts[0].unbalances.push_back({1, 1e-5, 0.0});
-  spec.transmission_error.addFourier({2e-6}, {0.3});
+  testing::FeRotorCase c =
+      testing::visnadiFeRotor(std::make_shared<PotentialEnergyMeshStiffness>(pair), 5.0, 4);
+  c.addUnbalance(0, 1, 1e-5, 0.0);
+  c.train.meshes.front().transmission_error.addFourier({2e-6}, {0.3});
   for (double end : {500.0, 3000.0}) {
-    spec.speed = {500.0 * 3.14159265358979 / 30, end * 3.14159265358979 / 30, 0.0, 0.01};
-    const FeGearedRotor model(spec);
-    const GearTrainModel train(feRotorTimeTrain(model, pair.spec()));
+    c.setSpeed({500.0 * 3.14159265358979 / 30, end * 3.14159265358979 / 30, 0.0, 0.01});
+    const FeRotorModel model = c.model();
     FeTimeOptions o;
     o.gyro_speed_tolerance = 1e-2;
-    TrainNewmarkStepper stepper = feRotorStepper(model, train, o);
+    TrainNewmarkStepper stepper = feRotorStepper(model, o);
     stepper.reset(0.0, Eigen::VectorXd::Zero(model.dofCount()),
                   Eigen::VectorXd::Zero(model.dofCount()));
     stepper.step();  // warm-up

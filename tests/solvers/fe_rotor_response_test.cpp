@@ -13,31 +13,29 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "geardyn/stiffness/fourier_stiffness.h"
-#include "geardyn/system/fe_rotor_train.h"
 #include "support/fe_rotor_cases.h"
 
 namespace geardyn {
 namespace {
 
 using testing::constantMesh;
-using testing::visnadiFeRotorSpec;
-using testing::visnadiPairSpec;
+using testing::visnadiFeRotor;
 
 /// The paper's rotor, helical, with constant mesh stiffness; the loads step on at t = 0.
-FeGearedRotorSpec linearCase() {
-  return visnadiFeRotorSpec(constantMesh(3e8), 5.0);
+FeRotorModel linearCase() {
+  return visnadiFeRotor(constantMesh(3e8), 5.0).model();
 }
 
 /// Exact response from rest to the step load F₀: x(t) = ∫₀ᵗ e^{A s} ds b, b = [0; M⁻¹F₀], read
 /// from the exponential of the augmented matrix [[A, b], [0, 0]] t (exact also for the rolling
 /// rigid-body mode's defective zero eigenvalue, which an eigenvector basis cannot represent).
 /// The state is [q; q̇/s] with s = 1e3 rad/s, which balances the blocks of A.
-Eigen::MatrixXd exactStepResponse(const FeGearedRotor& m, const std::vector<double>& times) {
+Eigen::MatrixXd exactStepResponse(const FeRotorModel& m, const std::vector<double>& times) {
   const double sv = 1e3;
   const int n = m.dofCount();
   const Eigen::VectorXd& w = m.meshVector();
   const Eigen::MatrixXd K = m.stiffness() + m.meanMeshStiffness() * w * w.transpose();
-  const Eigen::MatrixXd D = m.damping() + m.spec().speed.start * m.gyroscopic();
+  const Eigen::MatrixXd D = m.damping() + m.speed().start * m.gyroscopic();
   const auto mass = m.mass().ldlt();
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n + 1, 2 * n + 1);
   A.block(0, n, n, n).setIdentity();
@@ -62,12 +60,12 @@ double maxError(const FeTimeResponse& r, const Eigen::MatrixXd& exact, double* s
 // period error (ωΔt)²/12 accumulated over ωt ≈ 20 radians of the lowest modes is ~2e-8; the
 // high modes are overdamped by the β-damping 3e-5.
 TEST(FeRotorNewmark, MatchesTheExactResponseForConstantStiffness) {
-  const FeGearedRotor m(linearCase());
+  const FeRotorModel m = linearCase();
   FeTimeOptions o;
   o.time_step = 1e-7;
   o.duration = 5e-3;
   o.record_every = 1000;
-  const FeTimeResponse r = solveFeRotorTimeResponse(m, visnadiPairSpec(5.0), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(m, o);
   ASSERT_TRUE(r.converged()) << r.message;
   double scale = 0.0;
   const double error = maxError(r, exactStepResponse(m, r.t), &scale);
@@ -76,14 +74,14 @@ TEST(FeRotorNewmark, MatchesTheExactResponseForConstantStiffness) {
 }
 
 TEST(FeRotorNewmark, ConvergesAtSecondOrder) {
-  const FeGearedRotor m(linearCase());
+  const FeRotorModel m = linearCase();
   std::vector<double> errors;
   for (double dt : {4e-6, 2e-6}) {
     FeTimeOptions o;
     o.time_step = dt;
     o.duration = 4e-3;
     o.record_every = static_cast<int>(std::lround(1e-4 / dt));
-    const FeTimeResponse r = solveFeRotorTimeResponse(m, visnadiPairSpec(5.0), o);
+    const FeTimeResponse r = solveFeRotorTimeResponse(m, o);
     double scale = 0.0;
     errors.push_back(maxError(r, exactStepResponse(m, r.t), &scale));
   }
@@ -93,20 +91,20 @@ TEST(FeRotorNewmark, ConvergesAtSecondOrder) {
 // The Sherman–Morrison update (k(φ) − k̄) v vᵀ against a plain Newmark that assembles and
 // factorises K + k(φ) v vᵀ at every step: the same scheme, so they agree to round-off.
 TEST(FeRotorNewmark, RankOneMeshUpdateEqualsRefactorisingEveryStep) {
-  auto spec =
-      visnadiFeRotorSpec(std::make_shared<FourierMeshStiffness>(3e8, std::vector<double>{0.3, 0.1},
-                                                                std::vector<double>{0.0, 1.0}, 1.6),
-                         5.0);
-  spec.transmission_error.addFourier({5e-6}, {0.4});
-  const FeGearedRotor m(spec);
+  testing::FeRotorCase c =
+      visnadiFeRotor(std::make_shared<FourierMeshStiffness>(3e8, std::vector<double>{0.3, 0.1},
+                                                            std::vector<double>{0.0, 1.0}, 1.6),
+                     5.0);
+  c.train.meshes.front().transmission_error.addFourier({5e-6}, {0.4});
+  const FeRotorModel m = c.model();
   FeTimeOptions o;
   o.duration = 2e-3;
-  const FeTimeResponse r = solveFeRotorTimeResponse(m, visnadiPairSpec(5.0), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(m, o);
 
   const int n = m.dofCount();
   const double dt = o.time_step, b = 0.25, g = 0.5;
   const Eigen::VectorXd& w = m.meshVector();
-  const Eigen::MatrixXd D = m.damping() + spec.speed.start * m.gyroscopic();
+  const Eigen::MatrixXd D = m.damping() + m.speed().start * m.gyroscopic();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(n), v = q, a = q;
   auto load = [&](double t, double* k) {
     const double phase = m.meshPhase(t);
@@ -135,17 +133,18 @@ TEST(FeRotorNewmark, RankOneMeshUpdateEqualsRefactorisingEveryStep) {
 }
 
 TEST(FeRotorNewmark, SpeedProfileIntegratesTheMeshAngleAndRefactorisesGyroscopics) {
-  auto spec = visnadiFeRotorSpec(constantMesh(3e8));
-  spec.speed = {0.0, 100.0, 0.01, 0.03};
-  EXPECT_DOUBLE_EQ(spec.speed.angle(0.01), 0.0);
-  EXPECT_NEAR(spec.speed.angle(0.03), 0.5 * 100.0 * 0.02, 1e-15);
-  EXPECT_NEAR(spec.speed.angle(0.05), 1.0 + 100.0 * 0.02, 1e-15);
-  const FeGearedRotor m(spec);
+  testing::FeRotorCase c = visnadiFeRotor(constantMesh(3e8));
+  const SpeedProfile speed{0.0, 100.0, 0.01, 0.03};
+  c.setSpeed(speed);
+  EXPECT_DOUBLE_EQ(speed.angle(0.01), 0.0);
+  EXPECT_NEAR(speed.angle(0.03), 0.5 * 100.0 * 0.02, 1e-15);
+  EXPECT_NEAR(speed.angle(0.05), 1.0 + 100.0 * 0.02, 1e-15);
+  const FeRotorModel m = c.model();
   FeTimeOptions o;
   o.duration = 0.05;
   o.record_every = 100;
   o.gyro_speed_tolerance = 1e-2;
-  const FeTimeResponse r = solveFeRotorTimeResponse(m, visnadiPairSpec(0.0), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(m, o);
   // One factorisation at the start, then one each time the speed has moved by more than 1 % of
   // its maximum (1.05 rad/s at 0.05 rad/s per step): 1 + 95.
   EXPECT_GE(r.factorisations, 95);
@@ -154,12 +153,11 @@ TEST(FeRotorNewmark, SpeedProfileIntegratesTheMeshAngleAndRefactorisesGyroscopic
 }
 
 TEST(FeRotorNewmark, StartsFromTheStaticDeflection) {
-  auto spec = visnadiFeRotorSpec(constantMesh(3e8));
-  const FeGearedRotor m(spec);
+  const FeRotorModel m = visnadiFeRotor(constantMesh(3e8)).model();
   FeTimeOptions o;
   o.duration = 1e-3;
   o.start_from_static = true;
-  const FeTimeResponse r = solveFeRotorTimeResponse(m, visnadiPairSpec(0.0), o);
+  const FeTimeResponse r = solveFeRotorTimeResponse(m, o);
   const double scale = r.displacement.row(0).cwiseAbs().maxCoeff();
   EXPECT_GT(scale, 0.0);
   // Constant stiffness, no unbalance: the rotor stays where it is.
@@ -174,23 +172,23 @@ TEST(FeRotorNewmark, StartsFromTheStaticDeflection) {
 // free of the rolling rigid-body mode) agrees to 1e-9, the state to 1e-8 of its norm: the
 // undamped rolling mode integrates the round-off of the two factorisations (60 vs 72 DOFs).
 TEST(FeRotorNewmark, HoldingTheAxialDofsOfASpurRotorIsExact) {
-  auto spec =
-      visnadiFeRotorSpec(std::make_shared<FourierMeshStiffness>(3e8, std::vector<double>{0.3, 0.1},
-                                                                std::vector<double>{0.0, 1.0}, 1.6),
-                         0.0, 4);
-  spec.gravity = 0.0;  // the train's gravity would also weigh the shafts (the rotor's: the disks)
-  const FeGearedRotor m(spec);
+  testing::FeRotorCase c =
+      visnadiFeRotor(std::make_shared<FourierMeshStiffness>(3e8, std::vector<double>{0.3, 0.1},
+                                                            std::vector<double>{0.0, 1.0}, 1.6),
+                     0.0, 4);
+  c.setGravity(0.0);
+  const FeRotorModel m = c.model();
   FeTimeOptions o;
-  o.duration = 1.0 / (spec.speed.start * 25.0 / (2.0 * std::numbers::pi)) * 10.0;
-  const FeTimeResponse r = solveFeRotorTimeResponse(m, visnadiPairSpec(0.0), o);
+  o.duration = 1.0 / (m.speed().start * 25.0 / (2.0 * std::numbers::pi)) * 10.0;
+  const FeTimeResponse r = solveFeRotorTimeResponse(m, o);
   ASSERT_TRUE(r.converged());
-  const GearTrainModel train(gearTrainFromFeRotor(spec, visnadiPairSpec(0.0)));
+  const GearTrainModel& train = m.train();
   ASSERT_EQ(train.dofCount(), m.dofCount() + 10) << "one axial DOF per node held";
-  TrainNewmarkStepper all(train, spec.speed.start, o.time_step,
+  TrainNewmarkStepper all(train, m.speed().start, o.time_step,
                           NewmarkParameters::averageAcceleration());
   all.reset(0.0, Eigen::VectorXd::Zero(train.dofCount()), Eigen::VectorXd::Zero(train.dofCount()));
   for (long long s = 0; s < r.steps; ++s) all.step();
-  const std::vector<int> map = feRotorTrainDofs(m, train);
+  const std::vector<int>& map = m.trainDofs();
   Eigen::VectorXd q(map.size());
   for (std::size_t i = 0; i < map.size(); ++i) q(i) = all.displacement()(map[i]);
   const Eigen::VectorXd held = r.displacement.bottomRows(1).transpose();

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/fe_geared_rotor.h"
 #include "geardyn/solvers/detail/damped_modes.h"
 #include "geardyn/solvers/detail/whirl_shares.h"
+#include "geardyn/system/fe_rotor_model.h"
 
 namespace geardyn::testing {
 
@@ -28,7 +28,7 @@ struct FeReferenceMode {
 
 /// The lowest `count` elastic modes at pinion speed Ω [rad/s], ascending in frequency: rigid
 /// (|λ|/2π < 0.01 Hz) and overdamped (ζ > 0.99) roots skipped.
-inline std::vector<FeReferenceMode> feReferenceModes(const FeGearedRotor& m, double speed,
+inline std::vector<FeReferenceMode> feReferenceModes(const FeRotorModel& m, double speed,
                                                      std::size_t count) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   const Eigen::VectorXd& v = m.meshVector();

@@ -9,13 +9,13 @@
 /// the line of action where [mesh] puts it, and the operating point (speed, torque at the drive
 /// and load nodes). Doubles are printed so that they read back exactly (fmt "{}").
 ///
-/// What does not translate is refused with an InputError naming the key: unbalances (a gearbox
-/// has no unbalance forces; FeUnbalances::kOmit drops them for the modal analyses, whose modes
-/// do not depend on them), a helical pair without model.axial (the FE rotor holds the axial
-/// DOFs the helical mesh loads; a gearbox keeps them), model.contact_point =
-/// "base_tangent_points" with a helical pair (the gearbox mesh acts at the pitch point), and
-/// pair.driver = "gear". Gravity is the gearbox's, which weighs the shafts as well as the disks
-/// (docs/guide/fe_rotor.md, "Which gearbox this file is").
+/// The unbalances become the gearbox's [unbalances.<shaft>_unbalance<i>]. What does not
+/// translate is refused with an InputError naming the key: a helical pair without model.axial
+/// (the FE rotor holds the axial DOFs the helical mesh loads; a gearbox keeps them) and
+/// pair.driver = "gear"; model.contact_point = "base_tangent_points" with a helical pair is
+/// refused by every analysis (feRotorFromConfig: the gearbox mesh acts at one point). Gravity is
+/// the gearbox's, which weighs the shafts as well as the disks (docs/guide/fe_rotor.md, "Which
+/// gearbox this file is").
 
 #include <optional>
 #include <string>
@@ -26,13 +26,9 @@
 
 namespace geardyn::config {
 
-/// What the translation does with the shafts' [<shaft>.unbalance] entries.
-enum class FeUnbalances { kRefuse, kOmit };
-
 /// The gearbox description text of an FE rotor configuration (feRotorSchema()); it is accepted
-/// by gearboxSchema() and describes the train of gearTrainFromFeRotor.
-std::string feRotorGearboxToml(const Config& config,
-                               FeUnbalances unbalances = FeUnbalances::kRefuse);
+/// by gearboxSchema() and describes the train of feRotorFromConfig.
+std::string feRotorGearboxToml(const Config& config);
 
 /// `rotor FILE --print-gearbox`: the gearbox text when `config` is an FE rotor file ([model]
 /// type = "fe_geared_rotor"), nullopt otherwise.
@@ -40,7 +36,6 @@ std::optional<std::string> feRotorGearbox(const Config& config);
 
 /// The gear train of an FE rotor configuration, read from its translated text by the gearbox
 /// reader (gearTrainFromConfig); the reader's warnings are appended.
-GearTrainSpec feRotorGearTrain(const Config& config, std::vector<std::string>& warnings,
-                               FeUnbalances unbalances = FeUnbalances::kRefuse);
+GearTrainSpec feRotorGearTrain(const Config& config, std::vector<std::string>& warnings);
 
 }  // namespace geardyn::config

@@ -4,12 +4,11 @@
 /// β = 1/4, Δt = 1e-5 s) with the mesh stiffness updated at every step, at constant speed or
 /// along a speed profile (run-up / run-down: mesh angle integrated from the speed).
 ///
-/// There is no FE-rotor stepper: the rotor is translated into its gear train
-/// (system/fe_rotor_train.h) and integrated by the train's TrainNewmarkStepper (train_time.h)
-/// over the FE rotor's own DOFs (TrainStepperSetup::dofs: the axial DOFs a rotor without
-/// `axial` lacks are held at zero, as the FE rotor's removal of them does), with the FE rotor's
-/// own load vector (TrainStepperSetup::static_load: drive and load torques, gravity as the FE
-/// rotor assembles it) and its unbalance forces as the stepper's time-dependent force. The train's
+/// There is no FE-rotor stepper: the rotor is its gear train (system/fe_rotor_model.h),
+/// integrated by the train's TrainNewmarkStepper (train_time.h) over the FE rotor's own DOFs
+/// (TrainStepperSetup::dofs: the axial DOFs a rotor without `axial` lacks are held at zero),
+/// with the FE rotor's own load vector (TrainStepperSetup::static_load: drive and load torques,
+/// the disks' weight) and the train's unbalances as its excitation. The train's
 /// mesh dashpot acts on (δ − e)˙, so with a transmission error and mesh damping the force
 /// includes c_m ė (docs/theory/fe_geared_rotor.md).
 
@@ -17,13 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/geometry/gear_pair.h"
-#include "geardyn/models/fe_geared_rotor.h"
 #include "geardyn/progress.h"
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/solvers/train_time.h"
-#include "geardyn/system/gear_train.h"
-#include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/fe_rotor_model.h"
 
 namespace geardyn {
 
@@ -58,21 +54,12 @@ struct FeTimeResponse {
   bool converged() const { return status == FeTimeStatus::kCompleted; }
 };
 
-/// The gear train the rotor's time response steps: gearTrainFromFeRotor of its spec without
-/// the unbalances (the stepper applies them as its force). `pair`: the gear pair the rotor was
-/// built from.
-GearTrainSpec feRotorTimeTrain(const FeGearedRotor& model, const GearPairSpec& pair);
-
 /// The train's Newmark stepper over the rotor's DOFs (its state in the rotor's DOF order) with
-/// the rotor's loads and unbalances, at its speed profile; `train` assembled from
-/// feRotorTimeTrain. One step at a time: the building block of solveFeRotorTimeResponse, for
-/// benchmarks and tests.
-TrainNewmarkStepper feRotorStepper(const FeGearedRotor& model, const GearTrainModel& train,
-                                   const FeTimeOptions& options);
+/// the rotor's loads, at its speed profile; the train's unbalances are its own excitation. One
+/// step at a time: the building block of solveFeRotorTimeResponse, for benchmarks and tests.
+TrainNewmarkStepper feRotorStepper(const FeRotorModel& model, const FeTimeOptions& options);
 
 /// Integrates from t = 0 to `duration`, recording every `record_every` steps (t = 0 included).
-/// `pair` is the gear pair the rotor was built from (its gear train's gears).
-FeTimeResponse solveFeRotorTimeResponse(const FeGearedRotor& model, const GearPairSpec& pair,
-                                        const FeTimeOptions& options);
+FeTimeResponse solveFeRotorTimeResponse(const FeRotorModel& model, const FeTimeOptions& options);
 
 }  // namespace geardyn
