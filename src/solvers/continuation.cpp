@@ -169,194 +169,252 @@ void classifyStabilityChanges(ContinuationResult& out, double tolerance) {
 
 }  // namespace
 
-ContinuationResult continueInFrequency(ContinuationProblem& problem,
-                                       const ContinuationOptions& options) {
-  options.validate();
-  ContinuationResult out;
-  const int n = problem.size();
-  const double direction = options.stop > options.start ? 1.0 : -1.0;
-  const double omega_ref = std::max(options.start, options.stop);
-  const double range = std::abs(options.stop - options.start);
+namespace {
 
-  HarmonicBalancePoint first;
-  first.omega = options.start;
-  first.q = problem.startingGuess(first.omega);
-  problem.solve(first);
-  if (!first.converged) {
-    out.message =
-        fmt::format("no solution at the start frequency (residual {:.2g})", first.residual);
-    return out;
+/// Pseudo-arclength continuation of problem's solutions in ω (continueInFrequency), its state
+/// and steps. The unknowns are scaled: q by its size at the start, ω by the larger end of the
+/// range.
+class ArclengthContinuation {
+ public:
+  ArclengthContinuation(ContinuationProblem& problem, const ContinuationOptions& options)
+      : problem_(problem),
+        options_(options),
+        n_(problem.size()),
+        direction_(options.stop > options.start ? 1.0 : -1.0),
+        omega_ref_(std::max(options.start, options.stop)),
+        range_(std::abs(options.stop - options.start)),
+        fold_tolerance_(options.fold_tolerance > 0.0 ? options.fold_tolerance : 1e-3 * range_),
+        folds_(direction_, fold_tolerance_),
+        A_(n_ + 1, n_ + 1),
+        lu_(n_ + 1),
+        unit_(Eigen::VectorXd::Zero(n_ + 1)),
+        // The corrector at the predicted ω (problem.frequencyChangeIsCostly(): see
+        // correctAtPredictedFrequency).
+        hold_frequency_(problem.frequencyChangeIsCostly()),
+        lu_q_(hold_frequency_ ? n_ : 0),
+        q_(n_),
+        rhs_(n_ + 1),
+        dy_(n_ + 1),
+        predicted_(n_ + 1),
+        y_(n_ + 1),
+        z_(n_ + 1) {
+    unit_[n_] = 1.0;
   }
-  // Scaling: q by its size at the start, ω by the larger end of the range.
-  const double q_scale = std::max(first.q.norm(), 1e-300);
-  Eigen::MatrixXd A(n + 1, n + 1);
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu(n + 1);
-  Eigen::VectorXd unit = Eigen::VectorXd::Zero(n + 1);
-  unit[n] = 1.0;
-  // [∂R/∂q q_scale, ∂R/∂ω ω_ref; rowᵀ] factorised into `lu`.
-  const auto factorise = [&](const Eigen::MatrixXd& Jq, const Eigen::VectorXd& Jw,
-                             const Eigen::VectorXd& row) {
-    A.topLeftCorner(n, n) = Jq * q_scale;
-    A.topRightCorner(n, 1) = Jw * omega_ref;
-    A.bottomRows(1) = row.transpose();
-    lu.compute(A);
-  };
-  // The tangent of the factorised matrix (its last row the previous tangent: same orientation).
-  const auto tangentOfFactors = [&]() {
-    Eigen::VectorXd t = lu.solve(unit);
+
+  ContinuationResult run();
+
+ private:
+  /// [∂R/∂q q_scale, ∂R/∂ω ω_ref; rowᵀ] factorised into lu_.
+  void factorise(const Eigen::VectorXd& row) {
+    A_.topLeftCorner(n_, n_) = Jq_ * q_scale_;
+    A_.topRightCorner(n_, 1) = Jw_ * omega_ref_;
+    A_.bottomRows(1) = row.transpose();
+    lu_.compute(A_);
+  }
+  /// The tangent of the factorised matrix (its last row the previous tangent: same orientation).
+  Eigen::VectorXd tangentOfFactors() {
+    Eigen::VectorXd t = lu_.solve(unit_);
     return Eigen::VectorXd(t / t.norm());
-  };
-  const auto tangentFrom = [&](const Eigen::MatrixXd& Jq, const Eigen::VectorXd& Jw,
-                               const Eigen::VectorXd& previous) {
-    factorise(Jq, Jw, previous);
+  }
+  Eigen::VectorXd tangentFrom(const Eigen::VectorXd& previous) {
+    factorise(previous);
     return tangentOfFactors();
-  };
-  const auto classify = [&](HarmonicBalancePoint& p, bool samples_current) {
-    if (options.stability) problem.classify(p, options.stability_method, samples_current);
-  };
+  }
+  void classify(HarmonicBalancePoint& p, bool samples_current) {
+    if (options_.stability) problem_.classify(p, options_.stability_method, samples_current);
+  }
+  bool start();
+  bool correctAtPredictedFrequency(int& iterations, double& norm);
+  Eigen::VectorXd tangentAtHeldFrequency();
+  bool correctPseudoArclength(int& iterations, double& norm);
+  /// Takes the corrected point y_; true when the sweep has reached options.stop.
+  bool accept(bool held, int iterations, double norm);
+  ContinuationResult finish(std::string message) {
+    out_.message = std::move(message);
+    classifyStabilityChanges(out_, fold_tolerance_);
+    return std::move(out_);
+  }
+
+  ContinuationProblem& problem_;
+  const ContinuationOptions& options_;
+  const int n_;
+  const double direction_, omega_ref_, range_, fold_tolerance_;
+  FoldTracker folds_;
+  ContinuationResult out_;
+  double q_scale_ = 1.0;
+  Eigen::MatrixXd A_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd unit_;
+  const bool hold_frequency_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_q_;
+  Eigen::VectorXd r_, Jw_;
+  Eigen::MatrixXd Jq_;
+  Eigen::VectorXd q_, rhs_, dy_, predicted_, y_, z_, t_;
+  double step_ = 0.0, min_step_ = 0.0, max_step_ = 0.0;
+  int branch_ = 0;
+  int cuts_ = 0;  // since the last accepted point
+  double arclength_ = 0.0;
+};
+
+/// The first point at options.start and the first tangent; false (out_.message set) when the
+/// start does not converge.
+bool ArclengthContinuation::start() {
+  HarmonicBalancePoint first;
+  first.omega = options_.start;
+  first.q = problem_.startingGuess(first.omega);
+  problem_.solve(first);
+  if (!first.converged) {
+    out_.message =
+        fmt::format("no solution at the start frequency (residual {:.2g})", first.residual);
+    return false;
+  }
+  q_scale_ = std::max(first.q.norm(), 1e-300);
   classify(first, false);
-  out.points.push_back({first, 0, 0.0});
-  Eigen::VectorXd seed = Eigen::VectorXd::Zero(n + 1);
-  seed[n] = direction;
-  Eigen::VectorXd r, Jw;
-  Eigen::MatrixXd Jq;
-  problem.residual(first.q, first.omega, r, &Jq, &Jw);
-  Eigen::VectorXd t = tangentFrom(Jq, Jw, seed);
-  if (t[n] * direction < 0) t = -t;
+  out_.points.push_back({first, 0, 0.0});
+  Eigen::VectorXd seed = Eigen::VectorXd::Zero(n_ + 1);
+  seed[n_] = direction_;
+  problem_.residual(first.q, first.omega, r_, &Jq_, &Jw_);
+  t_ = tangentFrom(seed);
+  if (t_[n_] * direction_ < 0) t_ = -t_;
+  step_ = options_.initial_step / omega_ref_;
+  min_step_ = options_.min_step / omega_ref_, max_step_ = options_.max_step / omega_ref_;
+  z_ << first.q / q_scale_, first.omega / omega_ref_;
+  folds_.start(first.omega);
+  return true;
+}
 
-  double step = options.initial_step / omega_ref;
-  const double min_step = options.min_step / omega_ref, max_step = options.max_step / omega_ref;
-  Eigen::VectorXd z(n + 1);
-  z << first.q / q_scale, first.omega / omega_ref;
-  int branch = 0;
-  double arclength = 0.0;
-  const double fold_tolerance =
-      options.fold_tolerance > 0.0 ? options.fold_tolerance : 1e-3 * range;
-  FoldTracker folds(direction, fold_tolerance);
-  folds.start(first.omega);
-
-  Eigen::VectorXd q(n), rhs(n + 1), dy(n + 1), predicted(n + 1), y(n + 1);
-  // The corrector at the predicted ω (problem.frequencyChangeIsCostly(): a locally
-  // parametrised corrector, Rheinboldt & Burkardt 1983, with ω as the parameter): Newton on q
-  // alone at ω held, so one residual at a new ω a point. The Jacobian of the first iteration is
-  // held while the residual falls at least by half a step (chord Newton), else refreshed. The
-  // point is taken only if it lies within a tenth of the step of the prediction: at fixed ω a
-  // corrector can land on another branch (near a fold, where ∂R/∂q turns singular), which the
-  // arclength constraint prevents; then (or if it fails) the pseudo-arclength corrector runs.
-  // On the planetary sweep of bench/train_nonlinear_bench.cpp 97 % of the points are held.
-  const bool hold_frequency = problem.frequencyChangeIsCostly();
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_q(hold_frequency ? n : 0);
-  const auto correctAtPredictedFrequency = [&](int& iterations, double& norm) {
-    const double omega = predicted[n] * omega_ref;
-    if (!(omega > 0.0)) return false;
-    q = predicted.head(n) * q_scale;
-    problem.residual(q, omega, r, &Jq, &Jw);
-    norm = problem.residualNorm(q, r, omega);
-    lu_q.compute(Jq);
-    for (iterations = 0; iterations < 10 && norm > 1e-10; ++iterations) {
-      q -= lu_q.solve(r);
-      const double previous = norm;
-      problem.residual(q, omega, r, nullptr, nullptr);
-      norm = problem.residualNorm(q, r, omega);
-      if (!std::isfinite(norm)) return false;
-      if (norm > 1e-10 && norm > 0.5 * previous) {
-        problem.residual(q, omega, r, &Jq, &Jw);
-        lu_q.compute(Jq);
-      }
+// The corrector at the predicted ω (problem.frequencyChangeIsCostly(): a locally
+// parametrised corrector, Rheinboldt & Burkardt 1983, with ω as the parameter): Newton on q
+// alone at ω held, so one residual at a new ω a point. The Jacobian of the first iteration is
+// held while the residual falls at least by half a step (chord Newton), else refreshed. The
+// point is taken only if it lies within a tenth of the step of the prediction: at fixed ω a
+// corrector can land on another branch (near a fold, where ∂R/∂q turns singular), which the
+// arclength constraint prevents; then (or if it fails) the pseudo-arclength corrector runs.
+// On the planetary sweep of bench/train_nonlinear_bench.cpp 97 % of the points are held.
+bool ArclengthContinuation::correctAtPredictedFrequency(int& iterations, double& norm) {
+  const double omega = predicted_[n_] * omega_ref_;
+  if (!(omega > 0.0)) return false;
+  q_ = predicted_.head(n_) * q_scale_;
+  problem_.residual(q_, omega, r_, &Jq_, &Jw_);
+  norm = problem_.residualNorm(q_, r_, omega);
+  lu_q_.compute(Jq_);
+  for (iterations = 0; iterations < 10 && norm > 1e-10; ++iterations) {
+    q_ -= lu_q_.solve(r_);
+    const double previous = norm;
+    problem_.residual(q_, omega, r_, nullptr, nullptr);
+    norm = problem_.residualNorm(q_, r_, omega);
+    if (!std::isfinite(norm)) return false;
+    if (norm > 1e-10 && norm > 0.5 * previous) {
+      problem_.residual(q_, omega, r_, &Jq_, &Jw_);
+      lu_q_.compute(Jq_);
     }
-    if (norm > 1e-10) return false;
-    y << q / q_scale, predicted[n];
-    return (y - predicted).norm() <= 0.1 * step;
-  };
-  // Its tangent: [∂R/∂q q_scale, ∂R/∂ω ω_ref] t = 0 with t_ω = 1, from the held factors.
-  const auto tangentAtHeldFrequency = [&]() {
-    Eigen::VectorXd tangent(n + 1);
-    tangent << lu_q.solve(Jw) * (-omega_ref / q_scale), 1.0;
-    tangent.normalize();
-    return Eigen::VectorXd(tangent.dot(t) < 0.0 ? -tangent : tangent);
-  };
-  int cuts = 0;  // since the last accepted point
-  while (static_cast<int>(out.points.size()) < options.max_points) {
-    predicted = z + step * t;
-    y = predicted;
-    bool converged = false;
+  }
+  if (norm > 1e-10) return false;
+  y_ << q_ / q_scale_, predicted_[n_];
+  return (y_ - predicted_).norm() <= 0.1 * step_;
+}
+
+// Its tangent: [∂R/∂q q_scale, ∂R/∂ω ω_ref] t = 0 with t_ω = 1, from the held factors.
+Eigen::VectorXd ArclengthContinuation::tangentAtHeldFrequency() {
+  Eigen::VectorXd tangent(n_ + 1);
+  tangent << lu_q_.solve(Jw_) * (-omega_ref_ / q_scale_), 1.0;
+  tangent.normalize();
+  return Eigen::VectorXd(tangent.dot(t_) < 0.0 ? -tangent : tangent);
+}
+
+/// Newton on [R(y); tᵀ(y − predicted)] = 0 from the prediction.
+bool ArclengthContinuation::correctPseudoArclength(int& iterations, double& norm) {
+  for (iterations = 0; iterations < 25; ++iterations) {
+    q_ = y_.head(n_) * q_scale_;
+    const double omega = y_[n_] * omega_ref_;
+    if (!(omega > 0.0)) break;
+    problem_.residual(q_, omega, r_, &Jq_, &Jw_);
+    norm = problem_.residualNorm(q_, r_, omega);
+    const double constraint = t_.dot(y_ - predicted_);
+    if (norm <= 1e-10 && std::abs(constraint) <= 1e-12) return true;
+    factorise(t_);
+    rhs_ << -r_, -constraint;
+    dy_ = lu_.solve(rhs_);
+    if (!dy_.allFinite()) break;
+    y_ += dy_;
+  }
+  return false;
+}
+
+bool ArclengthContinuation::accept(bool held, int iterations, double norm) {
+  HarmonicBalancePoint point;
+  point.q = y_.head(n_) * q_scale_;
+  point.omega = y_[n_] * omega_ref_;
+  point.converged = true;
+  point.iterations = iterations;
+  point.residual = norm;
+  // The tangent from the corrector's last factorisation [J(y_k); tᵀ], y_k one converging
+  // Newton step from the point (saves an LU a point): an error of the order of that step in
+  // a predictor direction, and folds are confirmed by the points themselves. (The AFT samples are
+  // the converged point's: the sampled-monodromy stability reuses them.)
+  const Eigen::VectorXd t_new = held             ? tangentAtHeldFrequency()
+                                : iterations > 0 ? tangentOfFactors()
+                                                 : tangentFrom(t_);
+  arclength_ += step_;
+  classify(point, true);
+  out_.points.push_back({point, branch_, arclength_, cuts_});
+  cuts_ = 0;
+  std::size_t fold = 0;
+  if (folds_.update(out_.points.size() - 1, point.omega, t_new[n_], &fold)) {
+    ++branch_;
+    out_.folds.push_back(fold);
+    for (std::size_t i = fold + 1; i < out_.points.size(); ++i) out_.points[i].branch = branch_;
+  }
+  if (options_.progress) {
+    options_.progress(std::clamp(std::abs(point.omega - options_.start), 0.0, range_), range_);
+  }
+  t_ = t_new;
+  z_ = y_;
+  if (iterations <= 4) step_ = std::min(step_ * 1.5, max_step_);
+  if (iterations >= 10) step_ = std::max(step_ * 0.5, min_step_);
+  return (point.omega - options_.stop) * direction_ >= 0.0;
+}
+
+ContinuationResult ArclengthContinuation::run() {
+  if (!start()) return std::move(out_);
+  while (static_cast<int>(out_.points.size()) < options_.max_points) {
+    predicted_ = z_ + step_ * t_;
+    y_ = predicted_;
     int iterations = 0;
     double norm = 0.0;
-    const bool held = hold_frequency && correctAtPredictedFrequency(iterations, norm);
-    if (held) converged = true;
-    if (!held) y = predicted, iterations = 0;
-    for (; !held && iterations < 25; ++iterations) {
-      q = y.head(n) * q_scale;
-      const double omega = y[n] * omega_ref;
-      if (!(omega > 0.0)) break;
-      problem.residual(q, omega, r, &Jq, &Jw);
-      norm = problem.residualNorm(q, r, omega);
-      const double constraint = t.dot(y - predicted);
-      if (norm <= 1e-10 && std::abs(constraint) <= 1e-12) {
-        converged = true;
-        break;
-      }
-      factorise(Jq, Jw, t);
-      rhs << -r, -constraint;
-      dy = lu.solve(rhs);
-      if (!dy.allFinite()) break;
-      y += dy;
+    const bool held = hold_frequency_ && correctAtPredictedFrequency(iterations, norm);
+    bool converged = held;
+    if (!held) {
+      y_ = predicted_;
+      converged = correctPseudoArclength(iterations, norm);
     }
     if (!converged) {
-      ++out.failures;
-      ++cuts;
-      step *= 0.5;
-      if (step < min_step) {
-        out.message = fmt::format(
-            "continuation stopped at {:.6g} {}: the corrector failed with the "
-            "minimum step (residual {:.2g})",
-            z[n] * omega_ref / options.display_scale, options.display_unit, norm);
-        classifyStabilityChanges(out, fold_tolerance);
-        return out;
+      ++out_.failures;
+      ++cuts_;
+      step_ *= 0.5;
+      if (step_ < min_step_) {
+        return finish(
+            fmt::format("continuation stopped at {:.6g} {}: the corrector failed with the "
+                        "minimum step (residual {:.2g})",
+                        z_[n_] * omega_ref_ / options_.display_scale, options_.display_unit, norm));
       }
       continue;
     }
-    HarmonicBalancePoint point;
-    point.q = y.head(n) * q_scale;
-    point.omega = y[n] * omega_ref;
-    point.converged = true;
-    point.iterations = iterations;
-    point.residual = norm;
-    // The tangent from the corrector's last factorisation [J(y_k); tᵀ], y_k one converging
-    // Newton step from the point (saves an LU a point): an error of the order of that step in
-    // a predictor direction, and folds are confirmed by the points themselves. (The AFT samples are
-    // the converged point's: the sampled-monodromy stability reuses them.)
-    const Eigen::VectorXd t_new = held             ? tangentAtHeldFrequency()
-                                  : iterations > 0 ? tangentOfFactors()
-                                                   : tangentFrom(Jq, Jw, t);
-    arclength += step;
-    classify(point, true);
-    out.points.push_back({point, branch, arclength, cuts});
-    cuts = 0;
-    std::size_t fold = 0;
-    if (folds.update(out.points.size() - 1, point.omega, t_new[n], &fold)) {
-      ++branch;
-      out.folds.push_back(fold);
-      for (std::size_t i = fold + 1; i < out.points.size(); ++i) out.points[i].branch = branch;
-    }
-    if (options.progress) {
-      options.progress(std::clamp(std::abs(point.omega - options.start), 0.0, range), range);
-    }
-    t = t_new;
-    z = y;
-    if (iterations <= 4) step = std::min(step * 1.5, max_step);
-    if (iterations >= 10) step = std::max(step * 0.5, min_step);
-    if ((point.omega - options.stop) * direction >= 0.0) {
-      out.completed = true;
-      out.message = fmt::format("{} points, {} folds, {} step cuts", out.points.size(),
-                                out.folds.size(), out.failures);
-      classifyStabilityChanges(out, fold_tolerance);
-      return out;
+    if (accept(held, iterations, norm)) {
+      out_.completed = true;
+      return finish(fmt::format("{} points, {} folds, {} step cuts", out_.points.size(),
+                                out_.folds.size(), out_.failures));
     }
   }
-  out.message = fmt::format("stopped after the maximum of {} points", options.max_points);
-  classifyStabilityChanges(out, fold_tolerance);
-  return out;
+  return finish(fmt::format("stopped after the maximum of {} points", options_.max_points));
+}
+
+}  // namespace
+
+ContinuationResult continueInFrequency(ContinuationProblem& problem,
+                                       const ContinuationOptions& options) {
+  options.validate();
+  return ArclengthContinuation(problem, options).run();
 }
 
 std::vector<HarmonicBalancePoint> solutionsAtFrequency(
