@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/detail/strip_arnoldi.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 
 namespace geardyn::detail {
@@ -34,6 +35,11 @@ constexpr Eigen::Index kHillMargin = 8;
 /// TrainStabilityCostPerPoint, CPU time, one run): 15.2 ms a point with 2, 9.4 with 2.6,
 /// 10.4 with 2.8, 13.6 with 3.2 and 16.3 with 1.5 (113–137 operator applications in each).
 constexpr double kHillBasisRatio = 2.6;
+/// The restart-free run (strip_arnoldi.h): first check at kFirstCheckRatio × (2n + kHillMargin)
+/// basis vectors, then every kCheckStep, giving up at kMaxDimensionRatio × (2n + kHillMargin).
+constexpr double kFirstCheckRatio = 2.2;
+constexpr int kCheckStep = 8;
+constexpr double kMaxDimensionRatio = 3.2;
 
 /// y = (𝓗 − σI)⁻¹ x in Spectra's operator interface (train_hill.h): per harmonic h the block
 /// A₀ − s_h (s_h = σ + ihω) through D(s_h) = s²M + sC + K̄, the periodic part by Woodbury:
@@ -183,6 +189,24 @@ TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
   op.set_shift(0.0);  // once for both passes (the solvers' own set_shift(0) is then a no-op)
   const Eigen::Index n = problem.M.rows(), N = op.rows();
   TrainHillResult out;
+  // One Arnoldi run without restarts, stopped when its converged Ritz values hold the 2n strip
+  // values (strip_arnoldi.h); Spectra's restarted passes below only when it gives up.
+  StripArnoldiOptions fast;
+  const int wanted = static_cast<int>(2 * n + kHillMargin);
+  fast.first_check = static_cast<int>(kFirstCheckRatio * wanted);
+  fast.check_step = kCheckStep;
+  fast.max_dimension = static_cast<int>(kMaxDimensionRatio * wanted);
+  const StripArnoldiResult run =
+      stripArnoldi([&op](const double* x, double* y) { op.perform_op(x, y); }, N, problem.omega,
+                   static_cast<int>(n), fast);
+  out.operations += run.operations;
+  if (run.certified) {
+    out.exponents = run.strip;
+    out.computed = run.dimension;
+    out.radius = run.radius;
+    out.restart_free = true;
+    return out;
+  }
   // First the 2n + kHillMargin nearest 0. The strip |Im| <= ω/2 holds exactly one copy of each
   // of the 2n exponents, so 2n strip eigenvalues among them are all the exponents (a certificate,
   // docs/theory/nonlinear_gear_trains.md "Hill's method: the nearest 2n"); fewer (an exponent

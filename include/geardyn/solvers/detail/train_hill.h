@@ -46,9 +46,11 @@ struct TrainHillResult {
   /// The selected Floquet exponents λ [1/s], largest real part first: floquetStrip of the Hill
   /// eigenvalues computed (the `computed` nearest 0).
   std::vector<std::complex<double>> exponents;
-  int computed = 0;     ///< Hill eigenvalues computed (nearest σ = 0)
-  double radius = 0.0;  ///< |λ| of the farthest computed: every eigenvalue nearer was found
-  int operations = 0;   ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
+  int computed = 0;           ///< Hill eigenvalues computed (nearest σ = 0; the basis size when
+                              ///< `restart_free`)
+  bool restart_free = false;  ///< certified by the one Arnoldi run (strip_arnoldi.h)
+  double radius = 0.0;        ///< |λ| of the farthest computed: every eigenvalue nearer was found
+  int operations = 0;         ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
 };
 
 /// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0 on the
