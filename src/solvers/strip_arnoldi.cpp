@@ -14,7 +14,7 @@ namespace geardyn::detail {
 namespace {
 
 using Complex = std::complex<double>;
-using RowMatrixXcd = Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 /// The eigenvalues of the upper Hessenberg H (m × m) from its real Schur form T (eigenvalues
 /// only: no Schur vectors), read off T's 1 × 1 and 2 × 2 diagonal blocks as Eigen's EigenSolver
@@ -43,28 +43,37 @@ Eigen::VectorXcd hessenbergEigenvalues(const Eigen::MatrixXd& H) {
   return values;
 }
 
-/// |e_mᵀ y| of the unit eigenvector y of the upper Hessenberg H (m × m) for its eigenvalue θ:
-/// one inverse-iteration solve U y = (1, …, 1) with the LU of H − θI by adjacent-row pivoting
-/// (O(m²); the first step of LAPACK's xLAEIN), a pivot below ε‖H‖ replaced by ε‖H‖.
-double lastComponent(const Eigen::MatrixXd& H, Complex theta, double small, RowMatrixXcd& A,
+/// |e_mᵀ y| of the unit eigenvector y of the upper Hessenberg H (m × m, row-major) for its
+/// eigenvalue θ: one inverse-iteration solve U y = (1, …, 1) with the LU of H − θI by
+/// adjacent-row pivoting (O(m²): only the Hessenberg part is copied and eliminated; the first
+/// step of LAPACK's xLAEIN), a pivot below ε‖H‖ replaced by ε‖H‖.
+double lastComponent(const RowMatrixXd& H, Complex theta, double small, std::vector<Complex>& A,
                      Eigen::VectorXcd& y) {
   const Eigen::Index m = H.rows();
-  A = H.cast<Complex>();
-  A.diagonal().array() -= theta;
-  for (Eigen::Index k = 0; k + 1 < m; ++k) {
-    if (std::abs(A(k + 1, k)) > std::abs(A(k, k))) {
-      A.row(k).segment(k, m - k).swap(A.row(k + 1).segment(k, m - k));
-    }
-    if (std::abs(A(k, k)) < small) A(k, k) = small;
-    const Complex l = A(k + 1, k) / A(k, k);
-    A.row(k + 1).segment(k + 1, m - k - 1) -= l * A.row(k).segment(k + 1, m - k - 1);
+  A.resize(static_cast<std::size_t>(m * m));
+  for (Eigen::Index i = 0; i < m; ++i) {
+    Complex* row = A.data() + i * m;
+    const double* h = H.data() + i * m;
+    for (Eigen::Index j = std::max<Eigen::Index>(i - 1, 0); j < m; ++j) row[j] = h[j];
+    row[i] -= theta;
   }
-  if (std::abs(A(m - 1, m - 1)) < small) A(m - 1, m - 1) = small;
+  const double small2 = small * small;
+  for (Eigen::Index k = 0; k + 1 < m; ++k) {
+    Complex *rk = A.data() + k * m, *rk1 = rk + m;
+    if (std::norm(rk1[k]) > std::norm(rk[k])) std::swap_ranges(rk + k, rk + m, rk1 + k);
+    if (std::norm(rk[k]) < small2) rk[k] = small;
+    const Complex l = rk1[k] / rk[k];
+    for (Eigen::Index j = k + 1; j < m; ++j) rk1[j] -= l * rk[j];
+  }
+  Complex* last = A.data() + (m - 1) * m + (m - 1);
+  if (std::norm(*last) < small2) *last = small;
   y.setOnes(m);
   for (Eigen::Index i = m - 1; i >= 0; --i) {
-    if (i + 1 < m) y(i) -= A.row(i).segment(i + 1, m - i - 1).dot(y.segment(i + 1, m - i - 1));
-    y(i) /= A(i, i);
-    if (std::abs(y(i)) > 1e100) y /= std::abs(y(i));  // rescale (a near-singular pivot)
+    const Complex* row = A.data() + i * m;
+    Complex sum = y(i);
+    for (Eigen::Index j = i + 1; j < m; ++j) sum -= row[j] * y(j);
+    y(i) = sum / row[i];
+    if (std::norm(y(i)) > 1e200) y.segment(i, m - i) /= std::abs(y(i));  // a near-singular pivot
   }
   return std::abs(y(m - 1)) / y.norm();
 }
@@ -84,14 +93,15 @@ std::vector<Complex> convergedStrip(const Eigen::MatrixXd& H, double omega, doub
   const double eps = std::numeric_limits<double>::epsilon();
   const double small = eps * Hm.cwiseAbs().rowwise().sum().maxCoeff();
   const double eps23 = std::pow(eps, 2.0 / 3.0);
-  RowMatrixXcd A(m, m);
+  const RowMatrixXd Hr = Hm;
+  std::vector<Complex> A;
   Eigen::VectorXcd y(m);
   for (Eigen::Index i = 0; i < m; ++i) {
     if (theta(i).imag() < 0.0) continue;  // a conjugate pair's residuals are equal: test once
     if (std::abs(theta(i)) == 0.0) continue;
     const Complex lambda = 1.0 / theta(i);
     if (std::abs(lambda.imag()) - 0.5 * omega > 1e-3 * omega) continue;  // floquetStrip's margin
-    const double residual = beta * lastComponent(Hm, theta(i), small, A, y);
+    const double residual = beta * lastComponent(Hr, theta(i), small, A, y);
     if (residual > tolerance * std::max(std::abs(theta(i)), eps23)) continue;
     out.push_back(lambda);
     if (theta(i).imag() > 0.0) out.push_back(std::conj(lambda));
