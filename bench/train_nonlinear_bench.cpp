@@ -136,7 +136,7 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   };
   double newton = 0.0, monodromy = 0.0, hill = 0.0;
   double newton_cpu = 0.0, monodromy_cpu = 0.0, hill_cpu = 0.0;
-  int points = 0, iterations = 0, operations = 0, certified = 0;
+  int points = 0, iterations = 0, operations = 0, certified = 0, dimension = 0, restart_free = 0;
   for (auto _ : state) {
     newton = monodromy = hill = newton_cpu = monodromy_cpu = hill_cpu = 0.0;
     points = iterations = 0;
@@ -169,7 +169,10 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       // Untimed: the Arnoldi's operator applications and whether the 2n + 8 nearest 0 sufficed.
       const detail::TrainHillResult r = detail::trainHillExponents(hbm.hillProblem(h, false));
       operations += r.operations;
-      certified += r.computed < 4 * static_cast<int>(hbm.hillProblem(h, true).M.rows());
+      certified +=
+          r.restart_free || r.computed < 4 * static_cast<int>(hbm.hillProblem(h, true).M.rows());
+      dimension += r.restart_free ? r.computed : 0;
+      restart_free += r.restart_free;
     }
   }
   state.counters["points"] = points;
@@ -186,6 +189,9 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   state.counters["monodromy_over_newton_cpu"] = monodromy_cpu / newton_cpu;
   state.counters["hill_operations"] = static_cast<double>(operations) / points;
   state.counters["hill_first_pass_fraction"] = static_cast<double>(certified) / points;
+  state.counters["hill_restart_free_fraction"] = static_cast<double>(restart_free) / points;
+  state.counters["hill_basis"] =
+      restart_free > 0 ? static_cast<double>(dimension) / restart_free : 0.0;
 }
 BENCHMARK(BM_TrainStabilityCostPerPoint)->Iterations(1)->Unit(benchmark::kSecond);
 

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/detail/strip_arnoldi.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 
 namespace geardyn::detail {
@@ -34,6 +35,11 @@ constexpr Eigen::Index kHillMargin = 8;
 /// TrainStabilityCostPerPoint, CPU time, one run): 15.2 ms a point with 2, 9.4 with 2.6,
 /// 10.4 with 2.8, 13.6 with 3.2 and 16.3 with 1.5 (113–137 operator applications in each).
 constexpr double kHillBasisRatio = 2.6;
+/// The restart-free run (strip_arnoldi.h): first check at kFirstCheckRatio × (2n + kHillMargin)
+/// basis vectors, then every kCheckStep, giving up at kMaxDimensionRatio × (2n + kHillMargin).
+constexpr double kFirstCheckRatio = 2.2;
+constexpr int kCheckStep = 8;
+constexpr double kMaxDimensionRatio = 3.2;
 
 /// y = (𝓗 − σI)⁻¹ x in Spectra's operator interface (train_hill.h): per harmonic h the block
 /// A₀ − s_h (s_h = σ + ihω) through D(s_h) = s²M + sC + K̄, the periodic part by Woodbury:
@@ -50,30 +56,27 @@ class HillShiftSolve {
         r_(static_cast<int>(p.V.cols())),
         h_(p.harmonics),
         nc_(2 * p.harmonics + 1),
-        P_(p.harmonics + 1),
-        Q_(p.harmonics + 1),
+        R_(p.harmonics + 1),
         Z_(p.harmonics + 1),
         s_(p.harmonics + 1),
-        a_(p.harmonics + 1),
-        fx_(p.harmonics + 1) {
-    Vt_ = p.V.transpose().cast<Complex>();
+        ad_(p.harmonics + 1),
+        u_(p.harmonics + 1) {
     e_.resize(r_ * nc_);
     w_.resize(r_ * nc_);
     z_.resize(r_ * nc_);
-    fv_.resize(n_);
     zc_.resize(r_);
-    d_.resize(r_);
     for (int h = 0; h <= h_; ++h) {
-      a_[h].resize(n_);
-      fx_[h].resize(n_);
+      ad_[h].resize(n_ + r_);
+      u_[h].resize(2 * n_);
     }
   }
 
   Eigen::Index rows() const { return 2 * n_ * nc_; }
   Eigen::Index cols() const { return rows(); }
 
-  /// Per harmonic the n × n factors the operator applies (set once, so that perform_op only
-  /// multiplies): P = D(s)⁻¹M, Q = D(s)⁻¹(C + sM), Z = D(s)⁻¹V; and the capacitance's LU.
+  /// Per harmonic the factors the operator applies (set once, so that perform_op only
+  /// multiplies): R = [D(s)⁻¹[C + sM, M]; Vᵀ D(s)⁻¹[C + sM, M]] ((n + r) × 2n: a and Vᵀa in one
+  /// product), Z = D(s)⁻¹V; and the capacitance's LU.
   void set_shift(double sigma) {
     if (shifted_ && sigma == sigma_) return;
     shifted_ = true, sigma_ = sigma;
@@ -85,8 +88,11 @@ class HillShiftSolve {
       const Complex s(sigma, h * p_.omega);
       s_[h] = s;
       lu.compute(s * s * Mc + s * Cc + p_.K.cast<Complex>());
-      P_[h] = lu.solve(Mc);
-      Q_[h] = lu.solve(Cc + s * Mc);
+      Eigen::MatrixXcd rhs(n_, 2 * n_);
+      rhs << Cc + s * Mc, Mc;
+      R_[h].resize(n_ + r_, 2 * n_);
+      R_[h].topRows(n_) = lu.solve(rhs);
+      R_[h].bottomRows(r_).noalias() = Vc.transpose() * R_[h].topRows(n_);
       Z_[h] = lu.solve(Vc);
       G[h] = Vc.transpose() * Z_[h];
     }
@@ -114,26 +120,22 @@ class HillShiftSolve {
     const int n = n_, n2 = 2 * n_;
     // g = 𝓓⁻¹ f: (A₀ − s)(a, b) = (f_x, f_v) ⇔ a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa.
     for (int h = 0; h <= h_; ++h) {
-      Eigen::VectorXcd& fx = fx_[h];
+      Eigen::VectorXcd& u = u_[h];  // (f_x, f_v)
       if (h == 0) {
-        for (int i = 0; i < n; ++i) fx(i) = x_in[i], fv_(i) = x_in[n + i];
+        for (int i = 0; i < n2; ++i) u(i) = x_in[i];
       } else {
         const double *c = x_in + (2 * h - 1) * n2, *s = x_in + 2 * h * n2;
-        for (int i = 0; i < n; ++i) {
-          fx(i) = Complex(c[i], -s[i]);
-          fv_(i) = Complex(c[n + i], -s[n + i]);
-        }
+        for (int i = 0; i < n2; ++i) u(i) = Complex(c[i], -s[i]);
       }
-      a_[h].noalias() = -P_[h] * fv_;
-      a_[h].noalias() -= Q_[h] * fx;
-      // e = 𝓒ᵀ g = Vᵀ a per harmonic, coordinate-major real coefficients.
-      d_.noalias() = Vt_ * a_[h];
+      // (a, Vᵀa) in one product; e = 𝓒ᵀ g = Vᵀ a per harmonic, coordinate-major real.
+      ad_[h].noalias() = -R_[h] * u;
+      const auto d = ad_[h].tail(r_);
       for (int m = 0; m < r_; ++m) {
         if (h == 0) {
-          e_(m * nc_) = d_(m).real();
+          e_(m * nc_) = d(m).real();
         } else {
-          e_(m * nc_ + 2 * h - 1) = d_(m).real();
-          e_(m * nc_ + 2 * h) = -d_(m).imag();
+          e_(m * nc_ + 2 * h - 1) = d(m).real();
+          e_(m * nc_ + 2 * h) = -d(m).imag();
         }
       }
     }
@@ -149,12 +151,12 @@ class HillShiftSolve {
         zc_(m) =
             h == 0 ? Complex(z_(m * nc_)) : Complex(z_(m * nc_ + 2 * h - 1), -z_(m * nc_ + 2 * h));
       }
-      Eigen::VectorXcd& a = a_[h];
+      auto a = ad_[h].head(n);
       a.noalias() -= Z_[h] * zc_;
       const Complex s = s_[h];
       double *yc = y_out + (h == 0 ? 0 : (2 * h - 1) * n2), *ys = y_out + 2 * h * n2;
       for (int i = 0; i < n; ++i) {
-        const Complex b = fx_[h](i) + s * a(i);
+        const Complex b = u_[h](i) + s * a(i);
         yc[i] = a(i).real();
         yc[n + i] = b.real();
         if (h > 0) ys[i] = -a(i).imag(), ys[n + i] = -b.imag();
@@ -167,12 +169,11 @@ class HillShiftSolve {
   int n_, r_, h_, nc_;
   bool shifted_ = false;
   double sigma_ = 0.0;
-  std::vector<Eigen::MatrixXcd> P_, Q_, Z_;  // D(s_h)⁻¹M, D(s_h)⁻¹(C + s_h M), D(s_h)⁻¹V
+  std::vector<Eigen::MatrixXcd> R_, Z_;  // (D(s_h)⁻¹ and Vᵀ D(s_h)⁻¹)[C + s_h M, M], D(s_h)⁻¹V
   std::vector<Complex> s_;
-  Eigen::MatrixXcd Vt_;
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  mutable std::vector<Eigen::VectorXcd> a_, fx_;
-  mutable Eigen::VectorXcd fv_, zc_, d_;
+  mutable std::vector<Eigen::VectorXcd> ad_, u_;  // (a, Vᵀa) and (f_x, f_v) per harmonic
+  mutable Eigen::VectorXcd zc_;
   mutable Eigen::VectorXd e_, w_, z_;
 };
 
@@ -183,6 +184,24 @@ TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
   op.set_shift(0.0);  // once for both passes (the solvers' own set_shift(0) is then a no-op)
   const Eigen::Index n = problem.M.rows(), N = op.rows();
   TrainHillResult out;
+  // One Arnoldi run without restarts, stopped when its converged Ritz values hold the 2n strip
+  // values (strip_arnoldi.h); Spectra's restarted passes below only when it gives up.
+  StripArnoldiOptions fast;
+  const int wanted = static_cast<int>(2 * n + kHillMargin);
+  fast.first_check = static_cast<int>(kFirstCheckRatio * wanted);
+  fast.check_step = kCheckStep;
+  fast.max_dimension = static_cast<int>(kMaxDimensionRatio * wanted);
+  const StripArnoldiResult run =
+      stripArnoldi([&op](const double* x, double* y) { op.perform_op(x, y); }, N, problem.omega,
+                   static_cast<int>(n), fast);
+  out.operations += run.operations;
+  if (run.certified) {
+    out.exponents = run.strip;
+    out.computed = run.dimension;
+    out.radius = run.radius;
+    out.restart_free = true;
+    return out;
+  }
   // First the 2n + kHillMargin nearest 0. The strip |Im| <= ω/2 holds exactly one copy of each
   // of the 2n exponents, so 2n strip eigenvalues among them are all the exponents (a certificate,
   // docs/theory/nonlinear_gear_trains.md "Hill's method: the nearest 2n"); fewer (an exponent

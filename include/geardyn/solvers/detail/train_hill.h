@@ -18,7 +18,8 @@
 /// periodic part has rank r(2H + 1): (𝓗 − σ)⁻¹ is applied by Woodbury with one n × n complex LU
 /// of D(s) = s²M + sC + K̄ per harmonic (s = σ + ihω) and one r(2H + 1) real LU of the
 /// capacitance I + 𝓖 𝓢, 𝓖 = blockdiag(Vᵀ D(s_h)⁻¹ V) (at σ = 0: the harmonic balance Jacobian
-/// I + B ∂F̃/∂δ itself), inside shift-invert Arnoldi (Spectra).
+/// I + B ∂F̃/∂δ itself), inside shift-invert Arnoldi: one run without restarts first
+/// (strip_arnoldi.h), Spectra's restarted Arnoldi when it gives up.
 
 #include <Eigen/Dense>
 #include <complex>
@@ -46,15 +47,21 @@ struct TrainHillResult {
   /// The selected Floquet exponents λ [1/s], largest real part first: floquetStrip of the Hill
   /// eigenvalues computed (the `computed` nearest 0).
   std::vector<std::complex<double>> exponents;
-  int computed = 0;     ///< Hill eigenvalues computed (nearest σ = 0)
-  double radius = 0.0;  ///< |λ| of the farthest computed: every eigenvalue nearer was found
-  int operations = 0;   ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
+  int computed = 0;           ///< Hill eigenvalues computed (nearest σ = 0; the basis size when
+                              ///< `restart_free`)
+  bool restart_free = false;  ///< certified by the one Arnoldi run (strip_arnoldi.h)
+  /// |λ| of the farthest computed: every eigenvalue nearer was found (the farthest converged
+  /// strip value when `restart_free`: no such guarantee, none needed)
+  double radius = 0.0;
+  int operations = 0;  ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
 };
 
-/// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0 on the
-/// 4n eigenvalues nearest 0 (every exponent whose central copy has |λ| < ω/√2, in particular
-/// every one with Re λ >= −ω/2, is among them: a disc of radius < ω holds at most two copies of
-/// each of the 2n exponents). std::runtime_error when Arnoldi does not converge.
+/// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0: the
+/// restart-free run until its converged Ritz values hold the 2n strip values (all exponents);
+/// when it gives up, Spectra on the 2n + 8 nearest 0 and, if their strip lacks some, the 4n
+/// nearest 0 (every exponent whose central copy has |λ| < ω/√2, in particular every one with
+/// Re λ >= −ω/2, is among them: a disc of radius < ω holds at most two copies of each of the 2n
+/// exponents). std::runtime_error when Arnoldi does not converge.
 TrainHillResult trainHillExponents(const TrainHillProblem& problem);
 
 /// The dense real Hill matrix (2n(2H + 1) square; coefficient-major) for tests, similar to 𝓗
