@@ -21,6 +21,7 @@
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
+#include "geardyn/system/bearing_law.h"
 #include "geardyn/units.h"
 #include "train_probes_analysis.h"
 #include "train_undamped_modes.h"
@@ -92,14 +93,26 @@ std::vector<const TrainElement*> radialBearings(const GearTrainModel& model) {
 }
 
 /// The radial bearings' spring forces (k J q[dofs])_{y,z} over a record [N] (the static load
-/// included), Newmark's and the steady state's, and the largest distance between the two force
+/// included; a bearing on its full law: the law's F(u)_{y,z}, bearing_law.h), Newmark's and the
+/// steady state's, and the largest distance between the two force
 /// vectors against the steady state's peak-to-peak (the larger of its y and z ranges): the
 /// comparison of a train without meshes (a rotor with an unbalance, whose bearing force turns at
 /// a constant magnitude).
 class BearingForces {
  public:
-  explicit BearingForces(std::size_t n)
-      : worst_(n, 0.0), low_(n, {HUGE_VAL, HUGE_VAL}), high_(n, {-HUGE_VAL, -HUGE_VAL}) {}
+  BearingForces(const GearTrainModel& model, const std::vector<const TrainElement*>& bearings)
+      : worst_(bearings.size(), 0.0),
+        low_(bearings.size(), {HUGE_VAL, HUGE_VAL}),
+        high_(bearings.size(), {-HUGE_VAL, -HUGE_VAL}),
+        law_(bearings.size(), -1),
+        laws_(trainBearingLaws(model)) {
+    for (std::size_t b = 0; b < bearings.size(); ++b) {
+      for (std::size_t l = 0; l < laws_.size(); ++l) {
+        if (laws_[l].bearing().rolling && laws_[l].bearing().name == bearings[b]->name)
+          law_[b] = static_cast<int>(l);
+      }
+    }
+  }
   /// Appends sample k's columns to `row`: Newmark's (y, z) forces per bearing, then the steady
   /// state's (q: its displacements on the record's times; null: no comparison).
   void add(const std::vector<const TrainElement*>& bearings,
@@ -107,13 +120,13 @@ class BearingForces {
            Eigen::Index k, std::vector<io::CsvCell>& row) {
     std::vector<Eigen::Vector2d> newmark_force(bearings.size());
     for (std::size_t b = 0; b < bearings.size(); ++b) {
-      newmark_force[b] = force(*bearings[b], newmark);
+      newmark_force[b] = force(*bearings[b], law_[b], newmark);
       row.push_back(newmark_force[b](0));
       row.push_back(newmark_force[b](1));
     }
     if (!q) return;
     for (std::size_t b = 0; b < bearings.size(); ++b) {
-      const Eigen::Vector2d f = force(*bearings[b], q->row(k));
+      const Eigen::Vector2d f = force(*bearings[b], law_[b], q->row(k));
       row.push_back(f(0));
       row.push_back(f(1));
       worst_[b] = std::max(worst_[b], (f - newmark_force[b]).norm());
@@ -132,15 +145,20 @@ class BearingForces {
   }
 
  private:
-  static Eigen::Vector2d force(const TrainElement& e,
-                               const Eigen::Ref<const Eigen::RowVectorXd>& q) {
+  Eigen::Vector2d force(const TrainElement& e, int law,
+                        const Eigen::Ref<const Eigen::RowVectorXd>& q) const {
     Eigen::VectorXd local(static_cast<Eigen::Index>(e.dofs.size()));
     for (std::size_t i = 0; i < e.dofs.size(); ++i)
       local(static_cast<Eigen::Index>(i)) = q(e.dofs[i]);
-    return (e.local_stiffness * (e.jacobian * local)).head<2>();
+    const Eigen::VectorXd u = e.jacobian * local;
+    if (law < 0) return (e.local_stiffness * u).head<2>();
+    const TrainBearingLaw& l = laws_[law];
+    return l.contactForce(TrainBearingLaw::Vector(u.head(l.width())), nullptr).head<2>();
   }
   std::vector<double> worst_;
   std::vector<Eigen::Vector2d> low_, high_;
+  std::vector<int> law_;  // per bearing: its full law in laws_, or −1
+  std::vector<TrainBearingLaw> laws_;
 };
 
 /// The frequency-domain steady state a time run is compared with, on the run's times `t`: the
@@ -351,7 +369,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
     }
   }
   io::CsvTable table(header);
-  BearingForces bearing_forces(bearings.size());
+  BearingForces bearing_forces(model, bearings);
   // The steady state's mesh forces on the record's times (also the truncation check's base).
   Eigen::MatrixXd steady_force(compare ? r.t.size() : 0, r.mesh_force.cols());
   Json differences = Json::object();
