@@ -378,14 +378,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
         "response is the linear one");
   }
   if (nonlinearOnTorus(model, analysis)) {
-    for (const TrainClearanceBearing& b : model.clearanceBearings()) {
-      if (!b.rolling) continue;
-      // Not validated on the torus balance (issue 35): refused rather than unchecked.
-      throw InputError("bearings." + b.name + ".model", "\"nonlinear\"",
-                       "\"linearised\" with the torus balance (nonlinear.method = \"torus\", or "
-                       "meshes without a short common period): the full bearing law is "
-                       "validated in the common-period balance and its Newmark checks only");
-    }
+    // A full-law bearing with full DOFs exits 2 there, naming it (TrainTorusBalance).
     return runTrainNonlinearTorus(model, analysis, result, text, context);
   }
   const TrainHarmonicBalanceOptions options =

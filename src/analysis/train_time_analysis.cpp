@@ -17,8 +17,11 @@
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/error.h"
 #include "geardyn/io/csv_table.h"
+#include "geardyn/solvers/detail/train_time_full_law.h"
+#include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
+#include "geardyn/system/bearing_law.h"
 #include "geardyn/units.h"
 #include "train_probes_analysis.h"
 #include "train_undamped_modes.h"
@@ -90,14 +93,26 @@ std::vector<const TrainElement*> radialBearings(const GearTrainModel& model) {
 }
 
 /// The radial bearings' spring forces (k J q[dofs])_{y,z} over a record [N] (the static load
-/// included), Newmark's and the steady state's, and the largest distance between the two force
+/// included; a bearing on its full law: the law's F(u)_{y,z}, bearing_law.h), Newmark's and the
+/// steady state's, and the largest distance between the two force
 /// vectors against the steady state's peak-to-peak (the larger of its y and z ranges): the
 /// comparison of a train without meshes (a rotor with an unbalance, whose bearing force turns at
 /// a constant magnitude).
 class BearingForces {
  public:
-  explicit BearingForces(std::size_t n)
-      : worst_(n, 0.0), low_(n, {HUGE_VAL, HUGE_VAL}), high_(n, {-HUGE_VAL, -HUGE_VAL}) {}
+  BearingForces(const GearTrainModel& model, const std::vector<const TrainElement*>& bearings)
+      : worst_(bearings.size(), 0.0),
+        low_(bearings.size(), {HUGE_VAL, HUGE_VAL}),
+        high_(bearings.size(), {-HUGE_VAL, -HUGE_VAL}),
+        law_(bearings.size(), -1),
+        laws_(trainBearingLaws(model)) {
+    for (std::size_t b = 0; b < bearings.size(); ++b) {
+      for (std::size_t l = 0; l < laws_.size(); ++l) {
+        if (laws_[l].bearing().rolling && laws_[l].bearing().name == bearings[b]->name)
+          law_[b] = static_cast<int>(l);
+      }
+    }
+  }
   /// Appends sample k's columns to `row`: Newmark's (y, z) forces per bearing, then the steady
   /// state's (q: its displacements on the record's times; null: no comparison).
   void add(const std::vector<const TrainElement*>& bearings,
@@ -105,13 +120,13 @@ class BearingForces {
            Eigen::Index k, std::vector<io::CsvCell>& row) {
     std::vector<Eigen::Vector2d> newmark_force(bearings.size());
     for (std::size_t b = 0; b < bearings.size(); ++b) {
-      newmark_force[b] = force(*bearings[b], newmark);
+      newmark_force[b] = force(*bearings[b], law_[b], newmark);
       row.push_back(newmark_force[b](0));
       row.push_back(newmark_force[b](1));
     }
     if (!q) return;
     for (std::size_t b = 0; b < bearings.size(); ++b) {
-      const Eigen::Vector2d f = force(*bearings[b], q->row(k));
+      const Eigen::Vector2d f = force(*bearings[b], law_[b], q->row(k));
       row.push_back(f(0));
       row.push_back(f(1));
       worst_[b] = std::max(worst_[b], (f - newmark_force[b]).norm());
@@ -130,15 +145,20 @@ class BearingForces {
   }
 
  private:
-  static Eigen::Vector2d force(const TrainElement& e,
-                               const Eigen::Ref<const Eigen::RowVectorXd>& q) {
+  Eigen::Vector2d force(const TrainElement& e, int law,
+                        const Eigen::Ref<const Eigen::RowVectorXd>& q) const {
     Eigen::VectorXd local(static_cast<Eigen::Index>(e.dofs.size()));
     for (std::size_t i = 0; i < e.dofs.size(); ++i)
       local(static_cast<Eigen::Index>(i)) = q(e.dofs[i]);
-    return (e.local_stiffness * (e.jacobian * local)).head<2>();
+    const Eigen::VectorXd u = e.jacobian * local;
+    if (law < 0) return (e.local_stiffness * u).head<2>();
+    const TrainBearingLaw& l = laws_[law];
+    return l.contactForce(TrainBearingLaw::Vector(u.head(l.width())), nullptr).head<2>();
   }
   std::vector<double> worst_;
   std::vector<Eigen::Vector2d> low_, high_;
+  std::vector<int> law_;  // per bearing: its full law in laws_, or −1
+  std::vector<TrainBearingLaw> laws_;
 };
 
 /// The frequency-domain steady state a time run is compared with, on the run's times `t`: the
@@ -148,6 +168,7 @@ class BearingForces {
 /// when neither can be solved.
 struct SteadyReference {
   bool compare = true, torus = false;
+  bool full_law = false;  ///< the nonlinear balance (a rolling bearing's full law)
   TrainSteadyOptions options;
   TrainSteadyState state;
   Eigen::MatrixXd q;  ///< rows: the times t, cols: DOFs [m, rad]
@@ -155,10 +176,67 @@ struct SteadyReference {
   Clock::time_point start;
 };
 
+/// With a rolling bearing's full law the reference is the nonlinear common-period balance
+/// (train_harmonic_balance.h, [nonlinear] harmonics and samples) at the run's speed, from its
+/// starting guess: q(t) = X₀ + Σ_h (X_{c,h} cos hω₀t + X_{s,h} sin hω₀t), the mesh forces'
+/// extremes and their harmonics at the mesh orders from its samples.
+void fullLawReference(const GearTrainModel& model, const config::Config& analysis, double speed,
+                      const Eigen::VectorXd& t, SteadyReference& ref) {
+  TrainHarmonicBalance hbm(model, config::trainHarmonicBalanceOptionsFromConfig(analysis));
+  HarmonicBalancePoint p;
+  p.omega = hbm.baseFrequency(speed);
+  p.q = hbm.startingGuess(p.omega);
+  hbm.solve(p);
+  if (!p.converged) {
+    throw InputError("nonlinear.harmonics", std::to_string(hbm.harmonics()),
+                     fmt::format("a nonlinear balance that converges at {:g} rpm (residual {:.3g}) "
+                                 "for the comparison of the time run with the full bearing law",
+                                 speed / kRpm, p.residual));
+  }
+  const Eigen::MatrixXd X = hbm.displacementCoefficients(p);
+  const int H = hbm.harmonics();
+  ref.q.resize(t.size(), X.rows());
+  for (Eigen::Index k = 0; k < t.size(); ++k) {
+    Eigen::VectorXd q = X.col(0);
+    for (int h = 1; h <= H; ++h) {
+      q += X.col(2 * h - 1) * std::cos(h * p.omega * t(k)) +
+           X.col(2 * h) * std::sin(h * p.omega * t(k));
+    }
+    ref.q.row(k) = q.transpose();
+  }
+  const Eigen::MatrixXd f = hbm.meshContactForces(p.q);  // samples over a common period
+  const auto N = static_cast<double>(f.rows());
+  ref.state.mesh_multiple = hbm.meshMultiples();
+  for (Eigen::Index m = 0; m < f.cols(); ++m) {
+    ref.state.mesh_force_max.push_back(f.col(m).maxCoeff());
+    ref.state.mesh_force_min.push_back(f.col(m).minCoeff());
+    const int p_m = ref.state.mesh_multiple[m];
+    std::vector<double> amplitudes;
+    for (int l = 1; l * p_m <= H; ++l) {
+      std::complex<double> sum = 0.0;
+      for (Eigen::Index i = 0; i < f.rows(); ++i)
+        sum += f(i, m) * std::polar(1.0, -2.0 * std::numbers::pi * l * p_m * i / N);
+      amplitudes.push_back(2.0 * std::abs(sum) / N);
+    }
+    ref.state.mesh_force_harmonics.push_back(amplitudes);
+  }
+  ref.base_harmonics = H;
+}
+
 SteadyReference steadyReference(const GearTrainModel& model, const config::Config& analysis,
                                 double speed, const Eigen::VectorXd& t, io::RunSummary& summary) {
   SteadyReference ref;
   ref.start = Clock::now();
+  if (geardyn::detail::hasFullBearingLaw(model)) {
+    ref.full_law = true;
+    try {
+      fullLawReference(model, analysis, speed, t, ref);
+    } catch (const InputError& e) {
+      ref.compare = false;
+      summary.warnings.push_back(std::string("no frequency-domain comparison: ") + e.what());
+    }
+    return ref;
+  }
   ref.options.mesh_harmonics = static_cast<int>(analysis.integer("time.mesh_harmonics"));
   ref.options.max_base_harmonics = static_cast<int>(analysis.integer("forced.max_base_harmonics"));
   const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1 << 30);
@@ -259,14 +337,6 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   const auto start = Clock::now();
   const double speed = config::analysisSpeed(analysis, "time", model.inputSpeed());
   checkTrainProbes(model, analysis, speed);
-  for (const TrainClearanceBearing& b : model.clearanceBearings()) {
-    if (!b.rolling) continue;
-    summary.warnings.push_back(fmt::format(
-        "time: bearings.{}.model = \"nonlinear\" acts in the nonlinear analysis (and its Newmark "
-        "checks); the time analysis is linear and uses the bearing linearised at the static "
-        "deflection",
-        b.name));
-  }
   const TrainTimeOptions options = config::trainTimeOptionsFromConfig(analysis);
   const TrainTimePlan plan = planTime(model, speed, options, context);
   const TrainTimeResponse r = solveTrainTimeResponse(
@@ -279,7 +349,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   }
   // The frequency-domain steady state on the same window, for the comparison a user would make.
   const SteadyReference ref = steadyReference(model, analysis, speed, r.t, summary);
-  const bool compare = ref.compare, torus = ref.torus;
+  const bool compare = ref.compare, torus = ref.torus || ref.full_law;
   const TrainSteadyState& s = ref.state;
   const Eigen::MatrixXd& q = ref.q;
   const TrainSteadyOptions& steady = ref.options;
@@ -299,7 +369,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
     }
   }
   io::CsvTable table(header);
-  BearingForces bearing_forces(bearings.size());
+  BearingForces bearing_forces(model, bearings);
   // The steady state's mesh forces on the record's times (also the truncation check's base).
   Eigen::MatrixXd steady_force(compare ? r.t.size() : 0, r.mesh_force.cols());
   Json differences = Json::object();
@@ -377,7 +447,9 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
       {"duration_s", static_cast<double>(r.steps) * r.time_step},
       {"transient", transientJson(r)},
       {"step_time_us", 1e6 * seconds / static_cast<double>(r.steps)},
-      {"steady_state_method", torus ? "torus" : "common_period"},
+      {"steady_state_method",
+       ref.full_law ? "nonlinear_balance" : (torus ? "torus" : "common_period")},
+      {"full_bearing_law", geardyn::detail::hasFullBearingLaw(model)},
       {"max_difference_to_steady_state_relative_to_p2p", differences},
       {"bearing_force_difference_to_steady_state_relative_to_p2p", bearing_differences},
       {"steady_state_truncation_relative_to_p2p", truncation.empty() ? Json() : truncation},
@@ -389,8 +461,11 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   text += fmt::format(
       "time: {} Newmark steps of {:.3g} s in {:.2f} s{}\n", r.steps, r.time_step, seconds,
       compare ? fmt::format("; steady state for the comparison ({}) in {:.2f} s",
-                            torus ? std::string("torus")
-                                  : fmt::format("{} base harmonics", ref.base_harmonics),
+                            ref.full_law ? fmt::format("nonlinear balance, {} harmonics: the "
+                                                       "full bearing law",
+                                                       ref.base_harmonics)
+                            : torus      ? std::string("torus")
+                                         : fmt::format("{} base harmonics", ref.base_harmonics),
                             steady_seconds)
               : std::string());
   writeTrainProbes(model, analysis, speed, r, compare && !torus ? &s : nullptr, result, text);

@@ -35,10 +35,12 @@ void addRollingBearingKeys(ConfigSchema& schema, const std::string& prefix) {
       .defaultValue("linearised")
       .doc(
           "with a `type` from the geometry, what the train nonlinear analysis (its harmonic "
-          "balance and Newmark checks) uses: \"linearised\", the tangent stiffness at the static "
-          "deflection (as every linear analysis, `time` included); \"nonlinear\", the full "
+          "balance and Newmark checks) and `time` use: \"linearised\", the tangent stiffness at "
+          "the static deflection (as every linear analysis); \"nonlinear\", the full "
           "load-deflection law with the clearance (elements leave contact) on the radial "
-          "displacement (planar DOFs)");
+          "displacement (planar DOFs) or on all five of the bearing's coordinates (full DOFs); "
+          "`time` then integrates with the nonlinear Newmark and compares with the nonlinear "
+          "balance; the torus balance takes it with planar DOFs");
   schema.string(prefix + "arrangement")
       .choices({"single", "back_to_back", "face_to_face"})
       .defaultValue("single")

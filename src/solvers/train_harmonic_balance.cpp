@@ -76,7 +76,18 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   samples_ = options_.samples;
   meshes_ = static_cast<int>(model.meshes().size());
   bearings_ = static_cast<int>(model.clearanceBearings().size());
-  r_ = meshes_ + 2 * bearings_;
+  r_ = meshes_;
+  int slope_columns = 0;
+  laws_ = trainBearingLaws(model);
+  for (const TrainBearingLaw& law : laws_) {
+    const int w = law.width();
+    bearing_first_.push_back(r_);
+    for (int k = 0; k < w * w; ++k) {  // column-major: entry (k % w, k / w)
+      bearing_blocks_.push_back({r_ + k % w, r_ + k / w, slope_columns + k});
+    }
+    r_ += w;
+    slope_columns += w * w;
+  }
   dofs_ = model.dofCount();
   const TrainBaseFrequency base = trainBaseFrequency(model, 1, 1000000000);
   multiple_ = base.mesh_multiple;
@@ -116,7 +127,7 @@ TrainHarmonicBalance::TrainHarmonicBalance(const GearTrainModel& model,
   k_.resize(samples_, meshes_);
   e_.resize(samples_, meshes_);
   slope_.resize(samples_, meshes_);
-  bearing_slope_.resize(samples_, 4 * bearings_);
+  bearing_slope_.resize(samples_, static_cast<Eigen::Index>(bearing_blocks_.size()));
   force_.resize(samples_, r_);
   delta_.resize(samples_, r_);
   Eigen::MatrixXd rate(samples_, meshes_);
@@ -239,21 +250,26 @@ void TrainHarmonicBalance::meshForceSamples(const Eigen::VectorXd& u) {
       slope_(i, m) = s - mesh.mean_stiffness;
     }
   }
-  // Clearance bearings: f̃ = f(u) − k u and its 2 × 2 Jacobian (column-major in bearing_slope_);
+  // Clearance bearings: f̃ = f(u) − k u and its w × w Jacobian (column-major in bearing_slope_);
   // linearised: the linear bearing of K, f̃ = 0.
-  Eigen::Matrix2d J;
+  int column = 0;
   for (int b = 0; b < bearings_; ++b) {
-    const TrainClearanceBearing& bearing = model_.clearanceBearings()[b];
-    const int c = meshes_ + 2 * b;
+    const TrainBearingLaw& law = laws_[b];
+    const int c = bearing_first_[b], w = law.width();
+    TrainBearingLaw::Vector u(w), f(w);
+    TrainBearingLaw::Matrix J(w, w);
     for (int i = 0; i < samples_; ++i) {
-      const Eigen::Vector2d f = linearized_
-                                    ? Eigen::Vector2d::Zero()
-                                    : bearing.correctionForce({delta_(i, c), delta_(i, c + 1)}, &J);
-      if (linearized_) J.setZero();
-      force_(i, c) = f(0);
-      force_(i, c + 1) = f(1);
-      for (int k = 0; k < 4; ++k) bearing_slope_(i, 4 * b + k) = J(k % 2, k / 2);
+      for (int k = 0; k < w; ++k) u(k) = delta_(i, c + k);
+      if (linearized_) {
+        f.setZero();
+        J.setZero();
+      } else {
+        f = law.correctionForce(u, &J);
+      }
+      for (int k = 0; k < w; ++k) force_(i, c + k) = f(k);
+      for (int k = 0; k < w * w; ++k) bearing_slope_(i, column + k) = J(k % w, k / w);
     }
+    column += w * w;
   }
 }
 
@@ -294,7 +310,7 @@ void TrainHarmonicBalance::residual(const Eigen::VectorXd& u, double omega, Eige
     }
   }
   if (!dr_du) return;
-  // ∂F̃_i/∂u_j (i = j for a mesh; the four pairs of a clearance bearing's (u_y, u_z)):
+  // ∂F̃_i/∂u_j (i = j for a mesh; every pair of a clearance bearing's coordinates):
   // D_k = (1/N) Σ ∂f̃_i/∂u_j cos kτ, E_k = (1/N) Σ ∂f̃_i/∂u_j sin kτ for k = −2H..2H.
   Eigen::MatrixXd& J = *dr_du;
   J.setIdentity(size(), size());
@@ -317,11 +333,7 @@ void TrainHarmonicBalance::residual(const Eigen::VectorXd& u, double omega, Eige
     }
   };
   for (int m = 0; m < meshes_; ++m) add(m, m, slope_.col(m).data());
-  for (int b = 0; b < bearings_; ++b) {
-    for (int k = 0; k < 4; ++k) {
-      add(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2, bearing_slope_.col(4 * b + k).data());
-    }
-  }
+  for (const auto& [i, j, column] : bearing_blocks_) add(i, j, bearing_slope_.col(column).data());
 }
 
 Eigen::MatrixXd TrainHarmonicBalance::forceCoefficients(double omega) {
@@ -357,11 +369,12 @@ Eigen::VectorXd TrainHarmonicBalance::startingGuess(double omega) {
   }
   linearized_ = false;
   for (int b = 0; b < bearings_; ++b) {  // the journal onto the bearing surface (header)
-    const int c = meshes_ + 2 * b;
-    const Eigen::Vector2d mean = model_.clearanceBearings()[b].loadedDisplacement(
-        Eigen::Vector2d(u(c * n_), u((c + 1) * n_)));
-    u(c * n_) = mean(0);
-    u((c + 1) * n_) = mean(1);
+    const TrainBearingLaw& law = laws_[b];
+    const int c = bearing_first_[b], w = law.width();
+    TrainBearingLaw::Vector mean(w);
+    for (int k = 0; k < w; ++k) mean(k) = u((c + k) * n_);
+    mean = law.loadedDisplacement(mean);
+    for (int k = 0; k < w; ++k) u((c + k) * n_) = mean(k);
   }
   return u;
 }
@@ -377,8 +390,11 @@ Eigen::MatrixXd TrainHarmonicBalance::meshDeflections(const Eigen::VectorXd& u) 
 }
 
 Eigen::MatrixXd TrainHarmonicBalance::bearingDisplacements(const Eigen::VectorXd& u) {
-  Eigen::MatrixXd d(samples_, 2 * bearings_);
-  for (int c = 0; c < 2 * bearings_; ++c) inverse(u.data() + (meshes_ + c) * n_, d.col(c).data());
+  Eigen::MatrixXd d(samples_, 2 * bearings_);  // (u_y, u_z): each bearing's first two
+  for (int b = 0; b < bearings_; ++b) {
+    for (int k = 0; k < 2; ++k)
+      inverse(u.data() + (bearing_first_[b] + k) * n_, d.col(2 * b + k).data());
+  }
   return d;
 }
 
@@ -447,14 +463,10 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
   x.leftCols(n).setIdentity();
   v.rightCols(n).setIdentity();
   const Eigen::LLT<Eigen::MatrixXd> mass(M);
-  // S(t): the meshes' slopes on the diagonal, 2 × 2 blocks ∂f̃/∂u of the clearance bearings.
+  // S(t): the meshes' slopes on the diagonal, w × w blocks ∂f̃/∂u of the clearance bearings.
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(r_, r_);
   for (int m = 0; m < meshes_; ++m) S(m, m) = slope_(0, m);
-  for (int b = 0; b < bearings_; ++b) {
-    for (int k = 0; k < 4; ++k) {
-      S(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2) = bearing_slope_(0, 4 * b + k);
-    }
-  }
+  for (const auto& [i, j, column] : bearing_blocks_) S(i, j) = bearing_slope_(0, column);
   a = -mass.solve(Kbar * x + V * (S * (Vt * x)) + C * v);
   Eigen::MatrixXd small(r_, r_), w(r_, 2 * n), sw(r_, 2 * n);
   Eigen::PartialPivLU<Eigen::MatrixXd> small_lu(r_);
@@ -482,11 +494,11 @@ void TrainHarmonicBalance::classify(HarmonicBalancePoint& point, StabilityMethod
     // A clearance bearing: ∂f/∂u averaged along the straight segment between the samples (the
     // same second-order treatment of a contact change inside the interval), less k I.
     for (int b = 0; b < bearings_; ++b) {
-      const TrainClearanceBearing& bearing = model_.clearanceBearings()[b];
-      const int c = meshes_ + 2 * b;
-      S.block(c, c, 2, 2) = bearing.meanStiffness({delta_(i0, c), delta_(i0, c + 1)},
-                                                  {delta_(i1, c), delta_(i1, c + 1)}) -
-                            bearing.linearStiffness();
+      const TrainBearingLaw& law = laws_[b];
+      const int c = bearing_first_[b], width = law.width();
+      TrainBearingLaw::Vector u0(width), u1(width);
+      for (int k = 0; k < width; ++k) u0(k) = delta_(i0, c + k), u1(k) = delta_(i1, c + k);
+      S.block(c, c, width, width) = law.meanStiffness(u0, u1) - law.linear();
     }
     y.noalias() = PQ * rhs;
     w.noalias() = Vt * y;

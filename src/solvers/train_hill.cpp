@@ -295,11 +295,7 @@ detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalance
     p.slopes.push_back(std::move(block));
   };
   for (int m = 0; m < meshes_; ++m) add(m, m, slope_.col(m).data());
-  for (int b = 0; b < bearings_; ++b) {
-    for (int k = 0; k < 4; ++k) {
-      add(meshes_ + 2 * b + k % 2, meshes_ + 2 * b + k / 2, bearing_slope_.col(4 * b + k).data());
-    }
-  }
+  for (const auto& [i, j, column] : bearing_blocks_) add(i, j, bearing_slope_.col(column).data());
   return p;
 }
 

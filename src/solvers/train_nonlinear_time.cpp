@@ -87,7 +87,12 @@ TrainNonlinearNewmark::TrainNonlinearNewmark(const GearTrainModel& model, double
   const int n = model.dofCount();
   meshes_ = static_cast<int>(model.meshes().size());
   const int bearings = static_cast<int>(model.clearanceBearings().size());
-  const int r = meshes_ + 2 * bearings;
+  int r = meshes_;
+  laws_ = trainBearingLaws(model);
+  for (const TrainBearingLaw& law : laws_) {
+    bearing_first_.push_back(r);
+    r += law.width();
+  }
   Cg_ = model.dampingAt(speed_);
   K0_ = model.meanStiffnessAt(speed_);
   V_ = model.nonlinearVectors();  // [V, bearing columns]: δ, then (u_y, u_z) per bearing
@@ -146,14 +151,20 @@ void TrainNonlinearNewmark::nonlinearForces(const Eigen::VectorXd& delta, Eigen:
     f(m) = force - meshes[m].mean_stiffness * delta(m);
     if (slope) (*slope)(m, m) = s - meshes[m].mean_stiffness;
   }
-  // Clearance bearings: f̃ = f(u) − k u with its coupled 2 × 2 Jacobian (bearing_clearance.h).
-  Eigen::Matrix2d J;
-  const auto& bearings = model_.clearanceBearings();
-  for (std::size_t b = 0; b < bearings.size(); ++b) {
-    const int c = meshes_ + 2 * static_cast<int>(b);
-    f.segment<2>(c) = bearings[b].correctionForce(delta.segment<2>(c), &J);
-    if (slope) slope->block<2, 2>(c, c) = J;
+  // Clearance bearings: f̃ = f(u) − k u with its coupled w × w Jacobian (bearing_clearance.h).
+  for (std::size_t b = 0; b < laws_.size(); ++b) {
+    const int c = bearing_first_[b], w = laws_[b].width();
+    TrainBearingLaw::Matrix J(w, w);
+    f.segment(c, w) = laws_[b].correctionForce(TrainBearingLaw::Vector(delta.segment(c, w)),
+                                               slope ? &J : nullptr);
+    if (slope) slope->block(c, c, w, w) = J;
   }
+}
+
+double TrainNonlinearNewmark::meshForce(int mesh) const {
+  const double y = delta_(mesh) - e_(mesh);
+  if (tooth_pairs_[mesh].elementCount() > 0) return tooth_pairs_[mesh].force(0, y, nullptr);
+  return k_(mesh) * model_.meshes()[mesh].contactDeflection(y);
 }
 
 void TrainNonlinearNewmark::eventState(std::vector<long long>& out) const {
@@ -187,10 +198,9 @@ void TrainNonlinearNewmark::eventState(std::vector<long long>& out) const {
     out[2 * m] = contact;
     out[2 * m + 1] = segment;
   }
-  const auto& bearings = model_.clearanceBearings();
-  for (std::size_t b = 0; b < bearings.size(); ++b) {
-    const int c = meshes_ + 2 * static_cast<int>(b);
-    out[2 * meshes_ + b] = bearings[b].touching(delta_.segment<2>(c));
+  for (std::size_t b = 0; b < laws_.size(); ++b) {
+    const TrainBearingLaw::Vector u = delta_.segment(bearing_first_[b], laws_[b].width());
+    out[2 * meshes_ + b] = laws_[b].touching(u);
   }
 }
 
@@ -311,7 +321,9 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
                                 options.contact_refinement);
   const int n = model.dofCount();
   const int meshes = static_cast<int>(model.meshes().size());
-  const int coordinates = meshes + 2 * static_cast<int>(model.clearanceBearings().size());
+  int coordinates = meshes;
+  for (const TrainClearanceBearing& b : model.clearanceBearings())
+    coordinates += static_cast<int>(b.jacobian.rows());
   const Eigen::VectorXd q = q0.size() == n ? q0 : solveTrainStatic(model, input_speed).displacement;
   stepper.reset(0.0, q, v0.size() == n ? v0 : Eigen::VectorXd::Zero(n));
   Eigen::MatrixXd previous(per_period, coordinates), current(per_period, coordinates);
@@ -340,20 +352,38 @@ TrainNonlinearTimeResponse solveTrainNonlinearTime(const GearTrainModel& model, 
     // Relative to the meshes' largest |δ|, and to each clearance bearing's own largest |u| or
     // its clearance when larger (a journal floating at the centre has |u| ~ round-off).
     r.last_change = period > 1 ? 0.0 : HUGE_VAL;
-    for (int c = 0; c < coordinates && period > 1;) {
-      const int width = c < meshes ? meshes : 2;
-      const double floor =
-          c < meshes ? 1e-300 : model.clearanceBearings()[(c - meshes) / 2].clearance;
-      const double scale = std::max(current.middleCols(c, width).cwiseAbs().maxCoeff(), floor);
-      r.last_change = std::max(
-          r.last_change, (current - previous).middleCols(c, width).cwiseAbs().maxCoeff() / scale);
-      c += width;
+    // Per group against its own scale: the meshes' δ; a bearing's translations (floor: its
+    // clearance); a full-DOF bearing's tilts (floor: the translation scale over d_m/2, the tilt
+    // that moves an element as far).
+    const auto change = [&](int first, int count, double floor) {
+      const double scale = std::max(current.middleCols(first, count).cwiseAbs().maxCoeff(), floor);
+      r.last_change =
+          std::max(r.last_change,
+                   (current - previous).middleCols(first, count).cwiseAbs().maxCoeff() / scale);
+      return scale;
+    };
+    if (period > 1) {
+      change(0, meshes, 1e-300);
+      for (int b = 0, c = meshes; b < static_cast<int>(model.clearanceBearings().size()); ++b) {
+        const TrainClearanceBearing& bearing = model.clearanceBearings()[b];
+        const int w = static_cast<int>(bearing.jacobian.rows());
+        const double translation = change(c, std::min(w, 3), bearing.clearance);
+        if (w > 3) {
+          change(c + 3, w - 3, translation / (0.5 * bearing.rolling->geometry().pitch_diameter));
+        }
+        c += w;
+      }
     }
     std::swap(previous, current);
     if (period >= options.min_periods && r.last_change <= options.steady_tolerance) break;
   }
   r.mesh_deflection = previous.leftCols(meshes);  // the last period (swapped)
-  r.bearing_displacement = previous.rightCols(coordinates - meshes);
+  r.bearing_displacement.resize(per_period,
+                                2 * static_cast<Eigen::Index>(model.clearanceBearings().size()));
+  for (int b = 0, c = meshes; b < static_cast<int>(model.clearanceBearings().size()); ++b) {
+    r.bearing_displacement.middleCols(2 * b, 2) = previous.middleCols(c, 2);  // (u_y, u_z)
+    c += static_cast<int>(model.clearanceBearings()[b].jacobian.rows());
+  }
   r.mesh_force.resize(per_period, meshes);
   for (long long k = 0; k < per_period; ++k) {
     for (int m = 0; m < meshes; ++m) {

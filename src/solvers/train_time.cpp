@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "geardyn/error.h"
+#include "geardyn/solvers/detail/train_time_full_law.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/units.h"
@@ -424,6 +425,10 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
                     transient ? "damp that mode or give a shorter time.duration"
                               : "shorten it or coarsen time.steps_per_mesh_period"));
   }
+  // A rolling bearing's full law: the nonlinear Newmark on the same plan.
+  if (detail::hasFullBearingLaw(model)) {
+    return detail::solveTrainTimeFullLaw(model, input_speed, options, plan, progress);
+  }
   TrainNewmarkStepper stepper(model, input_speed, dt, options.newmark);
   const int n = model.dofCount();
   Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n);
@@ -435,13 +440,8 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
   r.transient = transient;
   const long long recorded = options.record_periods * per_period;
   const long long first = steps - recorded;
-  r.t.resize(recorded);
-  r.displacement.resize(recorded, n);
-  r.mesh_force.resize(recorded, static_cast<Eigen::Index>(model.meshes().size()));
-  if (options.record_rates) {
-    r.velocity.resize(recorded, n);
-    r.acceleration.resize(recorded, n);
-  }
+  detail::sizeTrainTimeRecord(r, recorded, n, static_cast<int>(model.meshes().size()),
+                              options.record_rates);
   for (long long k = 1; k <= steps; ++k) {
     stepper.step();
     if (k % per_period == 0 && progress)
@@ -452,18 +452,7 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
       r.steps = k;
       return r;
     }
-    if (k > first) {
-      const long long i = k - first - 1;
-      r.t(i) = stepper.time();
-      r.displacement.row(i) = stepper.displacement().transpose();
-      if (options.record_rates) {
-        r.velocity.row(i) = stepper.velocity().transpose();
-        r.acceleration.row(i) = stepper.acceleration().transpose();
-      }
-      for (Eigen::Index m = 0; m < r.mesh_force.cols(); ++m) {
-        r.mesh_force(i, m) = stepper.meshForce(static_cast<int>(m));
-      }
-    }
+    if (k > first) detail::recordTrainTimeSample(r, k - first - 1, stepper, options.record_rates);
   }
   r.steps = steps;
   return r;

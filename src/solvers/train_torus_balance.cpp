@@ -65,6 +65,13 @@ TrainTorusBalance::TrainTorusBalance(const GearTrainModel& model,
   k_ = static_cast<int>(N.size());
   meshes_ = static_cast<int>(model.meshes().size());
   bearings_ = static_cast<int>(model.clearanceBearings().size());
+  for (const TrainClearanceBearing& b : model.clearanceBearings()) {
+    if (b.jacobian.rows() != 2) {  // the torus's bearing blocks are (u_y, u_z)
+      throw InputError("bearings." + b.name + ".model", "\"nonlinear\" with full DOFs",
+                       "\"linearised\" for the torus balance (its bearing coordinates are "
+                       "(u_y, u_z))");
+    }
+  }
   r_ = meshes_ + 2 * bearings_;
   dofs_ = model.dofCount();
   slopes_ = meshes_ + 4 * bearings_;
@@ -373,12 +380,12 @@ Eigen::VectorXd TrainTorusBalance::startingGuess(double omega) {
   }
   linearized_ = false;
   for (int b = 0; b < bearings_; ++b) {  // the journal onto the bearing surface
+    // ū (1 + c/|ū|) for the clearance law; a full-law bearing's Newton on f(u) = K_s ū.
     const std::ptrdiff_t c = meshes_ + 2 * b;
-    const double radius = std::hypot(u(c * n_), u((c + 1) * n_));
-    if (!(radius > 0.0)) continue;
-    const double scale = 1.0 + model_.clearanceBearings()[b].clearance / radius;
-    u(c * n_) *= scale;
-    u((c + 1) * n_) *= scale;
+    const Eigen::Vector2d mean = model_.clearanceBearings()[b].loadedDisplacement(
+        Eigen::Vector2d(u(c * n_), u((c + 1) * n_)));
+    u(c * n_) = mean(0);
+    u((c + 1) * n_) = mean(1);
   }
   return u;
 }

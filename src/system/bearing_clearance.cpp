@@ -88,7 +88,8 @@ Eigen::Matrix2d TrainClearanceBearing::meanStiffness(const Eigen::Vector2d& u0,
 Eigen::Vector2d TrainClearanceBearing::displacement(
     const Eigen::Ref<const Eigen::VectorXd>& q) const {
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
-  for (std::size_t i = 0; i < dofs.size(); ++i) u += jacobian.col(i) * q(dofs[i]);
+  // (u_y, u_z): a full-DOF rolling bearing's first two rows of five (bearing_law.h).
+  for (std::size_t i = 0; i < dofs.size(); ++i) u += jacobian.col(i).head<2>() * q(dofs[i]);
   return u;
 }
 

@@ -459,13 +459,18 @@ Eigen::VectorXd GearTrainModel::meshVector(int mesh) const {
 
 Eigen::MatrixXd GearTrainModel::nonlinearVectors() const {
   const int r = static_cast<int>(meshes_.size());
-  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(dof_count_, r + 2 * clearance_bearings_.size());
+  int columns = r;
+  // 2 coordinates per bearing; 5 for a full-DOF rolling bearing's full law (bearing_law.h).
+  for (const TrainClearanceBearing& cb : clearance_bearings_) columns += cb.jacobian.rows();
+  Eigen::MatrixXd W = Eigen::MatrixXd::Zero(dof_count_, columns);
   for (int m = 0; m < r; ++m) W.col(m) = meshVector(m);
-  for (std::size_t b = 0; b < clearance_bearings_.size(); ++b) {
-    const TrainClearanceBearing& cb = clearance_bearings_[b];
+  int first = r;
+  for (const TrainClearanceBearing& cb : clearance_bearings_) {
+    const auto width = cb.jacobian.rows();
     for (std::size_t i = 0; i < cb.dofs.size(); ++i) {
-      W.block(cb.dofs[i], r + 2 * b, 1, 2) += cb.jacobian.col(i).transpose();
+      W.block(cb.dofs[i], first, 1, width) += cb.jacobian.col(i).transpose();
     }
+    first += width;
   }
   return W;
 }

@@ -75,13 +75,10 @@ void GearTrainModel::addRollingBearing(const TrainBearingSpec& b, const std::str
                          {b.c_torsion, "c_torsion", "N m s/rad"}}) {
     detail::requireNonNegative(v.value, key + "." + v.name, v.unit);
   }
-  if ((b.full_law || b.nonlinear_law) && spec_.dofs != TrainDofs::kPlanar) {
+  if ((b.full_law || b.nonlinear_law) && spec_.dofs == TrainDofs::kTorsional) {
     throw InputError(key + ".model", "\"nonlinear\"",
-                     fmt::format("\"linearised\" with gearbox.dofs = \"{}\": the full bearing law "
-                                 "in the nonlinear analyses acts on (u_y, u_z) with planar DOFs "
-                                 "only (the axial and tilt rows of a full-DOF bearing are not "
-                                 "nonlinear coordinates of the harmonic balance)",
-                                 toString(spec_.dofs)));
+                     "\"linearised\" with gearbox.dofs = \"torsional\": the full bearing law "
+                     "acts on the bearing's translations and tilts (planar or full DOFs)");
   }
   if (spec_.dofs == TrainDofs::kTorsional) {
     warnings_.push_back(fmt::format(
@@ -122,10 +119,12 @@ void GearTrainModel::addRollingBearing(const TrainBearingSpec& b, const std::str
     TrainClearanceBearing cb;
     cb.name = b.name;
     cb.dofs = dofs;
-    cb.jacobian = J.topRows(2);
+    // Planar DOFs: (u_y, u_z), the axial and tilt rows held; full DOFs: all five coordinates.
+    cb.jacobian =
+        spec_.dofs == TrainDofs::kFull ? Eigen::MatrixXd(J) : Eigen::MatrixXd(J.topRows(2));
     cb.clearance = std::max(0.0, 0.5 * b.nonlinear_law->geometry().clearance);
     cb.rolling = b.nonlinear_law;
-    cb.linear = k.topLeftCorner<2, 2>();
+    cb.linear = k.topLeftCorner<2, 2>();  // full DOFs: the whole k, in K (bearing_law.h)
     clearance_bearings_.push_back(std::move(cb));
   }
   if (b.rolling) {

@@ -20,6 +20,7 @@
 #include "geardyn/stiffness/api_stiffness.h"
 #include "support/numeric_assertions.h"
 #include "system/nonlinear_trains.h"
+#include "system/rolling_bearing_law_trains.h"
 #include "system/rolling_bearing_trains.h"
 
 namespace geardyn {
@@ -28,40 +29,9 @@ namespace {
 using namespace testing::nonlinear;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-/// The spur pair of train_bearing_clearance_test (planar DOFs, 25/53 teeth of 3 mm, a linear
-/// mesh, gravity, 10 N m: ~290 N on the pinion bearing), the pinion shaft on a 6208-like
-/// deep-groove ball bearing (9 balls of 12.7 mm) with diametral clearance s_r and its full law,
-/// linear damping 300 N s/m; the gear shaft on a linear bearing. The transmission error is
-/// `te` × (6, 2) µm; `smooth`: the Fourier k(φ), else a constant 3e8 N/m.
-GearTrainSpec rollingPair(double s_r, double te, bool smooth) {
-  GearTrainSpec spec = singlePair(0.0);
-  spec.dofs = TrainDofs::kPlanar;
-  spec.shafts[0].mass = 1.5;
-  spec.shafts[1].mass = 4.0;
-  TrainMeshSpec& mesh = spec.meshes[0];
-  mesh.contact = {};
-  if (!smooth) mesh.stiffness = std::make_shared<ConstantMeshStiffness>("constant", 3e8, 1.6);
-  mesh.transmission_error = {};
-  mesh.transmission_error.addFourier({6e-6 * te, 2e-6 * te}, {0.2, -0.4});
-  spec.gravity = 9.81;
-  TrainBearingSpec pinion{"pinion_bearing", "pinion_shaft"};
-  pinion.cyy = pinion.czz = 300.0;
-  RollingBearingGeometry g = testing::deepGroove6208()->geometry();
-  g.clearance = s_r;
-  pinion.rolling = std::make_shared<const RollingBearing>(g);
-  pinion.full_law = true;
-  TrainBearingSpec gear{"gear_bearing", "gear_shaft", "", 3e8, 3e8};
-  gear.cyy = gear.czz = 600.0;
-  spec.bearings = {pinion, gear};
-  spec.operating.input_torque = 10.0;
-  return spec;
-}
-
-/// The train the nonlinear analyses run: linearised at its nonlinear static deflection, the
-/// full-law bearing a nonlinear coordinate pair.
+using testing::rollingPair;
 GearTrainModel linearised(const GearTrainSpec& spec) {
-  const GearTrainModel model(spec);
-  return model.linearisedAt(solveTrainStatic(model, model.inputSpeed()).displacement);
+  return testing::linearisedAtStatics(spec);
 }
 
 /// The balance's solution at the operating speed from its starting guess (H harmonics, 16 H
@@ -219,12 +189,7 @@ TEST(RollingBearingLaw, HarmonicBalanceAgreesWithNewmark) {
     ASSERT_TRUE(p.stable) << f;  // the branch is unstable between 2118 and 2221 Hz
     const Eigen::VectorXd rho = hbm.bearingDisplacements(p.q).rowwise().norm();
     const Eigen::MatrixXd d = hbm.meshDeflections(p.q);
-    auto [q0, v0] = hbm.initialState(p);
-    TrainNonlinearTimeOptions newmark;
-    newmark.steps_per_mesh_period = 512;
-    newmark.steady_tolerance = 1e-8;
-    const TrainNonlinearTimeResponse r =
-        solveTrainNonlinearTime(model, hbm.inputSpeed(kTwoPi * f), newmark, q0, v0);
+    const TrainNonlinearTimeResponse r = testing::newmarkOnBalance(model, hbm, p);
     EXPECT_EQ(r.status, "steady_state") << r.message;
     const double radial =
         std::abs(r.bearingRadialPeakToPeak(0) / (rho.maxCoeff() - rho.minCoeff()) - 1);
@@ -239,12 +204,10 @@ TEST(RollingBearingLaw, HarmonicBalanceAgreesWithNewmark) {
   std::printf("worst relative p2p difference HBM vs Newmark: %.2e\n", worst);
 }
 
-/// The option's limits name the key: full DOFs (the axial and tilt rows are not nonlinear
-/// coordinates of the balance).
-TEST(RollingBearingLaw, FullDofsAreRefusedNamingTheKey) {
+/// The option's limit names the key: torsional DOFs (the law acts on translations and tilts).
+TEST(RollingBearingLaw, TorsionalDofsAreRefusedNamingTheKey) {
   GearTrainSpec spec = rollingPair(15e-6, 1.0, true);
-  spec.dofs = TrainDofs::kFull;
-  for (TrainShaftSpec& shaft : spec.shafts) shaft.diametral_inertia = 1e-3;
+  spec.dofs = TrainDofs::kTorsional;
   try {
     const GearTrainModel model(spec);
     FAIL() << "accepted";

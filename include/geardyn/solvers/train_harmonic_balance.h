@@ -28,11 +28,13 @@
 #include <fftw3.h>
 
 #include <Eigen/Dense>
+#include <array>
 #include <complex>
 #include <utility>
 #include <vector>
 
 #include "geardyn/solvers/continuation.h"
+#include "geardyn/system/bearing_law.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/train_tooth_pairs.h"
 
@@ -60,9 +62,13 @@ class TrainHarmonicBalance final : public ContinuationProblem {
 
   int size() const override { return r_ * n_; }
   int meshCount() const noexcept { return meshes_; }
-  /// Clearance bearings (model.clearanceBearings()); their (u_y, u_z) follow the meshes' δ in u.
+  /// Clearance bearings (model.clearanceBearings()); their (u_y, u_z) follow the meshes' δ in u
+  /// (a full-DOF rolling bearing's five coordinates (u_y, u_z, u_x, θ_y, θ_z)).
   int bearingCount() const noexcept { return bearings_; }
-  /// Nonlinear coordinates r = meshes + 2 × clearance bearings (u holds r blocks of 2H + 1).
+  /// The first coordinate of clearance bearing b (its width() follow).
+  int bearingCoordinate(int b) const { return bearing_first_[b]; }
+  /// Nonlinear coordinates r = meshes + Σ widths of the clearance bearings (2 each, 5 for a
+  /// full-DOF rolling bearing; u holds r blocks of 2H + 1).
   int coordinateCount() const noexcept { return r_; }
   int harmonics() const noexcept { return h_; }
   int samples() const noexcept { return samples_; }
@@ -123,8 +129,12 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   Eigen::MatrixXd V_, rigid_, elastic_;  // V_: W = [V, bearing columns]; rigid_: M × modes
   Eigen::MatrixXd k_, e_, slope_;        // [sample, mesh]
   Eigen::MatrixXd force_, delta_;        // f̃ and the coordinates [sample, coordinate]
-  Eigen::MatrixXd bearing_slope_;        // ∂f̃/∂u column-major [sample, 4 × bearing]
-  Eigen::MatrixXd rate_coefficients_;    // de/dφ per mesh, real layout [coef, mesh]
+  Eigen::MatrixXd bearing_slope_;      // ∂f̃/∂u column-major per bearing [sample, Σ width²]
+  std::vector<TrainBearingLaw> laws_;  // per clearance bearing: its law over its coordinates
+  std::vector<int> bearing_first_;     // per bearing: its first coordinate
+  // Every entry of the bearings' slopes: (coordinate i, coordinate j, column of bearing_slope_).
+  std::vector<std::array<int, 3>> bearing_blocks_;
+  Eigen::MatrixXd rate_coefficients_;  // de/dφ per mesh, real layout [coef, mesh]
   // Tooth-pair elements per mesh at the samples (no elements: k g).
   std::vector<ToothPairTable> tooth_pairs_;
   bool linearized_ = false;

@@ -36,6 +36,7 @@
 #include <string>
 
 #include "geardyn/solvers/newmark.h"
+#include "geardyn/system/bearing_law.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/train_tooth_pairs.h"
 
@@ -69,7 +70,8 @@ struct TrainNonlinearTimeResponse {
   Eigen::MatrixXd displacement;     ///< q at those times (rows: samples, cols: DOFs)
   Eigen::MatrixXd mesh_deflection;  ///< δ_m (rows: samples, cols: meshes) [m]
   Eigen::MatrixXd mesh_force;  ///< k g(δ − e); tooth pairs: Σ_j k_j max(0, δ − e − g_j) [N]
-  /// (u_y, u_z) of every clearance bearing (cols: y then z of bearing 0, 1, …) [m].
+  /// (u_y, u_z) of every clearance bearing (cols: y then z of bearing 0, 1, …; a full-DOF
+  /// rolling bearing's radial pair) [m].
   Eigen::MatrixXd bearing_displacement;
   double period = 0.0;       ///< common period [s]
   int periods = 0;           ///< common periods integrated
@@ -102,8 +104,12 @@ class TrainNonlinearNewmark {
   /// Steps taken again in halves since construction (all levels).
   long long refinedSteps() const noexcept { return refined_; }
   const Eigen::VectorXd& displacement() const noexcept { return q_; }
+  const Eigen::VectorXd& velocity() const noexcept { return v_; }
+  const Eigen::VectorXd& acceleration() const noexcept { return a_; }
+  /// Mesh m's force k g(δ − e) (tooth pairs: Σ_j k_j max(0, δ − e − g_j)) at the last step [N].
+  double meshForce(int mesh) const;
   /// The nonlinear coordinates: the mesh deflections δ, then (u_y, u_z) of every clearance
-  /// bearing [m].
+  /// bearing (a full-DOF rolling bearing: its five (u_y, u_z, u_x, θ_y, θ_z)) [m, rad].
   const Eigen::VectorXd& coordinates() const noexcept { return delta_; }
   /// f̃ = k g(δ − e) − k̄ δ of every mesh at the time of the last meshState, then f(u) − k u of
   /// every clearance bearing; ∂f̃/∂(δ, u) (block diagonal; only its blocks written) in *slope.
@@ -139,6 +145,8 @@ class TrainNonlinearNewmark {
   const GearTrainModel& model_;
   double speed_, gamma_, t_ = 0.0;
   int meshes_ = 0, jump_levels_ = 0, contact_levels_ = 0;
+  std::vector<TrainBearingLaw> laws_;  // per clearance bearing: its law (bearing_law.h)
+  std::vector<int> bearing_first_;     // per clearance bearing: its first nonlinear coordinate
   long long refined_ = 0;
   std::vector<Level> levels_;                // time_step / 2^l
   std::vector<Saved> saved_;                 // per level but the finest
