@@ -8,10 +8,10 @@
 ///
 ///   D(ω)⁻¹ W = Φ_q diag(1 / (iω − λ_k)) Y,   Y = Φ⁻¹ [0; M⁻¹ W / s],   B(ω) = Wᵀ D(ω)⁻¹ W,
 ///
-/// (the state-space modal expansion of the receptance, e.g. Tisseur & Meerbergen 2001, SIAM
-/// Review 43(2), §3.3–3.4, eq. 3.5 with the linearisation of §3.4), O(2n r²) per frequency
-/// instead of an O(n³) factorisation. Rigid-body modes R (K R = 0, M-orthonormal) would make A
-/// defective at λ = 0; they are shifted and damped, D̃(ω) = D(ω) + (σ + iω√σ)(MR)(MR)ᵀ, which
+/// (the state-space modal expansion of the receptance through the first-order linearisation of
+/// the quadratic eigenvalue problem; Tisseur & Meerbergen 2001, SIAM Review 43(2)), O(2n r²) per
+/// frequency instead of an O(n³) factorisation. Rigid-body modes R (K R = 0, M-orthonormal) would
+/// make A defective at λ = 0; they are shifted and damped, D̃(ω) = D(ω) + (σ + iω√σ)(MR)(MR)ᵀ, which
 /// leaves D(ω)⁻¹W unchanged for ω ≠ 0 when RᵀC = 0 and RᵀW = 0: then
 /// Rᵀ M D⁻¹W = −Rᵀ D D⁻¹ W / ω² = 0, so D̃ D⁻¹ W = W. Internal (the torus balance, train_torus.cpp).
 
