@@ -13,11 +13,12 @@
 // iterations), box 29.2 ms (2295 tones), the estimate 55 ms per sweep: 200 speeds ≈ 3.4 s of
 // CPU on one thread (the common period at the derived H = 1562 is not run: r(2H + 1) = 6250
 // dense unknowns, ~10³ times the 710 case).
-// After the modal compliances, the workspaces and |z|² pivoting (27 Nov 2026, load average 11):
-// torus at L = 10 2.72 ms; default settings product 12.5 ms, box 17.5 ms per fresh speed; the
-// default sweep of 200 speeds on one thread 2599 ms fresh and factorised, 2361 ms on one
-// workspace (7.36 GMRES iterations per speed instead of 9.37), 2028 ms with the modal
-// compliances too (the default); the estimate 57 ms.
+// After the modal compliances, the workspaces, |z|² pivoting and the kept line preconditioner
+// (27 Nov 2026, load average 10): default settings product 12.3 ms, box 17.6 ms per fresh
+// speed; the default sweep of 200 speeds on one thread 2282 ms fresh and factorised, 2119 ms
+// on one workspace (7.36 GMRES iterations per speed instead of 9.37), 1718 ms with the modal
+// compliances too, 1494 ms with the line preconditioner kept over speeds (the default; 8.68
+// iterations); the estimate 57 ms.
 // Run alone: cmake --build build --target geardyn_torus_bench && build/bench/geardyn_torus_bench
 
 #include <benchmark/benchmark.h>
@@ -124,11 +125,13 @@ BENCHMARK(BM_TorusDerivedPerSpeed)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond
 // The default sweep of `forced` on the hunting-tooth reducer on one thread: every one of its
 // speeds in ascending order (the solver and the estimate set up outside the timing); the
 // time per iteration is the whole sweep's CPU. range(0): 0, fresh solves with D factorised per
-// tone pair; 1, the same on one workspace (buffers reused, GMRES from the previous speeds);
-// 2, the workspace and the modal compliances (the default, what `forced` runs per thread).
+// tone pair and the line preconditioner factorised per speed; 1, the same on one workspace
+// (buffers reused, GMRES from the previous speeds); 2, with the modal compliances too; 3, and the
+// line preconditioner kept over speeds (the default, what `forced` runs per thread).
 void BM_TorusDerivedSweep(benchmark::State& state) {
   DefaultForced d = defaultForced(TorusTruncation::kProduct);
-  d.options.modal_compliance = state.range(0) == 2;
+  d.options.modal_compliance = state.range(0) >= 2;
+  d.options.preconditioner_reuse_iterations = state.range(0) == 3 ? 2 : -1;
   const TrainTorusSolver solver(d.model, d.options);
   int iterations = 0;
   for (auto _ : state) {
@@ -148,6 +151,7 @@ BENCHMARK(BM_TorusDerivedSweep)
     ->Arg(0)
     ->Arg(1)
     ->Arg(2)
+    ->Arg(3)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 

@@ -274,6 +274,17 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
     ke_hat_.push_back(std::move(fourier.ke));
     e_hat_.push_back(std::move(fourier.e));
   }
+  coupling_start_.assign(1, 0);
+  for (std::size_t u = 0; u < static_cast<std::size_t>(T) * r; ++u) {
+    const int m = static_cast<int>(u % r);
+    for (int l = -L; l <= L; ++l) {
+      const int other = neighbourRow(u)[L + l];
+      if (other < 0) continue;
+      coupling_index_.push_back(other * r + m);
+      coupling_value_.push_back(k_hat_[m][L + l]);
+    }
+    coupling_start_.push_back(static_cast<int>(coupling_index_.size()));
+  }
   rigid_ = detail::rigidModes(model.meanStiffnessAt(0.0), model.mass());
   const Eigen::MatrixXd& Komega = model.centripetal();
   rigid_at_every_speed_ = rigid_.cols() == 0 || Komega.size() == 0 ||

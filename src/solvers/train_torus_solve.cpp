@@ -82,6 +82,7 @@ TrainTorusState TrainTorusSolver::solve(double input_speed, TrainTorusWorkspace&
   if (ws.owner != this) {
     ws.owner = this;
     ws.previous_speed[0] = ws.previous_speed[1] = 0.0;
+    ws.factor_speed = 0.0;
   }
   const int k = static_cast<int>(generators_.ratio.size());
   TrainTorusState s;
@@ -177,17 +178,17 @@ void TrainTorusSolver::applyCondensed(detail::TorusWorkspace& ws,
                                       const Eigen::Ref<const Eigen::VectorXcd>& x,
                                       Eigen::VectorXcd& y) const {
   const int r = static_cast<int>(model_.meshes().size());
-  const int L = options_.mesh_harmonics;
   const Eigen::Index T = tones_.cols();
   y.resize(x.size());
   ws.scratch.resize(r);
+  const int* start = coupling_start_.data();
+  const int* index = coupling_index_.data();
+  const Complex* value = coupling_value_.data();
   for (Eigen::Index t = 0; t < T; ++t) {
     for (int m = 0; m < r; ++m) {
-      const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
+      const Eigen::Index u = t * r + m;
       Complex sum = 0.0;
-      for (int l = -L; l <= L; ++l) {
-        if (nb[L + l] >= 0) sum += k_hat_[m][L + l] * x(nb[L + l] * r + m);
-      }
+      for (int e = start[u]; e < start[u + 1]; ++e) sum += value[e] * x(index[e]);
       ws.scratch(m) = sum;
     }
     const Complex* B = ws.B.data() + t * r * r;  // column-major r × r
@@ -205,11 +206,23 @@ void TrainTorusSolver::solveCondensed(detail::TorusWorkspace& ws, TrainTorusStat
   const Eigen::MatrixXcd& B = ws.B;
   // Block-Jacobi preconditioner: the exact solve of every line of one mesh group's tones,
   // rows (n, i) and columns (n − l P_m e_j, m) of the line: B_n(i, m) k̂_{m,l}, and the identity.
+  // Kept from an earlier speed of this thread while the solves with it take at most
+  // preconditioner_reuse_iterations more than the one it was factorised for and the speed is
+  // within 5 % of its
+  // (any preconditioner gives the same δ; a stale one costs iterations, a fresh one ~1/5 of
+  // the solve).
+  const double speed = s.input_speed;
+  const bool refactor =
+      ws.factor_speed == 0.0 || ws.lines.size() != lines_.size() ||
+      std::abs(speed - ws.factor_speed) > 0.05 * std::abs(ws.factor_speed) ||
+      options_.preconditioner_reuse_iterations < 0 ||
+      ws.latest_iterations > ws.factor_iterations + options_.preconditioner_reuse_iterations;
   ws.lines.resize(lines_.size());
   std::size_t longest = 0;
   for (std::size_t id = 0; id < lines_.size(); ++id) {
     const std::vector<int>& line = lines_[id];
     longest = std::max(longest, line.size());
+    if (!refactor) continue;
     Eigen::MatrixXcd& block = ws.lines[id].lu;
     block.setIdentity(static_cast<Eigen::Index>(line.size()),
                       static_cast<Eigen::Index>(line.size()));
@@ -243,7 +256,7 @@ void TrainTorusSolver::solveCondensed(detail::TorusWorkspace& ws, TrainTorusStat
   // The initial guess: the thread's previous solution, linearly extrapolated in speed from the
   // two latest when the step to this speed is no longer than twice theirs.
   const Eigen::Index size = ws.rhs.size();
-  const double speed = s.input_speed, s1 = ws.previous_speed[1], s0 = ws.previous_speed[0];
+  const double s1 = ws.previous_speed[1], s0 = ws.previous_speed[0];
   const bool guess = s1 != 0.0 && ws.previous[1].size() == size;
   if (guess) {
     ws.delta = ws.previous[1];
@@ -258,6 +271,8 @@ void TrainTorusSolver::solveCondensed(detail::TorusWorkspace& ws, TrainTorusStat
   s.iterations = gmres.iterations;
   s.residual = gmres.residual;
   s.linear_solver = "gmres";
+  ws.latest_iterations = gmres.iterations;
+  if (refactor) ws.factor_speed = speed, ws.factor_iterations = gmres.iterations;
   if (!gmres.converged) {
     // The sparse LU of the assembled condensed matrix.
     const int T = static_cast<int>(tones_.cols());

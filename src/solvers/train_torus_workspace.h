@@ -34,6 +34,10 @@ struct TorusWorkspace {
   Eigen::VectorXcd previous[2];
   double previous_speed[2] = {0.0, 0.0};
   std::vector<SmallLu> lines;  // the preconditioner's line factors
+  // The speed they were factorised at, the GMRES iterations of that solve and of the latest
+  // (speed 0: none; TrainTorusOptions::preconditioner_reuse_iterations).
+  double factor_speed = 0.0;
+  int factor_iterations = 0, latest_iterations = 0;
   GmresWorkspace gmres;
   Eigen::VectorXcd w, z, scratch;
   // The grid (train_torus_grid.cpp).

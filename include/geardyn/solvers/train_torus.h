@@ -61,6 +61,10 @@ struct TrainTorusOptions {
   /// (detail/modal_compliance.h) when the train has fewer than sparse_dofs DOFs and the
   /// decomposition holds; false: D factorised per tone pair (the reference it is checked with).
   bool modal_compliance = true;
+  /// A thread keeps its line preconditioner over its next speeds (within 5 % of the one it was
+  /// factorised at) while their GMRES solves take at most this many iterations more than that
+  /// speed's; −1: factorised at every speed. Any preconditioner gives the same δ.
+  int preconditioner_reuse_iterations = 2;
   void validate() const;
 };
 
@@ -168,6 +172,10 @@ class TrainTorusSolver {
     return neighbour_.data() + unknown * static_cast<std::size_t>(stride_);
   }
   std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
+  // The stiffness-variation coupling w_{n,m} = Σ_{l≠0} k̂_{m,l} δ_{m, n − l P_m e_j} as
+  // compressed rows per unknown t r + m (speed-independent; the matrix-free product's).
+  std::vector<int> coupling_start_, coupling_index_;
+  std::vector<std::complex<double>> coupling_value_;
   std::vector<std::vector<int>> lines_;  // preconditioner blocks: unknown indices t r + m
   std::vector<int> line_of_, local_of_;  // unknown → its line and its place in it
   Eigen::MatrixXd rigid_;
