@@ -13,6 +13,12 @@
 // iterations), box 29.2 ms (2295 tones), the estimate 55 ms per sweep: 200 speeds ≈ 3.4 s of
 // CPU on one thread (the common period at the derived H = 1562 is not run: r(2H + 1) = 6250
 // dense unknowns, ~10³ times the 710 case).
+// After the modal compliances, the workspaces, |z|² pivoting and the kept line preconditioner
+// (27 Nov 2026, load average 10): default settings product 12.3 ms, box 17.6 ms per fresh
+// speed; the default sweep of 200 speeds on one thread 2282 ms fresh and factorised, 2119 ms
+// on one workspace (7.36 GMRES iterations per speed instead of 9.37), 1718 ms with the modal
+// compliances too, 1494 ms with the line preconditioner kept over speeds (the default; 8.68
+// iterations); the estimate 57 ms.
 // Run alone: cmake --build build --target geardyn_torus_bench && build/bench/geardyn_torus_bench
 
 #include <benchmark/benchmark.h>
@@ -22,9 +28,10 @@
 #include <string>
 
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
-#include "geardyn/solvers/train_truncation.h"
+#include "geardyn/solvers/train_torus_truncation.h"
 
 namespace geardyn {
 namespace {
@@ -77,45 +84,86 @@ BENCHMARK(BM_TorusPerSpeed)
     ->Args({1, 10})
     ->Unit(benchmark::kMillisecond);
 
-// `forced` at its default settings: the derived truncation over the default 200-speed sweep
-// (train_truncation.h) and, range(1) = 1, the product index set weighted by its estimate (the
-// default), 0: the box of the same N_j; one speed (the operating speed).
-void BM_TorusDerivedPerSpeed(benchmark::State& state) {
-  const GearTrainModel model(gearbox(kTrains[state.range(0)]));
+// What `geardyn train examples/train_hunting_tooth_reducer.toml` runs in [forced]: its analysis
+// file's speeds (config::forcedSpeedsFromConfig: 200 speeds, 0.1–1.5 × the operating speed),
+// the truncation estimate over them and the torus options it gives (train_torus_truncation.h).
+struct DefaultForced {
+  GearTrainModel model;
   std::vector<double> speeds;
-  for (int i = 0; i < 200; ++i) speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / 199.0));
-  const MeshHarmonicsEstimate e = estimateMeshHarmonics(model, speeds);
+  MeshHarmonicsEstimate estimate;
   TrainTorusOptions options;
-  options.mesh_harmonics = e.harmonics;
-  options.per_mesh_harmonics = e.per_mesh;
-  options.group_harmonics = std::max(100, e.harmonics);
-  if (state.range(1) == 1) {
-    options.truncation = TorusTruncation::kProduct;
-    options.mesh_order_weights = e.envelope;
-  }
-  const TrainTorusSolver solver(model, options);
+};
+DefaultForced defaultForced(TorusTruncation truncation) {
+  const config::Config analysis = config::loadConfigFile(
+      GEARDYN_SOURCE_DIR "/examples/train_hunting_tooth_reducer.toml", config::trainSchema(false));
+  DefaultForced d{GearTrainModel(gearbox(kTrains[0])), {}, {}, {}};
+  d.speeds = config::forcedSpeedsFromConfig(analysis, d.model.inputSpeed());
+  d.estimate = estimateMeshHarmonics(d.model, d.speeds);
+  d.options = torusOptionsFromEstimate(d.estimate, config::trainTorusOptionsFromConfig(analysis),
+                                       truncation);
+  return d;
+}
+
+// `forced` at its default settings on the hunting-tooth reducer, one speed (the operating
+// speed); range(0) = 1: the product index set weighted by the estimate (the default), 0: the
+// box of the same N_j.
+void BM_TorusDerivedPerSpeed(benchmark::State& state) {
+  const DefaultForced d =
+      defaultForced(state.range(0) == 1 ? TorusTruncation::kProduct : TorusTruncation::kBox);
+  const TrainTorusSolver solver(d.model, d.options);
   int iterations = 0;
   for (auto _ : state) {
-    auto s = solver.solve(model.inputSpeed());
+    auto s = solver.solve(d.model.inputSpeed());
     iterations = s.iterations;
     benchmark::DoNotOptimize(s.harmonic.data());
   }
   state.counters["tones"] = solver.toneCount();
   state.counters["gmres_iterations"] = iterations;
 }
-BENCHMARK(BM_TorusDerivedPerSpeed)->Args({0, 1})->Args({0, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TorusDerivedPerSpeed)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
-// The truncation estimate itself over the default 200 speeds (once per sweep).
-void BM_TruncationEstimate(benchmark::State& state) {
-  const GearTrainModel model(gearbox(kTrains[state.range(0)]));
-  std::vector<double> speeds;
-  for (int i = 0; i < 200; ++i) speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / 199.0));
+// The default sweep of `forced` on the hunting-tooth reducer on one thread: every one of its
+// speeds in ascending order (the solver and the estimate set up outside the timing); the
+// time per iteration is the whole sweep's CPU. range(0): 0, fresh solves with D factorised per
+// tone pair and the line preconditioner factorised per speed; 1, the same on one workspace
+// (buffers reused, GMRES from the previous speeds); 2, with the modal compliances too; 3, and the
+// line preconditioner kept over speeds (the default, what `forced` runs per thread).
+void BM_TorusDerivedSweep(benchmark::State& state) {
+  DefaultForced d = defaultForced(TorusTruncation::kProduct);
+  d.options.modal_compliance = state.range(0) >= 2;
+  d.options.preconditioner_reuse_iterations = state.range(0) == 3 ? 2 : -1;
+  const TrainTorusSolver solver(d.model, d.options);
+  int iterations = 0;
   for (auto _ : state) {
-    auto e = estimateMeshHarmonics(model, speeds);
+    iterations = 0;
+    TrainTorusWorkspace workspace;
+    for (double speed : d.speeds) {
+      auto s = state.range(0) == 0 ? solver.solve(speed) : solver.solve(speed, workspace);
+      iterations += s.iterations;
+      benchmark::DoNotOptimize(s.harmonic.data());
+    }
+  }
+  state.counters["speeds"] = static_cast<double>(d.speeds.size());
+  state.counters["gmres_iterations_per_speed"] =
+      static_cast<double>(iterations) / static_cast<double>(d.speeds.size());
+}
+BENCHMARK(BM_TorusDerivedSweep)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+// The truncation estimate itself over the default speeds (once per sweep).
+void BM_TruncationEstimate(benchmark::State& state) {
+  const DefaultForced d = defaultForced(TorusTruncation::kProduct);
+  for (auto _ : state) {
+    auto e = estimateMeshHarmonics(d.model, d.speeds);
     benchmark::DoNotOptimize(e.per_mesh.data());
   }
 }
-BENCHMARK(BM_TruncationEstimate)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TruncationEstimate)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace geardyn

@@ -23,7 +23,7 @@
 #include "geardyn/solvers/train_element_orders.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus.h"
-#include "geardyn/solvers/train_truncation.h"
+#include "geardyn/solvers/train_torus_truncation.h"
 #include "geardyn/units.h"
 #include "torus_tones.h"
 #include "train_housing_analysis.h"
@@ -73,7 +73,9 @@ ForcedPoint pointOf(TrainTorusState&& s) {
 }
 
 /// Every speed's torus steady state (speed 0 skipped) on the worker threads (context.threads,
-/// 0: all hardware threads; each takes the next speed), progress reported as speeds finish.
+/// 0: all hardware threads; each takes the next speed in ascending order with its own
+/// workspace, so that its GMRES starts from its previous speeds), progress reported as speeds
+/// finish.
 std::vector<ForcedPoint> solveTorusSpeeds(const TrainTorusSolver& solver,
                                           const std::vector<double>& speeds,
                                           const AnalysisContext& context,
@@ -87,9 +89,10 @@ std::vector<ForcedPoint> solveTorusSpeeds(const TrainTorusSolver& solver,
   std::mutex lock;
   std::exception_ptr failure;
   const auto work = [&] {
+    TrainTorusWorkspace workspace;
     for (std::size_t i = next++; i < speeds.size(); i = next++) {
       try {
-        if (speeds[i] != 0.0) points[i] = pointOf(solver.solve(speeds[i]));
+        if (speeds[i] != 0.0) points[i] = pointOf(solver.solve(speeds[i], workspace));
       } catch (...) {
         const std::lock_guard<std::mutex> guard(lock);
         if (!failure) failure = std::current_exception();
@@ -203,19 +206,17 @@ void writeOds(const GearTrainModel& model, const std::function<OdsShapes(double)
 
 /// The derived truncation (train_truncation.h) into both solvers' options, and on the torus the
 /// product index set weighted by its estimate unless forced.torus_truncation says "box" or
-/// "diamond"; returns L_m per mesh.
+/// "diamond" (train_torus_truncation.h); returns L_m per mesh.
 std::vector<int> deriveTruncation(const GearTrainModel& model, const std::vector<double>& speeds,
                                   const config::Config& analysis, TrainSteadyOptions& steady,
                                   TrainTorusOptions& torus_options) {
   const MeshHarmonicsEstimate estimate = estimateMeshHarmonics(model, speeds);
-  steady.mesh_harmonics = torus_options.mesh_harmonics = estimate.harmonics;
-  torus_options.per_mesh_harmonics = estimate.per_mesh;
-  torus_options.group_harmonics = std::max(torus_options.group_harmonics, estimate.harmonics);
+  steady.mesh_harmonics = estimate.harmonics;
   const std::string truncation = analysis.string("forced.torus_truncation");
-  if (truncation != "box" && truncation != "diamond") {
-    torus_options.truncation = TorusTruncation::kProduct;
-    torus_options.mesh_order_weights = estimate.envelope;
-  }
+  torus_options = torusOptionsFromEstimate(estimate, torus_options,
+                                           truncation == "box"       ? TorusTruncation::kBox
+                                           : truncation == "diamond" ? TorusTruncation::kDiamond
+                                                                     : TorusTruncation::kProduct);
   return estimate.per_mesh;
 }
 
@@ -252,8 +253,7 @@ Json torusJson(const GearTrainModel& model, const TrainTorusSolver& solver,
 void runTrainForced(const GearTrainModel& model, const config::Config& analysis,
                     AnalysisResult& result, io::RunSummary& summary, std::string& text,
                     const AnalysisContext& context) {
-  runTrainForcedAt(model, analysis,
-                   config::speedRangeFromConfig(analysis, "forced", model.inputSpeed(), 0.1),
+  runTrainForcedAt(model, analysis, config::forcedSpeedsFromConfig(analysis, model.inputSpeed()),
                    result, summary, text, context);
 }
 

@@ -161,4 +161,8 @@ std::vector<double> speedRangeFromConfig(const config::Config& analysis, const s
   return speeds;
 }
 
+std::vector<double> forcedSpeedsFromConfig(const config::Config& analysis, double operating) {
+  return speedRangeFromConfig(analysis, "forced", operating, 0.1);
+}
+
 }  // namespace geardyn::config

@@ -13,18 +13,49 @@ using Complex = std::complex<double>;
 GmresResult preconditionedGmres(const ComplexOperator& apply, const ComplexOperator& precondition,
                                 const Eigen::VectorXcd& b, Eigen::VectorXcd& x, double tolerance,
                                 int restart, int max_iterations) {
+  GmresWorkspace workspace;
+  return preconditionedGmres(apply, precondition, b, x, tolerance, restart, max_iterations, false,
+                             workspace);
+}
+
+GmresResult preconditionedGmres(const ComplexOperator& apply, const ComplexOperator& precondition,
+                                const Eigen::VectorXcd& b, Eigen::VectorXcd& x, double tolerance,
+                                int restart, int max_iterations, bool initial_guess,
+                                GmresWorkspace& ws) {
   GmresResult result;
   const Eigen::Index n = b.size();
-  x = Eigen::VectorXcd::Zero(n);
   const double b_norm = b.norm();
+  if (!initial_guess || x.size() != n || b_norm == 0.0) x = Eigen::VectorXcd::Zero(n);
   if (b_norm == 0.0) {
     result.converged = true;
     return result;
   }
-  Eigen::MatrixXcd Q(n, restart + 1);  // Arnoldi basis of A P⁻¹
-  Eigen::MatrixXcd H = Eigen::MatrixXcd::Zero(restart + 1, restart);
-  Eigen::VectorXcd g(restart + 1), cs(restart), sn(restart), z(n), w(n), r = b;
-  double r_norm = b_norm;
+  ws.Q.resize(n, restart + 1);  // Arnoldi basis of A P⁻¹
+  ws.H.resize(restart + 1, restart);
+  ws.g.resize(restart + 1);
+  ws.cs.resize(restart);
+  ws.sn.resize(restart);
+  ws.z.resize(n);
+  ws.w.resize(n);
+  Eigen::MatrixXcd &Q = ws.Q, &H = ws.H;
+  Eigen::VectorXcd &g = ws.g, &cs = ws.cs, &sn = ws.sn, &z = ws.z, &w = ws.w, &r = ws.r;
+  if (x.isZero(0.0)) {
+    r = b;
+  } else {
+    apply(x, w);
+    r = b - w;
+  }
+  double r_norm = r.norm();
+  if (r_norm > b_norm) {  // a guess worse than none
+    x.setZero();
+    r = b;
+    r_norm = b_norm;
+  }
+  result.residual = r_norm / b_norm;
+  if (result.residual <= tolerance) {
+    result.converged = true;
+    return result;
+  }
   while (result.iterations < max_iterations) {
     H.setZero();
     g.setZero();
@@ -46,7 +77,7 @@ GmresResult preconditionedGmres(const ComplexOperator& apply, const ComplexOpera
         H(i + 1, j) = -sn(i) * H(i, j) + cs(i) * H(i + 1, j);
         H(i, j) = t;
       }
-      const double h = std::hypot(std::abs(H(j, j)), std::abs(H(j + 1, j)));
+      const double h = std::sqrt(std::norm(H(j, j)) + std::norm(H(j + 1, j)));
       cs(j) = h > 0.0 ? H(j, j) / h : Complex(1.0);
       sn(j) = h > 0.0 ? H(j + 1, j) / h : Complex(0.0);
       H(j, j) = h;
@@ -59,9 +90,10 @@ GmresResult preconditionedGmres(const ComplexOperator& apply, const ComplexOpera
       }
     }
     // x += P⁻¹ Q y with H y = g (upper triangular j × j).
-    const Eigen::VectorXcd y =
-        H.topLeftCorner(j, j).triangularView<Eigen::Upper>().solve(g.head(j));
-    precondition(Q.leftCols(j) * y, z);
+    ws.y = g.head(j);
+    H.topLeftCorner(j, j).triangularView<Eigen::Upper>().solveInPlace(ws.y);
+    r.noalias() = Q.leftCols(j) * ws.y;
+    precondition(r, z);
     x += z;
     apply(x, w);
     r = b - w;

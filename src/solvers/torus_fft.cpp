@@ -74,23 +74,31 @@ std::vector<TorusLine> torusLines(const Eigen::MatrixXcd& half, Eigen::Index col
   std::vector<TorusLine> lines;
   const int k = static_cast<int>(K.size());
   Eigen::VectorXi n(k);
-  for (long long i = 0; i < fft.halfSize(); ++i) {
+  // Entry i's frequency when it is a line (|n_j| <= K_j, n·g > 0 or the positive one of ±n
+  // at n_0 = 0), else 0; |c|² throughout (no hypot per entry).
+  const auto lineFrequency = [&](long long i) {
     fft.toneAt(i, n);
-    bool inside = true;
     double frequency = 0.0;
     for (int j = 0; j < k; ++j) {
-      inside = inside && std::abs(n(j)) <= K[j];
+      if (std::abs(n(j)) > K[j]) return 0.0;
       frequency += n(j) * g[j];
     }
-    if (!inside || std::abs(frequency) <= 1e-9 * g[0] || (n(0) == 0 && frequency < 0.0)) continue;
-    if (frequency < 0.0) n = -n, frequency = -frequency;
-    lines.push_back(
-        {std::vector<int>(n.data(), n.data() + k), frequency, 2.0 * std::abs(half(i, column))});
+    if (std::abs(frequency) <= 1e-9 * g[0] || (n(0) == 0 && frequency < 0.0)) return 0.0;
+    return frequency;
+  };
+  double largest2 = 0.0;
+  for (long long i = 0; i < fft.halfSize(); ++i) {
+    const double a2 = std::norm(half(i, column));
+    if (a2 > largest2 && lineFrequency(i) != 0.0) largest2 = a2;
   }
-  double largest = 0.0;
-  for (const TorusLine& line : lines) largest = std::max(largest, line.amplitude);
-  std::erase_if(lines,
-                [&](const TorusLine& line) { return line.amplitude < kLineFloor * largest; });
+  for (long long i = 0; i < fft.halfSize(); ++i) {
+    const double a2 = std::norm(half(i, column));
+    if (a2 < kLineFloor * kLineFloor * largest2) continue;
+    double frequency = lineFrequency(i);
+    if (frequency == 0.0) continue;
+    if (frequency < 0.0) n = -n, frequency = -frequency;
+    lines.push_back({std::vector<int>(n.data(), n.data() + k), frequency, 2.0 * std::sqrt(a2)});
+  }
   std::sort(lines.begin(), lines.end(),
             [](const TorusLine& a, const TorusLine& b) { return a.frequency < b.frequency; });
   return lines;

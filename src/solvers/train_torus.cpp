@@ -1,12 +1,12 @@
 /// Steady state of a linear time-varying gear train on the torus of its mesh phases
 /// (train_torus.h; docs/theory/torus_harmonic_balance.md): generators, tone set, condensed
-/// solve. The grid evaluation and the result tables are in train_torus_grid.cpp.
+/// set and the solver's tables (neighbours, lines, grid). The solve per speed is in
+/// train_torus_solve.cpp, the grid evaluation in train_torus_grid.cpp.
 
 #include "geardyn/solvers/train_torus.h"
 
 #include <fmt/format.h>
 
-#include <Eigen/SparseLU>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -14,7 +14,6 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
-#include "geardyn/solvers/detail/preconditioned_gmres.h"
 #include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 
@@ -23,12 +22,6 @@ namespace {
 
 using Complex = std::complex<double>;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-// GMRES restart length and iteration budget of the condensed system: the line preconditioner
-// leaves only the coupling between mesh groups, which converges in a few tens of iterations
-// away from the sharpest parametric resonances; past the budget the direct LU takes over.
-constexpr int kRestart = 60;
-constexpr int kMaxIterations = 300;
-
 /// Position of tone n in the box Π (2N_j + 1), axis 0 fastest.
 long long boxIndex(const Eigen::Ref<const Eigen::VectorXi>& n, const std::vector<int>& N) {
   long long index = 0, stride = 1;
@@ -281,6 +274,17 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
     ke_hat_.push_back(std::move(fourier.ke));
     e_hat_.push_back(std::move(fourier.e));
   }
+  coupling_start_.assign(1, 0);
+  for (std::size_t u = 0; u < static_cast<std::size_t>(T) * r; ++u) {
+    const int m = static_cast<int>(u % r);
+    for (int l = -L; l <= L; ++l) {
+      const int other = neighbourRow(u)[L + l];
+      if (other < 0) continue;
+      coupling_index_.push_back(other * r + m);
+      coupling_value_.push_back(k_hat_[m][L + l]);
+    }
+    coupling_start_.push_back(static_cast<int>(coupling_index_.size()));
+  }
   rigid_ = detail::rigidModes(model.meanStiffnessAt(0.0), model.mass());
   const Eigen::MatrixXd& Komega = model.centripetal();
   rigid_at_every_speed_ = rigid_.cols() == 0 || Komega.size() == 0 ||
@@ -318,209 +322,22 @@ TrainTorusSolver::TrainTorusSolver(const GearTrainModel& model, const TrainTorus
     points = points / samples_[finest] * (samples_[finest] / 2);
     samples_[finest] /= 2;
   }
+  // Every field on the grid in one transform: the mesh deflections, then the element
+  // deformations (rows vᵀ, then J over each element's DOFs).
   int fields = r;
   for (const TrainElement& e : model.elements()) fields += static_cast<int>(e.jacobian.rows());
+  fields_ = Eigen::MatrixXd::Zero(fields, model.dofCount());
+  for (int m = 0; m < r; ++m) fields_.row(m) = model.meshVector(m).transpose();
+  Eigen::Index row = r;
+  for (const TrainElement& e : model.elements()) {
+    for (std::size_t i = 0; i < e.dofs.size(); ++i) {
+      fields_.block(row, e.dofs[i], e.jacobian.rows(), 1) += e.jacobian.col(i);
+    }
+    row += e.jacobian.rows();
+  }
   if (k > 0) fft_ = std::make_unique<detail::TorusFft>(samples_, fields, r);
 }
 
 TrainTorusSolver::~TrainTorusSolver() = default;
-
-TrainTorusState TrainTorusSolver::solve(double input_speed) const {
-  if (!(std::abs(input_speed) > 0.0) || !std::isfinite(input_speed)) {
-    throw InputError("operating_point.speed_rpm", fmt::format("{:g} rad/s", input_speed),
-                     "a speed != 0: the steady state of a train at rest is its static response");
-  }
-  const GearTrainModel& model = model_;
-  const auto& meshes = model.meshes();
-  const int n = model.dofCount();
-  const int r = static_cast<int>(meshes.size());
-  const int k = static_cast<int>(generators_.ratio.size());
-  const int T = static_cast<int>(tones_.cols());
-  const int L = options_.mesh_harmonics;
-  TrainTorusState s;
-  s.input_speed = input_speed;
-  s.mesh_generator = generators_.mesh_generator;
-  s.mesh_multiple = generators_.mesh_multiple;
-  s.tones = tones_;
-  Eigen::VectorXd g(k);
-  for (int j = 0; j < k; ++j) g(j) = generators_.ratio[j] * std::abs(input_speed);
-  s.generator_frequency.assign(g.data(), g.data() + k);
-  s.tone_frequency = tones_.cast<double>().transpose() * g;
-  const double highest = std::max(s.tone_frequency.cwiseAbs().maxCoeff(), 1e-300);
-
-  const Eigen::MatrixXd Kbar = model.meanStiffnessAt(input_speed);
-  const Eigen::MatrixXd C = model.dampingAt(input_speed);
-  detail::HarmonicBlocks blocks(
-      Kbar, model.mass(), C,
-      rigid_at_every_speed_ ? rigid_ : detail::rigidModes(Kbar, model.mass()),
-      options_.sparse_dofs);
-  Eigen::MatrixXcd V(n, r);
-  for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
-  // The mesh loads of every tone, F_n = F₀ δ_n0 + V φ_n: k e and the mesh dashpot on ė.
-  Eigen::MatrixXcd phi = Eigen::MatrixXcd::Zero(r, T);
-  std::vector<int> position_of(T);
-  for (int m = 0; m < r; ++m) {
-    for (int l = -L; l <= L; ++l) {
-      // The tone l P_m e_j: the neighbour of the zero tone through harmonic −l.
-      const int t = l == 0 ? 0 : neighbourRow(m)[L - l];
-      if (t < 0) continue;
-      const double w = kTwoPi * s.tone_frequency(t);
-      phi(m, t) += ke_hat_[m][L + l] + Complex(0.0, w) * meshes[m].damping * e_hat_[m][L + l];
-    }
-  }
-  // Per tone pair ±n: D(n·ω) factorised once, B_n = Vᵀ D⁻¹ V and D⁻¹V kept for the recovery.
-  std::vector<Eigen::MatrixXcd> B(T), DinvV((T + 1) / 2 + 1);
-  Eigen::VectorXcd rhs(static_cast<Eigen::Index>(T) * r);
-  Eigen::VectorXcd DinvF0;
-  for (int t = 0; t < T; ++t) {
-    if (block_[t] < 0) continue;
-    const double w =
-        std::abs(s.tone_frequency(t)) <= 1e-9 * highest ? 0.0 : kTwoPi * s.tone_frequency(t);
-    blocks.factorize(block_[t], w);
-    DinvV[block_[t]] = blocks.solve(block_[t], V);
-    B[t] = V.transpose() * DinvV[block_[t]];
-    Eigen::VectorXcd b = B[t] * phi.col(t);
-    if (t == 0) {
-      DinvF0 = blocks.solve(0, model.staticLoad().cast<Complex>());
-      b += V.transpose() * DinvF0;
-    }
-    rhs.segment(static_cast<Eigen::Index>(t) * r, r) = b;
-    if (t > 0) {
-      B[negative_[t]] = B[t].conjugate();
-      rhs.segment(static_cast<Eigen::Index>(negative_[t]) * r, r) = b.conjugate();
-    }
-  }
-  // The condensed system δ_n + B_n Σ_m e_m Σ_{l≠0} k̂_{m,l} δ_{m, n − l P_m e_j} = B_n φ_n (+ F₀).
-  const Eigen::VectorXcd delta = solveCondensed(B, rhs, s);
-  recover(s, DinvV, DinvF0, phi, delta);
-  postProcess(s);
-  return s;
-}
-
-void TrainTorusSolver::applyCondensed(const std::vector<Eigen::MatrixXcd>& B,
-                                      const Eigen::VectorXcd& x, Eigen::VectorXcd& y) const {
-  const int r = static_cast<int>(model_.meshes().size());
-  const int L = options_.mesh_harmonics;
-  y.resize(x.size());
-  Eigen::VectorXcd w(r);
-  for (Eigen::Index t = 0; t < static_cast<Eigen::Index>(B.size()); ++t) {
-    for (int m = 0; m < r; ++m) {
-      const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
-      Complex sum = 0.0;
-      for (int l = -L; l <= L; ++l) {
-        if (nb[L + l] >= 0) sum += k_hat_[m][L + l] * x(nb[L + l] * r + m);
-      }
-      w(m) = sum;
-    }
-    y.segment(t * r, r) = x.segment(t * r, r);
-    y.segment(t * r, r).noalias() += B[t] * w;  // no temporary
-  }
-}
-
-Eigen::VectorXcd TrainTorusSolver::solveCondensed(const std::vector<Eigen::MatrixXcd>& B,
-                                                  const Eigen::VectorXcd& rhs,
-                                                  TrainTorusState& s) const {
-  const int r = static_cast<int>(model_.meshes().size());
-  const int L = options_.mesh_harmonics;
-  // Block-Jacobi preconditioner: the exact solve of every line of one mesh group's tones,
-  // rows (n, i) and columns (n − l P_m e_j, m) of the line: B_n(i, m) k̂_{m,l}, and the identity.
-  std::vector<Eigen::PartialPivLU<Eigen::MatrixXcd>> line_lu(lines_.size());
-  for (std::size_t id = 0; id < lines_.size(); ++id) {
-    const std::vector<int>& line = lines_[id];
-    Eigen::MatrixXcd block = Eigen::MatrixXcd::Identity(line.size(), line.size());
-    for (std::size_t a = 0; a < line.size(); ++a) {
-      const int t = line[a] / r, i = line[a] % r;
-      for (int m = 0; m < r; ++m) {
-        const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
-        for (int l = -L; l <= L; ++l) {
-          const int u = nb[L + l] * r + m;
-          if (nb[L + l] < 0 || line_of_[u] != static_cast<int>(id)) continue;
-          block(a, local_of_[u]) += B[t](i, m) * k_hat_[m][L + l];
-        }
-      }
-    }
-    line_lu[id].compute(block);
-  }
-  const detail::ComplexOperator apply = [&](const Eigen::VectorXcd& x, Eigen::VectorXcd& y) {
-    applyCondensed(B, x, y);
-  };
-  std::size_t longest = 0;
-  for (const std::vector<int>& line : lines_) longest = std::max(longest, line.size());
-  Eigen::VectorXcd scratch(static_cast<Eigen::Index>(longest));
-  const detail::ComplexOperator precondition = [&](const Eigen::VectorXcd& x, Eigen::VectorXcd& y) {
-    y.resize(x.size());
-    for (std::size_t id = 0; id < lines_.size(); ++id) {
-      const std::vector<int>& line = lines_[id];
-      auto local = scratch.head(static_cast<Eigen::Index>(line.size()));
-      for (std::size_t a = 0; a < line.size(); ++a) local(a) = x(line[a]);
-      const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu = line_lu[id];
-      local = lu.permutationP() * local;  // in place (Eigen permutes by cycles)
-      lu.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(local);
-      lu.matrixLU().triangularView<Eigen::Upper>().solveInPlace(local);
-      for (std::size_t a = 0; a < line.size(); ++a) y(line[a]) = local(a);
-    }
-  };
-  Eigen::VectorXcd delta;
-  const detail::GmresResult gmres = detail::preconditionedGmres(
-      apply, precondition, rhs, delta, options_.tolerance, kRestart, kMaxIterations);
-  s.iterations = gmres.iterations;
-  s.residual = gmres.residual;
-  s.linear_solver = "gmres";
-  if (!gmres.converged) {
-    // The sparse LU of the assembled condensed matrix.
-    const int T = static_cast<int>(B.size());
-    std::vector<Eigen::Triplet<Complex>> entries;
-    for (int t = 0; t < T; ++t) {
-      for (int i = 0; i < r; ++i) entries.emplace_back(t * r + i, t * r + i, 1.0);
-      for (int m = 0; m < r; ++m) {
-        const int* nb = neighbourRow(static_cast<std::size_t>(t) * r + m);
-        for (int l = -L; l <= L; ++l) {
-          if (nb[L + l] < 0) continue;
-          for (int i = 0; i < r; ++i) {
-            entries.emplace_back(t * r + i, nb[L + l] * r + m, B[t](i, m) * k_hat_[m][L + l]);
-          }
-        }
-      }
-    }
-    Eigen::SparseMatrix<Complex> A(rhs.size(), rhs.size());
-    A.setFromTriplets(entries.begin(), entries.end());
-    A.makeCompressed();
-    Eigen::SparseLU<Eigen::SparseMatrix<Complex>> lu(A);
-    if (lu.info() == Eigen::Success) delta = lu.solve(rhs);
-    s.linear_solver = "direct";
-    s.iterations = 0;
-    s.residual = (A * delta - rhs).norm() / std::max(rhs.norm(), 1e-300);
-  }
-  if (!delta.allFinite()) {
-    throw std::runtime_error(fmt::format(
-        "torus steady state at {:g} rad/s: the condensed harmonic-balance system is singular",
-        s.input_speed));
-  }
-  return delta;
-}
-
-void TrainTorusSolver::recover(TrainTorusState& s, const std::vector<Eigen::MatrixXcd>& DinvV,
-                               const Eigen::VectorXcd& DinvF0, const Eigen::MatrixXcd& phi,
-                               const Eigen::VectorXcd& delta) const {
-  // X_n = D⁻¹ (F_n − V w_n), w_{m,n} = φ_{m,n} − Σ_{l≠0} k̂_{m,l} δ_{m, n − l P_m e_j}.
-  const int n = model_.dofCount();
-  const int r = static_cast<int>(model_.meshes().size());
-  const int T = static_cast<int>(tones_.cols());
-  const int L = options_.mesh_harmonics;
-  s.harmonic.resize(n, T);
-  for (int t = 0; t < T; ++t) {
-    if (block_[t] < 0) continue;
-    Eigen::VectorXcd w = phi.col(t);
-    for (int m = 0; m < r; ++m) {
-      for (int l = -L; l <= L; ++l) {
-        const int other = neighbourRow(static_cast<std::size_t>(t) * r + m)[L + l];
-        if (other >= 0) w(m) -= k_hat_[m][L + l] * delta(other * r + m);
-      }
-    }
-    s.harmonic.col(t) = DinvV[block_[t]] * w;
-    if (t == 0) s.harmonic.col(0) += DinvF0;
-    if (t > 0) s.harmonic.col(negative_[t]) = s.harmonic.col(t).conjugate();
-  }
-}
 
 }  // namespace geardyn

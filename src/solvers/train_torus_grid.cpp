@@ -8,6 +8,7 @@
 
 #include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/train_torus.h"
+#include "train_torus_workspace.h"
 
 namespace geardyn {
 namespace {
@@ -17,33 +18,25 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 }  // namespace
 
-void TrainTorusSolver::postProcess(TrainTorusState& s) const {
+void TrainTorusSolver::postProcess(TrainTorusState& s, detail::TorusWorkspace& ws) const {
   const auto& meshes = model_.meshes();
   const int r = static_cast<int>(meshes.size());
   const int L = options_.mesh_harmonics;
   const detail::TorusFft& fft = *fft_;
   const std::vector<int>& M = fft.samples();
   // Every field on the grid in one transform: the mesh deflections, then the element
-  // deformations (rows of S: vᵀ, then J over each element's DOFs).
-  Eigen::Index rows = r;
-  for (const TrainElement& e : model_.elements()) rows += e.jacobian.rows();
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows, model_.dofCount());
-  for (int m = 0; m < r; ++m) S.row(m) = model_.meshVector(m).transpose();
-  Eigen::Index row = r;
-  for (const TrainElement& e : model_.elements()) {
-    for (std::size_t i = 0; i < e.dofs.size(); ++i) {
-      S.block(row, e.dofs[i], e.jacobian.rows(), 1) += e.jacobian.col(i);
-    }
-    row += e.jacobian.rows();
-  }
-  const Eigen::MatrixXcd C = (S.cast<Complex>() * s.harmonic).transpose();  // tones × fields
-  Eigen::MatrixXcd half = Eigen::MatrixXcd::Zero(fft.halfSize(), rows);
+  // deformations (fields_: rows vᵀ, then J over each element's DOFs).
+  const Eigen::Index rows = fields_.rows();
+  ws.C.noalias() = (fields_.cast<Complex>() * s.harmonic).transpose();  // tones × fields
+  Eigen::MatrixXcd& half = ws.half;
+  half.setZero(fft.halfSize(), rows);
   for (Eigen::Index t = 0; t < s.tones.cols(); ++t) {
-    if (s.tones(0, t) >= 0) half.row(fft.halfIndex(s.tones.col(t))) = C.row(t);
+    if (s.tones(0, t) >= 0) half.row(fft.halfIndex(s.tones.col(t))) = ws.C.row(t);
   }
-  Eigen::MatrixXd fields;
+  Eigen::MatrixXd& fields = ws.fields;
   fft.toGrid(half, fields);
-  Eigen::MatrixXd force(fft.points(), r);
+  Eigen::MatrixXd& force = ws.force;
+  force.resize(fft.points(), r);
   for (int m = 0; m < r; ++m) {
     const TrainMesh& mesh = meshes[m];
     const int j = generators_.mesh_generator[m], P = generators_.mesh_multiple[m];
@@ -67,7 +60,7 @@ void TrainTorusSolver::postProcess(TrainTorusState& s) const {
     s.dynamic_factor.push_back(
         std::abs(mean) > 0.0 ? force.col(m).cwiseAbs().maxCoeff() / std::abs(mean) : 0.0);
   }
-  row = r;
+  Eigen::Index row = r;
   for (const TrainElement& e : model_.elements()) {
     const Eigen::MatrixXd forces =
         e.local_stiffness * fields.middleCols(row, e.jacobian.rows()).transpose();
@@ -80,7 +73,7 @@ void TrainTorusSolver::postProcess(TrainTorusState& s) const {
   for (std::size_t j = 0; j < M.size(); ++j) {
     K.push_back(std::min((M[j] - 1) / 2, 2 * generators_.harmonics[j]));
   }
-  Eigen::MatrixXcd spectrum;
+  Eigen::MatrixXcd& spectrum = ws.spectrum;
   fft.toSpectrum(force, spectrum);
   Eigen::VectorXi n = Eigen::VectorXi::Zero(static_cast<int>(M.size()));
   for (int m = 0; m < r; ++m) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geardyn/config/gearbox_config.h"
+#include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/solvers/train_torus.h"
@@ -25,6 +26,16 @@ inline GearTrainSpec exampleGearbox(const std::string& name) {
       std::string(GEARDYN_SOURCE_DIR "/examples/gearboxes/") + name, config::gearboxSchema());
   std::vector<std::string> warnings;
   return config::gearTrainFromConfig(config, warnings);
+}
+
+/// The speeds `geardyn train` [forced] runs at by default on `model`
+/// (config::forcedSpeedsFromConfig of an analysis file with no [forced] keys: 200 speeds, 0.1–1.5 ×
+/// the operating speed), with `overrides` as --set would give them (e.g. "forced.points=20").
+inline std::vector<double> defaultForcedSpeeds(const GearTrainModel& model,
+                                               const std::vector<std::string>& overrides = {}) {
+  const config::Config analysis =
+      config::parseConfig("", "defaults", config::trainSchema(false), overrides);
+  return config::forcedSpeedsFromConfig(analysis, model.inputSpeed());
 }
 
 struct SpectrumComparison {

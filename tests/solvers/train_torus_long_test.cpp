@@ -7,7 +7,7 @@
 
 #include <numbers>
 
-#include "geardyn/solvers/train_truncation.h"
+#include "geardyn/solvers/train_torus_truncation.h"
 #include "solvers/torus_newmark_comparison.h"
 
 namespace geardyn {
@@ -38,17 +38,9 @@ TEST(TrainTorusLong, NewmarkSpectraAtThreeSpeeds) {
 // stage-1 mesh period.
 TEST(TrainTorusLong, DerivedTruncationAgainstNewmarkAtThreeSpeeds) {
   const GearTrainModel model(testing::exampleGearbox("hunting_tooth_reducer.toml"));
-  std::vector<double> speeds;
-  for (int i = 0; i < 200; ++i) speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / 199.0));
-  const MeshHarmonicsEstimate e = estimateMeshHarmonics(model, speeds);
+  const MeshHarmonicsEstimate e = estimateMeshHarmonics(model, testing::defaultForcedSpeeds(model));
   RecordProperty("derived", fmt::format("{} {}", e.per_mesh[0], e.per_mesh[1]));
-  TrainTorusOptions torus_options;
-  torus_options.mesh_harmonics = e.harmonics;
-  torus_options.per_mesh_harmonics = e.per_mesh;
-  torus_options.group_harmonics = std::max(100, e.harmonics);
-  torus_options.truncation = TorusTruncation::kProduct;
-  torus_options.mesh_order_weights = e.envelope;
-  const TrainTorusSolver torus(model, torus_options);
+  const TrainTorusSolver torus(model, torusOptionsFromEstimate(e, {}));
   RecordProperty("tones", torus.toneCount());
   for (double rpm : {900.0, 1459.0, 2250.0}) {
     const double speed = rpm * 2.0 * std::numbers::pi / 60.0;

@@ -9,6 +9,7 @@
 
 #include <numbers>
 
+#include "geardyn/solvers/train_torus_truncation.h"
 #include "solvers/torus_newmark_comparison.h"
 #include "system/sample_trains.h"
 
@@ -17,13 +18,9 @@ namespace {
 
 constexpr double kRpm = std::numbers::pi / 30.0;
 
+/// The forced analysis's default speeds (0.1–1.5 × the operating speed), `points` of them.
 std::vector<double> forcedSpeeds(const GearTrainModel& model, int points = 200) {
-  // The forced analysis's default range: 0.1 to 1.5 × the operating speed.
-  std::vector<double> speeds;
-  for (int i = 0; i < points; ++i) {
-    speeds.push_back(model.inputSpeed() * (0.1 + 1.4 * i / (points - 1.0)));
-  }
-  return speeds;
+  return testing::defaultForcedSpeeds(model, {fmt::format("forced.points={}", points)});
 }
 
 // Constant stiffness: the loaded static error W/k + e has exactly the transmission error's
@@ -68,11 +65,8 @@ TEST(TrainTruncation, MonotoneInTheFractionAndCapped) {
 /// The torus balance at the derived truncation over the forced default speeds.
 TrainTorusState derivedTorus(const GearTrainModel& model, double speed) {
   const MeshHarmonicsEstimate e = estimateMeshHarmonics(model, forcedSpeeds(model));
-  TrainTorusOptions options;
-  options.mesh_harmonics = e.harmonics;
-  options.per_mesh_harmonics = e.per_mesh;
-  options.group_harmonics = std::max(100, e.harmonics);
-  return TrainTorusSolver(model, options).solve(speed);
+  return TrainTorusSolver(model, torusOptionsFromEstimate(e, {}, TorusTruncation::kBox))
+      .solve(speed);
 }
 
 // Issue 32's acceptance at the derived default truncation, at the operating speed: every

@@ -52,5 +52,8 @@ TrainRunUpOptions trainRunUpOptionsFromConfig(const config::Config& analysis);
 /// empty or the operating speed is 0 and no maximum is given.
 std::vector<double> speedRangeFromConfig(const config::Config& analysis, const std::string& section,
                                          double operating, double default_min_fraction);
+/// The speeds of `train` [forced] [rad/s]: speedRangeFromConfig of the section with the default
+/// minimum 0.1 × the operating speed (default 200 points, 0.1–1.5 × the operating speed).
+std::vector<double> forcedSpeedsFromConfig(const config::Config& analysis, double operating);
 
 }  // namespace geardyn::config

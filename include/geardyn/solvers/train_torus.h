@@ -30,7 +30,8 @@
 namespace geardyn {
 namespace detail {
 class TorusFft;
-}
+struct TorusWorkspace;
+}  // namespace detail
 
 enum class TorusTruncation { kBox, kDiamond, kProduct };
 
@@ -56,6 +57,14 @@ struct TrainTorusOptions {
   int samples = 0;
   int sparse_dofs = 64;      ///< as TrainSteadyOptions::sparse_dofs
   double tolerance = 1e-13;  ///< GMRES: ‖b − A x‖ <= tolerance ‖b‖ on the condensed system
+  /// B_n = Vᵀ D(n·ω)⁻¹ V of every tone from one modal decomposition of the train per speed
+  /// (detail/modal_compliance.h) when the train has fewer than sparse_dofs DOFs and the
+  /// decomposition holds; false: D factorised per tone pair (the reference it is checked with).
+  bool modal_compliance = true;
+  /// A thread keeps its line preconditioner over its next speeds (within 5 % of the one it was
+  /// factorised at) while their GMRES solves take at most this many iterations more than that
+  /// speed's; −1: factorised at every speed. Any preconditioner gives the same δ.
+  int preconditioner_reuse_iterations = 2;
   void validate() const;
 };
 
@@ -104,6 +113,22 @@ struct TrainTorusState {
   Eigen::MatrixXd displacement(const Eigen::VectorXd& times) const;
 };
 
+/// The buffers of TrainTorusSolver::solve on one thread, reused from speed to speed (no
+/// allocation after the first speed but the returned state), and that thread's latest solutions:
+/// the condensed system's GMRES starts from their extrapolation to the next speed (a sweep in
+/// speed order on one thread; any order is correct, only slower).
+class TrainTorusWorkspace {
+ public:
+  TrainTorusWorkspace();
+  ~TrainTorusWorkspace();
+  TrainTorusWorkspace(TrainTorusWorkspace&&) noexcept;
+  TrainTorusWorkspace& operator=(TrainTorusWorkspace&&) noexcept;
+
+ private:
+  friend class TrainTorusSolver;
+  std::unique_ptr<detail::TorusWorkspace> impl_;
+};
+
 /// The torus solver of one model: generators, tone set and the meshes' Fourier coefficients
 /// once; per speed one factorisation of D(n·ω) per tone pair ±n and the condensed solve.
 /// Thread-safe for concurrent solve() calls.
@@ -114,22 +139,25 @@ class TrainTorusSolver {
   TrainTorusSolver(const TrainTorusSolver&) = delete;
   TrainTorusSolver& operator=(const TrainTorusSolver&) = delete;
   TrainTorusState solve(double input_speed) const;
+  /// The same with the buffers and the previous solutions of `workspace` (one per thread).
+  TrainTorusState solve(double input_speed, TrainTorusWorkspace& workspace) const;
   const TrainTorusGenerators& generators() const noexcept { return generators_; }
   int toneCount() const noexcept { return static_cast<int>(tones_.cols()); }
 
  private:
-  /// y = A x for the condensed matrix A (B[t] = B_n of tone t), matrix-free.
-  void applyCondensed(const std::vector<Eigen::MatrixXcd>& B, const Eigen::VectorXcd& x,
+  /// B_n of every tone and the right-hand side into the workspace (ws.B, ws.rhs): from the
+  /// train's modal decomposition when it holds, else one factorisation of D per tone pair.
+  void compliances(TrainTorusState& s, detail::TorusWorkspace& ws) const;
+  /// y = A x for the condensed matrix A (B_n of tone t: ws.B's columns t r .. t r + r − 1).
+  void applyCondensed(detail::TorusWorkspace& ws, const Eigen::Ref<const Eigen::VectorXcd>& x,
                       Eigen::VectorXcd& y) const;
-  /// δ from the condensed system A δ = rhs: preconditioned GMRES, else a sparse LU.
-  Eigen::VectorXcd solveCondensed(const std::vector<Eigen::MatrixXcd>& B,
-                                  const Eigen::VectorXcd& rhs, TrainTorusState& s) const;
-  /// X_n from δ (DinvV[block]: D(n·ω)⁻¹ V; DinvF0: D(0)⁻¹ F₀; phi: the mesh loads φ_n).
-  void recover(TrainTorusState& s, const std::vector<Eigen::MatrixXcd>& DinvV,
-               const Eigen::VectorXcd& DinvF0, const Eigen::MatrixXcd& phi,
-               const Eigen::VectorXcd& delta) const;
+  /// ws.delta from the condensed system A δ = ws.rhs: preconditioned GMRES from the previous
+  /// speeds' extrapolation, else a sparse LU.
+  void solveCondensed(detail::TorusWorkspace& ws, TrainTorusState& s) const;
+  /// X_n from δ (D(n·ω)⁻¹ V modally or factorised, D(0)⁻¹ F₀, the mesh loads φ_n).
+  void recover(TrainTorusState& s, detail::TorusWorkspace& ws) const;
   /// Mesh forces, element forces and spectra on the torus grid (train_torus_grid.cpp).
-  void postProcess(TrainTorusState& s) const;
+  void postProcess(TrainTorusState& s, detail::TorusWorkspace& ws) const;
 
   const GearTrainModel& model_;
   TrainTorusOptions options_;
@@ -144,10 +172,15 @@ class TrainTorusSolver {
     return neighbour_.data() + unknown * static_cast<std::size_t>(stride_);
   }
   std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
+  // The stiffness-variation coupling w_{n,m} = Σ_{l≠0} k̂_{m,l} δ_{m, n − l P_m e_j} as
+  // compressed rows per unknown t r + m (speed-independent; the matrix-free product's).
+  std::vector<int> coupling_start_, coupling_index_;
+  std::vector<std::complex<double>> coupling_value_;
   std::vector<std::vector<int>> lines_;  // preconditioner blocks: unknown indices t r + m
   std::vector<int> line_of_, local_of_;  // unknown → its line and its place in it
   Eigen::MatrixXd rigid_;
   bool rigid_at_every_speed_ = false;
+  Eigen::MatrixXd fields_;                 // rows vᵀ per mesh, then J of every element
   std::vector<int> samples_;               // grid points per generator
   std::unique_ptr<detail::TorusFft> fft_;  // the grid's transforms, planned once
 };
