@@ -451,11 +451,15 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& gi
   writeKinematics(model, result, summary, text);
   if (model.housingFirstDof() >= 0) {
     const TrainHousingSpec& h = *model.spec().housing;
-    const auto& f = h.reduced.mode_frequencies_hz;
-    text += fmt::format("housing {}: {} seats, {} fixed-interface modes{}, {} DOFs\n", h.source,
+    // The modal coordinates: the fixed-interface modes, then the residual vectors.
+    const Eigen::Index rv = h.reduced.residual_vectors;
+    const Eigen::VectorXd f =
+        h.reduced.mode_frequencies_hz.head(h.reduced.mode_frequencies_hz.size() - rv);
+    text += fmt::format("housing {}: {} seats, {} fixed-interface modes{}{}, {} DOFs\n", h.source,
                         h.reduced.seats.size(), f.size(),
                         f.size() > 0 ? fmt::format(" ({:.1f} to {:.1f} Hz)", f(0), f(f.size() - 1))
-                                     : std::string(" (Guyan)"),
+                                     : std::string(rv > 0 ? "" : " (Guyan)"),
+                        rv > 0 ? fmt::format(" + {} residual vectors", rv) : std::string(),
                         model.dofCount() - model.housingFirstDof());
     summary.results["housing"] = {
         {"deck", h.source},
@@ -463,6 +467,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& gi
         {"points", h.reduced.points},
         {"dofs", model.dofCount() - model.housingFirstDof()},
         {"fixed_interface_modes_hz", std::vector<double>(f.data(), f.data() + f.size())},
+        {"residual_vectors", rv},
         {"cache_file", h.cache_file},
         {"from_cache", h.from_cache},
         {"assembly_s", h.assembly_s},

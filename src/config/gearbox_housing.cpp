@@ -60,6 +60,11 @@ void addHousingKeys(ConfigSchema& schema) {
       .min(0)
       .optional()
       .doc("exactly this many fixed-interface modes instead of the cut-off (0: Guyan)");
+  schema.boolean("housing.residual_vectors")
+      .defaultValue(true)
+      .doc(
+          "add six residual vectors a seat to the fixed-interface modes (the truncated modes' "
+          "static share of the seats' inertia load; false with modes = 0: Guyan)");
   schema.real("housing.stiffness_proportional_damping")
       .unit("s")
       .min(0.0)
@@ -129,6 +134,7 @@ HousingSource housingSourceFromConfig(const Config& gearbox, const GearTrainSpec
   }
   source.points = gearbox.stringList("housing.points");
   source.reduction.key = "housing";
+  source.reduction.residual_vectors = gearbox.boolean("housing.residual_vectors");
   if (gearbox.has("housing.modes")) {
     source.reduction.modes = static_cast<int>(gearbox.integer("housing.modes"));
   } else {
@@ -179,13 +185,16 @@ std::string attachHousing(const Config& gearbox, GearTrainSpec& spec, double def
   housing->cache_file = loaded.cache_file;
   housing->from_cache = loaded.from_cache;
   housing->assembly_s = loaded.assembly_s;
-  const auto& f = housing->reduced.mode_frequencies_hz;
+  const Eigen::Index rv = housing->reduced.residual_vectors;
+  const Eigen::VectorXd f =
+      housing->reduced.mode_frequencies_hz.head(housing->reduced.mode_frequencies_hz.size() - rv);
   std::string line = fmt::format(
-      "housing {}: {} seats, {} fixed-interface modes{}{}, {}\n", source.deck,
+      "housing {}: {} seats, {} fixed-interface modes{}{}{}, {}\n", source.deck,
       housing->reduced.seats.size(), f.size(),
       source.reduction.modes < 0 ? fmt::format(" below {:.6g} Hz", source.reduction.cutoff_hz)
                                  : std::string(),
       f.size() > 0 ? fmt::format(" (first {:.6g} Hz)", f(0)) : std::string(),
+      rv > 0 ? fmt::format(" + {} residual vectors", rv) : std::string(),
       loaded.from_cache ? "from " + loaded.cache_file
                         : (loaded.cache_file.empty() ? std::string("reduced (not cached)")
                                                      : "reduced, cached in " + loaded.cache_file));

@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr char kMagic[8] = {'G', 'D', 'H', 'O', 'U', 'S', '1', '\0'};
+constexpr char kMagic[8] = {'G', 'D', 'H', 'O', 'U', 'S', '2', '\0'};
 
 struct Fnv1a {
   std::uint64_t h = 0xcbf29ce484222325ull;
@@ -101,6 +101,7 @@ std::string serialise(const ReducedHousing& h) {
   w.matrix(h.M);
   w.matrix(h.mode_frequencies_hz);
   w.matrix(h.recovery);
+  w.count(static_cast<std::int64_t>(h.residual_vectors));
   w.count(static_cast<std::int64_t>(h.seats.size()));
   for (std::size_t s = 0; s < h.seats.size(); ++s) {
     w.text(h.seats[s]);
@@ -126,6 +127,7 @@ bool deserialise(const fs::path& path, ReducedHousing& h) {
     h.M = r.matrix();
     h.mode_frequencies_hz = r.matrix();
     h.recovery = r.matrix();
+    h.residual_vectors = r.count();
     for (std::int64_t s = r.count(); s > 0; --s) {
       h.seats.push_back(r.text());
       h.centres.push_back(r.matrix());
@@ -199,6 +201,7 @@ std::string housingCacheKey(const HousingSource& source) {
   }
   h.add(source.reduction.cutoff_hz);
   h.add(static_cast<double>(source.reduction.modes));
+  h.add(std::string(source.reduction.residual_vectors ? "residual vectors" : "classic"));
   return fmt::format("{:016x}", h.h);
 }
 

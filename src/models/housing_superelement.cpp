@@ -281,6 +281,55 @@ void fixedInterfaceModes(const SparseMatrix& Koo, const SparseMatrix& Moo, const
   for (Eigen::Index j = 0; j < m; ++j) Phi.col(j) /= std::sqrt(Phi.col(j).dot(Moo * Phi.col(j)));
 }
 
+/// Residual vectors (modal truncation augmentation): the interior's quasi-static response to the
+/// inertia load of the interface's accelerations, R = K_oo⁻¹ (M_ob + M_oo Ψ), less its part in
+/// the kept modes. The interior's response to interface motion at frequency ω is
+/// u_o = −(K_oo − ω² M_oo)⁻¹ (K_ob − ω² M_ob) q_b = [Ψ + ω² K_oo⁻¹ (M_ob + M_oo Ψ) + O(ω⁴)] q_b
+/// (Neumann series of the inverse), so with R the basis holds the response exactly to second
+/// order in ω. Less its part in the kept modes, R = F_rs (M_oo Ψ + M_ob) with the residual
+/// flexibility F_rs = K_oo⁻¹ − Φ Λ⁻¹ Φᵀ: the term by which Kim & Lee (2015), "An enhanced
+/// Craig–Bampton method", Int. J. Numer. Meth. Engng 103, 79–93, enhance the transformation
+/// (they fold it into the interface columns with an estimated eigenvalue; here its columns are
+/// Ritz vectors of their own, as modal truncation augmentation vectors are: Dickens, Nakagawa &
+/// Wittbrodt 1997, Computers & Structures 62(6), 985–998). R is M_oo-orthogonal to the kept modes,
+/// hence K_oo-orthogonal too (K_oo Φ = M_oo Φ Λ); a Rayleigh–Ritz step within span R makes its
+/// vectors M_oo-orthonormal and K_oo-orthogonal, so the modal block stays diagonal and the
+/// vectors are appended to Φ, Λ as modes with their Ritz values (all above the last kept mode:
+/// min-max on the M-orthogonal complement). Directions of R already in span Φ (M-norm below
+/// 1e-10 of the largest after the projection, round-off of the two solves) are dropped.
+Eigen::Index appendResidualVectors(const SparseMatrix& Koo, const SparseMatrix& Moo,
+                                   const Eigen::MatrixXd& Mob, const Eigen::MatrixXd& MooPsi,
+                                   const KooFactor& factor, Eigen::MatrixXd& Phi,
+                                   Eigen::VectorXd& lambda) {
+  Eigen::MatrixXd R = Mob + MooPsi;
+  factor.solveInPlace(R);
+  for (int pass = 0; pass < 2; ++pass) R -= Phi * (Phi.transpose() * (Moo * R));  // twice: MGS
+  // Each column scaled to unit M-norm first: the seat's translations and rotations differ by
+  // the seat's radius squared in scale.
+  Eigen::MatrixXd MR = Moo * R;
+  for (Eigen::Index j = 0; j < R.cols(); ++j) {
+    const double norm2 = R.col(j).dot(MR.col(j));
+    if (norm2 > 0.0) R.col(j) /= std::sqrt(norm2), MR.col(j) /= std::sqrt(norm2);
+  }
+  const Eigen::MatrixXd Mr = R.transpose() * MR;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> gram(0.5 * (Mr + Mr.transpose()));
+  const Eigen::VectorXd& g = gram.eigenvalues();
+  const double largest = g.size() > 0 ? g(g.size() - 1) : 0.0;
+  const Eigen::Index keep = (g.array() > 1e-10 * largest).count();
+  if (keep == 0) return 0;
+  // B = R V D^(-1/2): M-orthonormal, spanning R's independent directions.
+  const Eigen::MatrixXd B = R * (gram.eigenvectors().rightCols(keep) *
+                                 g.tail(keep).cwiseSqrt().cwiseInverse().asDiagonal());
+  const Eigen::MatrixXd Kr = B.transpose() * (Koo * B);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ritz(0.5 * (Kr + Kr.transpose()));
+  const Eigen::Index m = Phi.cols();
+  Phi.conservativeResize(Eigen::NoChange, m + keep);
+  Phi.rightCols(keep) = B * ritz.eigenvectors();
+  lambda.conservativeResize(m + keep);
+  lambda.tail(keep) = ritz.eigenvalues();
+  return keep;
+}
+
 }  // namespace
 
 FeUnits feUnits(const std::string& name, const std::string& key) {
@@ -359,12 +408,16 @@ ReducedHousing reduceHousing(const io::FeMatrices& fe, const std::map<int, Eigen
   Eigen::VectorXd lambda;
   const auto t_modes = Clock::now();
   fixedInterfaceModes(Koo, Moo, factor, options, Phi, lambda);
+  const Eigen::MatrixXd MooPsi = Moo * Psi;
+  if (options.residual_vectors) {
+    red.residual_vectors = appendResidualVectors(Koo, Moo, Mob, MooPsi, factor, Phi, lambda);
+  }
   red.modes_s = secondsSince(t_modes);
   const Eigen::Index m = Phi.cols();
   red.mode_frequencies_hz = lambda.cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
 
   // Craig & Bampton (1968) eqs. (4)-(9), see the file comment.
-  const Eigen::MatrixXd MooPsi = Moo * Psi, MooPhi = Moo * Phi;
+  const Eigen::MatrixXd MooPhi = Moo * Phi;
   red.K = Eigen::MatrixXd::Zero(nb + m, nb + m);
   red.M = Eigen::MatrixXd::Zero(nb + m, nb + m);
   red.K.topLeftCorner(nb, nb) = Kbb + Kob.transpose() * Psi;

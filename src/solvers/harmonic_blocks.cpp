@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace geardyn::detail {
@@ -127,6 +128,20 @@ Eigen::MatrixXcd HarmonicBlocks::solveNonNegative(int h, const Eigen::MatrixXcd&
 Eigen::MatrixXcd HarmonicBlocks::solve(int h, const Eigen::MatrixXcd& rhs) const {
   if (h >= 0) return solveNonNegative(h, rhs);
   return solveNonNegative(-h, rhs.conjugate()).conjugate();
+}
+
+Eigen::MatrixXcd HarmonicBlocks::solveTrain(int h, const Eigen::MatrixXcd& rhs_t) const {
+  if (!housing_) return solve(h, rhs_t);
+  const std::size_t k = static_cast<std::size_t>(std::abs(h));
+  if (h >= 0) return housed_.at(k).solveTrain(rhs_t);
+  return housed_.at(k).solveTrain(rhs_t.conjugate()).conjugate();
+}
+
+Eigen::MatrixXcd HarmonicBlocks::housingRows(int h, const Eigen::MatrixXcd& q_t) const {
+  if (!housing_) throw std::logic_error("HarmonicBlocks::housingRows: no condensed housing");
+  const std::size_t k = static_cast<std::size_t>(std::abs(h));
+  if (h >= 0) return housed_.at(k).housingRows(*housing_, q_t);
+  return housed_.at(k).housingRows(*housing_, q_t.conjugate()).conjugate();
 }
 
 }  // namespace geardyn::detail

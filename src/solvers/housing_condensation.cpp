@@ -29,10 +29,13 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
   out->c = terms.c;
   out->beta = spec.stiffness_proportional_damping;
   const Eigen::Index r = out->W.rows(), n_h = out->W.cols();
-  out->P.resize(r * r, n_h);
+  // G is symmetric: P holds the upper triangle's entries only, column by column.
+  out->P.resize(r * (r + 1) / 2, n_h);
   for (Eigen::Index k = 0; k < n_h; ++k) {
-    Eigen::Map<Eigen::MatrixXd>(out->P.col(k).data(), r, r) =
-        out->W.col(k) * out->W.col(k).transpose();
+    Eigen::Index row = 0;
+    for (Eigen::Index j = 0; j < r; ++j) {
+      for (Eigen::Index i = 0; i <= j; ++i) out->P(row++, k) = out->W(i, k) * out->W(j, k);
+    }
   }
   return out;
 }
@@ -41,21 +44,31 @@ namespace {
 
 using Complex = std::complex<double>;
 
-/// A x for a real A and a complex x: two real products (a quarter of the work each of a complex
-/// one).
-Eigen::MatrixXcd realTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
-  Eigen::MatrixXcd out(A.rows(), x.cols());
-  out.real() = A * x.real();
-  out.imag() = A * x.imag();
+/// [Re x, Im x] as one real matrix (2 × x's columns), so that A is read once per product.
+Eigen::MatrixXd splitParts(const Eigen::MatrixXcd& x) {
+  Eigen::MatrixXd parts(x.rows(), 2 * x.cols());
+  parts.leftCols(x.cols()) = x.real();
+  parts.rightCols(x.cols()) = x.imag();
+  return parts;
+}
+
+Eigen::MatrixXcd joinParts(const Eigen::MatrixXd& parts) {
+  const Eigen::Index c = parts.cols() / 2;
+  Eigen::MatrixXcd out(parts.rows(), c);
+  out.real() = parts.leftCols(c);
+  out.imag() = parts.rightCols(c);
   return out;
+}
+
+/// A x for a real A and a complex x: one real product with [Re x, Im x] (half the work of a
+/// complex product, A read once).
+Eigen::MatrixXcd realTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
+  return joinParts(A * splitParts(x));
 }
 
 /// Aᵀ x likewise.
 Eigen::MatrixXcd realTransposeTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
-  Eigen::MatrixXcd out(A.cols(), x.cols());
-  out.real() = A.transpose() * x.real();
-  out.imag() = A.transpose() * x.imag();
-  return out;
+  return joinParts(A.transpose() * splitParts(x));
 }
 
 }  // namespace
@@ -66,8 +79,12 @@ void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen:
   dinv_ =
       ((1.0 + iw * h.beta) * h.lambda.cast<Complex>().array() - Complex(w * w)).inverse().matrix();
   const auto r = h.k.rows();
-  const Eigen::VectorXcd g = realTimes(h.P, dinv_);  // vec G, G = W diag(1/d) Wᵀ
-  const Eigen::Map<const Eigen::MatrixXcd> G(g.data(), r, r);
+  const Eigen::VectorXcd g = realTimes(h.P, dinv_);  // G = W diag(1/d) Wᵀ, upper triangle
+  Eigen::MatrixXcd G(r, r);
+  Eigen::Index row = 0;
+  for (Eigen::Index j = 0; j < r; ++j) {
+    for (Eigen::Index i = 0; i <= j; ++i) G(i, j) = G(j, i) = g(row++);
+  }
   const Eigen::MatrixXcd Z = h.k.cast<Complex>() + iw * h.c.cast<Complex>();
   Zeff_ = (Eigen::MatrixXcd::Identity(r, r) + Z * G).partialPivLu().solve(Z);
   lu_.compute(Dtt + realTransposeTimes(
@@ -82,8 +99,7 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
   // then Φᵀ f_h and g vanish and two n_h × n_h products per column are skipped.
   if (rhs.bottomRows(n_h).isZero(0.0)) {
     out.topRows(n_t) = lu_.solve(rhs.topRows(n_t));
-    const Eigen::MatrixXcd F = Zeff_ * realTimes(h.J, out.topRows(n_t));  // bearing forces
-    out.bottomRows(n_h) = realTimes(h.Phi, dinv_.asDiagonal() * realTransposeTimes(h.W, F));
+    out.bottomRows(n_h) = housingRows(h, out.topRows(n_t));
     return out;
   }
   const Eigen::MatrixXcd p = realTransposeTimes(h.Phi, rhs.bottomRows(n_h));  // Φᵀ f_h
@@ -92,6 +108,12 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
   const Eigen::MatrixXcd F = Zeff_ * (realTimes(h.J, out.topRows(n_t)) - g);  // bearing forces
   out.bottomRows(n_h) = realTimes(h.Phi, dinv_.asDiagonal() * (realTransposeTimes(h.W, F) + p));
   return out;
+}
+
+Eigen::MatrixXcd CondensedHousingBlock::housingRows(const HousingCondensation& h,
+                                                    const Eigen::MatrixXcd& q_t) const {
+  const Eigen::MatrixXcd F = Zeff_ * realTimes(h.J, q_t);  // bearing forces
+  return realTimes(h.Phi, dinv_.asDiagonal() * realTransposeTimes(h.W, F));
 }
 
 }  // namespace geardyn::detail

@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <vector>
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
@@ -215,6 +217,36 @@ Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) con
   return q;
 }
 
+namespace {
+
+/// q(t) at s.t on the DOFs the meshes and elements read (the bodies' and the elements'; the
+/// housing's modal coordinates only feed its response points, from s.harmonic): a housed
+/// train's other columns are left zero instead of sampled.
+Eigen::MatrixXd sampledDisplacement(const TrainSteadyState& s, const GearTrainModel& model) {
+  const int n = model.dofCount(), n_t = model.housingFirstDof();
+  if (n_t < 0) return s.displacement(s.t);
+  std::vector<char> used(static_cast<std::size_t>(n), 0);
+  std::fill(used.begin(), used.begin() + n_t, 1);
+  for (const TrainElement& e : model.elements()) {
+    for (int d : e.dofs) used[static_cast<std::size_t>(d)] = 1;
+  }
+  std::vector<Eigen::Index> rows;
+  for (int i = 0; i < n; ++i)
+    if (used[static_cast<std::size_t>(i)]) rows.push_back(i);
+  TrainSteadyState part;
+  part.base_frequency = s.base_frequency;
+  part.harmonics = s.harmonics;
+  part.harmonic = s.harmonic(rows, Eigen::placeholders::all);
+  const Eigen::MatrixXd sampled = part.displacement(s.t);
+  Eigen::MatrixXd q = Eigen::MatrixXd::Zero(s.t.size(), n);
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    q.col(rows[j]) = sampled.col(static_cast<Eigen::Index>(j));
+  }
+  return q;
+}
+
+}  // namespace
+
 TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSteadyOptions& options)
     : model_(model), options_(options) {
   options.validate();
@@ -298,28 +330,36 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   // one block at a time: D(h)⁻¹ [V, F_h, conj F_−h] in one solve, D(h)⁻¹V and D(h)⁻¹F_h kept
   // for the recovery X_h = D(h)⁻¹F_h − D(h)⁻¹V g_h (g_h the mesh terms below), so the sparse
   // path analyses D's pattern once per speed and refactorises it per harmonic.
+  // With the housing condensed and no load on it (the meshes' vectors never reach it), the
+  // solves stay on the train's n_t DOFs and the housing's rows are recovered once per harmonic
+  // from the final train rows (HarmonicBlocks::housingRows), not for each of the r + 2 columns.
+  const int n_t = blocks_of.trainDofs();
+  const bool train_only = n_t < n && F.bottomRows(n - n_t).isZero(0.0);
+  const int n_s = train_only ? n_t : n;  // the rows solved for
+  const auto Vs = V.topRows(n_s);
   Eigen::MatrixXcd A = Eigen::MatrixXcd::Identity(r * blocks, r * blocks);
   Eigen::VectorXcd b(r * blocks);
   std::vector<Eigen::MatrixXcd> DinvV(H + 1);
-  Eigen::MatrixXcd DinvF(n, H + 1);
-  Eigen::MatrixXcd rhs(n, r + 2);
-  rhs.leftCols(r) = V;
+  Eigen::MatrixXcd DinvF(n_s, H + 1);
+  Eigen::MatrixXcd rhs(n_s, r + 2);
+  rhs.leftCols(r) = Vs;
   for (int h = 0; h <= H; ++h) {
     blocks_of.factorize(h, h * w0);
-    rhs.col(r) = F.col(h + H);
-    rhs.col(r + 1) = F.col(H - h).conjugate();
-    const Eigen::MatrixXcd solved = blocks_of.solve(h, rhs);
+    rhs.col(r) = F.col(h + H).head(n_s);
+    rhs.col(r + 1) = F.col(H - h).head(n_s).conjugate();
+    const Eigen::MatrixXcd solved =
+        train_only ? blocks_of.solveTrain(h, rhs) : blocks_of.solve(h, rhs);
     DinvV[h] = solved.leftCols(r);
     DinvF.col(h) = solved.col(r);
-    const Eigen::MatrixXcd B = V.transpose() * DinvV[h];  // Vᵀ D(h)⁻¹ V (r × r)
+    const Eigen::MatrixXcd B = Vs.transpose() * DinvV[h];  // Vᵀ D(h)⁻¹ V (r × r)
     for (const int sign : {1, -1}) {
       if (h == 0 && sign < 0) continue;
       const int hh = sign * h;
       const bool conjugate = sign < 0;
       // D(−h)⁻¹ F_−h = conj(D(h)⁻¹ conj F_−h).
       b.segment((hh + H) * r, r) =
-          V.transpose() * (conjugate ? Eigen::VectorXcd(solved.col(r + 1).conjugate())
-                                     : Eigen::VectorXcd(solved.col(r)));
+          Vs.transpose() * (conjugate ? Eigen::VectorXcd(solved.col(r + 1).conjugate())
+                                      : Eigen::VectorXcd(solved.col(r)));
       for (int m = 0; m < r; ++m) {
         const int P = base.mesh_multiple[m];
         const Eigen::VectorXcd Bm =
@@ -352,8 +392,12 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
         g_sum(m) += k_hat[m][L + l] * delta((g + H) * r + m);
       }
     }
-    s.harmonic.col(h) = DinvF.col(h);
-    if (r > 0) s.harmonic.col(h).noalias() -= DinvV[h] * g_sum;
+    s.harmonic.col(h).head(n_s) = DinvF.col(h);
+    if (r > 0) s.harmonic.col(h).head(n_s).noalias() -= DinvV[h] * g_sum;
+    if (train_only) {
+      s.harmonic.col(h).tail(n - n_t) =
+          blocks_of.housingRows(h, s.harmonic.col(h).head(n_t).eval());
+    }
   }
 
   // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.
@@ -363,7 +407,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     while (samples < 8 * H) samples *= 2;
   }
   s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
-  const Eigen::MatrixXd q = s.displacement(s.t);
+  const Eigen::MatrixXd q = sampledDisplacement(s, model);
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
   Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
   for (int k = 0; k < samples; ++k) {

@@ -18,7 +18,12 @@
 ///    K_oo, M_oo with K_oo factorised once (CHOLMOD's supernodal Cholesky with METIS ordering in
 ///    libgeardyn_cholmod.so, or Eigen's SimplicialLDLT without it; the factor the constraint
 ///    modes use): twice as many are asked for until the highest found lies above the cut-off.
-/// With no modes the superelement is Guyan's static condensation K_bb − K_bo K_oo⁻¹ K_ob.
+///    Optionally (CraigBamptonOptions::residual_vectors) six residual vectors a seat,
+///    K_oo⁻¹ (M_ob + M_oo Ψ) less their part in the kept modes (Kim & Lee 2015's residual
+///    flexibility term), are appended to the modes as Ritz vectors: the truncated modes' static
+///    share, which takes the frequencies below the usual cut-off to 0.1 % (docs/theory §3, §4).
+/// With no modes and no residual vectors the superelement is Guyan's static condensation
+/// K_bb − K_bo K_oo⁻¹ K_ob.
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -54,6 +59,10 @@ struct CraigBamptonOptions {
   double cutoff_hz = 0.0;
   /// When >= 0, exactly this many lowest modes instead (0: Guyan); the cut-off is then unused.
   int modes = -1;
+  /// Append the residual vectors K_oo⁻¹ (M_ob + M_oo Ψ) (6 a seat, less their part in the
+  /// kept modes; modal truncation augmentation, docs/theory/housing_superelement.md §3) to the
+  /// fixed-interface modes: the truncated modes' static share of the interface's inertia load.
+  bool residual_vectors = false;
   std::string key = "housing";  ///< the configuration key errors name ("housing.cutoff_hz")
 };
 
@@ -64,8 +73,11 @@ struct ReducedHousing {
   Eigen::MatrixXd M;                     ///< reduced mass [kg, kg m, kg m²]
   std::vector<std::string> seats;        ///< seat names, in interface order
   std::vector<Eigen::Vector3d> centres;  ///< each seat's centre (node centroid) [m]
-  Eigen::VectorXd mode_frequencies_hz;   ///< the kept fixed-interface modes' frequencies [Hz]
-  std::vector<std::string> points;       ///< response point names
+  /// The modal coordinates' frequencies [Hz]: the kept fixed-interface modes', then the
+  /// residual vectors' Ritz frequencies (the last `residual_vectors`).
+  Eigen::VectorXd mode_frequencies_hz;
+  Eigen::Index residual_vectors = 0;  ///< how many of the modal coordinates are residual vectors
+  std::vector<std::string> points;    ///< response point names
   /// Response point translations [m] from the reduced coordinates: rows 3i..3i+2 are point i's
   /// x, y, z (the mean over its nodes).
   Eigen::MatrixXd recovery;

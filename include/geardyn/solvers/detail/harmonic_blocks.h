@@ -48,6 +48,16 @@ class HarmonicBlocks {
   bool sparse() const noexcept { return sparse_; }
   /// The housing is condensed out (see the constructor).
   bool condensesHousing() const noexcept { return housing_ != nullptr; }
+  /// The DOFs `solveTrain` solves for: the train's n_t when the housing is condensed, else all.
+  int trainDofs() const noexcept { return housing_ ? housing_->first : n_; }
+  /// With the housing condensed: the train's rows of D(h)⁻¹ rhs for a load on the train's DOFs
+  /// only (`rhs_t`, trainDofs() rows; h as in solve); the housing's rows of the same solution
+  /// follow from `housingRows` (per block h; every factorised block is kept). This skips the
+  /// housing's n_h rows of every right-hand side when only a combination of them is wanted.
+  /// Without the condensation it is `solve`.
+  Eigen::MatrixXcd solveTrain(int h, const Eigen::MatrixXcd& rhs_t) const;
+  /// The housing's rows (n_h) of the solution of block h whose train rows are `q_t`.
+  Eigen::MatrixXcd housingRows(int h, const Eigen::MatrixXcd& q_t) const;
 
  private:
   using SparseMatrixC = Eigen::SparseMatrix<Complex>;

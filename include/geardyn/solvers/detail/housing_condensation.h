@@ -10,10 +10,11 @@
 ///   [D_tt − Jᵀ Z J + Jᵀ Z_eff J] q_t = f_t + Jᵀ Z_eff g,   g = W diag(1/d) Φᵀ f_h,
 ///   q_h = Φ diag(1/d) (Wᵀ F + Φᵀ f_h),   F = Z_eff (J q_t − g) (the bearing forces).
 /// Per frequency: r² n_h for G, r³ for Z_eff and the train's own n_t × n_t LU, instead of an LU
-/// of n_t + n_h. G is one real (r² × n_h) product with the complex 1/d, vec G = P (1/d) with P's
-/// column k the outer product vec(w_k w_kᵀ) precomputed, and Φ, W, J enter the solves as real
-/// matrices times the real and imaginary parts of a complex operand: a real product costs a
-/// quarter of a complex one, two of them half (bench/housing_bench.cpp, BM_ForcedPerSpeed).
+/// of n_t + n_h. G is one real (r(r + 1)/2 × n_h) product with the complex 1/d (its upper
+/// triangle: G is symmetric), with P's column k the outer product w_k w_kᵀ precomputed, and Φ,
+/// W, J enter the solves as real matrices times [Re x, Im x] of a complex operand x: half the
+/// work of a complex product, the real matrix read once (bench/housing_bench.cpp,
+/// BM_ForcedPerSpeed).
 
 #include <Eigen/Dense>
 #include <memory>
@@ -31,7 +32,8 @@ struct HousingCondensation {
   Eigen::VectorXd lambda;  ///< ω_k² [1/s²]
   Eigen::MatrixXd k, c;    ///< r × r: the rows' stiffness and damping (with the gearbox's β k)
   double beta = 0.0;       ///< the housing's β_h [s]
-  /// r² × n_h: column k is vec(w_k w_kᵀ), w_k = W's column k (G = W diag(1/d) Wᵀ as P (1/d)).
+  /// r(r + 1)/2 × n_h: column k holds the upper triangle of w_k w_kᵀ column by column, w_k =
+  /// W's column k (G = W diag(1/d) Wᵀ, symmetric, as P (1/d)).
   Eigen::MatrixXd P;
   /// The condensation of `model`'s housing; null without a housing or when the housing is not
   /// held (a zero eigenvalue: the exact path then factorises the whole block).
@@ -47,6 +49,12 @@ class CondensedHousingBlock {
   void factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt, double w);
   /// D⁻¹ rhs over all n_t + n_h DOFs.
   Eigen::MatrixXcd solve(const HousingCondensation& h, const Eigen::MatrixXcd& rhs) const;
+  /// The train's rows of D⁻¹ rhs for loads on the train only (`rhs_t`: n_t rows; the housing's
+  /// rows of the load are zero): the train's LU alone.
+  Eigen::MatrixXcd solveTrain(const Eigen::MatrixXcd& rhs_t) const { return lu_.solve(rhs_t); }
+  /// The housing's rows of that solution from its train rows q_t:
+  /// q_h = Φ diag(1/d) Wᵀ Z_eff J q_t (the loads on the housing zero).
+  Eigen::MatrixXcd housingRows(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
 
  private:
   Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
