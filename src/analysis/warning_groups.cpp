@@ -5,6 +5,7 @@
 #include <set>
 
 #include "geardyn/analysis/analysis_result.h"
+#include "geardyn/stiffness/foundation_fit_note.h"
 
 namespace geardyn::analysis {
 namespace {
@@ -65,7 +66,26 @@ Parts partsOf(const std::string& warning) {
 
 }  // namespace
 
-std::vector<std::string> groupedWarnings(const std::vector<std::string>& warnings, int max_named) {
+std::vector<std::string> groupedWarnings(const std::vector<std::string>& given, int max_named) {
+  // Sainsot's fit extrapolated on several meshes: one line naming them and the largest change
+  // of k̄ (issue #34), where the first of them stood.
+  std::vector<std::string> warnings;
+  std::vector<FoundationFitExtrapolation> fits;
+  std::size_t fits_at = 0;
+  std::set<std::string> fit_texts;  // exact repeats are dropped
+  for (const std::string& w : given) {
+    auto fit = parseFoundationFitWarning(w);
+    if (!fit) {
+      warnings.push_back(w);
+      continue;
+    }
+    if (!fit_texts.insert(w).second) continue;
+    if (fits.empty()) fits_at = warnings.size();
+    fits.push_back(std::move(*fit));
+    if (fits.size() == 1) warnings.push_back(w);
+  }
+  if (fits.size() > 1) warnings[fits_at] = foundationFitSummaryLine(fits, max_named);
+
   struct Group {
     std::string first;
     std::vector<std::string> others;  ///< subjects of the later ones

@@ -12,6 +12,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/io/atomic_file.h"
+#include "geardyn/stiffness/foundation_fit_note.h"
 #include "geardyn/version.h"
 
 namespace geardyn::io {
@@ -151,6 +152,18 @@ nlohmann::ordered_json summaryJson(const RunSummary& summary,
   json["config_file"] = summary.config_source;
   json["seed"] = summary.seed ? nlohmann::ordered_json(*summary.seed) : nullptr;
   json["warnings"] = summary.warnings;
+  // The meshes whose fillet-foundation fit is extrapolated (issue #34): the command line
+  // prints one line for all of them.
+  nlohmann::ordered_json fits = nlohmann::ordered_json::array();
+  for (const std::string& w : summary.warnings) {
+    if (const auto fit = parseFoundationFitWarning(w)) {
+      fits.push_back({{"mesh", fit->subject},
+                      {"members", fit->members},
+                      {"mean_stiffness_change", fit->mean_stiffness_change},
+                      {"coefficients", fit->detail}});
+    }
+  }
+  json["foundation_fit_extrapolated"] = std::move(fits);
   json["results"] = summary.results;
   json["files"] = files;
   json["config"] = summary.config;

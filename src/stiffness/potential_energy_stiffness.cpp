@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "geardyn/error.h"
-#include "geardyn/notes.h"
+#include "geardyn/stiffness/foundation_fit_note.h"
 
 namespace geardyn {
 namespace {
@@ -145,10 +145,7 @@ void PotentialEnergyMeshStiffness::assessFoundationFit() {
                                      !pinion.empty() && !gear.empty() ? "; " : "",
                                      gear.empty() ? "" : "gear: " + gear);
   if (std::abs(foundation_fit_effect_) > kFoundationFitWarning) {
-    warnings_.push_back(fmt::format(
-        "{}Sainsot's (2004) fillet-foundation fit is extrapolated ({}): held at its data range the "
-        "mean mesh stiffness changes by {:+.2f} %, so read k̄ as uncertain by about that much",
-        kNotePrefix, foundation_fit_note_, 100.0 * foundation_fit_effect_));
+    warnings_.push_back(foundationFitWarning(foundation_fit_note_, foundation_fit_effect_));
   }
 }
 

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "geardyn/notes.h"
+#include "geardyn/stiffness/foundation_fit_note.h"
+
 namespace geardyn::analysis {
 namespace {
 
@@ -56,6 +59,48 @@ TEST(WarningGroups, LongListsAreCut) {
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_EQ(lines[0],
             "b0: capped at 5 N/m (the same for 11 more: b1, b2, b3, …; each in summary.json)");
+}
+
+// Issue #34: the two-stage reducer's notes (as PotentialEnergyMeshStiffness raises them, put in
+// context by the gearbox reader) are one line naming both meshes and the larger change of k̄,
+// -3.09 % of stage2, not the first mesh's -1.17 %; a note of another kind keeps its place.
+TEST(WarningGroups, FoundationFitNotesOfAllMeshesAreOneLineWithTheLargestChange) {
+  const std::string stage1 = inContext(
+      "meshes.stage1 (fourier model)",
+      foundationFitWarning("pinion: M* = 1.0435 (data 1.08 to 3.29), P* = 2.3487 (data 2.56 to "
+                           "13.47)",
+                           -0.0117));
+  const std::string stage2 = inContext(
+      "meshes.stage2 (fourier model)",
+      foundationFitWarning("pinion: M* = 1.0302 (data 1.08 to 3.29); gear: L* = 6.9 (data 6.82 "
+                           "to 6.94)",
+                           -0.0309));
+  const auto lines = groupedWarnings({"bearings.a: capped at 5 N/m", stage1, stage2});
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "bearings.a: capped at 5 N/m");
+  EXPECT_EQ(lines[1],
+            "note: Sainsot's (2004) fillet-foundation fit is extrapolated for 2 meshes "
+            "(meshes.stage1 (fourier model): pinion; meshes.stage2 (fourier model): pinion and "
+            "gear): held at its data range the mean mesh stiffness changes by up to -3.09 % "
+            "(meshes.stage2 (fourier model)), so read k̄ as uncertain by up to that much; each "
+            "mesh's coefficients in summary.json (foundation_fit_extrapolated)");
+  // One note alone is printed as raised.
+  EXPECT_EQ(groupedWarnings({stage1}), std::vector<std::string>{stage1});
+}
+
+TEST(WarningGroups, FoundationFitNoteParsesBack) {
+  const auto fit = parseFoundationFitWarning(
+      inContext("meshes.m (potential_energy model)",
+                foundationFitWarning("gear: M* = 1.07 (data 1.08 to 3.29)", 0.0123)));
+  ASSERT_TRUE(fit);
+  EXPECT_EQ(fit->subject, "meshes.m (potential_energy model)");
+  EXPECT_EQ(fit->members, std::vector<std::string>{"gear"});
+  EXPECT_EQ(fit->detail, "gear: M* = 1.07 (data 1.08 to 3.29)");
+  EXPECT_DOUBLE_EQ(fit->mean_stiffness_change, 0.0123);  // printed to 1e-4, exact here
+  const auto pair = parseFoundationFitWarning(foundationFitWarning("pinion: P* = 2.4", -0.02));
+  ASSERT_TRUE(pair);
+  EXPECT_EQ(pair->subject, "");
+  EXPECT_FALSE(parseFoundationFitWarning("meshes.m: capped at 5 N/m"));
 }
 
 }  // namespace

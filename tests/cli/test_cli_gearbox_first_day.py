@@ -328,10 +328,19 @@ def test_a_warning_shared_by_meshes_is_one_line_and_quiet_silences_notes(tmp_pat
     assert result.returncode == 0, result.stderr
     lines = [l for l in result.stderr.splitlines() if "fillet-foundation fit" in l]
     assert len(lines) == 1, result.stderr
-    assert lines[0].startswith("note: meshes.stage1"), lines[0]
-    assert "(the same for 1 more: meshes.stage2 (fourier model)" in lines[0], lines[0]
+    assert lines[0].startswith("note: Sainsot's (2004) fillet-foundation fit is extrapolated "
+                               "for 2 meshes (meshes.stage1 (fourier model): pinion"), lines[0]
+    assert "; meshes.stage2 (fourier model): pinion" in lines[0], lines[0]
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert sum("fillet-foundation fit" in w for w in summary["warnings"]) == 2
+    # Issue #34: the list of affected meshes in summary.json, the line quotes the largest change.
+    fits = summary["foundation_fit_extrapolated"]
+    assert [f["mesh"] for f in fits] == ["meshes.stage1 (fourier model)",
+                                         "meshes.stage2 (fourier model)"], fits
+    assert all("pinion" in f["members"] and f["coefficients"] for f in fits), fits
+    largest = max(fits, key=lambda f: abs(f["mean_stiffness_change"]))
+    assert (f"changes by up to {100 * largest['mean_stiffness_change']:+.2f} % "
+            f"({largest['mesh']})") in lines[0], lines[0]
     quiet = geardyn("train", config, "--out", tmp_path / "quiet", "--quiet")
     assert quiet.returncode == 0 and "fillet-foundation" not in quiet.stderr, quiet.stderr
 

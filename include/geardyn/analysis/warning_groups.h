@@ -18,6 +18,8 @@ namespace geardyn::analysis {
 /// `warnings` with every kind that occurs more than once folded into its first occurrence:
 /// "<first warning> (the same for <n> more: <subject>, …; each in summary.json)", at most
 /// `max_named` subjects named. Order of first occurrences kept; exact duplicates dropped.
+/// Sainsot's fillet-foundation notes of several meshes are one line naming the meshes and the
+/// largest change of k̄ (stiffness/foundation_fit_note.h).
 std::vector<std::string> groupedWarnings(const std::vector<std::string>& warnings,
                                          int max_named = 8);
 
