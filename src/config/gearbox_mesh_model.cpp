@@ -289,7 +289,7 @@ std::shared_ptr<const MeshStiffness> stiffnessFromConfig(const config::Config& c
   return k;
 }
 
-void transverseToNormal(TrainMeshSpec& mesh, double base_helix, const std::string& prefix) {
+void transverseToNormal(TrainMeshSpec& mesh, double base_helix, const std::string& /*prefix*/) {
   const double cb = std::cos(base_helix);
   if (cb == 1.0) return;  // spur: the planes agree
   if (mesh.contact.tooth_pairs) {

@@ -10,7 +10,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/aft_jacobian.h"
-#include "geardyn/solvers/detail/floquet_strip.h"
+#include "geardyn/numerics/floquet_strip.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {

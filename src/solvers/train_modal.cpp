@@ -17,9 +17,9 @@
 
 #include "geardyn/detail/contiguous_ranges.h"
 #include "geardyn/error.h"
-#include "geardyn/solvers/detail/damped_modes.h"
+#include "geardyn/numerics/damped_modes.h"
 #include "geardyn/solvers/detail/mode_tracking.h"
-#include "geardyn/solvers/detail/shift_invert_modes.h"
+#include "geardyn/numerics/shift_invert_modes.h"
 #include "geardyn/solvers/detail/whirl_shares.h"
 #include "geardyn/system/detail/train_building.h"
 #include "geardyn/system/train_housing.h"

@@ -236,7 +236,7 @@ Eigen::MatrixXd sampledDisplacement(const TrainSteadyState& s, const GearTrainMo
   TrainSteadyState part;
   part.base_frequency = s.base_frequency;
   part.harmonics = s.harmonics;
-  part.harmonic = s.harmonic(rows, Eigen::placeholders::all);
+  part.harmonic = s.harmonic(rows, Eigen::all);
   const Eigen::MatrixXd sampled = part.displacement(s.t);
   Eigen::MatrixXd q = Eigen::MatrixXd::Zero(s.t.size(), n);
   for (std::size_t j = 0; j < rows.size(); ++j) {

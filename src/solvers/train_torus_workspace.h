@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "geardyn/solvers/detail/modal_compliance.h"
-#include "geardyn/solvers/detail/preconditioned_gmres.h"
+#include "geardyn/numerics/preconditioned_gmres.h"
 
 namespace geardyn::detail {
 

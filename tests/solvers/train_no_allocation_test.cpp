@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "geardyn/solvers/detail/sparse_lu_factors.h"
+#include "geardyn/numerics/sparse_lu_factors.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/fourier_stiffness.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/solvers/detail/damped_modes.h"
+#include "geardyn/numerics/damped_modes.h"
 #include "geardyn/solvers/detail/whirl_shares.h"
 #include "geardyn/system/fe_rotor_model.h"
 

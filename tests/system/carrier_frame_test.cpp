@@ -14,7 +14,7 @@
 #include <numbers>
 #include <vector>
 
-#include "geardyn/solvers/detail/damped_modes.h"
+#include "geardyn/numerics/damped_modes.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/system/gear_train_model.h"
 #include "system/sample_trains.h"

@@ -38,7 +38,7 @@
 #include <vector>
 
 #include "geardyn/progress.h"
-#include "geardyn/solvers/detail/sparse_lu_factors.h"
+#include "geardyn/numerics/sparse_lu_factors.h"
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/solvers/train_transient.h"
 #include "geardyn/system/gear_train_model.h"

@@ -25,7 +25,7 @@
 #include <complex>
 #include <vector>
 
-#include "geardyn/solvers/detail/floquet_strip.h"
+#include "geardyn/numerics/floquet_strip.h"
 
 namespace geardyn::detail {
 

@@ -1,6 +1,6 @@
 /// Restarted right-preconditioned GMRES (detail/preconditioned_gmres.h).
 
-#include "geardyn/solvers/detail/preconditioned_gmres.h"
+#include "geardyn/numerics/preconditioned_gmres.h"
 
 #include <cmath>
 #include <complex>

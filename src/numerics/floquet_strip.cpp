@@ -1,6 +1,6 @@
 /// The Floquet exponents among Hill eigenvalues (detail/floquet_strip.h).
 
-#include "geardyn/solvers/detail/floquet_strip.h"
+#include "geardyn/numerics/floquet_strip.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 /// Allocation-free solves with one sparse LU factorisation (detail/sparse_lu_factors.h).
 
-#include "geardyn/solvers/detail/sparse_lu_factors.h"
+#include "geardyn/numerics/sparse_lu_factors.h"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
 /// Arnoldi without restarts for the Floquet strip of a Hill eigenproblem (detail/strip_arnoldi.h).
 
-#include "geardyn/solvers/detail/strip_arnoldi.h"
+#include "geardyn/numerics/strip_arnoldi.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "geardyn/solvers/detail/floquet_strip.h"
+#include "geardyn/numerics/floquet_strip.h"
 
 namespace geardyn::detail {
 namespace {

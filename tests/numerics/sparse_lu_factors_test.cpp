@@ -3,7 +3,7 @@
 // (gyroscopic, so unsymmetric), to 1e-12 of the solution (both do the same operations in a
 // different order: round-off ~ cond · 1e-16).
 
-#include "geardyn/solvers/detail/sparse_lu_factors.h"
+#include "geardyn/numerics/sparse_lu_factors.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 /// Damped complex modes in the balanced modal first-order form (detail/damped_modes.h).
 
-#include "geardyn/solvers/detail/damped_modes.h"
+#include "geardyn/numerics/damped_modes.h"
 
 #include <Eigen/Eigenvalues>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 /// Shift-and-invert Arnoldi for the low modes of large trains (detail/shift_invert_modes.h).
 
-#include "geardyn/solvers/detail/shift_invert_modes.h"
+#include "geardyn/numerics/shift_invert_modes.h"
 
 #include <Spectra/GenEigsRealShiftSolver.h>
 #include <fmt/format.h>

@@ -10,7 +10,7 @@
 #include <Eigen/Sparse>
 #include <vector>
 
-#include "geardyn/solvers/detail/damped_modes.h"
+#include "geardyn/numerics/damped_modes.h"
 
 namespace geardyn::detail {
 
