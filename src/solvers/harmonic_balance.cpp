@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "geardyn/error.h"
-#include "geardyn/solvers/detail/aft_jacobian.h"
 #include "geardyn/numerics/floquet_strip.h"
+#include "geardyn/solvers/detail/aft_jacobian.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
 
 namespace geardyn {

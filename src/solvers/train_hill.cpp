@@ -13,8 +13,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "geardyn/solvers/detail/aft_jacobian.h"
 #include "geardyn/numerics/strip_arnoldi.h"
+#include "geardyn/solvers/detail/aft_jacobian.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 
 namespace geardyn::detail {

@@ -7,8 +7,8 @@
 #include <complex>
 #include <vector>
 
-#include "geardyn/solvers/detail/modal_compliance.h"
 #include "geardyn/numerics/preconditioned_gmres.h"
+#include "geardyn/solvers/detail/modal_compliance.h"
 
 namespace geardyn::detail {
 

@@ -13,9 +13,9 @@
 #include <limits>
 #include <numbers>
 
-#include "geardyn/solvers/continuation.h"
 #include "geardyn/numerics/damped_modes.h"
 #include "geardyn/numerics/strip_arnoldi.h"
+#include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/stiffness/fourier_stiffness.h"

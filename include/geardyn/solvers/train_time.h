@@ -37,8 +37,8 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/progress.h"
 #include "geardyn/numerics/sparse_lu_factors.h"
+#include "geardyn/progress.h"
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/solvers/train_transient.h"
 #include "geardyn/system/gear_train_model.h"
