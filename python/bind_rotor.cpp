@@ -11,10 +11,12 @@
 
 #include <numbers>
 
+#include "geardyn/config/rotor_gearbox.h"
 #include "geardyn/error.h"
 #include "geardyn/identify/dte_identification.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/rotor_response.h"
+#include "geardyn/solvers/train_periodic_record.h"
 
 namespace py = pybind11;
 
@@ -168,23 +170,29 @@ void bindLateralRotorSpec(py::module_& m) {
           "time_response",
           [](const LateralRotorSpec& s, double duration, long long samples, double rtol,
              double atol, double steady_tolerance) {
-            RotorTimeOptions o;
+            TrainRecordOptions o;
             o.duration = duration;
             o.samples = samples;
-            o.relative_tolerance = rtol;
-            o.absolute_tolerance = atol;
+            o.integrator.relative_tolerance = rtol;
+            o.integrator.absolute_tolerance = atol;
             o.steady_tolerance = steady_tolerance;
-            RotorTimeResponse r;
+            TrainRecord r;
             {
               py::gil_scoped_release release;
-              r = solveRotorTimeResponse(LateralRotorModel(s), o);
+              // The gearbox the rotor is (config/rotor_gearbox.h), recorded from rest.
+              std::vector<std::string> warnings;
+              const GearTrainModel train(config::lateralRotorGearTrain(s, "python", warnings));
+              r = recordTrainFromRest(train, train.inputSpeed(),
+                                      config::lateralRotorProbeDofs(train),
+                                      LateralRotorModel(s).commonPeriod(), o);
             }
+            const auto rows = static_cast<py::ssize_t>(r.displacement.rows());
             py::array_t<double> t(static_cast<py::ssize_t>(r.t.size()));
-            py::array_t<double> eta({static_cast<py::ssize_t>(r.eta.size()), py::ssize_t{4}});
+            py::array_t<double> eta({rows, py::ssize_t{4}});
             std::copy(r.t.begin(), r.t.end(), t.mutable_data());
             double* e = eta.mutable_data();
-            for (std::size_t k = 0; k < r.eta.size(); ++k)
-              for (int c = 0; c < 4; ++c) e[4 * k + c] = r.eta[k](c);
+            for (py::ssize_t k = 0; k < rows; ++k)
+              for (int c = 0; c < 4; ++c) e[4 * k + c] = r.displacement(k, c);
             py::dict d;
             d["t"] = t;
             d["eta"] = eta;

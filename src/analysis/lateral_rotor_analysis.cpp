@@ -16,6 +16,7 @@
 #include "geardyn/error.h"
 #include "geardyn/io/probe_record.h"
 #include "geardyn/signal/gear_whirl.h"
+#include "geardyn/solvers/train_periodic_record.h"
 #include "geardyn/solvers/train_response.h"
 
 namespace geardyn::analysis {
@@ -41,11 +42,30 @@ void requireNyquist(const LateralRotorModel& model, double sample_rate, const st
   }
 }
 
-/// The four probe channels x₁, y₁, x₂, y₂ over the steady window of a time response.
-std::array<std::vector<double>, 4> steadyChannels(const RotorTimeResponse& r) {
+/// The gearbox the rotor is (config/rotor_gearbox.h): what its time domain integrates.
+struct RotorGearbox {
+  RotorGearbox(const LateralRotorSpec& spec, const std::string& source)
+      : train(config::lateralRotorGearTrain(spec, source, warnings)),
+        probes(config::lateralRotorProbeDofs(train)) {}
+  std::vector<std::string> warnings;  // the translation's gearbox warns about nothing it holds
+  GearTrainModel train;
+  std::vector<int> probes;  // x₁, y₁, x₂, y₂ (the gearbox's y, z of pinion and gear)
+};
+
+/// The rotor recorded from rest by the train's Dormand–Prince (train_periodic_record.h).
+TrainRecord recordRotor(const LateralRotorModel& model, const std::string& source,
+                        const TrainRecordOptions& options) {
+  const RotorGearbox gearbox(model.spec(), source);
+  return recordTrainFromRest(gearbox.train, gearbox.train.inputSpeed(), gearbox.probes,
+                             model.commonPeriod(), options);
+}
+
+/// The four probe channels x₁, y₁, x₂, y₂ over the steady window of a time record.
+std::array<std::vector<double>, 4> steadyChannels(const TrainRecord& r) {
   std::array<std::vector<double>, 4> channels;
   for (int c = 0; c < 4; ++c)
-    for (long long k = r.window_begin; k < r.window_end; ++k) channels[c].push_back(r.eta[k](c));
+    for (long long k = r.window_begin; k < r.window_end; ++k)
+      channels[c].push_back(r.displacement(k, c));
   return channels;
 }
 
@@ -57,8 +77,8 @@ std::array<std::vector<double>, 4> steadyChannels(const RotorTimeResponse& r) {
 /// one (t_p = t_g: the two 1× circles) is the forced one's, the other 0.
 std::vector<RotorWhirlResponse> gearboxWhirlResponse(const LateralRotorModel& model,
                                                      const std::string& source) {
-  std::vector<std::string> warnings;  // the translation's gearbox warns about nothing it holds
-  const GearTrainModel train(config::lateralRotorGearTrain(model.spec(), source, warnings));
+  const RotorGearbox gearbox(model.spec(), source);
+  const GearTrainModel& train = gearbox.train;
   // No meshes: H is the highest excitation multiple, n_h t_p t_g/gcd (2800 for Table 4.1);
   // every harmonic is a 6 × 6 solve, so any tooth counts are accepted.
   const LateralRotorSpec& r = model.spec();
@@ -149,7 +169,7 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
 bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
                    const LateralRotorModel& model, const GearPairSpectrumOptions& spectrum_options,
                    const std::array<std::vector<WhirlComponent>, 2>& exact, AnalysisResult& result,
-                   RotorTimeResponse& time, std::string& text) {
+                   TrainRecord& time, std::string& text) {
   io::RunSummary& summary = result.summary;
   const GearWhirlSetup setup = setupOf(model);
   const double max_frequency =
@@ -159,8 +179,8 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
   const double noise = config.real("spectrum.noise_level");
   bool ok = true;
   context.checkBudget("rotor_time");
-  RotorTimeOptions time_options = config::rotorTimeOptionsFromConfig(config);
-  time_options.progress = context.progressFor("rotor: time response", "s simulated");
+  TrainRecordOptions time_options = config::rotorTimeOptionsFromConfig(config);
+  time_options.integrator.progress = context.progressFor("rotor: time response", "s simulated");
   // Checked before integrating: the grid's rate (snapped to the common period) is within a
   // sample per period of duration/(samples − 1).
   const std::string samples_shown =
@@ -168,7 +188,7 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
   requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
                  "time.samples", samples_shown);
   const auto start = std::chrono::steady_clock::now();
-  time = solveRotorTimeResponse(model, time_options);
+  time = recordRotor(model, config.source(), time_options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   requireNyquist(model, time.sample_rate, "time.samples", samples_shown);
@@ -185,7 +205,7 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
   // Displacements of the pinion (1) and gear (2) centres [m] (Rao 2023, Fig. 2.1 axes).
   io::CsvTable history({"t_s", "x1_m", "y1_m", "x2_m", "y2_m", "steady"});
   for (std::size_t k = 0; k < time.t.size(); ++k) {
-    const auto& e = time.eta[k];
+    const auto e = time.displacement.row(static_cast<Eigen::Index>(k));
     history.addRow({time.t[k], e(0), e(1), e(2), e(3),
                     static_cast<long long>(static_cast<long long>(k) >= time.window_begin &&
                                            static_cast<long long>(k) < time.window_end)});
@@ -239,8 +259,8 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
 /// The exact periodic response superposed from its whirl components at the time run's steady
 /// samples (or over one common period) (frequency_history.csv).
 void addSuperposedHistory(const LateralRotorModel& model,
-                          const std::vector<RotorWhirlResponse>& parts,
-                          const RotorTimeResponse& time, AnalysisResult& result) {
+                          const std::vector<RotorWhirlResponse>& parts, const TrainRecord& time,
+                          AnalysisResult& result) {
   std::vector<double> times;
   if (!time.t.empty()) {
     times.assign(time.t.begin() + time.window_begin, time.t.begin() + time.window_end);
@@ -257,14 +277,15 @@ void addSuperposedHistory(const LateralRotorModel& model,
   result.addTable("frequency_history.csv", table);
 }
 
-/// Simulated probe records x₁, y₁, x₂, y₂ with a keyphasor (measurement.*), sampled from the
-/// exact periodic response, in the formats `spectrum` reads.
-void addProbeRecords(const config::Config& config, const LateralRotorModel& model,
-                     const RotorTimeResponse& time, AnalysisResult& result) {
+/// Simulated probe records x₁, y₁, x₂, y₂ with a keyphasor (measurement.*) of the rotor's
+/// gearbox integrated from rest (Dormand–Prince), in the formats `spectrum` reads; false when
+/// the integration failed.
+bool addProbeRecords(const config::Config& config, const LateralRotorModel& model,
+                     const TrainRecord& time, AnalysisResult& result) {
   io::RunSummary& summary = result.summary;
   const auto& s = model.spec();
   const auto formats = config.stringList("measurement.formats");
-  if (formats.empty()) return;
+  if (formats.empty()) return true;
   const double fs = config.real("measurement.sample_rate");
   requireNyquist(model, fs, "measurement.sample_rate", fmt::format("{:g} Hz", fs));
   const double period = model.commonPeriod();
@@ -286,18 +307,27 @@ void addProbeRecords(const config::Config& config, const LateralRotorModel& mode
     throw InputError("measurement.start", fmt::format("{:g}", start),
                      fmt::format(">= {:g} s (two samples)", 2.0 / fs));
   }
-  const auto eta = sampleRotorTimeResponse(model, times, config.real("time.relative_tolerance"),
-                                           config.real("time.absolute_tolerance"));
+  const RotorGearbox gearbox(s, config.source());
+  TrainDormandPrinceOptions integrator;
+  integrator.relative_tolerance = config.real("time.relative_tolerance");
+  integrator.absolute_tolerance = config.real("time.absolute_tolerance");
   io::ProbeRecord record;
   record.sample_rate = fs;
   record.start_time = times.front();
   record.names = {"x1", "y1", "x2", "y2", "keyphasor"};
   record.units = {"m", "m", "m", "m", ""};
   record.channels.assign(5, std::vector<double>(times.size()));
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    for (int c = 0; c < 4; ++c) record.channels[c][k] = eta[k](c);
-    record.channels[4][k] = keyphasorSignal(times[k], s.pinion_speed, fs);
+  const TrainDormandPrinceRun run =
+      integrateTrainDormandPrince(gearbox.train, gearbox.train.inputSpeed(), times, gearbox.probes,
+                                  integrator, [&](std::size_t k, const Eigen::VectorXd& q) {
+                                    for (int c = 0; c < 4; ++c) record.channels[c][k] = q(c);
+                                  });
+  if (!run.finite) {
+    result.errors.push_back("measurement: the integration produced non-finite values");
+    return false;
   }
+  for (std::size_t k = 0; k < times.size(); ++k)
+    record.channels[4][k] = keyphasorSignal(times[k], s.pinion_speed, fs);
   const double measurement_noise = config.real("measurement.noise_level");
   if (measurement_noise > 0.0) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(config.integer("measurement.seed")));
@@ -323,6 +353,7 @@ void addProbeRecords(const config::Config& config, const LateralRotorModel& mode
                                     {"keyphasor",
                                      "pulse at each pinion revolution, rising "
                                      "through 0.5 at pinion angle 2 pi k"}};
+  return true;
 }
 
 /// The parametric study of Rao (2023) §4.5: speed, mesh stiffness with TE, runouts and mesh
@@ -348,10 +379,10 @@ bool addParametricStudy(const config::Config& config, const LateralRotorModel& m
     const LateralRotorModel m(c.spec);
     std::array<std::vector<WhirlComponent>, 2> peaks;
     if (in_time) {
-      RotorTimeOptions o = config::rotorTimeOptionsFromConfig(config);
+      TrainRecordOptions o = config::rotorTimeOptionsFromConfig(config);
       o.samples =
           static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
-      const RotorTimeResponse r = solveRotorTimeResponse(m, o);
+      const TrainRecord r = recordRotor(m, config.source() + " " + c.name, o);
       if (!r.converged()) {
         warnings.push_back(fmt::format("study case {}: {}", c.name, r.message));
         ok = false;
@@ -467,11 +498,11 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
       "lateral geared rotor: pinion {:.6g} Hz, gear {:.6g} Hz, mesh {:.6g} Hz, common period "
       "{:.6g} s\n",
       s.pinion_speed, setup.gearSpeed(), setup.meshFrequency(), model.commonPeriod());
-  RotorTimeResponse time;
+  TrainRecord time;
   bool ok = !config.boolean("time.enabled") ||
             addTimeDomain(config, context, model, spectrum_options, exact, result, time, text);
   if (config.boolean("frequency.superpose")) addSuperposedHistory(model, parts, time, result);
-  addProbeRecords(config, model, time, result);
+  if (!addProbeRecords(config, model, time, result)) ok = false;
   if (config.boolean("study.enabled") &&
       !addParametricStudy(config, model, spectrum_options, result, warnings, text))
     ok = false;

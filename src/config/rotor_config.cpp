@@ -473,13 +473,13 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   return s;
 }
 
-RotorTimeOptions rotorTimeOptionsFromConfig(const Config& config) {
-  RotorTimeOptions o;
+TrainRecordOptions rotorTimeOptionsFromConfig(const Config& config) {
+  TrainRecordOptions o;
   o.duration = config.real("time.duration");
   o.samples = config.integer("time.samples");
   o.align_to_common_period = config.boolean("time.align_to_common_period");
-  o.relative_tolerance = config.real("time.relative_tolerance");
-  o.absolute_tolerance = config.real("time.absolute_tolerance");
+  o.integrator.relative_tolerance = config.real("time.relative_tolerance");
+  o.integrator.absolute_tolerance = config.real("time.absolute_tolerance");
   o.steady_tolerance = config.real("time.steady_tolerance");
   o.validate();
   return o;

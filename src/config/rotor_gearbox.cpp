@@ -122,4 +122,14 @@ GearTrainSpec lateralRotorGearTrain(const LateralRotorSpec& spec, const std::str
   return gearTrainFromConfig(gearbox, warnings);
 }
 
+std::vector<int> lateralRotorProbeDofs(const GearTrainModel& train) {
+  std::vector<int> dofs;
+  for (const char* name : {"pinion", "gear"}) {
+    const int y = train.translationDof(train.bodyIndex(name));
+    dofs.push_back(y);
+    dofs.push_back(y + 1);
+  }
+  return dofs;
+}
+
 }  // namespace geardyn::config

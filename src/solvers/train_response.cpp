@@ -245,6 +245,81 @@ Eigen::MatrixXd sampledDisplacement(const TrainSteadyState& s, const GearTrainMo
   return q;
 }
 
+/// F_h, h = −H … H (column h + H): the static load at h = 0, every mesh's k·e and c ė at its
+/// harmonics, and the excitations (addExcitationHarmonics).
+Eigen::MatrixXcd forcingHarmonics(const GearTrainModel& model, const TrainBaseFrequency& base,
+                                  double input_speed, int L, int H, double w0,
+                                  const std::vector<std::vector<Complex>>& k_hat,
+                                  const std::vector<std::vector<Complex>>& ke_hat,
+                                  const std::vector<std::vector<Complex>>& e_hat,
+                                  const Eigen::MatrixXcd& V) {
+  const int n = model.dofCount(), r = static_cast<int>(V.cols());
+  const auto& meshes = model.meshes();
+  Eigen::MatrixXcd F = Eigen::MatrixXcd::Zero(n, 2 * H + 1);
+  F.col(H) = model.staticLoad().cast<Complex>();
+  for (int m = 0; m < r; ++m) {
+    for (int l = -L; l <= L; ++l) {
+      const int j = l * base.mesh_multiple[m];
+      // k e, and the mesh dashpot on the tooth deformation rate: c_m ė (ė at i j ω₀).
+      if (std::abs(j) <= H) {
+        F.col(j + H) +=
+            (ke_hat[m][L + l] + Complex(0.0, j * w0) * meshes[m].damping * e_hat[m][L + l]) *
+            V.col(m);
+      }
+    }
+  }
+  addExcitationHarmonics(model, base, input_speed, L, H, k_hat, F);
+  return F;
+}
+
+/// One base period of the steady state s sampled (`samples` points; 0: derived from H): mesh
+/// forces, their extremes, dynamic factors and harmonics 1 … L, and the elements' dynamic forces.
+void sampleSteadyForces(TrainSteadyState& s, const GearTrainModel& model, double input_speed,
+                        int samples, int L, const std::vector<int>& mesh_multiple) {
+  const int H = s.harmonics;
+  const int n = model.dofCount();
+  const auto& meshes = model.meshes();
+  if (samples == 0) {
+    samples = 64;
+    while (samples < 8 * H) samples *= 2;
+  }
+  s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
+  const Eigen::MatrixXd q = sampledDisplacement(s, model);
+  s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
+  Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
+  for (int k = 0; k < samples; ++k) {
+    q_k = q.row(k).transpose();
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      s.mesh_force(k, m) = meshes[m].force(s.t(k), input_speed, q_k);
+    }
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const Eigen::VectorXd f = s.mesh_force.col(m);
+    s.mesh_force_mean.push_back(f.mean());
+    s.mesh_force_max.push_back(f.maxCoeff());
+    s.mesh_force_min.push_back(f.minCoeff());
+    s.dynamic_factor.push_back(
+        std::abs(f.mean()) > 0.0 ? f.cwiseAbs().maxCoeff() / std::abs(f.mean()) : 0.0);
+    std::vector<double> amplitudes;
+    for (int l = 1; l <= L; ++l) {
+      Complex sum = 0.0;
+      const double step = kTwoPi * l * mesh_multiple[m] / samples;
+      for (int k = 0; k < samples; ++k) sum += f(k) * std::polar(1.0, -step * k);
+      amplitudes.push_back(2.0 * std::abs(sum) / samples);
+    }
+    s.mesh_force_harmonics.push_back(std::move(amplitudes));
+  }
+  // Element forces k J q(t): linear in q, one product per element with the samples of its DOFs.
+  Eigen::MatrixXd local;
+  for (const TrainElement& e : model.elements()) {
+    local.resize(samples, static_cast<Eigen::Index>(e.dofs.size()));
+    for (std::size_t i = 0; i < e.dofs.size(); ++i) local.col(i) = q.col(e.dofs[i]);
+    Eigen::MatrixXd forces = local * (e.local_stiffness * e.jacobian).transpose();
+    forces.rowwise() -= forces.colwise().mean();
+    s.element_dynamic_force.push_back(forces.rowwise().norm().maxCoeff());
+  }
+}
+
 }  // namespace
 
 TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSteadyOptions& options)
@@ -311,21 +386,8 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
                                    options_.sparse_dofs, false, housing_);
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
-  // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.
-  Eigen::MatrixXcd F = Eigen::MatrixXcd::Zero(n, blocks);
-  F.col(H) = model.staticLoad().cast<Complex>();
-  for (int m = 0; m < r; ++m) {
-    for (int l = -L; l <= L; ++l) {
-      const int j = l * base.mesh_multiple[m];
-      // k e, and the mesh dashpot on the tooth deformation rate: c_m ė (ė at i j ω₀).
-      if (std::abs(j) <= H) {
-        F.col(j + H) +=
-            (ke_hat[m][L + l] + Complex(0.0, j * w0) * meshes[m].damping * e_hat_[m][L + l]) *
-            V.col(m);
-      }
-    }
-  }
-  addExcitationHarmonics(model, base, input_speed, L, H, k_hat, F);
+  const Eigen::MatrixXcd F =
+      forcingHarmonics(model, base, input_speed, L, H, w0, k_hat, ke_hat, e_hat_, V);
   // K̄, M and C are real: D(−h) = conj D(h), so only h ≥ 0 is factorised (detail::HarmonicBlocks),
   // one block at a time: D(h)⁻¹ [V, F_h, conj F_−h] in one solve, D(h)⁻¹V and D(h)⁻¹F_h kept
   // for the recovery X_h = D(h)⁻¹F_h − D(h)⁻¹V g_h (g_h the mesh terms below), so the sparse
@@ -400,47 +462,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     }
   }
 
-  // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.
-  int samples = options_.samples;
-  if (samples == 0) {
-    samples = 64;
-    while (samples < 8 * H) samples *= 2;
-  }
-  s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
-  const Eigen::MatrixXd q = sampledDisplacement(s, model);
-  s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
-  Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
-  for (int k = 0; k < samples; ++k) {
-    q_k = q.row(k).transpose();
-    for (std::size_t m = 0; m < meshes.size(); ++m) {
-      s.mesh_force(k, m) = meshes[m].force(s.t(k), input_speed, q_k);
-    }
-  }
-  for (std::size_t m = 0; m < meshes.size(); ++m) {
-    const Eigen::VectorXd f = s.mesh_force.col(m);
-    s.mesh_force_mean.push_back(f.mean());
-    s.mesh_force_max.push_back(f.maxCoeff());
-    s.mesh_force_min.push_back(f.minCoeff());
-    s.dynamic_factor.push_back(
-        std::abs(f.mean()) > 0.0 ? f.cwiseAbs().maxCoeff() / std::abs(f.mean()) : 0.0);
-    std::vector<double> amplitudes;
-    for (int l = 1; l <= L; ++l) {
-      Complex sum = 0.0;
-      const double step = kTwoPi * l * base.mesh_multiple[m] / samples;
-      for (int k = 0; k < samples; ++k) sum += f(k) * std::polar(1.0, -step * k);
-      amplitudes.push_back(2.0 * std::abs(sum) / samples);
-    }
-    s.mesh_force_harmonics.push_back(std::move(amplitudes));
-  }
-  // Element forces k J q(t): linear in q, one product per element with the samples of its DOFs.
-  Eigen::MatrixXd local;
-  for (const TrainElement& e : model.elements()) {
-    local.resize(samples, static_cast<Eigen::Index>(e.dofs.size()));
-    for (std::size_t i = 0; i < e.dofs.size(); ++i) local.col(i) = q.col(e.dofs[i]);
-    Eigen::MatrixXd forces = local * (e.local_stiffness * e.jacobian).transpose();
-    forces.rowwise() -= forces.colwise().mean();
-    s.element_dynamic_force.push_back(forces.rowwise().norm().maxCoeff());
-  }
+  sampleSteadyForces(s, model, input_speed, options_.samples, L, base.mesh_multiple);
   return s;
 }
 

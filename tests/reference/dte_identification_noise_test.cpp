@@ -22,9 +22,11 @@
 #include <random>
 #include <thread>
 
+#include "geardyn/config/rotor_gearbox.h"
 #include "geardyn/identify/dte_identification.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/rotor_response.h"
+#include "geardyn/solvers/train_periodic_record.h"
 
 namespace geardyn {
 namespace {
@@ -38,10 +40,15 @@ struct Simulated {
 const Simulated& simulated() {
   static const Simulated s = [] {
     Simulated out;
-    const LateralRotorModel model(out.truth);
-    const RotorTimeResponse r = solveRotorTimeResponse(model, RotorTimeOptions{});
+    // The thesis's 15 s record of the rotor: its gearbox (config/rotor_gearbox.h) from rest.
+    std::vector<std::string> warnings;
+    const GearTrainModel train(config::lateralRotorGearTrain(out.truth, "test", warnings));
+    const TrainRecord r =
+        recordTrainFromRest(train, train.inputSpeed(), config::lateralRotorProbeDofs(train),
+                            LateralRotorModel(out.truth).commonPeriod(), TrainRecordOptions{});
     for (int c = 0; c < 4; ++c)
-      for (long long k = r.window_begin; k < r.window_end; ++k) out.clean[c].push_back(r.eta[k](c));
+      for (long long k = r.window_begin; k < r.window_end; ++k)
+        out.clean[c].push_back(r.displacement(k, c));
     out.sample_rate = r.sample_rate;
     out.first_time = r.t[r.window_begin];
     return out;

@@ -1,14 +1,12 @@
 /// Lateral geared rotor responses: the frequency-domain solution satisfies the equations of
-/// motion exactly, the runout response is the closed form η = −w, and Dormand–Prince from rest
-/// converges to it once the detected transient is over.
+/// motion exactly and the runout response is the closed form η = −w (its time domain, the
+/// gearbox recorded by Dormand–Prince, is tested against it in train_dormand_prince_test.cpp).
 
 #include "geardyn/solvers/rotor_response.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "geardyn/signal/full_spectrum.h"
 
 namespace geardyn {
 namespace {
@@ -85,98 +83,6 @@ TEST(RotorFrequencyResponse, StaticDeflectionClosedForm) {
   EXPECT_NEAR(te.response(0).real(), f / k1, 1e-12 * f / k1);
   EXPECT_NEAR(te.response(1).real(), -f / k2, 1e-12 * f / k2);
   EXPECT_NEAR(te.response(0).imag(), f / k1, 1e-12 * f / k1);
-}
-
-TEST(RotorTimeResponse, DormandPrinceConvergesToTheFrequencyDomainSteadyState) {
-  // Table 4.1, the thesis's 15 s from rest: after the detected transient the time history
-  // equals the exact steady state to the integrator's tolerance.
-  const LateralRotorModel model(raoTable41Spec());
-  RotorTimeOptions options;  // 15 s, 2^15 samples, rtol 1e-8
-  const RotorTimeResponse r = solveRotorTimeResponse(model, options);
-  ASSERT_TRUE(r.converged()) << r.message;
-  EXPECT_GE(r.window_periods, 3);
-  EXPECT_NEAR(r.sample_rate, 32767 / 15.0, 1.0);
-  const auto parts = solveRotorFrequencyResponse(model);
-  std::vector<double> times(r.t.begin() + r.window_begin, r.t.begin() + r.window_end);
-  const auto exact = superposeWhirlResponse(parts, times);
-  double scale = 0.0, error = 0.0;
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    scale = std::max(scale, exact[i].cwiseAbs().maxCoeff());
-    error = std::max(error, (r.eta[r.window_begin + i] - exact[i]).cwiseAbs().maxCoeff());
-  }
-  EXPECT_LT(error, 1e-5 * scale);
-  // The transient is detected, not guessed: before its end the history is far from the steady
-  // state, after it close (steady_tolerance 1e-6 of the response, × 2 for the comparison).
-  const auto at = [&](long long k) {
-    return (r.eta[k] - superposeWhirlResponse(parts, {r.t[k]})[0]).cwiseAbs().maxCoeff();
-  };
-  EXPECT_GT(at(r.transient_end / 2), 1e-4 * scale);
-  EXPECT_LT(at(r.transient_end), 2e-6 * scale + 1e-5 * scale);
-
-  // Whirl components by exact FFT bins of the steady window: within 0.5 % and 0.01 rad of the
-  // frequency-domain values (the criterion; measured: far better).
-  for (int shaft = 0; shaft < 2; ++shaft) {
-    std::vector<double> x, y;
-    for (long long k = r.window_begin; k < r.window_end; ++k) {
-      x.push_back(r.eta[k](2 * shaft));
-      y.push_back(r.eta[k](2 * shaft + 1));
-    }
-    std::vector<WhirlComponent> components;
-    for (const auto& p : parts) components.push_back({p.name, p.omega / (2 * M_PI), 0.0});
-    EXPECT_EQ(extractWhirlComponents(x, y, r.sample_rate, components), WhirlExtraction::kExactBins);
-    const double t0 = r.t[r.window_begin];
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-      // The window starts at t0: the exact value there is p e^{jΩ t0}.
-      const Complex expected = parts[i].response(shaft) * std::polar(1.0, parts[i].omega * t0);
-      const double amplitude = std::abs(expected);
-      if (amplitude < 1e-12) {
-        EXPECT_LT(std::abs(components[i].value), 1e-5 * scale) << parts[i].name;
-        continue;
-      }
-      EXPECT_NEAR(std::abs(components[i].value), amplitude, 5e-3 * amplitude) << parts[i].name;
-      EXPECT_LT(std::abs(std::arg(components[i].value / expected)), 0.01) << parts[i].name;
-    }
-  }
-}
-
-TEST(RotorTimeResponse, UnalignedGridDetectsTheTransientFromDenseOutput) {
-  // The thesis's exact linspace grid (not a whole number of samples per common period): the
-  // periodicity check uses the integrator's dense output at t + T_c; the least-squares peaks
-  // agree with the frequency domain.
-  const LateralRotorModel model(raoTable41Spec());
-  RotorTimeOptions options;
-  options.align_to_common_period = false;
-  const RotorTimeResponse r = solveRotorTimeResponse(model, options);
-  ASSERT_TRUE(r.converged()) << r.message;
-  EXPECT_NEAR(r.sample_rate, 32767 / 15.0, 1e-9);
-  EXPECT_NEAR(r.t[r.transient_end], 1.25, 0.05);
-  std::vector<double> x, y;
-  for (long long k = r.window_begin; k < r.window_end; ++k) {
-    x.push_back(r.eta[k](0));
-    y.push_back(r.eta[k](1));
-  }
-  const auto parts = solveRotorFrequencyResponse(model);
-  std::vector<WhirlComponent> components;
-  for (const auto& p : parts) components.push_back({p.name, p.omega / (2 * M_PI), 0.0});
-  EXPECT_EQ(extractWhirlComponents(x, y, r.sample_rate, components),
-            WhirlExtraction::kLeastSquares);
-  double largest = 0.0;
-  for (const auto& p : parts) largest = std::max(largest, std::abs(p.response(0)));
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    const Complex expected =
-        parts[i].response(0) * std::polar(1.0, parts[i].omega * r.t[r.window_begin]);
-    EXPECT_LT(std::abs(components[i].value - expected), 1e-6 * largest) << parts[i].name;
-  }
-}
-
-TEST(RotorTimeResponse, TooShortARecordIsReportedNotHidden) {
-  const LateralRotorModel model(raoTable41Spec());
-  RotorTimeOptions options;
-  options.duration = 2.0;  // shorter than the common period 35/11 s
-  options.samples = 4096;
-  const RotorTimeResponse r = solveRotorTimeResponse(model, options);
-  EXPECT_FALSE(r.converged());
-  EXPECT_NE(r.message.find("common period"), std::string::npos);
 }
 
 }  // namespace

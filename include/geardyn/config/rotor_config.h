@@ -14,6 +14,7 @@
 #include "geardyn/models/lateral_rotor.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/rotor_response.h"
+#include "geardyn/solvers/train_periodic_record.h"
 
 namespace geardyn::config {
 
@@ -30,7 +31,7 @@ ConfigSchema rotorSchema();
 ConfigSchema spectrumSchema();
 
 LateralRotorSpec lateralRotorSpecFromConfig(const Config& config);
-RotorTimeOptions rotorTimeOptionsFromConfig(const Config& config);
+TrainRecordOptions rotorTimeOptionsFromConfig(const Config& config);
 GearPairSpectrumOptions gearPairSpectrumOptionsFromConfig(const Config& config);
 
 }  // namespace geardyn::config

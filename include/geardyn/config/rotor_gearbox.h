@@ -27,6 +27,7 @@
 #include "geardyn/config/config.h"
 #include "geardyn/models/lateral_rotor.h"
 #include "geardyn/system/gear_train.h"
+#include "geardyn/system/gear_train_model.h"
 
 namespace geardyn::config {
 
@@ -40,5 +41,9 @@ std::string lateralRotorGearbox(const Config& config);
 /// reader (gearTrainFromConfig); the reader's warnings are appended.
 GearTrainSpec lateralRotorGearTrain(const LateralRotorSpec& spec, const std::string& source,
                                     std::vector<std::string>& warnings);
+
+/// The DOFs of the thesis's probes (x₁, y₁, x₂, y₂) in the lateral rotor's gear train: the
+/// (y, z) translations of the bodies "pinion" and "gear".
+std::vector<int> lateralRotorProbeDofs(const GearTrainModel& train);
 
 }  // namespace geardyn::config
