@@ -2,7 +2,7 @@
 // "nonlinear" over (u_y, u_z, u_x, θ_y, θ_z)) in the harmonic balance and nonlinear Newmark,
 // the `time` response with the full law (the nonlinear Newmark on the linear run's plan)
 // against the nonlinear balance's steady state, and the torus balance with the full law
-// against Newmark.
+// (planar and full DOFs) against Newmark.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -277,6 +277,119 @@ TEST(RollingBearingTorus, HuntingReducerWithFullLawAgainstNewmark) {
                   1e6 * check.p2p_torus[c], error);
       EXPECT_LT(error, 0.01) << factor << " coordinate " << c;
     }
+  }
+}
+
+/// The hunting-tooth reducer with full DOFs: the flexible two-stage reducer of
+/// examples/gearboxes (helical, 12°; its shafts here rigid bodies with six DOFs, 24 DOFs in all)
+/// with the hunting-tooth ratios 19/71 and 21/59 (mesh frequencies 71/21 apart: two
+/// generators), smooth k(φ) and the transmission errors of the planar test above, 100 N m; the
+/// input shaft's locating bearing input_a on the full law of rollingPairFullDofs's back-to-back
+/// pair of 25° angular-contact rows (9 × 12.7 mm on 60 mm, rows 20 mm apart, 5 µm play) over
+/// its five coordinates. The helix's thrust loads one row more than the other.
+GearTrainSpec huntingReducerFullDofs() {
+  GearTrainSpec spec = testing::exampleGearbox("two_stage_reducer_flexible.toml");
+  EXPECT_EQ(spec.dofs, TrainDofs::kFull);
+  for (TrainShaftSpec& shaft : spec.shafts) shaft.flexible = false;
+  const int teeth[] = {19, 71, 21, 59};
+  for (int i = 0; i < 4; ++i) {
+    spec.gears[i].gear.teeth = teeth[i];
+    spec.gears[i].gear.profile_shift = 0.0;
+  }
+  spec.meshes[0].stiffness = testing::nonlinear::smooth(4e8, 0.0);
+  spec.meshes[1].stiffness = testing::nonlinear::smooth(6e8, 40.0);
+  spec.meshes[0].transmission_error = {};
+  spec.meshes[0].transmission_error.addFourier({8e-6, 2e-6}, {0.0, 0.5});
+  spec.meshes[1].transmission_error = {};
+  spec.meshes[1].transmission_error.addFourier({6e-6}, {0.3});
+  spec.operating.input_torque = 100.0;
+  const GearTrainSpec pair = rollingPairFullDofs(5e-6, 1.0, true);
+  for (TrainBearingSpec& b : spec.bearings) {
+    if (b.name != "input_a") continue;
+    b.kyy = b.kzz = b.kyz = b.kzy = b.k_axial = b.k_tilt = 0.0;
+    b.rolling = pair.bearings[0].rolling;
+    b.c_tilt = 30.0;
+    b.full_law = true;
+  }
+  return spec;
+}
+
+/// ∂R/∂u and ∂R/∂ω of the torus balance with the full-DOF bearing against central differences
+/// (step 1e-7 of the state's largest entry), about the starting guess and with every
+/// coordinate's harmonics scattered by 30 % of that entry (the bearing swinging through its
+/// load zone on part of the grid): within 1e-5 of the Jacobian's largest entry (as
+/// train_torus_balance_test's check with backlash; a misplaced slope column of the 5 × 5 block
+/// is O(1) of B K).
+TEST(RollingBearingTorus, FullDofsJacobianAgainstFiniteDifferences) {
+  const GearTrainModel model = linearisedAtStatics(huntingReducerFullDofs());
+  ASSERT_EQ(model.clearanceBearings().size(), 1u);
+  TrainTorusBalanceOptions options;
+  options.mesh_harmonics = 2;
+  TrainTorusBalance hb(model, options);
+  ASSERT_EQ(hb.generators().ratio.size(), 2u);
+  ASSERT_EQ(hb.coordinateCount(), 2 + 5);
+  const double omega = hb.baseFrequency(model.inputSpeed());
+  const Eigen::VectorXd guess = hb.startingGuess(omega);
+  for (double spread : {0.0, 0.3}) {
+    Eigen::VectorXd u = guess;
+    const Eigen::VectorXd scatter = Eigen::VectorXd::LinSpaced(u.size(), -1.0, 1.0).array().sin();
+    u += spread * u.cwiseAbs().maxCoeff() * scatter;
+    Eigen::VectorXd r, dr_domega, rp, rm;
+    Eigen::MatrixXd J;
+    hb.residual(u, omega, r, &J, &dr_domega);
+    const double h = 1e-7 * u.cwiseAbs().maxCoeff();
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < u.size(); ++i) {
+      Eigen::VectorXd a = u, b = u;
+      a(i) += h, b(i) -= h;
+      hb.residual(a, omega, rp, nullptr, nullptr);
+      hb.residual(b, omega, rm, nullptr, nullptr);
+      worst = std::max(worst, ((rp - rm) / (2.0 * h) - J.col(i)).cwiseAbs().maxCoeff());
+    }
+    worst /= J.cwiseAbs().maxCoeff();
+    const double dw = 1e-6 * omega;
+    hb.residual(u, omega + dw, rp, nullptr, nullptr);
+    hb.residual(u, omega - dw, rm, nullptr, nullptr);
+    const Eigen::VectorXd fd_omega = (rp - rm) / (2.0 * dw);
+    const double worst_omega = (dr_domega - fd_omega).norm() / fd_omega.norm();
+    std::printf("torus full DOFs, spread %.1f: Jacobian %.2e, d/domega %.2e off\n", spread, worst,
+                worst_omega);
+    EXPECT_LT(worst, 1e-5) << spread;
+    EXPECT_LT(worst_omega, 1e-5) << spread;
+  }
+}
+
+/// The torus balance on huntingReducerFullDofs (6 mesh harmonics per generator) against
+/// Newmark started on it and run for 0.3 s (torusNewmarkCheck: 256 steps per stage-1 mesh
+/// period) at 1× and 2× the operating speed: the p2p of every nonlinear coordinate (the two
+/// mesh deflections and the bearing's u_y, u_z, u_x, θ_y, θ_z) over the last half of the run
+/// within 1 % of the torus solution's (the balance's truncation and Newmark's second-order
+/// error, as for the planar case above), and the bearing's axial and tilt motions are not
+/// negligible (the helical meshes drive them).
+TEST(RollingBearingTorus, HuntingReducerFullDofsAgainstNewmark) {
+  const GearTrainModel model = linearisedAtStatics(huntingReducerFullDofs());
+  TrainTorusBalanceOptions options;
+  options.mesh_harmonics = 6;
+  TrainTorusBalance hb(model, options);
+  for (double factor : {1.0, 2.0}) {
+    HarmonicBalancePoint point;
+    point.omega = hb.baseFrequency(factor * model.inputSpeed());
+    point.q = hb.startingGuess(point.omega);
+    hb.solve(point);
+    ASSERT_TRUE(point.converged) << factor << ": " << point.residual;
+    const TorusNewmarkCheck check = torusNewmarkCheck(model, hb, point, 0.3);
+    ASSERT_EQ(check.status, "completed") << factor;
+    ASSERT_EQ(check.p2p_torus.size(), 7u);
+    for (std::size_t c = 0; c < check.p2p_torus.size(); ++c) {
+      const double error = std::abs(check.p2p_newmark[c] / check.p2p_torus[c] - 1.0);
+      std::printf(
+          "torus full DOFs %.1f x speed, coordinate %zu: p2p %.4g (um or urad), Newmark "
+          "%.2e off\n",
+          factor, c, 1e6 * check.p2p_torus[c], error);
+      EXPECT_LT(error, 0.01) << factor << " coordinate " << c;
+    }
+    EXPECT_GT(check.p2p_torus[4], 1e-3 * check.p2p_torus[2]) << "u_x";
+    EXPECT_GT(0.03 * check.p2p_torus[5], 1e-3 * check.p2p_torus[2]) << "theta_y";
   }
 }
 
