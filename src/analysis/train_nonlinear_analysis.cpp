@@ -378,7 +378,7 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
         "response is the linear one");
   }
   if (nonlinearOnTorus(model, analysis)) {
-    // A full-law bearing with full DOFs exits 2 there, naming it (TrainTorusBalance).
+    // Full-law bearings, planar or full DOFs, are nonlinear coordinates there too.
     return runTrainNonlinearTorus(model, analysis, result, text, context);
   }
   const TrainHarmonicBalanceOptions options =

@@ -40,7 +40,7 @@ void addRollingBearingKeys(ConfigSchema& schema, const std::string& prefix) {
           "load-deflection law with the clearance (elements leave contact) on the radial "
           "displacement (planar DOFs) or on all five of the bearing's coordinates (full DOFs); "
           "`time` then integrates with the nonlinear Newmark and compares with the nonlinear "
-          "balance; the torus balance takes it with planar DOFs");
+          "balance; the torus balance takes it too (planar and full DOFs)");
   schema.string(prefix + "arrangement")
       .choices({"single", "back_to_back", "face_to_face"})
       .defaultValue("single")

@@ -64,17 +64,8 @@ TrainTorusBalance::TrainTorusBalance(const GearTrainModel& model,
   const std::vector<int>& N = generators_.harmonics;
   k_ = static_cast<int>(N.size());
   meshes_ = static_cast<int>(model.meshes().size());
-  bearings_ = static_cast<int>(model.clearanceBearings().size());
-  for (const TrainClearanceBearing& b : model.clearanceBearings()) {
-    if (b.jacobian.rows() != 2) {  // the torus's bearing blocks are (u_y, u_z)
-      throw InputError("bearings." + b.name + ".model", "\"nonlinear\" with full DOFs",
-                       "\"linearised\" for the torus balance (its bearing coordinates are "
-                       "(u_y, u_z))");
-    }
-  }
-  r_ = meshes_ + 2 * bearings_;
+  setUpBearings();
   dofs_ = model.dofCount();
-  slopes_ = meshes_ + 4 * bearings_;
   speed_sign_ = model.inputSpeed() < 0.0 ? -1.0 : 1.0;
   // T⁺: the zero tone, then every positive tone of the box.
   long long box = 1;
@@ -264,20 +255,59 @@ void TrainTorusBalance::gridForces(const Eigen::VectorXd& u) {
       grid_out_(g, r_ + m) = s - mesh.mean_stiffness;
     }
   }
-  Eigen::Matrix2d J;
+  gridBearingForces();
+  fft_->toSpectrum(grid_out_, half_out_);
+}
+
+void TrainTorusBalance::setUpBearings() {
+  // Coordinates: the meshes, then each bearing's w (2, or 5 for a full-DOF rolling bearing's
+  // full law; the order of GearTrainModel::nonlinearVectors). Slope columns after the r_
+  // forces: the meshes' dF/dδ, then each bearing's w × w Jacobian, column-major.
+  laws_ = trainBearingLaws(model_);
+  bearings_ = static_cast<int>(laws_.size());
+  r_ = meshes_;
+  slopes_ = meshes_;
+  bearing_of_.assign(meshes_, -1);
   for (int b = 0; b < bearings_; ++b) {
-    const TrainClearanceBearing& bearing = model_.clearanceBearings()[b];
-    const int c = meshes_ + 2 * b;
+    const int w = laws_[b].width();
+    bearing_first_.push_back(r_);
+    slope_first_.push_back(slopes_);
+    bearing_of_.insert(bearing_of_.end(), w, b);
+    r_ += w;
+    slopes_ += w * w;
+  }
+}
+
+void TrainTorusBalance::gridBearingForces() {
+  // f̃ = f(u) − K_lin u and ∂f̃/∂u at every grid point (linearised: the bearings of K, f̃ = 0).
+  const long long points = fft_->points();
+  for (int b = 0; b < bearings_; ++b) {
+    const TrainBearingLaw& law = laws_[b];
+    const int c = bearing_first_[b], w = law.width(), s = r_ + slope_first_[b];
+    TrainBearingLaw::Vector u(w), f = TrainBearingLaw::Vector::Zero(w);
+    TrainBearingLaw::Matrix J = TrainBearingLaw::Matrix::Zero(w, w);
     for (long long g = 0; g < points; ++g) {
-      Eigen::Vector2d f = Eigen::Vector2d::Zero();
-      J.setZero();
-      if (!linearized_) f = bearing.correctionForce({grid_(g, c), grid_(g, c + 1)}, &J);
-      grid_out_(g, c) = f(0);
-      grid_out_(g, c + 1) = f(1);
-      for (int q = 0; q < 4; ++q) grid_out_(g, r_ + meshes_ + 4 * b + q) = J(q % 2, q / 2);
+      if (!linearized_) {
+        for (int k = 0; k < w; ++k) u(k) = grid_(g, c + k);
+        f = law.correctionForce(u, &J);
+      }
+      for (int k = 0; k < w; ++k) grid_out_(g, c + k) = f(k);
+      for (int k = 0; k < w * w; ++k) grid_out_(g, s + k) = J(k % w, k / w);
     }
   }
-  fft_->toSpectrum(grid_out_, half_out_);
+}
+
+void TrainTorusBalance::coupledCoordinates(int a, int* first, int* count) const {
+  const int b = bearing_of_[a];
+  *first = b < 0 ? a : bearing_first_[b];
+  *count = b < 0 ? 1 : laws_[b].width();
+}
+
+int TrainTorusBalance::slopeColumn(int b, int a) const {
+  const int bearing = bearing_of_[a];
+  if (bearing < 0) return r_ + a;  // a mesh: b == a
+  const int c = bearing_first_[bearing], w = laws_[bearing].width();
+  return r_ + slope_first_[bearing] + (b - c) + w * (a - c);
 }
 
 void TrainTorusBalance::residual(const Eigen::VectorXd& u, double omega, Eigen::VectorXd& R,
@@ -316,22 +346,16 @@ void TrainTorusBalance::residual(const Eigen::VectorXd& u, double omega, Eigen::
   // ∂/∂Im x_{a,q} = i (S(n_p − n_q) − S(n_p + n_q)).
   Eigen::MatrixXd& J = *dr_du;
   J.setIdentity(size(), size());
-  const auto slopeColumn = [&](int b, int a) {
-    if (a < meshes_) return r_ + a;  // b == a
-    const int bearing = (a - meshes_) / 2;
-    return r_ + meshes_ + 4 * bearing + (b - meshes_ - 2 * bearing) +
-           2 * (a - meshes_ - 2 * bearing);
-  };
   for (int a = 0; a < r_; ++a) {
     int first = a, count = 1;
-    if (a >= meshes_) first = meshes_ + 2 * ((a - meshes_) / 2), count = 2;
+    coupledCoordinates(a, &first, &count);
     for (int q = 0; q <= P_; ++q) {
       for (int part = 0; part < (q == 0 ? 1 : 2); ++part) {
         const std::ptrdiff_t col =
             static_cast<std::ptrdiff_t>(a) * n_ + (q == 0 ? 0 : 2 * q - 1 + part);
         for (int p = 0; p <= P_; ++p) {
           const std::size_t at = static_cast<std::size_t>(p) * (P_ + 1) + q;
-          Complex dF[2];
+          Complex dF[5];  // up to a full-DOF bearing's five coordinates
           for (int bi = 0; bi < count; ++bi) {
             const int s = slopeColumn(first + bi, a);
             if (q == 0) {
@@ -380,12 +404,15 @@ Eigen::VectorXd TrainTorusBalance::startingGuess(double omega) {
   }
   linearized_ = false;
   for (int b = 0; b < bearings_; ++b) {  // the journal onto the bearing surface
-    // ū (1 + c/|ū|) for the clearance law; a full-law bearing's Newton on f(u) = K_s ū.
-    const std::ptrdiff_t c = meshes_ + 2 * b;
-    const Eigen::Vector2d mean = model_.clearanceBearings()[b].loadedDisplacement(
-        Eigen::Vector2d(u(c * n_), u((c + 1) * n_)));
-    u(c * n_) = mean(0);
-    u((c + 1) * n_) = mean(1);
+    // ū (1 + c/|ū|) for the clearance law; a full-law bearing's Newton on f(u) = K_s ū in its
+    // 2 or 5 coordinates (bearing_law.h).
+    const TrainBearingLaw& law = laws_[b];
+    const std::ptrdiff_t c = bearing_first_[b];
+    const int w = law.width();
+    TrainBearingLaw::Vector mean(w);
+    for (int k = 0; k < w; ++k) mean(k) = u((c + k) * n_);
+    mean = law.loadedDisplacement(mean);
+    for (int k = 0; k < w; ++k) u((c + k) * n_) = mean(k);
   }
   return u;
 }

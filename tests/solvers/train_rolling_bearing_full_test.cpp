@@ -2,11 +2,12 @@
 // "nonlinear" over (u_y, u_z, u_x, θ_y, θ_z)) in the harmonic balance and nonlinear Newmark,
 // the `time` response with the full law (the nonlinear Newmark on the linear run's plan)
 // against the nonlinear balance's steady state, and the torus balance with the full law
-// against Newmark.
+// (planar and full DOFs) against Newmark.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <numbers>
 
@@ -277,6 +278,169 @@ TEST(RollingBearingTorus, HuntingReducerWithFullLawAgainstNewmark) {
                   1e6 * check.p2p_torus[c], error);
       EXPECT_LT(error, 0.01) << factor << " coordinate " << c;
     }
+  }
+}
+
+/// The hunting-tooth reducer with full DOFs: the flexible two-stage reducer of
+/// examples/gearboxes (helical, 12°; its shafts here rigid bodies with six DOFs, 24 DOFs in all)
+/// with the hunting-tooth ratios 19/71 and 21/59 (mesh frequencies 71/21 apart: two
+/// generators), smooth k(φ) and the transmission errors of the planar test above; the input
+/// shaft's locating bearing input_a on the full law of rollingPairFullDofs's back-to-back pair
+/// of 25° angular-contact rows (9 × 12.7 mm on 60 mm, rows 20 mm apart, 5 µm play) over its
+/// five coordinates (`full_law` false: linearised at the static deflection). 20 N m, a light
+/// load (~0.5 kN on the pair): the orbit is a large part of the static deflection, so the full
+/// law differs from the linearised bearing by more than the comparison's 1 % (at 100 N m by
+/// 0.4 %). The helix's thrust loads one row more than the other.
+GearTrainSpec huntingReducerFullDofs(bool full_law = true) {
+  GearTrainSpec spec = testing::exampleGearbox("two_stage_reducer_flexible.toml");
+  EXPECT_EQ(spec.dofs, TrainDofs::kFull);
+  for (TrainShaftSpec& shaft : spec.shafts) shaft.flexible = false;
+  const int teeth[] = {19, 71, 21, 59};
+  for (int i = 0; i < 4; ++i) {
+    spec.gears[i].gear.teeth = teeth[i];
+    spec.gears[i].gear.profile_shift = 0.0;
+  }
+  spec.meshes[0].stiffness = testing::nonlinear::smooth(4e8, 0.0);
+  spec.meshes[1].stiffness = testing::nonlinear::smooth(6e8, 40.0);
+  spec.meshes[0].transmission_error = {};
+  spec.meshes[0].transmission_error.addFourier({8e-6, 2e-6}, {0.0, 0.5});
+  spec.meshes[1].transmission_error = {};
+  spec.meshes[1].transmission_error.addFourier({6e-6}, {0.3});
+  spec.operating.input_torque = 20.0;
+  const GearTrainSpec pair = rollingPairFullDofs(5e-6, 1.0, true);
+  for (TrainBearingSpec& b : spec.bearings) {
+    if (b.name != "input_a") continue;
+    b.kyy = b.kzz = b.kyz = b.kzy = b.k_axial = b.k_tilt = 0.0;
+    b.rolling = pair.bearings[0].rolling;
+    b.c_tilt = 30.0;
+    b.full_law = full_law;
+  }
+  return spec;
+}
+
+/// The torus solution at ω over `times` [s] through the columns `Wb` of W: Wbᵀ q(t) (rows:
+/// times) [m, rad].
+Eigen::MatrixXd torusThrough(TrainTorusBalance& hb, const HarmonicBalancePoint& point,
+                             const Eigen::MatrixXd& Wb, const Eigen::VectorXd& times) {
+  const Eigen::MatrixXcd X =
+      Wb.transpose().cast<std::complex<double>>() * hb.displacementHarmonics(point);
+  Eigen::MatrixXd w(times.size(), Wb.cols());
+  for (Eigen::Index i = 0; i < times.size(); ++i) {
+    Eigen::VectorXd sum = X.col(0).real();
+    for (Eigen::Index p = 1; p < X.cols(); ++p) {
+      const double phase = hb.toneFrequency(static_cast<int>(p), point.omega) * times(i);
+      sum += 2.0 * (X.col(p) * std::polar(1.0, phase)).real();
+    }
+    w.row(i) = sum.transpose();
+  }
+  return w;
+}
+
+/// ∂R/∂u and ∂R/∂ω of the torus balance with the full-DOF bearing against central differences
+/// (step 1e-7 of the state's largest entry), about the starting guess and with every
+/// coordinate's harmonics scattered by 30 % of that entry (the bearing swinging through its
+/// load zone on part of the grid): within 1e-5 of the Jacobian's largest entry (as
+/// train_torus_balance_test's check with backlash; a misplaced slope column of the 5 × 5 block
+/// is O(1) of B K).
+TEST(RollingBearingTorus, FullDofsJacobianAgainstFiniteDifferences) {
+  const GearTrainModel model = linearisedAtStatics(huntingReducerFullDofs());
+  ASSERT_EQ(model.clearanceBearings().size(), 1u);
+  TrainTorusBalanceOptions options;
+  options.mesh_harmonics = 2;
+  TrainTorusBalance hb(model, options);
+  ASSERT_EQ(hb.generators().ratio.size(), 2u);
+  ASSERT_EQ(hb.coordinateCount(), 2 + 5);
+  const double omega = hb.baseFrequency(model.inputSpeed());
+  const Eigen::VectorXd guess = hb.startingGuess(omega);
+  for (double spread : {0.0, 0.3}) {
+    Eigen::VectorXd u = guess;
+    const Eigen::VectorXd scatter = Eigen::VectorXd::LinSpaced(u.size(), -1.0, 1.0).array().sin();
+    u += spread * u.cwiseAbs().maxCoeff() * scatter;
+    Eigen::VectorXd r, dr_domega, rp, rm;
+    Eigen::MatrixXd J;
+    hb.residual(u, omega, r, &J, &dr_domega);
+    const double h = 1e-7 * u.cwiseAbs().maxCoeff();
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < u.size(); ++i) {
+      Eigen::VectorXd a = u, b = u;
+      a(i) += h, b(i) -= h;
+      hb.residual(a, omega, rp, nullptr, nullptr);
+      hb.residual(b, omega, rm, nullptr, nullptr);
+      worst = std::max(worst, ((rp - rm) / (2.0 * h) - J.col(i)).cwiseAbs().maxCoeff());
+    }
+    worst /= J.cwiseAbs().maxCoeff();
+    const double dw = 1e-6 * omega;
+    hb.residual(u, omega + dw, rp, nullptr, nullptr);
+    hb.residual(u, omega - dw, rm, nullptr, nullptr);
+    const Eigen::VectorXd fd_omega = (rp - rm) / (2.0 * dw);
+    const double worst_omega = (dr_domega - fd_omega).norm() / fd_omega.norm();
+    std::printf("torus full DOFs, spread %.1f: Jacobian %.2e, d/domega %.2e off\n", spread, worst,
+                worst_omega);
+    EXPECT_LT(worst, 1e-5) << spread;
+    EXPECT_LT(worst_omega, 1e-5) << spread;
+  }
+}
+
+/// The torus balance on huntingReducerFullDofs (6 mesh harmonics per generator) against
+/// Newmark started on it and run for 0.3 s (torusNewmarkCheck: 256 steps per stage-1 mesh
+/// period) at 1× and 2× the operating speed: the p2p of every nonlinear coordinate (the two
+/// mesh deflections and the bearing's u_y, u_z, u_x, θ_y, θ_z) over the last half of the run
+/// within 1 % of the torus solution's (the balance's truncation and Newmark's second-order
+/// error, as for the planar case above); the bearing's axial and tilt motions are not
+/// negligible (the helical meshes drive them: u_x's p2p and θ_y's times d_m/2 above 10 % of the
+/// radial p2p), and the linearised bearing's differ by more than 2 % (the check separates them).
+TEST(RollingBearingTorus, HuntingReducerFullDofsAgainstNewmark) {
+  const GearTrainModel model = linearisedAtStatics(huntingReducerFullDofs());
+  TrainTorusBalanceOptions options;
+  options.mesh_harmonics = 6;
+  TrainTorusBalance hb(model, options);
+  const GearTrainModel linear_model = linearisedAtStatics(huntingReducerFullDofs(false));
+  ASSERT_TRUE(linear_model.clearanceBearings().empty());
+  TrainTorusBalance linear(linear_model, options);
+  const Eigen::MatrixXd Wb = model.nonlinearVectors().rightCols(5);
+  const double dm = 60e-3;  // the pair's pitch diameter
+  for (double factor : {1.0, 2.0}) {
+    HarmonicBalancePoint point;
+    point.omega = hb.baseFrequency(factor * model.inputSpeed());
+    point.q = hb.startingGuess(point.omega);
+    hb.solve(point);
+    ASSERT_TRUE(point.converged) << factor << ": " << point.residual;
+    const TorusNewmarkCheck check = torusNewmarkCheck(model, hb, point, 0.3);
+    ASSERT_EQ(check.status, "completed") << factor;
+    ASSERT_EQ(check.p2p_torus.size(), 7u);
+    for (std::size_t c = 0; c < check.p2p_torus.size(); ++c) {
+      const double error = std::abs(check.p2p_newmark[c] / check.p2p_torus[c] - 1.0);
+      std::printf(
+          "torus full DOFs %.1f x speed, coordinate %zu: p2p %.4g (um or urad), Newmark "
+          "%.2e off\n",
+          factor, c, 1e6 * check.p2p_torus[c], error);
+      EXPECT_LT(error, 0.01) << factor << " coordinate " << c;
+    }
+    const double radial = std::max(check.p2p_torus[2], check.p2p_torus[3]);
+    EXPECT_GT(check.p2p_torus[4], 0.1 * radial) << "u_x";
+    EXPECT_GT(0.5 * dm * check.p2p_torus[5], 0.1 * radial) << "theta_y moves a ball by";
+    // The bearing linearised at the static deflection (its tangent in K, no law): its five
+    // coordinates' p2p over the same 0.3 s differ from the full law's by more than the 1 %
+    // above in some coordinate, so the check separates the two.
+    HarmonicBalancePoint lin_point;
+    lin_point.omega = point.omega;
+    lin_point.q = linear.startingGuess(lin_point.omega);
+    linear.solve(lin_point);
+    ASSERT_TRUE(lin_point.converged) << factor;
+    const Eigen::VectorXd times = Eigen::VectorXd::LinSpaced(20001, 0.0, 0.3);
+    const Eigen::MatrixXd full_law = torusThrough(hb, point, Wb, times);
+    const Eigen::MatrixXd linearised = torusThrough(linear, lin_point, Wb, times);
+    double largest = 0.0;
+    for (int c = 0; c < 5; ++c) {
+      const auto p2p = [&](const Eigen::MatrixXd& w) {
+        return w.col(c).maxCoeff() - w.col(c).minCoeff();
+      };
+      const double difference = std::abs(p2p(linearised) / p2p(full_law) - 1.0);
+      std::printf("  bearing coordinate %d: linearised p2p %.2e off the full law's\n", c,
+                  difference);
+      largest = std::max(largest, difference);
+    }
+    EXPECT_GT(largest, 0.02) << factor;
   }
 }
 

@@ -36,6 +36,7 @@
 
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/train_torus.h"
+#include "geardyn/system/bearing_law.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/train_tooth_pairs.h"
 
@@ -114,6 +115,13 @@ class TrainTorusBalance final : public ContinuationProblem {
   std::complex<double> spectrumAt(int column, long long code) const;  // ±index (conj)
   // Mesh m's contact force at sample i of its axis for the tooth deformation y [N], dF/dy.
   double meshForceAt(int m, int i, double y, double* slope) const;
+  void setUpBearings();      // laws_, the coordinate and slope columns of every bearing
+  void gridBearingForces();  // f̃ and its w × w slope of every bearing on the grid
+  // The coordinates coordinate a acts on through the slopes (a itself for a mesh, its
+  // bearing's w): the first and the count.
+  void coupledCoordinates(int a, int* first, int* count) const;
+  // The slope column of ∂F̃_b/∂w_a (b and a coordinates of one bearing, or a == b a mesh).
+  int slopeColumn(int b, int a) const;
 
   const GearTrainModel& model_;
   TrainTorusBalanceOptions options_;
@@ -129,6 +137,12 @@ class TrainTorusBalance final : public ContinuationProblem {
   std::vector<long long> axis_stride_;
   std::vector<Eigen::VectorXd> k_axis_, e_axis_;  // per mesh, along its generator's axis
   std::vector<ToothPairTable> tooth_pairs_;
+  // Per clearance bearing: its law over (u_y, u_z), or over the five (u_y, u_z, u_x, θ_y, θ_z)
+  // of a rolling bearing's full law with full DOFs (bearing_law.h).
+  std::vector<TrainBearingLaw> laws_;
+  // Per bearing: its first coordinate and the first of its w² slope columns (column-major,
+  // offsets from r_); per coordinate: its bearing (−1 for a mesh).
+  std::vector<int> bearing_first_, slope_first_, bearing_of_;
   Eigen::MatrixXcd dash_unit_;  // d_p / ω per coordinate (rows) and tone (cols) [m/s / ...]
   Eigen::MatrixXd W_, rigid_;
   std::unique_ptr<detail::TorusFft> fft_;
