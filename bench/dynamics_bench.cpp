@@ -8,11 +8,11 @@
 #include <memory>
 #include <numbers>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/time_response.h"
 #include "geardyn/stats/monte_carlo.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "support/reference_pairs.h"
 
 namespace {

@@ -12,9 +12,9 @@
 #include <memory>
 #include <numbers>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "support/reference_pairs.h"
 
 namespace {

@@ -39,7 +39,7 @@ W = 5 * we
 
 
 def rhs(t, s):
-    """The corrected eqs. 2.30-2.33 (see include/geardyn/models/lateral_rotor.h)."""
+    """The corrected eqs. 2.30-2.33 (see include/geardyn/system/lateral_rotor.h)."""
     x1, y1, x2, y2, v1, u1, v2, u2 = s
     cp, sp = math.cos(wp * t + php), math.sin(wp * t + php)
     cg, sg = math.cos(wg * t + phg), math.sin(wg * t + phg)

@@ -11,9 +11,9 @@
 #include "geardyn/config/hbm_config.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/solvers/time_response.h"
+#include "geardyn/system/gear_pair_model.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const geardyn::config::ConfigSchema schema = geardyn::config::hbmSchema();

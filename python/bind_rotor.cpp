@@ -1,4 +1,4 @@
-/// Python bindings of the lateral geared rotor (models/lateral_rotor.h), its time and frequency
+/// Python bindings of the lateral geared rotor (system/lateral_rotor.h), its time and frequency
 /// responses (solvers/rotor_response.h), the full spectrum and gear whirl analysis (signal/) and
 /// the DTE identification (identify/). Keyword names follow the `geardyn rotor`, `spectrum` and
 /// `identify` configuration keys; SI units; numpy arrays in and out.

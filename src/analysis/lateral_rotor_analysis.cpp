@@ -317,11 +317,11 @@ bool addProbeRecords(const config::Config& config, const LateralRotorModel& mode
   record.names = {"x1", "y1", "x2", "y2", "keyphasor"};
   record.units = {"m", "m", "m", "m", ""};
   record.channels.assign(5, std::vector<double>(times.size()));
-  const TrainDormandPrinceRun run =
-      integrateTrainDormandPrince(gearbox.train, gearbox.train.inputSpeed(), times, gearbox.probes,
-                                  integrator, [&](std::size_t k, const Eigen::VectorXd& q) {
-                                    for (int c = 0; c < 4; ++c) record.channels[c][k] = q(c);
-                                  });
+  const TrainDormandPrinceRun run = integrateTrainDormandPrince(
+      gearbox.train, gearbox.train.inputSpeed(), times, gearbox.probes, integrator,
+      [&](std::size_t k, const Eigen::VectorXd& q, const Eigen::VectorXd&, const Eigen::VectorXd&) {
+        for (int c = 0; c < 4; ++c) record.channels[c][k] = q(c);
+      });
   if (!run.finite) {
     result.errors.push_back("measurement: the integration produced non-finite values");
     return false;

@@ -339,8 +339,10 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   checkTrainProbes(model, analysis, speed);
   const TrainTimeOptions options = config::trainTimeOptionsFromConfig(analysis);
   const TrainTimePlan plan = planTime(model, speed, options, context);
+  const bool dormand_prince = options.method == TrainTimeMethod::kDormandPrince;
   const TrainTimeResponse r = solveTrainTimeResponse(
-      model, speed, options, plan, context.progressFor("train: time", "Newmark steps"));
+      model, speed, options, plan,
+      context.progressFor("train: time", dormand_prince ? "s simulated" : "Newmark steps"));
   const double seconds = secondsSince(start);
   if (r.status != "completed") {
     summary.warnings.push_back(r.message);
@@ -439,6 +441,7 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
   const double steady_seconds = compare ? secondsSince(steady_start) : 0.0;
   summary.results["time"] = {
       {"status", status},
+      {"method", dormand_prince ? "dormand_prince" : "newmark"},
       {"speed_rpm", speed / kRpm},
       {"time_step_s", r.time_step},
       {"steps", r.steps},
@@ -454,6 +457,10 @@ int runTrainTime(const GearTrainModel& model, const config::Config& analysis,
       {"bearing_force_difference_to_steady_state_relative_to_p2p", bearing_differences},
       {"steady_state_truncation_relative_to_p2p", truncation.empty() ? Json() : truncation},
       {"mesh_force_harmonics", harmonics}};
+  if (dormand_prince) {
+    summary.results["time"]["integrator_steps"] = r.integrator_steps;
+    summary.results["time"]["relative_tolerance"] = options.relative_tolerance;
+  }
   if (r.transient) {
     const std::string undamped = undampedModesWarning(model, r.transient->undamped, speed / kRpm);
     if (!undamped.empty()) summary.warnings.push_back(undamped);

@@ -429,6 +429,18 @@ void addTimeAndStatsSections(config::ConfigSchema& schema) {
           "Δt (0: the fastest mesh period / steps_per_mesh_period; a train without meshes: "
           "the period of its fastest excitation order, e.g. an unbalance's 1x)");
   schema.integer("time.steps_per_mesh_period").min(8).defaultValue(128).doc("for the default Δt");
+  schema.string("time.method")
+      .choices({"newmark", "dormand_prince"})
+      .defaultValue("newmark")
+      .doc(
+          "newmark: fixed step Δt, any train; dormand_prince: error-controlled Dormand–Prince 5(4) "
+          "sampled at the same times (linear trains: no backlash, clearances or rolling bearings; "
+          "constant speed)");
+  schema.real("time.relative_tolerance")
+      .min(1e-14)
+      .max(1e-2)
+      .defaultValue(1e-8)
+      .doc("dormand_prince: relative (and absolute, in units of the response) tolerance");
   schema.integer("time.record_periods")
       .min(1)
       .max(1000)

@@ -65,6 +65,9 @@ TrainTimeOptions trainTimeOptionsFromConfig(const config::Config& analysis) {
   o.steps_per_mesh_period = static_cast<int>(analysis.integer("time.steps_per_mesh_period"));
   o.record_periods = static_cast<int>(analysis.integer("time.record_periods"));
   o.start_from_static = analysis.boolean("time.start_from_static");
+  o.method = analysis.string("time.method") == "dormand_prince" ? TrainTimeMethod::kDormandPrince
+                                                                : TrainTimeMethod::kNewmark;
+  o.relative_tolerance = analysis.real("time.relative_tolerance");
   o.record_rates = !analysis.stringList("probes.stations").empty();
   return o;
 }

@@ -145,7 +145,7 @@ struct Problem {
           }
           break;
         }
-        case Component::kPinionBackward:  // η = −w exactly (see models/lateral_rotor.h)
+        case Component::kPinionBackward:  // η = −w exactly (see system/lateral_rotor.h)
           p(0) = -Complex(t[r] * L, t[r + 1] * L);
           break;
         case Component::kGearForward:

@@ -24,10 +24,11 @@ using State = std::vector<double>;  // (q / L, q̇ / (L ω)) over the integrated
 /// The DOFs a force reaches: connected components of the nonzero pattern of M, C̄ and K̄ that
 /// hold a loaded DOF (file comment), in increasing order.
 std::vector<int> reachedDofs(const GearTrainModel& model, const Eigen::MatrixXd& damping,
-                             const Eigen::MatrixXd& stiffness) {
+                             const Eigen::MatrixXd& stiffness, const Eigen::VectorXd& initial) {
   const int n = model.dofCount();
   std::vector<char> loaded(n, 0);
-  for (int i = 0; i < n; ++i) loaded[i] = model.staticLoad()(i) != 0.0;
+  for (int i = 0; i < n; ++i)
+    loaded[i] = model.staticLoad()(i) != 0.0 || (initial.size() > 0 && initial(i) != 0.0);
   for (const TrainExcitationTerm& term : model.excitations())
     for (std::size_t j = 0; j < term.dofs.size(); ++j)
       loaded[term.dofs[j]] |=
@@ -77,11 +78,12 @@ struct ReducedTrain {
   Eigen::MatrixXd V;                            // v_m over the integrated DOFs (columns)
 };
 
-ReducedTrain reduce(const GearTrainModel& model, double speed) {
+ReducedTrain reduce(const GearTrainModel& model, double speed,
+                    const Eigen::VectorXd& initial = {}) {
   ReducedTrain r;
   const Eigen::MatrixXd stiffness = model.meanStiffnessAt(speed);
   const Eigen::MatrixXd damping = model.dampingAt(speed);
-  r.dofs = reachedDofs(model, damping, stiffness);
+  r.dofs = reachedDofs(model, damping, stiffness, initial);
   const int n = static_cast<int>(r.dofs.size());
   r.reduced_of.assign(model.dofCount(), -1);
   for (int i = 0; i < n; ++i) r.reduced_of[r.dofs[i]] = i;
@@ -270,10 +272,11 @@ double trainResponseScale(const GearTrainModel& model, double input_speed) {
   return scale > 0.0 ? scale : 1e-6;
 }
 
-TrainDormandPrinceRun integrateTrainDormandPrince(
-    const GearTrainModel& model, double input_speed, const std::vector<double>& times,
-    const std::vector<int>& dofs, const TrainDormandPrinceOptions& options,
-    const std::function<void(std::size_t, const Eigen::VectorXd&)>& observe) {
+TrainDormandPrinceRun integrateTrainDormandPrince(const GearTrainModel& model, double input_speed,
+                                                  const std::vector<double>& times,
+                                                  const std::vector<int>& dofs,
+                                                  const TrainDormandPrinceOptions& options,
+                                                  const TrainDormandPrinceObserver& observe) {
   namespace odeint = boost::numeric::odeint;
   options.validate();
   refuseNonlinear(model);
@@ -288,31 +291,50 @@ TrainDormandPrinceRun integrateTrainDormandPrince(
       throw InputError("dofs", fmt::format("{}", d),
                        fmt::format("a DOF index in [0, {})", model.dofCount()));
   }
+  const Eigen::VectorXd& initial = options.initial_displacement;
+  if (initial.size() != 0 && (initial.size() != model.dofCount() || !initial.allFinite())) {
+    throw InputError("initial_displacement", fmt::format("{} values", initial.size()),
+                     fmt::format("{} finite values (one per DOF) or none", model.dofCount()));
+  }
   TrainDormandPrinceRun run;
   if (times.empty()) return run;
-  const ReducedTrain train = reduce(model, input_speed);
+  const ReducedTrain train = reduce(model, input_speed, initial);
   const auto n = static_cast<Eigen::Index>(train.dofs.size());
   run.integrated_dofs = static_cast<int>(n);
   const double length = options.displacement_scale > 0.0 ? options.displacement_scale
                                                          : trainResponseScale(model, input_speed);
   const double omega = options.velocity_frequency > 0.0 ? options.velocity_frequency
                                                         : trainForcingFrequency(model, input_speed);
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dofs.size()));
+  const auto observed = static_cast<Eigen::Index>(dofs.size());
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(observed);
+  Eigen::VectorXd out_rate = Eigen::VectorXd::Zero(options.rates ? observed : 0);
+  Eigen::VectorXd out_acceleration = out_rate;
   std::vector<std::pair<int, int>> picks;  // (output index, integrated index)
   for (std::size_t c = 0; c < dofs.size(); ++c)
     if (train.reduced_of[dofs[c]] >= 0)
       picks.push_back({static_cast<int>(c), train.reduced_of[dofs[c]]});
   if (n == 0) {  // nothing is loaded: the train stays at rest
-    for (std::size_t i = 0; i < times.size(); ++i) observe(i, out);
+    for (std::size_t i = 0; i < times.size(); ++i) observe(i, out, out_rate, out_acceleration);
     return run;
   }
-  // The grid starts at the initial time 0, which is observed only when asked for.
+  // The grid starts at the initial time 0 (observed only when asked for); with a progress
+  // callback, ~100 unobserved points before the first sample report the integration there.
   std::vector<double> grid;
-  grid.reserve(times.size() + 1);
+  grid.reserve(times.size() + 101);
   if (times.front() > 0.0) grid.push_back(0.0);
+  if (options.progress) {
+    for (int k = 1; k < 100; ++k) {
+      const double t = times.back() * k / 100.0;
+      if (t < times.front() && (grid.empty() || t > grid.back())) grid.push_back(t);
+    }
+  }
   grid.insert(grid.end(), times.begin(), times.end());
   const std::size_t offset = grid.size() - times.size();
+  const std::size_t progress_every = std::max<std::size_t>(1, times.size() / 100);
   State s(static_cast<std::size_t>(2 * n), 0.0);
+  for (Eigen::Index i = 0; i < n && initial.size() > 0; ++i)
+    s[static_cast<std::size_t>(i)] = initial(train.dofs[static_cast<std::size_t>(i)]) / length;
+  State rate(s.size());
   auto stepper = odeint::make_dense_output(options.absolute_tolerance, options.relative_tolerance,
                                            odeint::runge_kutta_dopri5<State>());
   std::size_t index = 0;
@@ -325,15 +347,27 @@ TrainDormandPrinceRun integrateTrainDormandPrince(
         odeint::integrate_times(stepper, std::ref(ode), s, grid.begin(), grid.end(), first_step,
                                 [&](const State& state, double t) {
                                   const std::size_t i = index++;
-                                  if (i < offset) return;
+                                  if (i < offset) {
+                                    if (options.progress && i > 0) options.progress(t, grid.back());
+                                    return;
+                                  }
                                   for (const auto& [c, r] : picks)
                                     out(c) = state[static_cast<std::size_t>(r)] * length;
                                   if (!out.allFinite() && run.finite) {
                                     run.finite = false;
                                     throw std::overflow_error("non-finite");
                                   }
-                                  observe(i - offset, out);
-                                  if (options.progress && index % 1024 == 0)
+                                  if (options.rates) {
+                                    // q̇ = L ω s_v; q̈ = L ω ṡ_v (one more evaluation).
+                                    ode(state, rate, t);
+                                    for (const auto& [c, r] : picks) {
+                                      const auto v = static_cast<std::size_t>(n + r);
+                                      out_rate(c) = state[v] * length * omega;
+                                      out_acceleration(c) = rate[v] * length * omega;
+                                    }
+                                  }
+                                  observe(i - offset, out, out_rate, out_acceleration);
+                                  if (options.progress && (i - offset + 1) % progress_every == 0)
                                     options.progress(t, grid.back());
                                 }));
   } catch (const std::overflow_error&) {

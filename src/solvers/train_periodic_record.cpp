@@ -18,9 +18,11 @@ template <class Store>
 void integrateOnto(const GearTrainModel& model, double input_speed, const std::vector<int>& dofs,
                    const std::vector<double>& times, const TrainRecordOptions& options,
                    TrainRecord& out, Store store) {
-  const TrainDormandPrinceRun run =
-      integrateTrainDormandPrince(model, input_speed, times, dofs, options.integrator,
-                                  [&](std::size_t i, const Eigen::VectorXd& q) { store(i, q); });
+  const TrainDormandPrinceRun run = integrateTrainDormandPrince(
+      model, input_speed, times, dofs, options.integrator,
+      [&](std::size_t i, const Eigen::VectorXd& q, const Eigen::VectorXd&, const Eigen::VectorXd&) {
+        store(i, q);
+      });
   out.steps = run.steps;
   out.rhs_evaluations = run.rhs_evaluations;
   if (!run.finite) {

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "geardyn/error.h"
+#include "geardyn/solvers/detail/train_time_dormand_prince.h"
 #include "geardyn/solvers/detail/train_time_full_law.h"
 #include "geardyn/solvers/train_modal.h"
 #include "geardyn/solvers/train_response.h"
@@ -27,6 +28,10 @@ constexpr Eigen::Index kPlainSteps = 4;
 
 void TrainTimeOptions::validate() const {
   newmark.validate();
+  if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-2)) {
+    throw InputError("time.relative_tolerance", fmt::format("{:g}", relative_tolerance),
+                     "a tolerance in [1e-14, 1e-2]");
+  }
   if (!(time_step >= 0.0) || !std::isfinite(time_step)) {
     throw InputError("time.time_step", fmt::format("{:g} s", time_step),
                      "a step >= 0 s (0: derived)");
@@ -424,6 +429,9 @@ TrainTimeResponse solveTrainTimeResponse(const GearTrainModel& model, double inp
                     static_cast<double>(kMaxTrainTimeSteps), dt, static_cast<double>(steps),
                     transient ? "damp that mode or give a shorter time.duration"
                               : "shorten it or coarsen time.steps_per_mesh_period"));
+  }
+  if (options.method == TrainTimeMethod::kDormandPrince) {
+    return detail::solveTrainTimeDormandPrince(model, input_speed, options, plan, progress);
   }
   // A rolling bearing's full law: the nonlinear Newmark on the same plan.
   if (detail::hasFullBearingLaw(model)) {

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "geardyn/error.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn {
 

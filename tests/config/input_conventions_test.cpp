@@ -15,7 +15,7 @@
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/error.h"
-#include "geardyn/models/lateral_rotor.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn::config {
 namespace {

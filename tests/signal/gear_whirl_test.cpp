@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "geardyn/error.h"
-#include "geardyn/models/lateral_rotor.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn {
 namespace {

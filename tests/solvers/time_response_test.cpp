@@ -9,10 +9,10 @@
 #include <complex>
 #include <numbers>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/stiffness/api_stiffness.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "support/numeric_assertions.h"
 #include "support/reference_pairs.h"
 

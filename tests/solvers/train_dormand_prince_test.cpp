@@ -146,9 +146,10 @@ TEST(TrainDormandPrince, IntegratesOnlyTheDofsAForceReaches) {
   std::vector<int> dofs = rao.probes;
   dofs.push_back(pinion_rotation);
   std::vector<Eigen::VectorXd> seen;
-  const TrainDormandPrinceRun run = integrateTrainDormandPrince(
-      rao.train, rao.train.inputSpeed(), times, dofs, {},
-      [&](std::size_t, const Eigen::VectorXd& q) { seen.push_back(q); });
+  const TrainDormandPrinceRun run =
+      integrateTrainDormandPrince(rao.train, rao.train.inputSpeed(), times, dofs, {},
+                                  [&](std::size_t, const Eigen::VectorXd& q, const Eigen::VectorXd&,
+                                      const Eigen::VectorXd&) { seen.push_back(q); });
   EXPECT_EQ(rao.train.dofCount(), 6);
   EXPECT_EQ(run.integrated_dofs, 4);
   ASSERT_EQ(seen.size(), 2u);
@@ -172,8 +173,10 @@ TEST(TrainDormandPrince, NewmarkConvergesToItAtSecondOrderOnAMeshedTrain) {
   options.relative_tolerance = 1e-11;
   options.absolute_tolerance = 1e-11;
   Eigen::VectorXd dp;
-  const TrainDormandPrinceRun run = integrateTrainDormandPrince(
-      model, speed, {end}, dofs, options, [&](std::size_t, const Eigen::VectorXd& q) { dp = q; });
+  const TrainDormandPrinceRun run =
+      integrateTrainDormandPrince(model, speed, {end}, dofs, options,
+                                  [&](std::size_t, const Eigen::VectorXd& q, const Eigen::VectorXd&,
+                                      const Eigen::VectorXd&) { dp = q; });
   ASSERT_TRUE(run.finite);
   EXPECT_EQ(run.integrated_dofs, model.dofCount());
   // Compared on the mesh deflections (the rigid rotation, common to both, is excluded).
@@ -196,18 +199,67 @@ TEST(TrainDormandPrince, NewmarkConvergesToItAtSecondOrderOnAMeshedTrain) {
   EXPECT_LT(errors[1], 1e-3 * scale);
 }
 
+TEST(TrainDormandPrince, TimeRecordAgreesWithNewmarksOnTheSameWindow) {
+  // `time` with method = kDormandPrince: the Newmark run's record (same times) of the two-stage
+  // reducer from its static deflection, with q̇ and q̈. Newmark (average acceleration, 256
+  // steps per stage-1 mesh period) differs from the exact solution by its period error
+  // (ωΔt)²/12 ≈ 5e-5 per cycle, accumulated over the ~60 periods of the derived duration; its
+  // mesh forces, velocities and accelerations agree with Dormand–Prince's within 2 % of their
+  // p2p, and halving Δt brings them 4× closer (second order: ratio 4 ± 0.8).
+  const GearTrainModel model(testing::exampleGearbox("two_stage_reducer.toml"));
+  const double speed = model.inputSpeed();
+  TrainTimeOptions options;
+  options.record_periods = 1;
+  options.record_rates = true;
+  std::vector<double> errors;
+  TrainTimeResponse dp;
+  for (int steps : {256, 512}) {
+    options.steps_per_mesh_period = steps;
+    options.method = TrainTimeMethod::kNewmark;
+    const TrainTimeResponse newmark = solveTrainTimeResponse(model, speed, options);
+    options.method = TrainTimeMethod::kDormandPrince;
+    dp = solveTrainTimeResponse(model, speed, options);
+    ASSERT_EQ(dp.status, "completed") << dp.message;
+    ASSERT_EQ(dp.t.size(), newmark.t.size());
+    // Newmark's clock adds Δt at every step (~1e5 roundings of 1e-16 relative), Dormand–Prince
+    // samples k Δt: equal to 1e-10 of the end time.
+    EXPECT_LT((dp.t - newmark.t).cwiseAbs().maxCoeff(), 1e-10 * dp.t(dp.t.size() - 1));
+    EXPECT_GT(dp.integrator_steps, 0);
+    EXPECT_EQ(dp.steps, newmark.steps);
+    const auto relative = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+      double worst = 0.0;
+      for (Eigen::Index c = 0; c < a.cols(); ++c) {
+        const double p2p = a.col(c).maxCoeff() - a.col(c).minCoeff();
+        if (p2p > 0.0) worst = std::max(worst, (a.col(c) - b.col(c)).cwiseAbs().maxCoeff() / p2p);
+      }
+      return worst;
+    };
+    const double force = relative(dp.mesh_force, newmark.mesh_force);
+    errors.push_back(force);
+    EXPECT_LT(force, 2e-2) << steps;
+    // Rates on the mesh deflections' DOFs: compared through the mesh vectors.
+    Eigen::MatrixXd V(model.dofCount(), 2);
+    for (int m = 0; m < 2; ++m) V.col(m) = model.meshVector(m);
+    EXPECT_LT(relative(dp.velocity * V, newmark.velocity * V), 2e-2) << steps;
+    EXPECT_LT(relative(dp.acceleration * V, newmark.acceleration * V), 2e-2) << steps;
+  }
+  EXPECT_NEAR(errors[0] / errors[1], 4.0, 0.8) << errors[0] << " " << errors[1];
+}
+
 TEST(TrainDormandPrince, RefusesNonlinearTrainsAndBadTimes) {
   GearTrainSpec spec = testing::exampleGearbox("two_stage_reducer.toml");
   const GearTrainModel linear(spec);
   EXPECT_THROW(integrateTrainDormandPrince(linear, linear.inputSpeed(), {0.2, 0.1}, {0}, {},
-                                           [](std::size_t, const Eigen::VectorXd&) {}),
+                                           [](std::size_t, const Eigen::VectorXd&,
+                                              const Eigen::VectorXd&, const Eigen::VectorXd&) {}),
                InputError);
   spec.meshes[0].contact.backlash = 20e-6;
   spec.meshes[0].contact.law = ContactLaw::kBacklash;
   const GearTrainModel nonlinear(spec);
   try {
-    integrateTrainDormandPrince(nonlinear, nonlinear.inputSpeed(), {0.1}, {0}, {},
-                                [](std::size_t, const Eigen::VectorXd&) {});
+    integrateTrainDormandPrince(
+        nonlinear, nonlinear.inputSpeed(), {0.1}, {0}, {},
+        [](std::size_t, const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&) {});
     ADD_FAILURE() << "a nonlinear mesh was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("meshes.stage1"), std::string::npos) << e.what();

@@ -9,10 +9,10 @@
 #include <numbers>
 
 #include "geardyn/error.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/time_response.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "support/numeric_assertions.h"
 
 namespace geardyn {

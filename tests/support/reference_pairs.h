@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
 #include "geardyn/stiffness/step_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn::testing {
 

@@ -1,5 +1,5 @@
 /// Reduction of the gear-train model to the 4-DOF lateral geared rotor of the Rao thesis
-/// (models/lateral_rotor.h, eqs. 2.30–2.33). That model couples pinion and gear by a mesh spring
+/// (system/lateral_rotor.h, eqs. 2.30–2.33). That model couples pinion and gear by a mesh spring
 /// and dashpot acting equally in x and in y (not along a line of action), so in a train it is a
 /// translational bearing between the two shafts (kyy = kzz = k_m) with planar DOFs; the shafts'
 /// lateral stiffness is a bearing to the housing. Restricted to the lateral DOFs the train's M,
@@ -15,8 +15,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "geardyn/models/lateral_rotor.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn {
 namespace {

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/harmonic_balance.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "system/nonlinear_sample_trains.h"
 
 namespace geardyn::testing::nonlinear {

@@ -1,5 +1,5 @@
 /// Excitations of a gear train beside its meshes (system/train_excitation.h) against closed forms
-/// and against Rao's 4-DOF lateral rotor (models/lateral_rotor.h):
+/// and against Rao's 4-DOF lateral rotor (system/lateral_rotor.h):
 ///   - an unbalance m e on a Jeffcott rotor (mass m on an isotropic support k, c): the whirl
 ///     y + i z = m e Ω² e^{i(Ωt + ϕ)} / (k − m Ω² + i Ω c), in both senses of rotation;
 ///   - a prescribed displacement d across that support (base excitation of a single DOF per
@@ -27,12 +27,12 @@
 
 #include "geardyn/config/rotor_gearbox.h"
 #include "geardyn/error.h"
-#include "geardyn/models/lateral_rotor.h"
 #include "geardyn/solvers/rotor_response.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/solvers/train_transient.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/lateral_rotor.h"
 #include "sample_trains.h"
 
 namespace geardyn {

@@ -11,12 +11,12 @@
 #include <numbers>
 
 #include "geardyn/error.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/solvers/time_response.h"
 #include "geardyn/solvers/train_element_orders.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stiffness/fourier_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "system/mesh_force_sample.h"
 #include "system/sample_trains.h"
 

@@ -11,9 +11,9 @@
 #include "geardyn/config/config_schema.h"
 #include "geardyn/config/rotor_config.h"
 #include "geardyn/io/csv_table.h"
-#include "geardyn/models/lateral_rotor.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/rotor_response.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn::analysis {
 

@@ -12,8 +12,8 @@
 #include "geardyn/config/config_schema.h"
 #include "geardyn/config/simulate_config.h"
 #include "geardyn/io/csv_table.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/time_response.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn::analysis {
 

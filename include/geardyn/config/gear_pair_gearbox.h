@@ -13,7 +13,7 @@
 #include "geardyn/config/config.h"
 #include "geardyn/config/gear_pair_keys.h"
 #include "geardyn/config/simulate_config.h"
-#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn::config {
 

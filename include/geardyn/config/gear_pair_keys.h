@@ -13,8 +13,8 @@
 
 #include "geardyn/config/config.h"
 #include "geardyn/geometry/gear_pair.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn::config {
 

@@ -11,10 +11,10 @@
 #include "geardyn/config/config.h"
 #include "geardyn/config/config_schema.h"
 #include "geardyn/io/csv_table.h"
-#include "geardyn/models/lateral_rotor.h"
 #include "geardyn/signal/gear_whirl.h"
 #include "geardyn/solvers/rotor_response.h"
 #include "geardyn/solvers/train_periodic_record.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn::config {
 

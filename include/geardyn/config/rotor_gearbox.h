@@ -25,9 +25,9 @@
 #include <vector>
 
 #include "geardyn/config/config.h"
-#include "geardyn/models/lateral_rotor.h"
 #include "geardyn/system/gear_train.h"
 #include "geardyn/system/gear_train_model.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn::config {
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Identification of the gear-mesh dynamic transmission-error (DTE) parameters of the lateral
-/// geared rotor (models/lateral_rotor.h) from full-spectrum whirl peaks (Rao 2023 §4.6–4.7,
+/// geared rotor (system/lateral_rotor.h) from full-spectrum whirl peaks (Rao 2023 §4.6–4.7,
 /// ch. 5): mesh stiffness k_m, mean TE e_m, mesh damping c_m, the TE harmonics (amplitude and
 /// phase in x and y) and the pinion and gear runouts with their phases.
 ///
@@ -21,10 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/lateral_rotor.h"
 #include "geardyn/progress.h"
 #include "geardyn/signal/full_spectrum.h"
 #include "geardyn/solvers/rotor_response.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn {
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/continuation.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn {
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The frequency-domain form of the lateral geared rotor (models/lateral_rotor.h, Rao 2023
+/// The frequency-domain form of the lateral geared rotor (system/lateral_rotor.h, Rao 2023
 /// ch. 3): the exact steady state, one 2×2 complex solve (K − Ω²M + jΩC) p = s per whirl
 /// component (thesis eqs. 3.135–3.138), superposed to a time history on request — the closed
 /// form the identification inverts (identify/). Its time domain is the gearbox the rotor is
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/lateral_rotor.h"
+#include "geardyn/system/lateral_rotor.h"
 
 namespace geardyn {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/progress.h"
 #include "geardyn/solvers/newmark.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn {
 

@@ -43,9 +43,20 @@ struct TrainDormandPrinceOptions {
   double displacement_scale = 0.0;
   /// ω [rad/s]; 0: derived, the highest excitation or mesh frequency (trainForcingFrequency).
   double velocity_frequency = 0.0;
-  ProgressCallback progress;  ///< (simulated time, end time) [s], every 1024 samples
-  void validate() const;      ///< InputError naming time.relative_tolerance / absolute_tolerance
+  /// q(0) over all the model's DOFs [m, rad]; empty: rest. q̇(0) = 0.
+  Eigen::VectorXd initial_displacement;
+  /// Also hand q̇ [m/s, rad/s] and q̈ [m/s², rad/s²] of the observed DOFs to the observer (else
+  /// they are empty).
+  bool rates = false;
+  /// (simulated time, end time) [s], about 100 times over the run.
+  ProgressCallback progress;
+  void validate() const;  ///< InputError naming time.relative_tolerance / absolute_tolerance
 };
+
+/// Receives sample i: q, and q̇, q̈ when TrainDormandPrinceOptions::rates (else empty).
+using TrainDormandPrinceObserver =
+    std::function<void(std::size_t i, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                       const Eigen::VectorXd& qddot)>;
 
 /// What a run did.
 struct TrainDormandPrinceRun {
@@ -60,13 +71,15 @@ double trainResponseScale(const GearTrainModel& model, double input_speed);
 /// The derived ω of TrainDormandPrinceOptions::velocity_frequency [rad/s].
 double trainForcingFrequency(const GearTrainModel& model, double input_speed);
 
-/// Integrates the train at input speed Ω [rad/s] from rest at t = 0 and calls
-/// observe(i, q) with q the displacements of `dofs` [m, rad] at times[i] (finite, ≥ 0,
-/// increasing: InputError naming `times` otherwise). Trains with nonlinear elements (backlash,
-/// clearances, rolling bearings given by geometry) are refused (InputError naming the first).
-TrainDormandPrinceRun integrateTrainDormandPrince(
-    const GearTrainModel& model, double input_speed, const std::vector<double>& times,
-    const std::vector<int>& dofs, const TrainDormandPrinceOptions& options,
-    const std::function<void(std::size_t, const Eigen::VectorXd&)>& observe);
+/// Integrates the train at input speed Ω [rad/s] from rest (or options.initial_displacement)
+/// at t = 0 and calls observe(i, q, q̇, q̈) with q the displacements of `dofs` [m, rad] at
+/// times[i] (finite, ≥ 0, increasing: InputError naming `times` otherwise). Trains with
+/// nonlinear elements (backlash, clearances, rolling bearings given by geometry) are refused
+/// (InputError naming the first).
+TrainDormandPrinceRun integrateTrainDormandPrince(const GearTrainModel& model, double input_speed,
+                                                  const std::vector<double>& times,
+                                                  const std::vector<int>& dofs,
+                                                  const TrainDormandPrinceOptions& options,
+                                                  const TrainDormandPrinceObserver& observe);
 
 }  // namespace geardyn

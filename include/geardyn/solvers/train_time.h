@@ -45,7 +45,14 @@
 
 namespace geardyn {
 
+/// How `time` integrates: Newmark's fixed step (any train), or Dormand–Prince's error control
+/// (linear trains; train_dormand_prince.h) sampled at the same times.
+enum class TrainTimeMethod { kNewmark, kDormandPrince };
+
 struct TrainTimeOptions {
+  TrainTimeMethod method = TrainTimeMethod::kNewmark;
+  /// Dormand–Prince's relative tolerance (and absolute, in units of the response scale).
+  double relative_tolerance = 1e-8;
   NewmarkParameters newmark = NewmarkParameters::averageAcceleration();
   double time_step = 0.0;  ///< Δt [s]; 0: the fastest mesh period / steps_per_mesh_period
   int steps_per_mesh_period = 128;
@@ -66,8 +73,10 @@ struct TrainTimeResponse {
   /// else empty).
   Eigen::MatrixXd velocity, acceleration;
   Eigen::MatrixXd mesh_force;  ///< rows: samples, cols: meshes [N]
-  double time_step = 0.0;
-  long long steps = 0;
+  double time_step = 0.0;      ///< Newmark's Δt, the record's sample interval [s]
+  long long steps = 0;         ///< steps of Δt up to the record's end
+  /// Dormand–Prince's accepted (adaptive) steps (TrainTimeMethod::kDormandPrince; else 0).
+  long long integrator_steps = 0;
   std::string status = "completed";  ///< or "diverged"
   std::string message;
   /// The transient estimate the derived duration came from (TrainTimeOptions::duration = 0).

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "geardyn/contact/loaded_contact.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/stats/mean_excitation.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn {
 

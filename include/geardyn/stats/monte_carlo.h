@@ -13,9 +13,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/progress.h"
 #include "geardyn/stats/mean_excitation.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn {
 

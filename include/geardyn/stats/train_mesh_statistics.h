@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/solvers/train_time.h"
 #include "geardyn/stats/mean_excitation.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {

@@ -17,9 +17,9 @@
 
 #include "geardyn/contact/rolling_bearing.h"
 #include "geardyn/geometry/gear.h"
-#include "geardyn/models/gear_pair_model.h"
 #include "geardyn/models/transmission_error.h"
 #include "geardyn/stiffness/mesh_stiffness.h"
+#include "geardyn/system/gear_pair_model.h"
 
 namespace geardyn {
 

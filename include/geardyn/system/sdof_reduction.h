@@ -2,7 +2,7 @@
 /// \file
 /// The single-degree-of-freedom gear pair as the fast path of a one-mesh train: a train of two
 /// rigid shafts with torsional DOFs and one external mesh, and nothing else, IS the model
-/// of models/gear_pair_model.h along the line of action (docs/theory/gear_trains.md; checked by
+/// of system/gear_pair_model.h along the line of action (docs/theory/gear_trains.md; checked by
 /// tests/system/train_response_test.cpp, TrainReduction.SinglePairTorsionalIsTheSdofGearPairModel):
 ///
 ///   m_e = 1 / (r_a²/I_a + r_b²/I_b),  F = T / r_a,  f_m = z_a |Ω_a| / 2π,  c = c_m,
@@ -20,7 +20,7 @@
 
 #include <string>
 
-#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/system/gear_pair_model.h"
 #include "geardyn/system/gear_train_model.h"
 
 namespace geardyn {

@@ -1,4 +1,4 @@
-#include "geardyn/models/lateral_rotor.h"
+#include "geardyn/system/lateral_rotor.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 /// The lateral geared rotor (Rao 2023 ch. 2): the force vector against Lagrange's equations
 /// evaluated numerically from the energies 2.11–2.13, and against its whirl decomposition.
 
-#include "geardyn/models/lateral_rotor.h"
+#include "geardyn/system/lateral_rotor.h"
 
 #include <gtest/gtest.h>
 

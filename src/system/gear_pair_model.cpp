@@ -1,4 +1,4 @@
-#include "geardyn/models/gear_pair_model.h"
+#include "geardyn/system/gear_pair_model.h"
 
 #include <fmt/format.h>
 
