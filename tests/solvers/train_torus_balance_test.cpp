@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "geardyn/solvers/train_harmonic_balance.h"
+#include "geardyn/solvers/train_torus_lyapunov.h"
 #include "solvers/torus_newmark_comparison.h"
 #include "system/nonlinear_sample_trains.h"
 
@@ -198,6 +199,11 @@ TEST(TrainTorusBalance, HuntingToothReducerWithBacklashAgainstNewmark) {
                      fmt::format("{:.3g}", check.deviation[m]));
     }
     RecordProperty(fmt::format("stable_{:.2f}", f), check.stable ? 1 : 0);
+    // The Lyapunov estimate (train_torus_lyapunov.h) over the same window gives the same verdict.
+    const TorusLyapunovEstimate lyapunov = torusLyapunovEstimate(model, hb, point, 0.3);
+    ASSERT_EQ(lyapunov.status, "completed") << f;
+    EXPECT_EQ(lyapunov.stable, check.stable) << f;
+    RecordProperty(fmt::format("lyapunov_{:.2f}", f), fmt::format("{:.4g}", lyapunov.max_exponent));
   }
   RecordProperty("peak_rpm", fmt::format("{:.0f}", peak * 30.0 / std::numbers::pi));
   EXPECT_GE(checked, 2);
