@@ -12,12 +12,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <string>
 
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/train_torus_balance.h"
+#include "geardyn/solvers/train_torus_lyapunov.h"
 #include "geardyn/units.h"
 
 namespace geardyn {
@@ -83,6 +85,39 @@ void BM_TorusNonlinearSweepUp(benchmark::State& state) {
   state.counters["points"] = static_cast<double>(points);
 }
 BENCHMARK(BM_TorusNonlinearSweepUp)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// Stability of one solution at range(0) % of the operating speed (60, 100, 127: below, at and
+// near the stage-1 response peak of 1900 rpm) over 100 periods of the slower generator (the
+// analysis's window): range(1) = 0, the Newmark check (the whole nonlinear train, 256 steps per
+// stage-1 mesh period); 1, the Lyapunov estimate (4 columns, 64 steps per period). Counters: the
+// verdicts, λ₁ and the Newmark deviation.
+void BM_TorusNonlinearStability(benchmark::State& state) {
+  const GearTrainModel model = flexibleReducer();
+  TrainTorusBalance hb(model, defaultOptions());
+  HarmonicBalancePoint point;
+  point.omega = hb.baseFrequency(0.01 * state.range(0) * model.inputSpeed());
+  point.q = hb.startingGuess(point.omega);
+  hb.solve(point);
+  const double slowest = hb.generators().ratio[1] * 0.01 * state.range(0) * model.inputSpeed();
+  const double window = 100.0 / slowest;
+  for (auto _ : state) {
+    if (state.range(1) == 0) {
+      const TorusNewmarkCheck check = torusNewmarkCheck(model, hb, point, window, 256, 0.05);
+      state.counters["stable"] = check.stable ? 1 : 0;
+      state.counters["deviation"] =
+          *std::max_element(check.deviation.begin(), check.deviation.end());
+    } else {
+      const TorusLyapunovEstimate e = torusLyapunovEstimate(model, hb, point, window);
+      state.counters["stable"] = e.stable ? 1 : 0;
+      state.counters["lambda_per_s"] = e.max_exponent;
+    }
+  }
+  state.counters["converged"] = point.converged ? 1 : 0;
+}
+BENCHMARK(BM_TorusNonlinearStability)
+    ->ArgsProduct({{60, 100, 127}, {0, 1}})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace geardyn

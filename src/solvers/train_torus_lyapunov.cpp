@@ -74,7 +74,7 @@ TorusLyapunovEstimate torusLyapunovEstimate(const GearTrainModel& model,
       std::max(1LL, static_cast<long long>(std::ceil(1.0 / (slowest * dt))));
   const long long blocks =
       std::max(2LL, static_cast<long long>(std::ceil(window / (per_block * dt))));
-  const int n = model.dofCount(), r = balance.meshCount(), c = columns;
+  const int n = model.dofCount(), r = balance.meshCount();
   const Eigen::MatrixXd Kbar_dense = model.meanStiffnessAt(speed);
   const Sparse M = sparseOf(model.mass()), K = sparseOf(Kbar_dense),
                C = sparseOf(model.dampingAt(speed));
@@ -92,6 +92,8 @@ TorusLyapunovEstimate torusLyapunovEstimate(const GearTrainModel& model,
   const Eigen::MatrixXd R = detail::rigidModes(Kbar_dense, model.mass());
   const Eigen::MatrixXd MR = M * R;
   const Eigen::MatrixXd RtMR_inv = (R.transpose() * MR).inverse();
+  // At most the elastic state's dimension of columns (a small train has fewer).
+  const int c = std::min(columns, 2 * (n - static_cast<int>(R.cols())));
   const auto project = [&](Eigen::MatrixXd& x) {
     if (R.cols() > 0) x -= R * (RtMR_inv * (MR.transpose() * x));
   };

@@ -8,10 +8,11 @@
 ///
 /// integrated for a few perturbation columns (Benettin, Galgani, Giorgilli & Strelcyn 1980,
 /// "standard method"): average-acceleration Newmark with K̄ + a₀M + a₁C factorised once (sparse)
-/// and S(t) by Woodbury on the r mesh coordinates, the columns of the state (x, x′/s, s² = the
-/// ratio of the traces of K̄ and M) re-orthonormalised by QR every period of the slowest generator
-/// and the logs of R's diagonal summed over the second half of the window. The rigid-body modes
-/// (rolling: K̄R = 0, exponent 0) are projected out M-orthogonally at every re-orthonormalisation.
+/// and S(t) by Woodbury on the r mesh coordinates, the columns re-orthonormalised in the energy
+/// inner product xᵀK̄x′ + vᵀMv′ (Cholesky QR) every period of the slowest generator and the logs
+/// of the triangular factor's diagonal summed over the second half of the window. The rigid-body
+/// modes (rolling: K̄R = 0, exponent 0) are projected out M-orthogonally at every
+/// re-orthonormalisation.
 /// A quasi-periodic trajectory fills the torus, so the window's average is the exponent of the
 /// solution, not of one phase relation; the largest of the columns' exponents estimates the
 /// largest Lyapunov exponent λ₁ (stable when < 0).
@@ -36,9 +37,9 @@ struct TorusLyapunovEstimate {
 };
 
 /// λ estimate of a torus solution over `window` [s] (two halves: the first lets the columns
-/// align with the leading directions, the second is averaged), `columns` perturbations from a
-/// fixed pseudo-random start, `steps_per_mesh_period` Newmark steps per period of the fastest
-/// mesh.
+/// align with the leading directions, the second is averaged), `columns` perturbations (at most
+/// the elastic state's dimension) from a fixed pseudo-random start, `steps_per_mesh_period`
+/// Newmark steps per period of the fastest mesh.
 TorusLyapunovEstimate torusLyapunovEstimate(const GearTrainModel& model,
                                             const TrainTorusBalance& balance,
                                             const HarmonicBalancePoint& point, double window,
