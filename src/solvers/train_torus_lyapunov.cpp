@@ -98,7 +98,7 @@ TorusLyapunovEstimate torusLyapunovEstimate(const GearTrainModel& model,
     if (R.cols() > 0) x -= R * (RtMR_inv * (MR.transpose() * x));
   };
   const double s = std::sqrt(Kbar_dense.trace() / model.mass().trace());  // a start's v scale
-  // A fixed pseudo-random start (reproducible), orthonormal in the scaled state.
+  // A fixed pseudo-random start (reproducible), made energy-orthonormal at the first block.
   Eigen::MatrixXd x(n, c), v(n, c), a(n, c);
   for (int j = 0; j < c; ++j) {
     for (int i = 0; i < n; ++i) {
