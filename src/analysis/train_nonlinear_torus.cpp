@@ -2,7 +2,7 @@
 /// solvers/train_torus_balance.h): chosen when the meshes' common period is long
 /// (nonlinear.method). Continuation in speed with every frequency moving together, per-point
 /// mesh deflections, forces and contact loss, the mesh-force lines per tone and per mesh order,
-/// and Newmark checks of stability at chosen speeds.
+/// and Newmark checks and Lyapunov estimates of stability at chosen speeds.
 
 #include <fmt/format.h>
 
@@ -17,6 +17,7 @@
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_torus_balance.h"
+#include "geardyn/solvers/train_torus_lyapunov.h"
 #include "geardyn/units.h"
 #include "torus_tones.h"
 #include "train_nonlinear_analysis.h"
@@ -146,17 +147,27 @@ std::string runTrainNonlinearTorus(const GearTrainModel& model, const config::Co
       for (double ratio : g.ratio) slowest = std::min(slowest, ratio * rpm * kRpm);
       const TorusNewmarkCheck check =
           torusNewmarkCheck(model, hb, p, kCheckPeriods / slowest, 256, 0.05);
+      // The Lyapunov estimate over the same window: the verdict of the linearised equation,
+      // independent of the truncation's agreement with Newmark (train_torus_lyapunov.h).
+      const TorusLyapunovEstimate lyapunov =
+          torusLyapunovEstimate(model, hb, p, kCheckPeriods / slowest);
       Json per = Json::object();
       for (int m = 0; m < r; ++m) {
         per[meshes[m].name] = {{"p2p_newmark_m", check.p2p_newmark[m]},
                                {"p2p_torus_m", check.p2p_torus[m]},
                                {"deviation", check.deviation[m]}};
       }
-      checks.push_back({{"speed_rpm", rpm},
-                        {"status", check.status},
-                        {"stable", check.stable},
-                        {"window_s", kCheckPeriods / slowest},
-                        {"meshes", per}});
+      checks.push_back(
+          {{"speed_rpm", rpm},
+           {"status", check.status},
+           {"stable", check.stable},
+           {"window_s", kCheckPeriods / slowest},
+           {"lyapunov",
+            {{"status", lyapunov.status},
+             {"stable", lyapunov.stable},
+             {"max_exponent_per_s",
+              lyapunov.status == "completed" ? Json(lyapunov.max_exponent) : Json(nullptr)}}},
+           {"meshes", per}});
     }
   }
   Json generators = Json::array();
@@ -184,7 +195,7 @@ std::string runTrainNonlinearTorus(const GearTrainModel& model, const config::Co
       {"folds", run.folds.size()},
       {"completed", run.completed},
       {"meshes", per_mesh},
-      {"stability", "newmark checks (quasi-periodic: no monodromy)"},
+      {"stability", "newmark checks and lyapunov estimates (quasi-periodic: no monodromy)"},
       {"newmark_checks", checks},
       {"sweep_wall_time_s", sweep_seconds},
       {"total_wall_time_s", secondsSince(start)}};

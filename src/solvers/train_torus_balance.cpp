@@ -13,6 +13,7 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
+#include "geardyn/solvers/detail/tone_block_derivative.h"
 #include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/system/train_excitation.h"
@@ -157,6 +158,8 @@ TrainTorusBalance::TrainTorusBalance(const GearTrainModel& model,
     }
   }
   W_ = model.nonlinearVectors();
+  derivative_ = std::make_unique<detail::ToneBlockDerivative>(model.mass(), model.centripetal(),
+                                                              model.gyroscopic());
   rigid_ = detail::rigidModes(model.meanStiffnessAt(model.inputSpeed()), model.mass());
   half_in_.resize(fft_->halfSize(), r_);
   half_out_.resize(fft_->halfSize(), r_ + slopes_);
@@ -182,32 +185,28 @@ void TrainTorusBalance::prepare(double omega) {
   const double dspeed = speed_sign_ / (kTwoPi * generators_.ratio[0]);
   Kbar_ = model_.meanStiffnessAt(speed);
   C_ = model_.dampingAt(speed);
-  const Eigen::MatrixXd dK = 2.0 * speed * dspeed * model_.centripetal();
-  const Eigen::MatrixXd dC = dspeed * model_.gyroscopic();
+  // One sparse pattern analysis per speed: each tone's block is factorised, used for B_p and
+  // dB_p, and dropped before the next (keep_factors false).
   blocks_ = std::make_unique<detail::HarmonicBlocks>(Kbar_, model_.mass(), C_, rigid_,
-                                                     options_.sparse_dofs);
+                                                     options_.sparse_dofs, false);
+  derivative_->setSpeed(C_, speed, dspeed);
   const Eigen::MatrixXcd Wc = W_.cast<Complex>();
-  const Eigen::MatrixXd& M = model_.mass();
   for (int p = 0; p <= P_; ++p) {
     const double w = toneFrequency(p, omega);
     blocks_->factorize(p, w);
     const Eigen::MatrixXcd Z = blocks_->solve(p, Wc);
     B_[p] = Wc.transpose() * Z;
-    const double rate = tone_ratio_(p);
-    Eigen::MatrixXcd dD = dK.cast<Complex>();
-    if (dK.size() == 0) dD = Eigen::MatrixXcd::Zero(dofs_, dofs_);
-    if (p > 0) {
-      dD += (-2.0 * w * rate * M).cast<Complex>() + Complex(0.0, rate) * C_.cast<Complex>();
-      if (dC.size() > 0) dD += Complex(0.0, w) * dC.cast<Complex>();
+    dB_[p] = -Wc.transpose() * blocks_->solve(p, derivative_->times(Z, w, tone_ratio_(p)));
+    if (p > 0) continue;
+    // The static balance at the same block: b₀ = Wᵀ D(0)⁻¹ F₀, db₀ = −Wᵀ D(0)⁻¹ dK D(0)⁻¹ F₀.
+    const Eigen::VectorXd x0 = blocks_->solve(0, model_.staticLoad().cast<Complex>()).real();
+    b0_ = W_.transpose() * x0;
+    db0_ = Eigen::VectorXd::Zero(r_);
+    if (derivative_->stiffnessMoves()) {
+      const Eigen::VectorXcd dKx0 = derivative_->stiffnessTimes(x0).cast<Complex>();
+      db0_ = -(W_.transpose() * blocks_->solve(0, dKx0).real());
     }
-    dB_[p] = -Wc.transpose() * blocks_->solve(p, dD * Z);
   }
-  const Eigen::VectorXcd x0 = blocks_->solve(0, model_.staticLoad().cast<Complex>());
-  b0_ = (W_.transpose() * x0.real());
-  db0_ = dK.size() == 0
-             ? Eigen::VectorXd::Zero(r_)
-             : Eigen::VectorXd(
-                   -(W_.transpose() * blocks_->solve(0, (dK * x0.real()).cast<Complex>()).real()));
   cached_omega_ = omega;
 }
 

@@ -51,6 +51,7 @@ Eigen::MatrixXcd TrainTorusBalance::displacementHarmonics(const HarmonicBalanceP
     }
     Eigen::VectorXcd rhs = W_.cast<Complex>() * z;
     if (p == 0) rhs += model_.staticLoad().cast<Complex>();
+    blocks_->factorize(p, toneFrequency(p, point.omega));  // prepare() keeps the latest only
     X.col(p) = blocks_->solve(p, rhs);
   }
   X.col(0) = X.col(0).real().cast<Complex>();

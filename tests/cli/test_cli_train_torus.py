@@ -53,11 +53,12 @@ def test_nonlinear_torus_tables_are_plotted(tmp_path):
     """The hunting-tooth reducer (z 19/71 + 21/59) with 20 µm of backlash at both meshes,
     100 N m, through stage 1's contact loss (10 000-15 000 rpm, 4 harmonics per mesh on the
     torus): nonlinear_tones.png draws the mesh orders of nonlinear_mesh_orders.csv and the
-    combination tones of nonlinear_tones.csv along the continuation, one panel per mesh."""
+    combination tones of nonlinear_tones.csv along the continuation, one panel per mesh; the
+    Newmark check at 12 500 rpm carries the Lyapunov estimate's verdict."""
     hunting = EXAMPLES / "train_hunting_tooth_reducer.toml"
     sets = ['analysis.run=["nonlinear"]', 'nonlinear.method="torus"', "nonlinear.torus_mesh_harmonics=4",
             'nonlinear.direction="up"', "nonlinear.speed_min_rpm=10000", "nonlinear.speed_max_rpm=15000",
-            "operating_point.torque=100"]
+            "operating_point.torque=100", "nonlinear.newmark_speeds_rpm=[12500.0]"]
     for mesh in ("stage1", "stage2"):
         sets += [f'meshes.{mesh}.contact="backlash"', f"meshes.{mesh}.backlash=20e-6"]
     result = run("train", hunting, "--out", tmp_path, *[a for s in sets for a in ("--set", s)])
@@ -68,3 +69,9 @@ def test_nonlinear_torus_tables_are_plotted(tmp_path):
     assert {(r["mesh"], r["order"]) for r in orders} >= {(m, str(o)) for m in ("stage1", "stage2") for o in (1, 2, 3)}
     png = tmp_path / "nonlinear_tones.png"
     assert png.exists() and png.stat().st_size > 20_000
+    # The stability check at 12 500 rpm: Newmark and the Lyapunov estimate (its λ₁ decides).
+    checks = json.loads((tmp_path / "summary.json").read_text())["results"]["nonlinear"]["newmark_checks"]
+    assert len(checks) == 1 and checks[0]["status"] == "completed"
+    lyapunov = checks[0]["lyapunov"]
+    assert lyapunov["status"] == "completed"
+    assert lyapunov["stable"] == (lyapunov["max_exponent_per_s"] < 0.0)

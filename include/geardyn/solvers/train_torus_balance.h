@@ -43,7 +43,8 @@
 namespace geardyn {
 namespace detail {
 class HarmonicBlocks;
-}
+class ToneBlockDerivative;
+}  // namespace detail
 
 struct TrainTorusBalanceOptions {
   int mesh_harmonics = 5;     ///< L: harmonics of each mesh frequency (N_j = L max P_m) [-]
@@ -153,7 +154,8 @@ class TrainTorusBalance final : public ContinuationProblem {
   // Condensation at the cached ω.
   double cached_omega_ = -1.0;
   Eigen::MatrixXd Kbar_, C_;
-  std::unique_ptr<detail::HarmonicBlocks> blocks_;
+  std::unique_ptr<detail::HarmonicBlocks> blocks_;           // the latest tone's factors only
+  std::unique_ptr<detail::ToneBlockDerivative> derivative_;  // dD/dω, sparse
   std::vector<Eigen::MatrixXcd> B_, dB_;
   Eigen::VectorXd b0_, db0_;
 };
