@@ -57,7 +57,12 @@ void HarmonicBlocks::factorize(int h, double w) {
       D += (penalty_ * MR_.topRows(n_t) * MR_.topRows(n_t).transpose()).cast<Complex>();
     }
     housed_.resize(std::max<std::size_t>(housed_.size(), h + 1));
-    housed_[h].factorize(*housing_, D, w);
+    const std::size_t k = static_cast<std::size_t>(h);
+    if (k < receptances_.w.size() && receptances_.w[k] == w) {
+      housed_[k].factorize(*housing_, D, w, receptances_.dinv.col(h), receptances_.g.col(h));
+    } else {
+      housed_[k].factorize(*housing_, D, w);
+    }
     return;
   }
   if (!sparse_) {
@@ -142,6 +147,20 @@ Eigen::MatrixXcd HarmonicBlocks::housingRows(int h, const Eigen::MatrixXcd& q_t)
   const std::size_t k = static_cast<std::size_t>(std::abs(h));
   if (h >= 0) return housed_.at(k).housingRows(*housing_, q_t);
   return housed_.at(k).housingRows(*housing_, q_t.conjugate()).conjugate();
+}
+
+Eigen::MatrixXcd HarmonicBlocks::housingRowsOfBlocks(const Eigen::MatrixXcd& q_t) const {
+  if (!housing_)
+    throw std::logic_error("HarmonicBlocks::housingRowsOfBlocks: no condensed housing");
+  Eigen::MatrixXcd y(housing_->Phi.cols(), q_t.cols());
+  for (Eigen::Index h = 0; h < q_t.cols(); ++h) {
+    y.col(h) = housed_.at(static_cast<std::size_t>(h)).modalAmplitudes(*housing_, q_t.col(h));
+  }
+  return housing_->physical(y);
+}
+
+void HarmonicBlocks::prepare(const std::vector<double>& w) {
+  if (housing_) receptances_ = HousingReceptances::at(*housing_, w);
 }
 
 }  // namespace geardyn::detail

@@ -61,26 +61,71 @@ Eigen::MatrixXcd joinParts(const Eigen::MatrixXd& parts) {
 }
 
 /// A x for a real A and a complex x: one real product with [Re x, Im x] (half the work of a
-/// complex product, A read once).
+/// complex product, A read once). One column is two matrix–vector products instead: a matrix
+/// product packs A for its kernel first, which for two columns costs as much as the product
+/// (perf of bench/housing_bench.cpp, BM_ForcedPerSpeed).
 Eigen::MatrixXcd realTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
+  if (x.cols() == 1) {
+    const Eigen::VectorXd re = x.real(), im = x.imag();
+    Eigen::MatrixXcd out(A.rows(), 1);
+    out.real() = A * re;
+    out.imag() = A * im;
+    return out;
+  }
   return joinParts(A * splitParts(x));
 }
 
 /// Aᵀ x likewise.
 Eigen::MatrixXcd realTransposeTimes(const Eigen::MatrixXd& A, const Eigen::MatrixXcd& x) {
+  if (x.cols() == 1) {
+    const Eigen::VectorXd re = x.real(), im = x.imag();
+    Eigen::MatrixXcd out(A.cols(), 1);
+    out.real() = A.transpose() * re;
+    out.imag() = A.transpose() * im;
+    return out;
+  }
   return joinParts(A.transpose() * splitParts(x));
+}
+
+/// 1/d_k = 1/((1 + iwβ_h) λ_k − w²), the housing's modal receptances at w [rad/s].
+Eigen::VectorXcd modalReceptances(const HousingCondensation& h, double w) {
+  const Complex iw(0.0, w);
+  return ((1.0 + iw * h.beta) * h.lambda.cast<Complex>().array() - Complex(w * w))
+      .inverse()
+      .matrix();
 }
 
 }  // namespace
 
+Eigen::MatrixXcd HousingCondensation::physical(const Eigen::MatrixXcd& y) const {
+  return realTimes(Phi, y);
+}
+
+HousingReceptances HousingReceptances::at(const HousingCondensation& h,
+                                          const std::vector<double>& w) {
+  HousingReceptances out;
+  out.w = w;
+  out.dinv.resize(h.lambda.size(), static_cast<Eigen::Index>(w.size()));
+  for (std::size_t j = 0; j < w.size(); ++j) {
+    out.dinv.col(static_cast<Eigen::Index>(j)) = modalReceptances(h, w[j]);
+  }
+  out.g = realTimes(h.P, out.dinv);  // every G(w_j) = W diag(1/d) Wᵀ in one product
+  return out;
+}
+
 void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt,
                                       double w) {
+  const Eigen::VectorXcd dinv = modalReceptances(h, w);
+  factorize(h, Dtt, w, dinv, realTimes(h.P, dinv));
+}
+
+void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt,
+                                      double w, const Eigen::Ref<const Eigen::VectorXcd>& dinv,
+                                      const Eigen::Ref<const Eigen::VectorXcd>& g) {
   const Complex iw(0.0, w);
-  dinv_ =
-      ((1.0 + iw * h.beta) * h.lambda.cast<Complex>().array() - Complex(w * w)).inverse().matrix();
+  dinv_ = dinv;
   const auto r = h.k.rows();
-  const Eigen::VectorXcd g = realTimes(h.P, dinv_);  // G = W diag(1/d) Wᵀ, upper triangle
-  Eigen::MatrixXcd G(r, r);
+  Eigen::MatrixXcd G(r, r);  // G = W diag(1/d) Wᵀ from its upper triangle g
   Eigen::Index row = 0;
   for (Eigen::Index j = 0; j < r; ++j) {
     for (Eigen::Index i = 0; i <= j; ++i) G(i, j) = G(j, i) = g(row++);
@@ -110,10 +155,15 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
   return out;
 }
 
+Eigen::MatrixXcd CondensedHousingBlock::modalAmplitudes(const HousingCondensation& h,
+                                                        const Eigen::MatrixXcd& q_t) const {
+  const Eigen::MatrixXcd F = Zeff_ * realTimes(h.J, q_t);  // bearing forces
+  return dinv_.asDiagonal() * realTransposeTimes(h.W, F);
+}
+
 Eigen::MatrixXcd CondensedHousingBlock::housingRows(const HousingCondensation& h,
                                                     const Eigen::MatrixXcd& q_t) const {
-  const Eigen::MatrixXcd F = Zeff_ * realTimes(h.J, q_t);  // bearing forces
-  return realTimes(h.Phi, dinv_.asDiagonal() * realTransposeTimes(h.W, F));
+  return h.physical(modalAmplitudes(h, q_t));
 }
 
 }  // namespace geardyn::detail

@@ -343,6 +343,9 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   Eigen::MatrixXcd DinvF(n_s, H + 1);
   Eigen::MatrixXcd rhs(n_s, r + 2);
   rhs.leftCols(r) = Vs;
+  std::vector<double> frequencies(H + 1);
+  for (int h = 0; h <= H; ++h) frequencies[h] = h * w0;
+  blocks_of.prepare(frequencies);  // the housing's receptances at every harmonic in one product
   for (int h = 0; h <= H; ++h) {
     blocks_of.factorize(h, h * w0);
     rhs.col(r) = F.col(h + H).head(n_s);
@@ -394,10 +397,10 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     }
     s.harmonic.col(h).head(n_s) = DinvF.col(h);
     if (r > 0) s.harmonic.col(h).head(n_s).noalias() -= DinvV[h] * g_sum;
-    if (train_only) {
-      s.harmonic.col(h).tail(n - n_t) =
-          blocks_of.housingRows(h, s.harmonic.col(h).head(n_t).eval());
-    }
+  }
+  // The housing's rows of every harmonic from the train's, one product with its modes for all.
+  if (train_only) {
+    s.harmonic.bottomRows(n - n_t) = blocks_of.housingRowsOfBlocks(s.harmonic.topRows(n_t).eval());
   }
 
   // One base period sampled: mesh forces, peaks, dynamic factors and harmonics.

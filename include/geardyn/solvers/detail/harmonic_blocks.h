@@ -58,6 +58,13 @@ class HarmonicBlocks {
   Eigen::MatrixXcd solveTrain(int h, const Eigen::MatrixXcd& rhs_t) const;
   /// The housing's rows (n_h) of the solution of block h whose train rows are `q_t`.
   Eigen::MatrixXcd housingRows(int h, const Eigen::MatrixXcd& q_t) const;
+  /// The same for the blocks h = 0, 1, ..., q_t.cols() − 1 at once, column h of q_t the train
+  /// rows of block h's solution: one product with Φ for all of them.
+  Eigen::MatrixXcd housingRowsOfBlocks(const Eigen::MatrixXcd& q_t) const;
+  /// With the housing condensed: the frequencies w[h] [rad/s] the blocks h = 0, 1, ... will be
+  /// factorised at, so that the housing's receptances at all of them are formed in one product
+  /// (HousingReceptances) and factorize(h, w[h]) reads them. Without the condensation: nothing.
+  void prepare(const std::vector<double>& w);
 
  private:
   using SparseMatrixC = Eigen::SparseMatrix<Complex>;
@@ -74,6 +81,7 @@ class HarmonicBlocks {
   std::vector<std::unique_ptr<SparseLUC>> sparse_lu_;  // per h, or [bordered, w ≠ 0] (not kept)
   std::shared_ptr<const HousingCondensation> housing_;
   std::vector<CondensedHousingBlock> housed_;
+  HousingReceptances receptances_;  // from prepare()
 };
 
 }  // namespace geardyn::detail
