@@ -29,6 +29,14 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
   out->c = terms.c;
   out->beta = spec.stiffness_proportional_damping;
   const Eigen::Index r = out->W.rows(), n_h = out->W.cols();
+  for (Eigen::Index j = 0; j < out->J.cols(); ++j) {
+    if (out->J.col(j).cwiseAbs().maxCoeff() > 0.0) out->J_columns.push_back(j);
+  }
+  out->Jc = out->J(Eigen::all, out->J_columns);
+  auto diagonal = [](const Eigen::MatrixXd& a) {
+    return (a - Eigen::MatrixXd(a.diagonal().asDiagonal())).cwiseAbs().maxCoeff() == 0.0;
+  };
+  out->Z_diagonal = r == 0 || (diagonal(out->k) && diagonal(out->c));
   // G is symmetric: P holds the upper triangle's entries only, column by column.
   out->P.resize(r * (r + 1) / 2, n_h);
   for (Eigen::Index k = 0; k < n_h; ++k) {
@@ -87,15 +95,67 @@ Eigen::MatrixXcd realTransposeTimes(const Eigen::MatrixXd& A, const Eigen::Matri
   return joinParts(A.transpose() * splitParts(x));
 }
 
-/// 1/d_k = 1/((1 + iwβ_h) λ_k − w²), the housing's modal receptances at w [rad/s].
+/// 1/d_k = 1/((1 + iwβ_h) λ_k − w²), the housing's modal receptances at w [rad/s], as
+/// conj(d)/|d|² (libgcc's complex division __divdc3 rescales against overflow, which |d|² of
+/// λ_k < 1e150 does not need, at several times the cost).
 Eigen::VectorXcd modalReceptances(const HousingCondensation& h, double w) {
-  const Complex iw(0.0, w);
-  return ((1.0 + iw * h.beta) * h.lambda.cast<Complex>().array() - Complex(w * w))
-      .inverse()
-      .matrix();
+  const Complex loss(1.0, w * h.beta);
+  Eigen::VectorXcd out(h.lambda.size());
+  for (Eigen::Index k = 0; k < out.size(); ++k) {
+    const Complex d = loss * h.lambda(k) - w * w;
+    out(k) = std::conj(d) / std::norm(d);
+  }
+  return out;
 }
 
 }  // namespace
+
+/// Gaussian elimination with partial pivoting on |Re| + |Im|, the pivot measure of LAPACK's
+/// zgetrf (izamax; Anderson et al., LAPACK Users' Guide, 3rd ed., 1999), which needs no hypot
+/// per candidate. Eigen's PartialPivLU (pivots on |z| by hypot) with its triangular solves for
+/// Z_eff and the product Z G took half the condensation's time per harmonic (perf,
+/// bench/housing_bench.cpp, BM_ForcedPerSpeed).
+/// With |z| ≤ |Re z| + |Im z| ≤ √2 |z| the multipliers stay below √2 in modulus, so the growth
+/// factor's bound for partial pivoting, 2^(r−1), becomes (1 + √2)^(r−1) (Higham, Accuracy and
+/// Stability of Numerical Algorithms, 2nd ed., §9.3); r is the bearings' rows, a few dozen at most.
+void SmallComplexLU::compute(const Eigen::MatrixXcd& A) {
+  lu_ = A;
+  const Eigen::Index n = A.rows();
+  pivots_.resize(static_cast<std::size_t>(n));
+  inverse_.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Index p = k;
+    double best = -1.0;
+    for (Eigen::Index i = k; i < n; ++i) {
+      const double size = std::abs(lu_(i, k).real()) + std::abs(lu_(i, k).imag());
+      if (size > best) best = size, p = i;
+    }
+    pivots_[static_cast<std::size_t>(k)] = p;
+    if (p != k) lu_.row(k).swap(lu_.row(p));
+    // 1/u_kk as conj/|.|²: libgcc's complex division (__divdc3) costs several times more.
+    inverse_(k) = std::conj(lu_(k, k)) / std::norm(lu_(k, k));
+    const Eigen::Index m = n - k - 1;
+    lu_.col(k).tail(m) *= inverse_(k);  // the multipliers
+    for (Eigen::Index j = k + 1; j < n; ++j) lu_.col(j).tail(m) -= lu_(k, j) * lu_.col(k).tail(m);
+  }
+}
+
+void SmallComplexLU::solveInPlace(Eigen::MatrixXcd& B) const {
+  const Eigen::Index n = lu_.rows();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index p = pivots_[static_cast<std::size_t>(k)];
+    if (p != k) B.row(k).swap(B.row(p));
+  }
+  for (Eigen::Index j = 0; j < B.cols(); ++j) {
+    for (Eigen::Index k = 0; k + 1 < n; ++k) {
+      B.col(j).tail(n - k - 1) -= B(k, j) * lu_.col(k).tail(n - k - 1);
+    }
+    for (Eigen::Index k = n - 1; k >= 0; --k) {
+      B(k, j) *= inverse_(k);
+      B.col(j).head(k) -= B(k, j) * lu_.col(k).head(k);
+    }
+  }
+}
 
 Eigen::MatrixXcd HousingCondensation::physical(const Eigen::MatrixXcd& y) const {
   return realTimes(Phi, y);
@@ -130,10 +190,37 @@ void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen:
   for (Eigen::Index j = 0; j < r; ++j) {
     for (Eigen::Index i = 0; i <= j; ++i) G(i, j) = G(j, i) = g(row++);
   }
-  const Eigen::MatrixXcd Z = h.k.cast<Complex>() + iw * h.c.cast<Complex>();
-  Zeff_ = (Eigen::MatrixXcd::Identity(r, r) + Z * G).partialPivLu().solve(Z);
-  lu_.compute(Dtt + realTransposeTimes(
-                        h.J, realTimes(h.J.transpose(), (Zeff_ - Z).transpose()).transpose()));
+  Z_ = h.k.cast<Complex>() + iw * h.c.cast<Complex>();
+  Eigen::MatrixXcd A(r, r);  // I + Z G
+  Eigen::MatrixXcd ZJ(r, h.Jc.cols());
+  if (h.Z_diagonal) {
+    A = Z_.diagonal().asDiagonal() * G;
+    ZJ = Z_.diagonal().asDiagonal() * h.Jc.cast<Complex>();
+  } else {
+    A.noalias() = Z_ * G;
+    ZJ.noalias() = Z_ * h.Jc.cast<Complex>();
+  }
+  A.diagonal().array() += 1.0;
+  seat_lu_.compute(A);
+  // Z_eff J = (I + Z G)⁻¹ Z J on J's c columns: c right-hand sides instead of r for Z_eff.
+  if (h.Jc.cols() <= r) {
+    ZeffJ_ = ZJ;
+    seat_lu_.solveInPlace(ZeffJ_);
+  } else {
+    Eigen::MatrixXcd Zeff = Z_;
+    seat_lu_.solveInPlace(Zeff);
+    ZeffJ_.noalias() = Zeff * h.Jc.cast<Complex>();
+  }
+  // D_tt + Jᵀ (Z_eff − Z) J, on J's columns.
+  Eigen::MatrixXcd D = Dtt;
+  D(h.J_columns, h.J_columns) += h.Jc.transpose().cast<Complex>() * (ZeffJ_ - ZJ);
+  lu_.compute(D);
+}
+
+Eigen::MatrixXcd CondensedHousingBlock::zeff(const Eigen::MatrixXcd& x) const {
+  Eigen::MatrixXcd out = Z_ * x;
+  seat_lu_.solveInPlace(out);
+  return out;
 }
 
 Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
@@ -149,15 +236,15 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
   }
   const Eigen::MatrixXcd p = realTransposeTimes(h.Phi, rhs.bottomRows(n_h));  // Φᵀ f_h
   const Eigen::MatrixXcd g = realTimes(h.W, dinv_.asDiagonal() * p);          // J_H D_h0⁻¹ f_h
-  out.topRows(n_t) = lu_.solve(rhs.topRows(n_t) + realTransposeTimes(h.J, Zeff_ * g));
-  const Eigen::MatrixXcd F = Zeff_ * (realTimes(h.J, out.topRows(n_t)) - g);  // bearing forces
+  out.topRows(n_t) = lu_.solve(rhs.topRows(n_t) + realTransposeTimes(h.J, zeff(g)));
+  const Eigen::MatrixXcd F = zeff(realTimes(h.J, out.topRows(n_t)) - g);  // bearing forces
   out.bottomRows(n_h) = realTimes(h.Phi, dinv_.asDiagonal() * (realTransposeTimes(h.W, F) + p));
   return out;
 }
 
 Eigen::MatrixXcd CondensedHousingBlock::modalAmplitudes(const HousingCondensation& h,
                                                         const Eigen::MatrixXcd& q_t) const {
-  const Eigen::MatrixXcd F = Zeff_ * realTimes(h.J, q_t);  // bearing forces
+  const Eigen::MatrixXcd F = ZeffJ_ * q_t(h.J_columns, Eigen::all);  // bearing forces
   return dinv_.asDiagonal() * realTransposeTimes(h.W, F);
 }
 

@@ -412,9 +412,15 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
   const Eigen::MatrixXd q = sampledDisplacement(s, model);
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
-  Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
+  // q(t_k) on the DOFs up to the last one a mesh reads (the bodies' before any housing's),
+  // contiguous for the mesh forces.
+  int mesh_span = 0;
+  for (const TrainMesh& mesh : meshes) {
+    for (int d : mesh.dofs) mesh_span = std::max(mesh_span, d + 1);
+  }
+  Eigen::VectorXd q_k(mesh_span);
   for (int k = 0; k < samples; ++k) {
-    q_k = q.row(k).transpose();
+    q_k = q.row(k).head(mesh_span).transpose();
     for (std::size_t m = 0; m < meshes.size(); ++m) {
       s.mesh_force(k, m) = meshes[m].force(s.t(k), input_speed, q_k);
     }

@@ -36,6 +36,11 @@ struct HousingCondensation {
   /// r(r + 1)/2 × n_h: column k holds the upper triangle of w_k w_kᵀ column by column, w_k =
   /// W's column k (G = W diag(1/d) Wᵀ, symmetric, as P (1/d)).
   Eigen::MatrixXd P;
+  /// The train's DOFs J reads (its nonzero columns; a bearing row reads a few of them) and J
+  /// on them (r × c): Z_eff J is formed on these c columns only.
+  std::vector<Eigen::Index> J_columns;
+  Eigen::MatrixXd Jc;
+  bool Z_diagonal = false;  ///< k and c diagonal: Z G is a scaling of G's rows
   /// The condensation of `model`'s housing; null without a housing or when the housing is not
   /// held (a zero eigenvalue: the exact path then factorises the whole block).
   static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
@@ -52,6 +57,20 @@ struct HousingReceptances {
   Eigen::MatrixXcd dinv;  ///< column j: 1/d_k(w_j) = 1/((1 + i w_j β_h) λ_k − w_j²) [s²]
   Eigen::MatrixXcd g;     ///< column j: G(w_j)'s upper triangle, column by column [m/N]
   static HousingReceptances at(const HousingCondensation& h, const std::vector<double>& w);
+};
+
+/// LU factors of a small complex matrix, partial pivoting on |Re| + |Im| (LAPACK zgetrf's
+/// izamax): I + Z G of the condensation, r × r (r the linked bearings' rows).
+class SmallComplexLU {
+ public:
+  void compute(const Eigen::MatrixXcd& A);
+  /// B ← A⁻¹ B.
+  void solveInPlace(Eigen::MatrixXcd& B) const;
+
+ private:
+  Eigen::MatrixXcd lu_;
+  std::vector<Eigen::Index> pivots_;
+  Eigen::VectorXcd inverse_;  // 1/u_kk
 };
 
 /// One frequency's condensation: the train's LU and the housing's terms.
@@ -78,8 +97,13 @@ class CondensedHousingBlock {
   Eigen::MatrixXcd modalAmplitudes(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
 
  private:
+  /// Z_eff x = (I + Z G)⁻¹ Z x.
+  Eigen::MatrixXcd zeff(const Eigen::MatrixXcd& x) const;
+
   Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
-  Eigen::MatrixXcd Zeff_;
+  SmallComplexLU seat_lu_;  // I + Z G
+  Eigen::MatrixXcd Z_;      // k + iωc (r × r)
+  Eigen::MatrixXcd ZeffJ_;  // Z_eff J on J's columns (r × c)
   Eigen::VectorXcd dinv_;
 };
 
