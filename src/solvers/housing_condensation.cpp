@@ -146,13 +146,22 @@ void SmallComplexLU::solveInPlace(Eigen::MatrixXcd& B) const {
     const Eigen::Index p = pivots_[static_cast<std::size_t>(k)];
     if (p != k) B.row(k).swap(B.row(p));
   }
+  // Column by column on the raw storage: the right-hand sides Z J are sparse (a column of J
+  // holds a shaft's few bearing rows), so the forward sweep skips the zeros it meets.
+  const Complex* L = lu_.data();
   for (Eigen::Index j = 0; j < B.cols(); ++j) {
+    Complex* b = B.col(j).data();
     for (Eigen::Index k = 0; k + 1 < n; ++k) {
-      B.col(j).tail(n - k - 1) -= B(k, j) * lu_.col(k).tail(n - k - 1);
+      const Complex bk = b[k];
+      if (bk == 0.0) continue;
+      const Complex* l = L + k * n;
+      for (Eigen::Index i = k + 1; i < n; ++i) b[i] -= bk * l[i];
     }
     for (Eigen::Index k = n - 1; k >= 0; --k) {
-      B(k, j) *= inverse_(k);
-      B.col(j).head(k) -= B(k, j) * lu_.col(k).head(k);
+      b[k] *= inverse_(k);
+      const Complex bk = b[k];
+      const Complex* u = L + k * n;
+      for (Eigen::Index i = 0; i < k; ++i) b[i] -= bk * u[i];
     }
   }
 }
