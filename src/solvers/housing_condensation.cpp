@@ -170,6 +170,10 @@ Eigen::MatrixXcd HousingCondensation::physical(const Eigen::MatrixXcd& y) const 
   return realTimes(Phi, y);
 }
 
+Eigen::MatrixXcd HousingCondensation::modal(const Eigen::MatrixXcd& F) const {
+  return realTransposeTimes(W, F);
+}
+
 HousingReceptances HousingReceptances::at(const HousingCondensation& h,
                                           const std::vector<double>& w) {
   HousingReceptances out;
@@ -253,8 +257,12 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
 
 Eigen::MatrixXcd CondensedHousingBlock::modalAmplitudes(const HousingCondensation& h,
                                                         const Eigen::MatrixXcd& q_t) const {
-  const Eigen::MatrixXcd F = ZeffJ_ * q_t(h.J_columns, Eigen::all);  // bearing forces
-  return dinv_.asDiagonal() * realTransposeTimes(h.W, F);
+  return dinv_.asDiagonal() * h.modal(bearingForces(h, q_t));
+}
+
+Eigen::MatrixXcd CondensedHousingBlock::bearingForces(const HousingCondensation& h,
+                                                      const Eigen::MatrixXcd& q_t) const {
+  return ZeffJ_ * q_t(h.J_columns, Eigen::all);
 }
 
 Eigen::MatrixXcd CondensedHousingBlock::housingRows(const HousingCondensation& h,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "geardyn/error.h"
@@ -304,11 +305,34 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   //   δ_h + (Vᵀ D(h)⁻¹ V) Σ_j K̃_j δ_{h−j} = Vᵀ D(h)⁻¹ F_h,
   // a dense system of r (2H + 1) unknowns, and then X_h = D(h)⁻¹ (F_h − V Σ_j K̃_j δ_{h−j}).
   const int r = static_cast<int>(meshes.size());
-  const Eigen::MatrixXd Kbar = model.meanStiffnessAt(input_speed);
-  const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
-  detail::HarmonicBlocks blocks_of(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
-                                   options_.sparse_dofs, false, housing_);
+  Eigen::MatrixXd Kbar, C;  // K̄ and C at the speed, or their train blocks (housing condensed)
+  std::optional<detail::HarmonicBlocks> harmonic_blocks;
+  if (housing_ && rigid_at_every_speed_ &&
+      detail::HarmonicBlocks::condenses(*housing_, M, rigid_, options_.sparse_dofs)) {
+    // The housing's block of K̄ and C (constant, n_h wide) is never read: only the train's
+    // blocks are summed per speed, as meanStiffnessAt and dampingAt sum them, and K̄'s diagonal.
+    const int n_t = housing_->first;
+    const double s2 = input_speed * input_speed;
+    Kbar = model.stiffness().topLeftCorner(n_t, n_t) +
+           model.meanMeshStiffness().topLeftCorner(n_t, n_t) +
+           s2 * model.centripetal().topLeftCorner(n_t, n_t);
+    C = model.damping().topLeftCorner(n_t, n_t) +
+        input_speed * model.gyroscopic().topLeftCorner(n_t, n_t);
+    const double penalty =
+        std::max((model.stiffness().diagonal() + model.meanMeshStiffness().diagonal() +
+                  s2 * model.centripetal().diagonal())
+                     .cwiseAbs()
+                     .maxCoeff(),
+                 1e-300);
+    harmonic_blocks.emplace(Kbar, M, C, rigid_, penalty, housing_);
+  } else {
+    Kbar = model.meanStiffnessAt(input_speed);
+    C = model.dampingAt(input_speed);
+    harmonic_blocks.emplace(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
+                            options_.sparse_dofs, false, housing_);
+  }
+  detail::HarmonicBlocks& blocks_of = *harmonic_blocks;
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
   // F_h: the static load at h = 0 and every mesh's k·e at its harmonics.

@@ -37,6 +37,19 @@ class HarmonicBlocks {
   HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
                  const Eigen::MatrixXd& R, int sparse_dofs, bool keep_factors = true,
                  std::shared_ptr<const HousingCondensation> housing = nullptr);
+  /// The housing condensed, given the train's blocks only: `Ktt` and `Ctt` the train's n_t × n_t
+  /// blocks of K̄ and C (the housing's block is never read: the condensation has it in its
+  /// modes, so a caller need not form the n_h-wide sums per speed), M the whole mass, R the
+  /// rigid-body modes (n × k), `penalty` the largest |K̄_ii| over all n DOFs (as the constructor
+  /// above takes it). Only where `condenses(*housing, M, R, sparse_dofs)`.
+  HarmonicBlocks(const Eigen::MatrixXd& Ktt, const Eigen::MatrixXd& M, const Eigen::MatrixXd& Ctt,
+                 const Eigen::MatrixXd& R, double penalty,
+                 std::shared_ptr<const HousingCondensation> housing);
+  /// Whether the constructor above condenses `housing` (then the second one may be used): the
+  /// train without it has fewer than `sparse_dofs` DOFs and the rigid-body modes R leave the
+  /// housing at rest.
+  static bool condenses(const HousingCondensation& housing, const Eigen::MatrixXd& M,
+                        const Eigen::MatrixXd& R, int sparse_dofs);
   ~HarmonicBlocks();
 
   /// Factorises block h at the angular frequency w [rad/s] (hω₀ over a common period, n·ω of a

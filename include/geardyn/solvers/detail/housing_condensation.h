@@ -46,6 +46,8 @@ struct HousingCondensation {
   static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
   /// Φ y: the housing's reduced coordinates from modal amplitudes y (n_h × any).
   Eigen::MatrixXcd physical(const Eigen::MatrixXcd& y) const;
+  /// Wᵀ F: the bearing forces F (r × any) on the housing's modes.
+  Eigen::MatrixXcd modal(const Eigen::MatrixXcd& F) const;
 };
 
 /// The housing's frequency-dependent terms at several frequencies w_j [rad/s] at once (the
@@ -95,6 +97,10 @@ class CondensedHousingBlock {
   /// Its modal amplitudes y = diag(1/d) Wᵀ Z_eff J q_t (q_h = Φ y; n_h × q_t's columns), so that
   /// a caller with several blocks forms Φ [y_0, y_1, ...] in one product.
   Eigen::MatrixXcd modalAmplitudes(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
+  /// The bearing forces F = Z_eff J q_t on the housing (r × q_t's columns).
+  Eigen::MatrixXcd bearingForces(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
+  /// 1/d_k at this block's frequency.
+  const Eigen::VectorXcd& receptances() const noexcept { return dinv_; }
 
  private:
   /// Z_eff x = (I + Z G)⁻¹ Z x.
