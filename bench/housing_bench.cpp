@@ -168,6 +168,64 @@ void BM_TwoStageReducerOnTheBox(benchmark::State& state) {
 }
 BENCHMARK(BM_TwoStageReducerOnTheBox)->Iterations(1)->Unit(benchmark::kSecond);
 
+/// The train's forced-response solver (the example's 2 mesh harmonics) on the rigid housing
+/// (`housed` 0), in the box with its residual vectors (1) or without them (2).
+struct ForcedCase {
+  geardyn::GearTrainModel model;
+  geardyn::TrainSteadySolver solver;
+  static geardyn::GearTrainSpec spec(int housed) {
+    const std::string file =
+        housed >= 1 ? "two_stage_reducer_housed.toml" : "two_stage_reducer.toml";
+    std::vector<std::string> overrides;
+    if (housed == 2) overrides.push_back("housing.residual_vectors=false");
+    const geardyn::config::Config c =
+        geardyn::config::loadConfigFile(GEARDYN_SOURCE_DIR "/examples/gearboxes/" + file,
+                                        geardyn::config::gearboxSchema(), overrides);
+    std::vector<std::string> warnings;
+    geardyn::GearTrainSpec out = geardyn::config::gearTrainFromConfig(c, warnings);
+    if (housed >= 1) geardyn::config::attachHousing(c, out, 2760.0, 0.0);
+    return out;
+  }
+  static geardyn::TrainSteadyOptions options() {
+    geardyn::TrainSteadyOptions o;
+    o.mesh_harmonics = 2;
+    return o;
+  }
+  explicit ForcedCase(int housed) : model(spec(housed)), solver(model, options()) {}
+};
+
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// The ratio measured in pairs: at each of the 120 speeds the rigid and the housed
+/// solve (state.range(0): 1 with, 2 without residual vectors) alternate, each timed in the
+/// thread's CPU time, so that the shared machine's load changes hit both alike; the ratio of
+/// the sums.
+void BM_ForcedPerSpeedPaired(benchmark::State& state) {
+  const ForcedCase rigid(0), housed(static_cast<int>(state.range(0)));
+  constexpr int kSpeeds = 120;
+  double t_rigid = 0.0, t_housed = 0.0;
+  for (auto _ : state) {
+    for (int i = 1; i <= kSpeeds; ++i) {
+      const double w = 1800.0 * i / kSpeeds * M_PI / 30.0;
+      double t0 = threadCpuSeconds();
+      benchmark::DoNotOptimize(rigid.solver.solve(w).harmonic.data());
+      const double t1 = threadCpuSeconds();
+      benchmark::DoNotOptimize(housed.solver.solve(w).harmonic.data());
+      t_rigid += t1 - t0;
+      t_housed += threadCpuSeconds() - t1;
+    }
+  }
+  const double solves = static_cast<double>(state.iterations()) * kSpeeds;
+  state.counters["rigid_us_per_speed"] = 1e6 * t_rigid / solves;
+  state.counters["housed_us_per_speed"] = 1e6 * t_housed / solves;
+  state.counters["ratio"] = t_housed / t_rigid;
+}
+BENCHMARK(BM_ForcedPerSpeedPaired)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
 /// The forced response per speed as the `train` forced analysis computes it
 /// (TrainSteadySolver::solve, the example's 2 mesh harmonics): the two-stage reducer on the
 /// rigid housing (state.range(0) = 0) and in the example's box (1,

@@ -17,7 +17,33 @@ Eigen::SparseMatrix<std::complex<double>> complexSparseOf(const Eigen::MatrixXd&
   return A.cast<std::complex<double>>().sparseView(1.0, 1e-14 * scale);
 }
 
+/// A rigid-body mode that moves the housing (M R's housing rows not zero): the whole block is
+/// factorised, not condensed.
+bool housingStill(const Eigen::MatrixXd& MR, Eigen::Index n_h) {
+  return MR.cols() == 0 || MR.bottomRows(n_h).cwiseAbs().maxCoeff() <=
+                               1e-12 * std::max(MR.cwiseAbs().maxCoeff(), 1e-300);
+}
+
 }  // namespace
+
+bool HarmonicBlocks::condenses(const HousingCondensation& housing, const Eigen::MatrixXd& M,
+                               const Eigen::MatrixXd& R, int sparse_dofs) {
+  if (housing.first >= sparse_dofs) return false;
+  return R.cols() == 0 || housingStill(M * R, M.rows() - housing.first);
+}
+
+HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& Ktt, const Eigen::MatrixXd& M,
+                               const Eigen::MatrixXd& Ctt, const Eigen::MatrixXd& R, double penalty,
+                               std::shared_ptr<const HousingCondensation> housing)
+    : K_(Ktt),
+      M_(M),
+      C_(Ctt),
+      penalty_(penalty),
+      sparse_(false),
+      n_(static_cast<int>(M.rows())),
+      housing_(std::move(housing)) {
+  if (R.cols() > 0) MR_ = M * R;
+}
 
 HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                const Eigen::MatrixXd& C, const Eigen::MatrixXd& R, int sparse_dofs,
@@ -31,11 +57,7 @@ HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& 
       n_(static_cast<int>(K.rows())) {
   if (R.cols() > 0) MR_ = M * R;
   if (housing && housing->first < sparse_dofs) {
-    const Eigen::Index n_h = n_ - housing->first;
-    // A rigid-body mode that moves the housing: the whole block is factorised.
-    const bool still = MR_.cols() == 0 || MR_.bottomRows(n_h).cwiseAbs().maxCoeff() <=
-                                              1e-12 * std::max(MR_.cwiseAbs().maxCoeff(), 1e-300);
-    if (still) housing_ = std::move(housing), sparse_ = false;
+    if (housingStill(MR_, n_ - housing->first)) housing_ = std::move(housing), sparse_ = false;
   }
   penalty_ = std::max(K.diagonal().cwiseAbs().maxCoeff(), 1e-300);
   if (sparse_) {
@@ -57,7 +79,12 @@ void HarmonicBlocks::factorize(int h, double w) {
       D += (penalty_ * MR_.topRows(n_t) * MR_.topRows(n_t).transpose()).cast<Complex>();
     }
     housed_.resize(std::max<std::size_t>(housed_.size(), h + 1));
-    housed_[h].factorize(*housing_, D, w);
+    const std::size_t k = static_cast<std::size_t>(h);
+    if (k < receptances_.w.size() && receptances_.w[k] == w) {
+      housed_[k].factorize(*housing_, D, w, receptances_.dinv.col(h), receptances_.g.col(h));
+    } else {
+      housed_[k].factorize(*housing_, D, w);
+    }
     return;
   }
   if (!sparse_) {
@@ -142,6 +169,24 @@ Eigen::MatrixXcd HarmonicBlocks::housingRows(int h, const Eigen::MatrixXcd& q_t)
   const std::size_t k = static_cast<std::size_t>(std::abs(h));
   if (h >= 0) return housed_.at(k).housingRows(*housing_, q_t);
   return housed_.at(k).housingRows(*housing_, q_t.conjugate()).conjugate();
+}
+
+Eigen::MatrixXcd HarmonicBlocks::housingRowsOfBlocks(const Eigen::MatrixXcd& q_t) const {
+  if (!housing_)
+    throw std::logic_error("HarmonicBlocks::housingRowsOfBlocks: no condensed housing");
+  Eigen::MatrixXcd F(housing_->W.rows(), q_t.cols());  // the bearing forces of every block
+  for (Eigen::Index h = 0; h < q_t.cols(); ++h) {
+    F.col(h) = housed_.at(static_cast<std::size_t>(h)).bearingForces(*housing_, q_t.col(h));
+  }
+  Eigen::MatrixXcd y = housing_->modal(F);  // Wᵀ F of all blocks in one product
+  for (Eigen::Index h = 0; h < q_t.cols(); ++h) {
+    y.col(h).array() *= housed_[static_cast<std::size_t>(h)].receptances().array();
+  }
+  return housing_->physical(y);
+}
+
+void HarmonicBlocks::prepare(const std::vector<double>& w) {
+  if (housing_) receptances_ = HousingReceptances::at(*housing_, w);
 }
 
 }  // namespace geardyn::detail

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "geardyn/error.h"
@@ -277,7 +278,6 @@ Eigen::MatrixXcd forcingHarmonics(const GearTrainModel& model, const TrainBaseFr
 void sampleSteadyForces(TrainSteadyState& s, const GearTrainModel& model, double input_speed,
                         int samples, int L, const std::vector<int>& mesh_multiple) {
   const int H = s.harmonics;
-  const int n = model.dofCount();
   const auto& meshes = model.meshes();
   if (samples == 0) {
     samples = 64;
@@ -286,9 +286,15 @@ void sampleSteadyForces(TrainSteadyState& s, const GearTrainModel& model, double
   s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
   const Eigen::MatrixXd q = sampledDisplacement(s, model);
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
-  Eigen::VectorXd q_k(n);  // q(t_k), contiguous for the mesh forces
+  // q(t_k) on the DOFs up to the last one a mesh reads (the bodies' before any housing's),
+  // contiguous for the mesh forces.
+  int mesh_span = 0;
+  for (const TrainMesh& mesh : meshes) {
+    for (int d : mesh.dofs) mesh_span = std::max(mesh_span, d + 1);
+  }
+  Eigen::VectorXd q_k(mesh_span);
   for (int k = 0; k < samples; ++k) {
-    q_k = q.row(k).transpose();
+    q_k = q.row(k).head(mesh_span).transpose();
     for (std::size_t m = 0; m < meshes.size(); ++m) {
       s.mesh_force(k, m) = meshes[m].force(s.t(k), input_speed, q_k);
     }
@@ -379,11 +385,34 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   //   δ_h + (Vᵀ D(h)⁻¹ V) Σ_j K̃_j δ_{h−j} = Vᵀ D(h)⁻¹ F_h,
   // a dense system of r (2H + 1) unknowns, and then X_h = D(h)⁻¹ (F_h − V Σ_j K̃_j δ_{h−j}).
   const int r = static_cast<int>(meshes.size());
-  const Eigen::MatrixXd Kbar = model.meanStiffnessAt(input_speed);
-  const Eigen::MatrixXd C = model.dampingAt(input_speed);
   const Eigen::MatrixXd& M = model.mass();
-  detail::HarmonicBlocks blocks_of(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
-                                   options_.sparse_dofs, false, housing_);
+  Eigen::MatrixXd Kbar, C;  // K̄ and C at the speed, or their train blocks (housing condensed)
+  std::optional<detail::HarmonicBlocks> harmonic_blocks;
+  if (housing_ && rigid_at_every_speed_ &&
+      detail::HarmonicBlocks::condenses(*housing_, M, rigid_, options_.sparse_dofs)) {
+    // The housing's block of K̄ and C (constant, n_h wide) is never read: only the train's
+    // blocks are summed per speed, as meanStiffnessAt and dampingAt sum them, and K̄'s diagonal.
+    const int n_t = housing_->first;
+    const double s2 = input_speed * input_speed;
+    Kbar = model.stiffness().topLeftCorner(n_t, n_t) +
+           model.meanMeshStiffness().topLeftCorner(n_t, n_t) +
+           s2 * model.centripetal().topLeftCorner(n_t, n_t);
+    C = model.damping().topLeftCorner(n_t, n_t) +
+        input_speed * model.gyroscopic().topLeftCorner(n_t, n_t);
+    const double penalty =
+        std::max((model.stiffness().diagonal() + model.meanMeshStiffness().diagonal() +
+                  s2 * model.centripetal().diagonal())
+                     .cwiseAbs()
+                     .maxCoeff(),
+                 1e-300);
+    harmonic_blocks.emplace(Kbar, M, C, rigid_, penalty, housing_);
+  } else {
+    Kbar = model.meanStiffnessAt(input_speed);
+    C = model.dampingAt(input_speed);
+    harmonic_blocks.emplace(Kbar, M, C, rigid_at_every_speed_ ? rigid_ : rigidModes(Kbar, M),
+                            options_.sparse_dofs, false, housing_);
+  }
+  detail::HarmonicBlocks& blocks_of = *harmonic_blocks;
   Eigen::MatrixXcd V(n, r);
   for (int m = 0; m < r; ++m) V.col(m) = model.meshVector(m).cast<Complex>();
   const Eigen::MatrixXcd F =
@@ -405,6 +434,9 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
   Eigen::MatrixXcd DinvF(n_s, H + 1);
   Eigen::MatrixXcd rhs(n_s, r + 2);
   rhs.leftCols(r) = Vs;
+  std::vector<double> frequencies(H + 1);
+  for (int h = 0; h <= H; ++h) frequencies[h] = h * w0;
+  blocks_of.prepare(frequencies);  // the housing's receptances at every harmonic in one product
   for (int h = 0; h <= H; ++h) {
     blocks_of.factorize(h, h * w0);
     rhs.col(r) = F.col(h + H).head(n_s);
@@ -456,10 +488,10 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     }
     s.harmonic.col(h).head(n_s) = DinvF.col(h);
     if (r > 0) s.harmonic.col(h).head(n_s).noalias() -= DinvV[h] * g_sum;
-    if (train_only) {
-      s.harmonic.col(h).tail(n - n_t) =
-          blocks_of.housingRows(h, s.harmonic.col(h).head(n_t).eval());
-    }
+  }
+  // The housing's rows of every harmonic from the train's, one product with its modes for all.
+  if (train_only) {
+    s.harmonic.bottomRows(n - n_t) = blocks_of.housingRowsOfBlocks(s.harmonic.topRows(n_t).eval());
   }
 
   sampleSteadyForces(s, model, input_speed, options_.samples, L, base.mesh_multiple);

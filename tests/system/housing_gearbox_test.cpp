@@ -387,5 +387,31 @@ TEST(HousingGearbox, NewmarkWithTheHousingReachesTheForcedSteadyState) {
   EXPECT_LT(worst_force, 5e-3 * f_p2p);
 }
 
+// The seats' r × r LU of the condensation (pivots on |Re| + |Im|, LAPACK's measure) against
+// Eigen's PartialPivLU (pivots on |z|): the same solution of A X = B to round-off (A is
+// diagonally weighted, cond ≈ 10, so both are within ~1e-15 of the exact X; 1e-12 leaves room),
+// with a tiny leading entry that forces a row swap at the first step, and right-hand sides with
+// zeros, which the forward sweep skips.
+TEST(HousingCondensation, SeatLuSolvesAsEigensPartialPivotingLu) {
+  std::srand(7);
+  const Eigen::Index n = 12;
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Random(n, n) + 4.0 * Eigen::MatrixXcd::Identity(n, n);
+  A(0, 0) = Complex(1e-12, -1e-12);
+  const Eigen::MatrixXcd B = Eigen::MatrixXcd::Random(n, 5);
+  detail::SmallComplexLU lu;
+  lu.compute(A);
+  Eigen::MatrixXcd X = B;
+  lu.solveInPlace(X);
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> reference(A);
+  EXPECT_LE((X - reference.solve(B)).norm(), 1e-12 * X.norm());
+  EXPECT_LE((A * X - B).norm(), 1e-13 * A.norm() * X.norm());
+  Eigen::MatrixXcd E = Eigen::MatrixXcd::Zero(n, 2);
+  E(3, 0) = 1.0;
+  E(n - 1, 1) = Complex(0.0, 2.0);
+  Eigen::MatrixXcd Y = E;
+  lu.solveInPlace(Y);
+  EXPECT_LE((Y - reference.solve(E)).norm(), 1e-12 * Y.norm());
+}
+
 }  // namespace
 }  // namespace geardyn

@@ -37,6 +37,19 @@ class HarmonicBlocks {
   HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
                  const Eigen::MatrixXd& R, int sparse_dofs, bool keep_factors = true,
                  std::shared_ptr<const HousingCondensation> housing = nullptr);
+  /// The housing condensed, given the train's blocks only: `Ktt` and `Ctt` the train's n_t × n_t
+  /// blocks of K̄ and C (the housing's block is never read: the condensation has it in its
+  /// modes, so a caller need not form the n_h-wide sums per speed), M the whole mass, R the
+  /// rigid-body modes (n × k), `penalty` the largest |K̄_ii| over all n DOFs (as the constructor
+  /// above takes it). Only where `condenses(*housing, M, R, sparse_dofs)`.
+  HarmonicBlocks(const Eigen::MatrixXd& Ktt, const Eigen::MatrixXd& M, const Eigen::MatrixXd& Ctt,
+                 const Eigen::MatrixXd& R, double penalty,
+                 std::shared_ptr<const HousingCondensation> housing);
+  /// Whether the constructor above condenses `housing` (then the second one may be used): the
+  /// train without it has fewer than `sparse_dofs` DOFs and the rigid-body modes R leave the
+  /// housing at rest.
+  static bool condenses(const HousingCondensation& housing, const Eigen::MatrixXd& M,
+                        const Eigen::MatrixXd& R, int sparse_dofs);
   ~HarmonicBlocks();
 
   /// Factorises block h at the angular frequency w [rad/s] (hω₀ over a common period, n·ω of a
@@ -58,6 +71,13 @@ class HarmonicBlocks {
   Eigen::MatrixXcd solveTrain(int h, const Eigen::MatrixXcd& rhs_t) const;
   /// The housing's rows (n_h) of the solution of block h whose train rows are `q_t`.
   Eigen::MatrixXcd housingRows(int h, const Eigen::MatrixXcd& q_t) const;
+  /// The same for the blocks h = 0, 1, ..., q_t.cols() − 1 at once, column h of q_t the train
+  /// rows of block h's solution: one product with Φ for all of them.
+  Eigen::MatrixXcd housingRowsOfBlocks(const Eigen::MatrixXcd& q_t) const;
+  /// With the housing condensed: the frequencies w[h] [rad/s] the blocks h = 0, 1, ... will be
+  /// factorised at, so that the housing's receptances at all of them are formed in one product
+  /// (HousingReceptances) and factorize(h, w[h]) reads them. Without the condensation: nothing.
+  void prepare(const std::vector<double>& w);
 
  private:
   using SparseMatrixC = Eigen::SparseMatrix<Complex>;
@@ -74,6 +94,7 @@ class HarmonicBlocks {
   std::vector<std::unique_ptr<SparseLUC>> sparse_lu_;  // per h, or [bordered, w ≠ 0] (not kept)
   std::shared_ptr<const HousingCondensation> housing_;
   std::vector<CondensedHousingBlock> housed_;
+  HousingReceptances receptances_;  // from prepare()
 };
 
 }  // namespace geardyn::detail

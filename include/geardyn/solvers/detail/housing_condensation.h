@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 #include <memory>
+#include <vector>
 
 #include "geardyn/system/gear_train_model.h"
 
@@ -35,9 +36,43 @@ struct HousingCondensation {
   /// r(r + 1)/2 × n_h: column k holds the upper triangle of w_k w_kᵀ column by column, w_k =
   /// W's column k (G = W diag(1/d) Wᵀ, symmetric, as P (1/d)).
   Eigen::MatrixXd P;
+  /// The train's DOFs J reads (its nonzero columns; a bearing row reads a few of them) and J
+  /// on them (r × c): Z_eff J is formed on these c columns only.
+  std::vector<Eigen::Index> J_columns;
+  Eigen::MatrixXd Jc;
+  bool Z_diagonal = false;  ///< k and c diagonal: Z G is a scaling of G's rows
   /// The condensation of `model`'s housing; null without a housing or when the housing is not
   /// held (a zero eigenvalue: the exact path then factorises the whole block).
   static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
+  /// Φ y: the housing's reduced coordinates from modal amplitudes y (n_h × any).
+  Eigen::MatrixXcd physical(const Eigen::MatrixXcd& y) const;
+  /// Wᵀ F: the bearing forces F (r × any) on the housing's modes.
+  Eigen::MatrixXcd modal(const Eigen::MatrixXcd& F) const;
+};
+
+/// The housing's frequency-dependent terms at several frequencies w_j [rad/s] at once (the
+/// harmonics of one speed): 1/d_k(w_j) (n_h × count) and G(w_j)'s upper triangle
+/// (r(r + 1)/2 × count) from one real product P [Re 1/d, Im 1/d] for all of them, so P is read
+/// (and packed) once per speed instead of once per harmonic.
+struct HousingReceptances {
+  std::vector<double> w;  ///< the frequencies [rad/s]
+  Eigen::MatrixXcd dinv;  ///< column j: 1/d_k(w_j) = 1/((1 + i w_j β_h) λ_k − w_j²) [s²]
+  Eigen::MatrixXcd g;     ///< column j: G(w_j)'s upper triangle, column by column [m/N]
+  static HousingReceptances at(const HousingCondensation& h, const std::vector<double>& w);
+};
+
+/// LU factors of a small complex matrix, partial pivoting on |Re| + |Im| (LAPACK zgetrf's
+/// izamax): I + Z G of the condensation, r × r (r the linked bearings' rows).
+class SmallComplexLU {
+ public:
+  void compute(const Eigen::MatrixXcd& A);
+  /// B ← A⁻¹ B.
+  void solveInPlace(Eigen::MatrixXcd& B) const;
+
+ private:
+  Eigen::MatrixXcd lu_;
+  std::vector<Eigen::Index> pivots_;
+  Eigen::VectorXcd inverse_;  // 1/u_kk
 };
 
 /// One frequency's condensation: the train's LU and the housing's terms.
@@ -47,6 +82,10 @@ class CondensedHousingBlock {
   /// Factorises the train's block D_tt of K̄ − ω²M + iωC (with any rigid-body penalty) with the
   /// housing condensed out at ω [rad/s].
   void factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt, double w);
+  /// The same with 1/d and G's upper triangle at w given (HousingReceptances' columns).
+  void factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt, double w,
+                 const Eigen::Ref<const Eigen::VectorXcd>& dinv,
+                 const Eigen::Ref<const Eigen::VectorXcd>& g);
   /// D⁻¹ rhs over all n_t + n_h DOFs.
   Eigen::MatrixXcd solve(const HousingCondensation& h, const Eigen::MatrixXcd& rhs) const;
   /// The train's rows of D⁻¹ rhs for loads on the train only (`rhs_t`: n_t rows; the housing's
@@ -55,10 +94,22 @@ class CondensedHousingBlock {
   /// The housing's rows of that solution from its train rows q_t:
   /// q_h = Φ diag(1/d) Wᵀ Z_eff J q_t (the loads on the housing zero).
   Eigen::MatrixXcd housingRows(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
+  /// Its modal amplitudes y = diag(1/d) Wᵀ Z_eff J q_t (q_h = Φ y; n_h × q_t's columns), so that
+  /// a caller with several blocks forms Φ [y_0, y_1, ...] in one product.
+  Eigen::MatrixXcd modalAmplitudes(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
+  /// The bearing forces F = Z_eff J q_t on the housing (r × q_t's columns).
+  Eigen::MatrixXcd bearingForces(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
+  /// 1/d_k at this block's frequency.
+  const Eigen::VectorXcd& receptances() const noexcept { return dinv_; }
 
  private:
+  /// Z_eff x = (I + Z G)⁻¹ Z x.
+  Eigen::MatrixXcd zeff(const Eigen::MatrixXcd& x) const;
+
   Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
-  Eigen::MatrixXcd Zeff_;
+  SmallComplexLU seat_lu_;  // I + Z G
+  Eigen::MatrixXcd Z_;      // k + iωc (r × r)
+  Eigen::MatrixXcd ZeffJ_;  // Z_eff J on J's columns (r × c)
   Eigen::VectorXcd dinv_;
 };
 
