@@ -30,8 +30,8 @@
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/train_response.h"
-#include "geardyn/solvers/train_torus.h"
-#include "geardyn/solvers/train_torus_truncation.h"
+#include "geardyn/torus/train_torus.h"
+#include "geardyn/torus/train_torus_truncation.h"
 
 namespace geardyn {
 namespace {

@@ -18,8 +18,8 @@
 #include "geardyn/config/gearbox_config.h"
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/continuation.h"
-#include "geardyn/solvers/train_torus_balance.h"
-#include "geardyn/solvers/train_torus_lyapunov.h"
+#include "geardyn/torus/train_torus_balance.h"
+#include "geardyn/torus/train_torus_lyapunov.h"
 #include "geardyn/units.h"
 
 namespace geardyn {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geardyn/io/csv_table.h"
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 
 namespace geardyn::analysis::detail {
 

@@ -1,5 +1,5 @@
 /// `train` analysis `nonlinear` on the torus of the mesh phases (train_nonlinear_analysis.h;
-/// solvers/train_torus_balance.h): chosen when the meshes' common period is long
+/// torus/train_torus_balance.h): chosen when the meshes' common period is long
 /// (nonlinear.method). Continuation in speed with every frequency moving together, per-point
 /// mesh deflections, forces and contact loss, the mesh-force lines per tone and per mesh order,
 /// and Newmark checks and Lyapunov estimates of stability at chosen speeds.
@@ -16,8 +16,8 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/train_response.h"
-#include "geardyn/solvers/train_torus_balance.h"
-#include "geardyn/solvers/train_torus_lyapunov.h"
+#include "geardyn/torus/train_torus_balance.h"
+#include "geardyn/torus/train_torus_lyapunov.h"
 #include "geardyn/units.h"
 #include "torus_tones.h"
 #include "train_nonlinear_analysis.h"

@@ -18,7 +18,7 @@
 #include "geardyn/solvers/rotor_response.h"
 #include "geardyn/solvers/train_periodic_record.h"
 #include "geardyn/solvers/train_time.h"
-#include "torus_newmark_comparison.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

@@ -15,12 +15,12 @@
 #include "geardyn/solvers/train_nonlinear_time.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
-#include "geardyn/solvers/train_torus_balance.h"
 #include "geardyn/system/bearing_law.h"
-#include "solvers/torus_newmark_comparison.h"
+#include "geardyn/torus/train_torus_balance.h"
 #include "support/numeric_assertions.h"
 #include "system/nonlinear_trains.h"
 #include "system/rolling_bearing_law_trains.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

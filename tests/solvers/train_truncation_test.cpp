@@ -9,9 +9,9 @@
 
 #include <numbers>
 
-#include "geardyn/solvers/train_torus_truncation.h"
-#include "solvers/torus_newmark_comparison.h"
+#include "geardyn/torus/train_torus_truncation.h"
 #include "system/sample_trains.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

@@ -15,7 +15,7 @@
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_runup.h"
 #include "geardyn/solvers/train_time.h"
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 
 namespace geardyn::config {
 

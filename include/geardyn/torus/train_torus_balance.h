@@ -35,10 +35,10 @@
 #include <vector>
 
 #include "geardyn/solvers/continuation.h"
-#include "geardyn/solvers/train_torus.h"
 #include "geardyn/system/bearing_law.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/train_tooth_pairs.h"
+#include "geardyn/torus/train_torus.h"
 
 namespace geardyn {
 namespace detail {

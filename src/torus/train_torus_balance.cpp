@@ -2,7 +2,7 @@
 /// docs/theory/torus_harmonic_balance.md): tone set, condensation, AFT on the k-D grid, residual
 /// and analytic Jacobian. The recovery and the Newmark check are in train_torus_balance_check.cpp.
 
-#include "geardyn/solvers/train_torus_balance.h"
+#include "geardyn/torus/train_torus_balance.h"
 
 #include <fmt/format.h>
 
@@ -13,10 +13,10 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
-#include "geardyn/solvers/detail/tone_block_derivative.h"
-#include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/system/train_excitation.h"
+#include "geardyn/torus/detail/tone_block_derivative.h"
+#include "geardyn/torus/detail/torus_fft.h"
 
 namespace geardyn {
 namespace {

@@ -1,7 +1,7 @@
 /// The torus balance of a linear train (train_torus.h) against the common-period balance
 /// (train_response.h) and against Newmark (train_time.h).
 
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -15,8 +15,8 @@
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
-#include "geardyn/solvers/train_torus_truncation.h"
-#include "solvers/torus_newmark_comparison.h"
+#include "geardyn/torus/train_torus_truncation.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

@@ -3,7 +3,7 @@
 /// set and the solver's tables (neighbours, lines, grid). The solve per speed is in
 /// train_torus_solve.cpp, the grid evaluation in train_torus_grid.cpp.
 
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 
 #include <fmt/format.h>
 
@@ -14,8 +14,8 @@
 
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
-#include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
+#include "geardyn/torus/detail/torus_fft.h"
 
 namespace geardyn {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "geardyn/solvers/detail/torus_fft.h"
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/detail/torus_fft.h"
+#include "geardyn/torus/train_torus.h"
 #include "train_torus_workspace.h"
 
 namespace geardyn {

@@ -1,6 +1,6 @@
 /// The derived truncation as torus options (train_torus_truncation.h).
 
-#include "geardyn/solvers/train_torus_truncation.h"
+#include "geardyn/torus/train_torus_truncation.h"
 
 #include <algorithm>
 

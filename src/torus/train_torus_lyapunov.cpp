@@ -1,6 +1,6 @@
 /// Lyapunov exponents of a torus solution's variational equation (train_torus_lyapunov.h).
 
-#include "geardyn/solvers/train_torus_lyapunov.h"
+#include "geardyn/torus/train_torus_lyapunov.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>

@@ -1,5 +1,5 @@
 /// Issue 32, long: the torus balance of the hunting-tooth reducer (z 19/71 + 21/59) against
-/// long Newmark runs at three speeds (tests/solvers/torus_newmark_comparison.h; the unit test
+/// long Newmark runs at three speeds (tests/torus/torus_newmark_comparison.h; the unit test
 /// TrainTorus.NewmarkSpectrumOfTheHuntingToothReducer does the operating speed).
 
 #include <fmt/format.h>
@@ -7,8 +7,8 @@
 
 #include <numbers>
 
-#include "geardyn/solvers/train_torus_truncation.h"
-#include "solvers/torus_newmark_comparison.h"
+#include "geardyn/torus/train_torus_truncation.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

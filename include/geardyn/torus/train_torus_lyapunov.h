@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "geardyn/solvers/train_torus_balance.h"
+#include "geardyn/torus/train_torus_balance.h"
 
 namespace geardyn {
 

@@ -2,7 +2,7 @@
 /// against the damped modes' decay rate (closed form from the state matrix's eigenvalues), and
 /// through a parametric instability against the monodromy matrix of the common-period balance.
 
-#include "geardyn/solvers/train_torus_lyapunov.h"
+#include "geardyn/torus/train_torus_lyapunov.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 
 #include "geardyn/solvers/train_harmonic_balance.h"
 #include "geardyn/stiffness/api_stiffness.h"
-#include "solvers/torus_newmark_comparison.h"
 #include "system/nonlinear_sample_trains.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

@@ -1,6 +1,6 @@
 /// FFTW transforms between the torus grid and its Fourier coefficients (detail/torus_fft.h).
 
-#include "geardyn/solvers/detail/torus_fft.h"
+#include "geardyn/torus/detail/torus_fft.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 #include "geardyn/config/train_analysis.h"
 #include "geardyn/solvers/train_response.h"
 #include "geardyn/solvers/train_time.h"
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 
 namespace geardyn::testing {
 

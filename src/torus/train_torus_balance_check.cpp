@@ -7,9 +7,9 @@
 #include <numbers>
 
 #include "geardyn/solvers/detail/harmonic_blocks.h"
-#include "geardyn/solvers/detail/torus_fft.h"
 #include "geardyn/solvers/train_nonlinear_time.h"
-#include "geardyn/solvers/train_torus_balance.h"
+#include "geardyn/torus/detail/torus_fft.h"
+#include "geardyn/torus/train_torus_balance.h"
 
 namespace geardyn {
 

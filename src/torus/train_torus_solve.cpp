@@ -13,7 +13,7 @@
 #include "geardyn/error.h"
 #include "geardyn/solvers/detail/harmonic_blocks.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 #include "train_torus_workspace.h"
 
 namespace geardyn {

@@ -12,7 +12,7 @@
 #include <complex>
 #include <vector>
 
-#include "geardyn/solvers/train_torus.h"
+#include "geardyn/torus/train_torus.h"
 
 namespace geardyn::detail {
 

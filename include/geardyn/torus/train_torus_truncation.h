@@ -5,8 +5,8 @@
 /// shared by `train` [forced], the bench and the tests (docs/theory/torus_harmonic_balance.md,
 /// "The default truncation" and "The index set").
 
-#include "geardyn/solvers/train_torus.h"
 #include "geardyn/solvers/train_truncation.h"
+#include "geardyn/torus/train_torus.h"
 
 namespace geardyn {
 

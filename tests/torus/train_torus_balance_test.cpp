@@ -2,7 +2,7 @@
 /// differences, one generator against the common-period nonlinear balance
 /// (train_harmonic_balance.h), and the hunting-tooth reducer with backlash against Newmark.
 
-#include "geardyn/solvers/train_torus_balance.h"
+#include "geardyn/torus/train_torus_balance.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <numbers>
 
 #include "geardyn/solvers/train_harmonic_balance.h"
-#include "geardyn/solvers/train_torus_lyapunov.h"
-#include "solvers/torus_newmark_comparison.h"
+#include "geardyn/torus/train_torus_lyapunov.h"
 #include "system/nonlinear_sample_trains.h"
+#include "torus/torus_newmark_comparison.h"
 
 namespace geardyn {
 namespace {

@@ -1,7 +1,7 @@
 /// The speed derivative of a torus tone's harmonic block as sparse real operators
 /// (detail/tone_block_derivative.h).
 
-#include "geardyn/solvers/detail/tone_block_derivative.h"
+#include "geardyn/torus/detail/tone_block_derivative.h"
 
 namespace geardyn::detail {
 namespace {
