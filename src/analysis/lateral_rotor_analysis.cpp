@@ -42,7 +42,8 @@ void requireNyquist(const LateralRotorModel& model, double sample_rate, const st
   }
 }
 
-/// The gearbox the rotor is (config/rotor_gearbox.h): what its time domain integrates.
+/// The gearbox the rotor is (config/rotor_gearbox.h): what its frequency and time domains solve,
+/// built once per rotor.
 struct RotorGearbox {
   RotorGearbox(const LateralRotorSpec& spec, const std::string& source)
       : train(config::lateralRotorGearTrain(spec, source, warnings)),
@@ -53,9 +54,8 @@ struct RotorGearbox {
 };
 
 /// The rotor recorded from rest by the train's Dormand–Prince (train_periodic_record.h).
-TrainRecord recordRotor(const LateralRotorModel& model, const std::string& source,
+TrainRecord recordRotor(const LateralRotorModel& model, const RotorGearbox& gearbox,
                         const TrainRecordOptions& options) {
-  const RotorGearbox gearbox(model.spec(), source);
   return recordTrainFromRest(gearbox.train, gearbox.train.inputSpeed(), gearbox.probes,
                              model.commonPeriod(), options);
 }
@@ -76,8 +76,7 @@ std::array<std::vector<double>, 4> steadyChannels(const TrainRecord& r) {
 /// ordered as LateralRotorModel::whirlForcing(); a component sharing its frequency with a forced
 /// one (t_p = t_g: the two 1× circles) is the forced one's, the other 0.
 std::vector<RotorWhirlResponse> gearboxWhirlResponse(const LateralRotorModel& model,
-                                                     const std::string& source) {
-  const RotorGearbox gearbox(model.spec(), source);
+                                                     const RotorGearbox& gearbox) {
   const GearTrainModel& train = gearbox.train;
   // No meshes: H is the highest excitation multiple, n_h t_p t_g/gcd (2800 for Table 4.1);
   // every harmonic is a 6 × 6 solve, so any tooth counts are accepted.
@@ -167,7 +166,8 @@ double whirlRms(const std::vector<WhirlComponent>& peaks, const std::string& pre
 /// The time response (Dormand–Prince), its steady-window full spectrum and its comparison with
 /// the exact frequency-domain peaks `exact`; false when the integration failed.
 bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
-                   const LateralRotorModel& model, const GearPairSpectrumOptions& spectrum_options,
+                   const LateralRotorModel& model, const RotorGearbox& gearbox,
+                   const GearPairSpectrumOptions& spectrum_options,
                    const std::array<std::vector<WhirlComponent>, 2>& exact, AnalysisResult& result,
                    TrainRecord& time, std::string& text) {
   io::RunSummary& summary = result.summary;
@@ -188,7 +188,7 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
   requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
                  "time.samples", samples_shown);
   const auto start = std::chrono::steady_clock::now();
-  time = recordRotor(model, config.source(), time_options);
+  time = recordRotor(model, gearbox, time_options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   requireNyquist(model, time.sample_rate, "time.samples", samples_shown);
@@ -281,7 +281,7 @@ void addSuperposedHistory(const LateralRotorModel& model,
 /// gearbox integrated from rest (Dormand–Prince), in the formats `spectrum` reads; false when
 /// the integration failed.
 bool addProbeRecords(const config::Config& config, const LateralRotorModel& model,
-                     const TrainRecord& time, AnalysisResult& result) {
+                     const RotorGearbox& gearbox, const TrainRecord& time, AnalysisResult& result) {
   io::RunSummary& summary = result.summary;
   const auto& s = model.spec();
   const auto formats = config.stringList("measurement.formats");
@@ -307,7 +307,6 @@ bool addProbeRecords(const config::Config& config, const LateralRotorModel& mode
     throw InputError("measurement.start", fmt::format("{:g}", start),
                      fmt::format(">= {:g} s (two samples)", 2.0 / fs));
   }
-  const RotorGearbox gearbox(s, config.source());
   TrainDormandPrinceOptions integrator;
   integrator.relative_tolerance = config.real("time.relative_tolerance");
   integrator.absolute_tolerance = config.real("time.absolute_tolerance");
@@ -377,12 +376,13 @@ bool addParametricStudy(const config::Config& config, const LateralRotorModel& m
   nlohmann::ordered_json cases_json = nlohmann::ordered_json::array();
   for (const StudyCase& c : studyCases(config, model.spec())) {
     const LateralRotorModel m(c.spec);
+    const RotorGearbox gearbox(c.spec, config.source() + " " + c.name);
     std::array<std::vector<WhirlComponent>, 2> peaks;
     if (in_time) {
       TrainRecordOptions o = config::rotorTimeOptionsFromConfig(config);
       o.samples =
           static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
-      const TrainRecord r = recordRotor(m, config.source() + " " + c.name, o);
+      const TrainRecord r = recordRotor(m, gearbox, o);
       if (!r.converged()) {
         warnings.push_back(fmt::format("study case {}: {}", c.name, r.message));
         ok = false;
@@ -392,8 +392,8 @@ bool addParametricStudy(const config::Config& config, const LateralRotorModel& m
                                     setupOf(m), spectrum_options)
                   .peaks;
     } else {
-      peaks = analysis::frequencyDomainPeaks(
-          gearboxWhirlResponse(m, config.source() + " " + c.name), spectrum_options.frame);
+      peaks =
+          analysis::frequencyDomainPeaks(gearboxWhirlResponse(m, gearbox), spectrum_options.frame);
     }
     nlohmann::ordered_json case_json = {{"case", c.name}, {"group", c.group}, {"factor", c.factor}};
     for (int sh = 0; sh < 2; ++sh) {
@@ -486,7 +486,8 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
   // Frequency domain: the exact steady state of the gearbox this file is, by the train's
   // harmonic balance (tests/system/train_excitation_test.cpp: the 4-DOF closed form to 1e-10).
   const auto t0 = std::chrono::steady_clock::now();
-  const auto parts = gearboxWhirlResponse(model, config.source());
+  const RotorGearbox gearbox(s, config.source());
+  const auto parts = gearboxWhirlResponse(model, gearbox);
   const double frequency_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto exact = analysis::frequencyDomainPeaks(parts, spectrum_options.frame);
@@ -499,10 +500,11 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
       "{:.6g} s\n",
       s.pinion_speed, setup.gearSpeed(), setup.meshFrequency(), model.commonPeriod());
   TrainRecord time;
-  bool ok = !config.boolean("time.enabled") ||
-            addTimeDomain(config, context, model, spectrum_options, exact, result, time, text);
+  bool ok =
+      !config.boolean("time.enabled") ||
+      addTimeDomain(config, context, model, gearbox, spectrum_options, exact, result, time, text);
   if (config.boolean("frequency.superpose")) addSuperposedHistory(model, parts, time, result);
-  if (!addProbeRecords(config, model, time, result)) ok = false;
+  if (!addProbeRecords(config, model, gearbox, time, result)) ok = false;
   if (config.boolean("study.enabled") &&
       !addParametricStudy(config, model, spectrum_options, result, warnings, text))
     ok = false;

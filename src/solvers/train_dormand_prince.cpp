@@ -246,8 +246,10 @@ double trainForcingFrequency(const GearTrainModel& model, double input_speed) {
   return omega > 0.0 ? omega : 1.0;
 }
 
-double trainResponseScale(const GearTrainModel& model, double input_speed) {
-  const ReducedTrain r = reduce(model, input_speed);
+namespace {
+
+/// trainResponseScale of the reduced train `r` [m].
+double responseScale(const GearTrainModel& model, const ReducedTrain& r) {
   if (r.dofs.empty()) return 1e-6;
   // Quasi-static responses K̄⁺ f (minimum norm: rigid-body modes carry no scale).
   const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> k(r.K);
@@ -270,6 +272,12 @@ double trainResponseScale(const GearTrainModel& model, double input_speed) {
     for (double phi = 0.0; phi < 1.0; phi += 1.0 / 16)
       scale = std::max(scale, std::abs(mesh.transmission_error.value(phi)));
   return scale > 0.0 ? scale : 1e-6;
+}
+
+}  // namespace
+
+double trainResponseScale(const GearTrainModel& model, double input_speed) {
+  return responseScale(model, reduce(model, input_speed));
 }
 
 TrainDormandPrinceRun integrateTrainDormandPrince(const GearTrainModel& model, double input_speed,
@@ -301,8 +309,8 @@ TrainDormandPrinceRun integrateTrainDormandPrince(const GearTrainModel& model, d
   const ReducedTrain train = reduce(model, input_speed, initial);
   const auto n = static_cast<Eigen::Index>(train.dofs.size());
   run.integrated_dofs = static_cast<int>(n);
-  const double length = options.displacement_scale > 0.0 ? options.displacement_scale
-                                                         : trainResponseScale(model, input_speed);
+  const double length =
+      options.displacement_scale > 0.0 ? options.displacement_scale : responseScale(model, train);
   const double omega = options.velocity_frequency > 0.0 ? options.velocity_frequency
                                                         : trainForcingFrequency(model, input_speed);
   const auto observed = static_cast<Eigen::Index>(dofs.size());

@@ -25,6 +25,20 @@ namespace geardyn {
 namespace {
 
 using namespace testing::nonlinear;
+
+/// The balance's starting guess at the operating speed with every mesh's first harmonics moved
+/// so that its teeth open and hit their back flanks (`harmonics` H: 2H + 1 unknowns a mesh).
+HarmonicBalancePoint swungPoint(TrainHarmonicBalance& hbm, const GearTrainModel& model,
+                                int harmonics) {
+  HarmonicBalancePoint point;
+  point.omega = hbm.baseFrequency(model.inputSpeed());
+  point.q = hbm.startingGuess(point.omega);
+  for (int mm = 0; mm < hbm.meshCount(); ++mm) {
+    point.q(mm * (2 * harmonics + 1) + 1) += 5e-6 * (1.0 + 0.1 * mm);
+    point.q(mm * (2 * harmonics + 1) + 4) -= 1e-6;
+  }
+  return point;
+}
 using Complex = std::complex<double>;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
@@ -39,13 +53,7 @@ TEST(TrainHill, ArnoldiMatchesTheDenseHillMatrix) {
   options.harmonics = 4;
   options.samples = 64;
   TrainHarmonicBalance hbm(model, options);
-  HarmonicBalancePoint point;
-  point.omega = hbm.baseFrequency(model.inputSpeed());
-  point.q = hbm.startingGuess(point.omega);
-  for (int mm = 0; mm < hbm.meshCount(); ++mm) {
-    point.q(mm * 9 + 1) += 5e-6 * (1.0 + 0.1 * mm);  // swing every mesh across its clearance
-    point.q(mm * 9 + 4) -= 1e-6;
-  }
+  const HarmonicBalancePoint point = swungPoint(hbm, model, options.harmonics);
   const detail::TrainHillProblem problem = hbm.hillProblem(point, false);
   const Eigen::EigenSolver<Eigen::MatrixXd> dense(detail::trainHillMatrix(problem), false);
   const Eigen::VectorXcd all = dense.eigenvalues();
@@ -95,13 +103,7 @@ TEST(TrainHill, StripArnoldiMatchesTheDenseStrip) {
     options.harmonics = harmonics;
     options.samples = 64;
     TrainHarmonicBalance hbm(model, options);
-    HarmonicBalancePoint point;
-    point.omega = hbm.baseFrequency(model.inputSpeed());
-    point.q = hbm.startingGuess(point.omega);
-    for (int mm = 0; mm < hbm.meshCount(); ++mm) {
-      point.q(mm * (2 * harmonics + 1) + 1) += 5e-6 * (1.0 + 0.1 * mm);
-      point.q(mm * (2 * harmonics + 1) + 4) -= 1e-6;
-    }
+    const HarmonicBalancePoint point = swungPoint(hbm, model, harmonics);
     const detail::TrainHillProblem problem = hbm.hillProblem(point, false);
     const Eigen::MatrixXd Hm = detail::trainHillMatrix(problem);
     const Eigen::VectorXcd all = Eigen::EigenSolver<Eigen::MatrixXd>(Hm, false).eigenvalues();
