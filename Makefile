@@ -10,7 +10,9 @@ all: setup
 setup:
 	bash scripts/setup.sh
 
-demo: setup
+# The demo needs the CLI and the Python module only; the tests' binaries are built by `make test`.
+demo:
+	BUILD_TARGETS=geardyn_demo_programs bash scripts/setup.sh
 	bash scripts/demo.sh
 
 # The default suite: unit + validation + examples + CLI + Python (everything but label `long`).

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Sum a build's CPU time by group from scripts/cpu_time_wrapper.sh's log (issue 34).
 
-    scripts/cpu_time_summary.py LOG [--top N]
+    scripts/cpu_time_summary.py LOG [--top N] [--last]
 
 Each log line is "wall user sys command..."; a compile is named by its -o output, a link by its
 -o too. Groups: library (src/), tests, apps (the CLI), python (the module), bench, other; links
@@ -25,6 +25,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("log")
     parser.add_argument("--top", type=int, default=30)
+    parser.add_argument("--last", action="store_true",
+                        help="count each output once, its last command (a build interrupted and "
+                             "resumed, or a file rebuilt after an edit)")
     args = parser.parse_args()
     rows = []
     for line in open(args.log, encoding="utf-8", errors="replace"):
@@ -35,6 +38,8 @@ def main():
         link = " -c " not in f" {parts[3]} "
         rows.append((float(parts[1]) + float(parts[2]), float(parts[0]),
                      out.group(1) if out else parts[3][:60], link))
+    if args.last:
+        rows = list({out: (cpu, wall, out, link) for cpu, wall, out, link in rows}.values())
     by_group = collections.defaultdict(lambda: [0, 0.0])
     for cpu, _, out, link in rows:
         g = ("link " if link else "") + group(out.split("CMakeFiles/")[0] or out)

@@ -5,7 +5,9 @@
 #   scripts/setup.sh            packages + configure + build (build/)
 #   scripts/setup.sh --deps     packages only
 #
-# Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), GEARDYN_CMAKE_ARGS (extra).
+# Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), GEARDYN_CMAKE_ARGS (extra),
+# BUILD_TARGETS (default: all; `make demo` builds only geardyn_demo_programs, the CLI and the
+# Python module, and leaves the test binaries to `make test`).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -89,4 +91,6 @@ if command -v ccache >/dev/null 2>&1; then
 fi
 cmake -S . -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE="$build_type" "${launcher[@]}" \
   -DPython3_EXECUTABLE=/usr/bin/python3 ${GEARDYN_CMAKE_ARGS:-} >/dev/null
-cmake --build "$build_dir" -j "$(nproc)"
+targets=()
+[ -z "${BUILD_TARGETS:-}" ] || targets=(--target ${BUILD_TARGETS})
+cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}"

@@ -356,8 +356,8 @@ FeRotorModels buildModels(const config::Config& config, io::RunSummary& summary)
 }
 
 /// The modes at one speed, from the train's modal solver on the file's gearbox.
-int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
-             std::string& text) {
+int runFeRotorModal(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
+                    std::string& text) {
   const FeRotorModels models = buildModels(config, summary);
   const FeRotorModel& model = *models.model;
   const double speed = (config.has("modal.speed_rpm") ? config.real("modal.speed_rpm")
@@ -391,8 +391,8 @@ int runModal(const config::Config& config, io::RunSummary& summary, AnalysisResu
   return kOk;
 }
 
-int runCampbell(const config::Config& config, io::RunSummary& summary, AnalysisResult& result,
-                std::string& text) {
+int runFeRotorCampbell(const config::Config& config, io::RunSummary& summary,
+                       AnalysisResult& result, std::string& text) {
   const FeRotorModels models = buildModels(config, summary);
   const FeRotorModel& model = *models.model;
   const auto speeds = config::campbellSpeedsFromConfig(config);
@@ -581,8 +581,8 @@ AnalysisResult feRotorAnalysis(const config::Config& config, const AnalysisConte
   std::string text = fmt::format("finite-element geared rotor: {} analysis\n", analysis);
   int code = kOk;
   if (analysis == "time") code = runTime(config, context, summary, result, text);
-  if (analysis == "modal") code = runModal(config, summary, result, text);
-  if (analysis == "campbell") code = runCampbell(config, summary, result, text);
+  if (analysis == "modal") code = runFeRotorModal(config, summary, result, text);
+  if (analysis == "campbell") code = runFeRotorCampbell(config, summary, result, text);
   if (analysis == "compare_stiffness") code = runCompare(config, context, summary, result, text);
   summary.status = code == kOk ? "ok" : "diverged";
   for (const auto& w : summary.warnings) {

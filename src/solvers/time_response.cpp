@@ -12,7 +12,7 @@
 namespace geardyn {
 namespace {
 
-using State = std::array<double, 2>;
+using OscillatorState = std::array<double, 2>;
 
 /// Size of the deflection, for relative tolerances: static deflection, error, clearance.
 double deflectionScale(const GearPairModel& model) {
@@ -34,7 +34,7 @@ double staticDeflection(const GearPairModel& model) {
 
 struct OdeSystem {
   const GearPairModel& model;
-  void operator()(const State& s, State& ds, double t) const {
+  void operator()(const OscillatorState& s, OscillatorState& ds, double t) const {
     ds[0] = s[1];
     ds[1] = model.acceleration(t, s[0], s[1]);
   }
@@ -95,8 +95,9 @@ NewmarkState integrateNewmark(const GearPairModel& model, NewmarkParameters para
 std::pair<double, double> integrateDormandPrince(const GearPairModel& model, double t0, double t1,
                                                  double x, double v, double rtol, double atol) {
   namespace odeint = boost::numeric::odeint;
-  State s{x, v};
-  auto stepper = odeint::make_dense_output(atol, rtol, odeint::runge_kutta_dopri5<State>());
+  OscillatorState s{x, v};
+  auto stepper =
+      odeint::make_dense_output(atol, rtol, odeint::runge_kutta_dopri5<OscillatorState>());
   odeint::integrate_adaptive(stepper, OdeSystem{model}, s, t0, t1, (t1 - t0) / 100.0);
   return {s[0], s[1]};
 }
@@ -125,7 +126,7 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
   const double h = T / options.steps_per_period;
 
   namespace odeint = boost::numeric::odeint;
-  State ode{x, v};
+  OscillatorState ode{x, v};
 
   struct Period {
     std::vector<double> x, v;
@@ -156,16 +157,16 @@ TimeResponse solveTimeResponse(const GearPairModel& model, const TimeResponseOpt
       for (int k = 0; k <= m; ++k) times[k] = t_start + k * T / m;
       auto dense =
           odeint::make_dense_output(options.absolute_tolerance * scale, options.relative_tolerance,
-                                    odeint::runge_kutta_dopri5<State>());
+                                    odeint::runge_kutta_dopri5<OscillatorState>());
       int index = 0;
-      out.steps += static_cast<long long>(odeint::integrate_times(dense, OdeSystem{model}, ode,
-                                                                  times.begin(), times.end(), T / m,
-                                                                  [&](const State& state, double) {
-                                                                    if (index++ < m) {
-                                                                      period.x.push_back(state[0]);
-                                                                      period.v.push_back(state[1]);
-                                                                    }
-                                                                  }));
+      out.steps += static_cast<long long>(
+          odeint::integrate_times(dense, OdeSystem{model}, ode, times.begin(), times.end(), T / m,
+                                  [&](const OscillatorState& state, double) {
+                                    if (index++ < m) {
+                                      period.x.push_back(state[0]);
+                                      period.v.push_back(state[1]);
+                                    }
+                                  }));
     }
     out.periods = p + 1;
     if (options.progress) options.progress(out.periods, options.max_periods);

@@ -18,7 +18,7 @@
 namespace geardyn {
 namespace {
 
-const std::string kExample =
+const std::string kNonlinearExample =
     std::string(GEARDYN_SOURCE_DIR) + "/examples/train_planetary_nonlinear.toml";
 
 const std::vector<double>& reals(const analysis::ResultTable& t, const std::string& name) {
@@ -31,8 +31,8 @@ const std::vector<double>& reals(const analysis::ResultTable& t, const std::stri
 /// paths across the contact kinks.
 TEST(TrainNonlinearAnalysis, ReportsTheLibraryHarmonicBalanceAtEachSpeed) {
   const analysis::TrainInputs inputs = analysis::loadTrainInputs(
-      kExample, {"nonlinear.direction=\"up\"", "nonlinear.stability=false",
-                 "nonlinear.newmark_speeds_rpm=[]", "nonlinear.speed_max_rpm=16000.0"});
+      kNonlinearExample, {"nonlinear.direction=\"up\"", "nonlinear.stability=false",
+                          "nonlinear.newmark_speeds_rpm=[]", "nonlinear.speed_max_rpm=16000.0"});
   const analysis::AnalysisResult result = analysis::trainAnalysis(inputs, {});
   ASSERT_EQ(result.summary.status, "ok") << result.report;
   const auto& info = result.summary.results["nonlinear"];
@@ -90,7 +90,7 @@ TEST(TrainNonlinearAnalysis, HillStabilityMethodIsSelectableAndRecorded) {
   std::vector<analysis::AnalysisResult> results;
   for (const char* method : {"\"monodromy\"", "\"hill\""}) {
     const analysis::TrainInputs inputs = analysis::loadTrainInputs(
-        kExample,
+        kNonlinearExample,
         {"nonlinear.direction=\"up\"", "nonlinear.newmark_speeds_rpm=[]",
          "nonlinear.speed_min_rpm=13000.0", "nonlinear.speed_max_rpm=13400.0",
          "nonlinear.max_step_rpm=20.0", std::string("nonlinear.stability_method=") + method});
@@ -114,7 +114,7 @@ TEST(TrainNonlinearAnalysis, HillStabilityMethodIsSelectableAndRecorded) {
 TEST(TrainNonlinearAnalysis, BadHarmonicsAndSamplesNameTheKey) {
   const auto fails = [](const std::string& set, const std::string& key) {
     try {
-      analysis::trainAnalysis(analysis::loadTrainInputs(kExample, {set}), {});
+      analysis::trainAnalysis(analysis::loadTrainInputs(kNonlinearExample, {set}), {});
       ADD_FAILURE() << set;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();

@@ -18,7 +18,7 @@
 namespace geardyn {
 namespace {
 
-std::shared_ptr<const PotentialEnergyMeshStiffness> peModel(double helix_deg, int slices) {
+std::shared_ptr<const PotentialEnergyMeshStiffness> faceLoadPeModel(double helix_deg, int slices) {
   PotentialEnergyOptions o;
   o.slices = helix_deg > 0 ? slices : 0;
   return std::make_shared<const PotentialEnergyMeshStiffness>(
@@ -29,7 +29,7 @@ std::shared_ptr<const PotentialEnergyMeshStiffness> peModel(double helix_deg, in
 // and the crowning alone, as before the lead terms existed: every slice's separation equals the
 // former formula (written out here) to round-off, so the ltca results do too.
 TEST(FaceLoad, NoMisalignmentNoLeadModificationIsTheFormerContact) {
-  const auto k = peModel(5.0, 20);
+  const auto k = faceLoadPeModel(5.0, 20);
   PairModifications m;
   m.pinion.tip = {8e-6, 2e-3, ReliefShape::kParabolic};
   m.gear.root = {3e-6, 1e-3, ReliefShape::kLinear};
@@ -86,7 +86,7 @@ void meshStiffnessPerWidth(const LoadedToothContact& c, int positions, double& m
 // 1e-12.
 TEST(FaceLoad, LinearMismatchWithFullContactMatchesIso6336Eq41) {
   const int slices = 40, positions = 64;
-  const auto k = peModel(0.0, 0);
+  const auto k = faceLoadPeModel(0.0, 0);
   double c_mean = 0.0, c_max = 0.0;
   meshStiffnessPerWidth(LoadedToothContact(k, {}, slices), positions, c_mean, c_max);
   const double b = k->faceWidth();
@@ -116,7 +116,7 @@ TEST(FaceLoad, LinearMismatchWithFullContactMatchesIso6336Eq41) {
 // contact ends inside a slice): O(1/N²); 40 slices: measured < 0.3 %. Tolerance 1 %.
 TEST(FaceLoad, LinearMismatchWithPartialContactMatchesIso6336Eq39) {
   const int slices = 40, positions = 32;
-  const auto k = peModel(0.0, 0);
+  const auto k = faceLoadPeModel(0.0, 0);
   const double b = k->faceWidth(), fma = 30e-6;
   PairModifications m;
   m.misalignment = fma;
@@ -159,7 +159,7 @@ TEST(FaceLoad, LinearMismatchWithPartialContactMatchesIso6336Eq39) {
 // K_Hβ(C_β*) = 1 + c f_ma b / (2√3 F) within 1 % (slices sample the parabola's vertex: O(1/N²)).
 TEST(FaceLoad, CrowningSweepIsLowestAtTheOptimumForTheMisalignment) {
   const int slices = 40, positions = 32;
-  const auto k = peModel(0.0, 0);
+  const auto k = faceLoadPeModel(0.0, 0);
   const double b = k->faceWidth(), fma = 20e-6;
   double c_mean = 0.0, c_max = 0.0;
   meshStiffnessPerWidth(LoadedToothContact(k, {}, slices), positions, c_mean, c_max);
@@ -185,7 +185,7 @@ TEST(FaceLoad, CrowningSweepIsLowestAtTheOptimumForTheMisalignment) {
 // cancels it (the lead correction of a known deflection), and the end relief and a lead error
 // table enter as tabulated separations.
 TEST(FaceLoad, HelixSlopeCompensatesMisalignmentAndTablesInterpolate) {
-  const auto k = peModel(0.0, 0);
+  const auto k = faceLoadPeModel(0.0, 0);
   PairModifications m;
   m.misalignment = 12e-6;
   m.gear.helix_slope = 12e-6;
@@ -220,7 +220,7 @@ TEST(FaceLoad, SlicesConvergeWithMeasuredOrder) {
       PairModifications m;
       m.misalignment = 15e-6;
       m.pinion.crowning = 6e-6;
-      const LoadedToothContact contact(peModel(helix, n), m, n);
+      const LoadedToothContact contact(faceLoadPeModel(helix, n), m, n);
       const auto d = faceLoadDistribution(contact, 4000.0, 32);
       khb.push_back(d.k_hbeta);
       double mean = 0.0;

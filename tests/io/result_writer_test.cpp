@@ -19,7 +19,7 @@ namespace geardyn::io {
 namespace {
 namespace fs = std::filesystem;
 
-std::string readAll(const fs::path& path) {
+std::string readWholeFile(const fs::path& path) {
   std::ifstream in(path);
   std::ostringstream text;
   text << in.rdbuf();
@@ -72,7 +72,7 @@ TEST(ResultWriter, FilesAppearOnlyWithTheSummary) {
   EXPECT_TRUE(staged.begin()->starts_with(".partial-"));
   writer.writeSummary(summaryOf("test"));
   EXPECT_EQ(entries(out), (std::set<std::string>{"record.bin", "summary.json", "table.csv"}));
-  EXPECT_EQ(readAll(out / "table.csv"), "x\n1\n");
+  EXPECT_EQ(readWholeFile(out / "table.csv"), "x\n1\n");
   // After the commit further files (plots) go straight to the result folder.
   EXPECT_EQ(writer.pathFor("plot.png"), out / "plot.png");
 }
@@ -98,15 +98,15 @@ TEST(ResultWriter, AFailedRunKeepsThePreviousResultsWhole) {
     first.writeText("table.csv", "first\n");
     first.writeSummary(summaryOf("first"));
   }
-  const std::string summary = readAll(out / "summary.json");
+  const std::string summary = readWholeFile(out / "summary.json");
   {
     ResultWriter second(out);
     second.writeText("table.csv", "second\n");
     second.writeText("other.csv", "second\n");
   }  // destroyed without a summary: the run failed
   EXPECT_EQ(entries(out), (std::set<std::string>{"summary.json", "table.csv"}));
-  EXPECT_EQ(readAll(out / "table.csv"), "first\n");
-  EXPECT_EQ(readAll(out / "summary.json"), summary);
+  EXPECT_EQ(readWholeFile(out / "table.csv"), "first\n");
+  EXPECT_EQ(readWholeFile(out / "summary.json"), summary);
 }
 
 TEST(ResultWriter, ACommitReplacesOnlyThePreviousRunsListedFiles) {
@@ -122,8 +122,8 @@ TEST(ResultWriter, ACommitReplacesOnlyThePreviousRunsListedFiles) {
   second.writeText("table.csv", "new\n");
   second.writeSummary(summaryOf("second"));
   EXPECT_EQ(entries(out), (std::set<std::string>{"notes.txt", "summary.json", "table.csv"}));
-  EXPECT_EQ(readAll(out / "table.csv"), "new\n");
-  EXPECT_NE(readAll(out / "summary.json").find("\"second\""), std::string::npos);
+  EXPECT_EQ(readWholeFile(out / "table.csv"), "new\n");
+  EXPECT_NE(readWholeFile(out / "summary.json").find("\"second\""), std::string::npos);
 }
 
 TEST(ResultWriter, TheStagingFolderOfAKilledRunIsRemovedByTheNextRun) {

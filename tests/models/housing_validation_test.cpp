@@ -37,7 +37,7 @@ using testing::BeamDeck;
 using testing::BeamEnd;
 using testing::TempDir;
 
-Eigen::VectorXd frequenciesHz(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
+Eigen::VectorXd validationFrequenciesHz(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
   return es.eigenvalues().cwiseMax(0.0).cwiseSqrt() / (2.0 * std::numbers::pi);
 }
@@ -47,7 +47,7 @@ Eigen::VectorXd frequenciesHz(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M
 /// K-orthogonal, so dropping the last ones is exactly the reduction with fewer modes).
 Eigen::VectorXd truncatedFrequenciesHz(const ReducedHousing& red, Eigen::Index modes) {
   const Eigen::Index n = red.interfaceDofs() + modes;
-  return frequenciesHz(red.K.topLeftCorner(n, n), red.M.topLeftCorner(n, n));
+  return validationFrequenciesHz(red.K.topLeftCorner(n, n), red.M.topLeftCorner(n, n));
 }
 
 /// Appends a node set SECTION: the cross-section at element boundary `ex` (0..nx) of `b`.
@@ -133,7 +133,8 @@ TEST(HousingValidation, CraigBamptonAgainstCcxFrequencyBelowTheCutoff) {
     const ReducedHousing rv = reduceHousing(fe, deck.nodes, seats, {}, options);
     EXPECT_EQ(rv.mode_frequencies_hz.size() - rv.residual_vectors, m);
     std::printf("     with %2ld residual vectors: errors", static_cast<long>(rv.residual_vectors));
-    const double worst_rv = worstError(frequenciesHz(rv.K, rv.M), full, kInterest, 1e-9, "rv");
+    const double worst_rv =
+        worstError(validationFrequenciesHz(rv.K, rv.M), full, kInterest, 1e-9, "rv");
     // Convergence as modes are added (nested Ritz spaces: monotone) until the round-off of
     // the two eigensolvers (1e-10).
     if (previous > 1e-10) EXPECT_LT(worst, previous) << "cut-off " << factor << " x";
@@ -165,7 +166,7 @@ std::vector<double> solidBeamFrequenciesHz(const BeamDeck& b, int rigid) {
   options.modes = 30;
   const ReducedHousing red =
       reduceHousing(fe, deck.nodes, {{"TIP", deck.nsets.at("TIP")}}, {}, options);
-  const Eigen::VectorXd f = frequenciesHz(red.K, red.M);
+  const Eigen::VectorXd f = validationFrequenciesHz(red.K, red.M);
   return {f[rigid], f[rigid + 1], f[rigid + 2], f[rigid + 3]};
 }
 

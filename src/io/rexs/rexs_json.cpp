@@ -13,7 +13,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-int idOf(const Json& node, const char* key, const std::string& where) {
+int jsonIdOf(const Json& node, const char* key, const std::string& where) {
   if (!node.is_object() || !node.contains(key) || !node.at(key).is_number()) {
     throw InputError(
         where + " key " + key,
@@ -95,9 +95,9 @@ Attribute attributeOf(const Json& a, const Component& c) {
   return at;
 }
 
-Component componentOf(const Json& node, const std::string& where) {
+Component jsonComponentOf(const Json& node, const std::string& where) {
   Component c;
-  c.id = idOf(node, "id", where);
+  c.id = jsonIdOf(node, "id", where);
   c.type = stringOf(node, "type");
   c.name = stringOf(node, "name");
   if (node.contains("attributes")) {
@@ -106,9 +106,39 @@ Component componentOf(const Json& node, const std::string& where) {
   return c;
 }
 
+/// Deepest nesting of objects and arrays accepted. A REXS model nests 7 levels ({"model":
+/// {"components": [{"attributes": [{"floating_point_matrix": [[…]]}]}]}}); 64 leaves room for
+/// extensions. Deeper input is refused before it is parsed: nlohmann-json's dump(), used in the
+/// error messages, recurses once per level (a 10^5-deep array would overflow the stack).
+constexpr int kMaxJsonDepth = 64;
+
+void requireJsonDepth(std::string_view text, const std::string& source) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw InputError(fmt::format("{}: JSON at byte {}", source, i),
+                         fmt::format("arrays and objects nested deeper than {}", kMaxJsonDepth),
+                         fmt::format("at most {} levels of nesting", kMaxJsonDepth));
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
 }  // namespace
 
 Document parseRexsJson(std::string_view text, const std::string& source) {
+  requireJsonDepth(text, source);
   Json json;
   try {
     json = Json::parse(text.begin(), text.end());
@@ -131,25 +161,25 @@ Document parseRexsJson(std::string_view text, const std::string& source) {
       for (const auto& r : model.at("relations")) {
         Relation rel;
         const std::string where = source + ": relation";
-        rel.id = idOf(r, "id", where);
+        rel.id = jsonIdOf(r, "id", where);
         rel.type = stringOf(r, "type");
         if (r.contains("order") && r.at("order").is_number()) rel.order = r.at("order").get<int>();
         for (const auto& ref : r.at("refs"))
-          rel.refs.push_back({idOf(ref, "id", fmt::format("{} {}", where, rel.id)),
+          rel.refs.push_back({jsonIdOf(ref, "id", fmt::format("{} {}", where, rel.id)),
                               stringOf(ref, "role"), stringOf(ref, "hint")});
         d.relations.push_back(std::move(rel));
       }
     }
     if (model.contains("components")) {
       for (const auto& c : model.at("components"))
-        d.components.push_back(componentOf(c, source + ": component"));
+        d.components.push_back(jsonComponentOf(c, source + ": component"));
     }
     if (model.contains("load_spectrum")) {
       for (const auto& lc : model.at("load_spectrum").value("load_cases", Json::array())) {
         LoadCase load_case;
-        load_case.id = idOf(lc, "id", source + ": load case");
+        load_case.id = jsonIdOf(lc, "id", source + ": load case");
         for (const auto& c : lc.value("components", Json::array()))
-          load_case.components.push_back(componentOf(c, source + ": load case component"));
+          load_case.components.push_back(jsonComponentOf(c, source + ": load case component"));
         d.load_cases.push_back(std::move(load_case));
       }
     }
