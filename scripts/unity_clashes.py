@@ -111,16 +111,18 @@ def silent(where):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("files", nargs="*")
-    parser.add_argument("--groups", help="a build folder: check each Unity/*.cxx it generated")
+    parser.add_argument("--groups", help="a build folder: check each unity/*.cxx it generated")
     args = parser.parse_args()
     groups = {"given files": args.files}
     if args.groups:
         # The build's own list (compile_commands.json): a reconfigure leaves old groups' files.
         commands = json.loads((pathlib.Path(args.groups) / "compile_commands.json").read_text())
         groups = {}
-        for unity in sorted({c["file"] for c in commands if re.search(r"/Unity/unity_\w+\.cxx$",
+        for unity in sorted({c["file"] for c in commands if re.search(r"/unity/\w+\.cxx$",
                                                                      c["file"])}):
-            groups[unity] = re.findall(r'#include "([^"]+)"', pathlib.Path(unity).read_text())
+            here = pathlib.Path(unity).parent  # cmake/unity_groups.cmake: paths relative to it
+            groups[unity] = [str((here / f).resolve()) for f in
+                             re.findall(r'#include "([^"]+)"', pathlib.Path(unity).read_text())]
     clashes, silent_clashes = 0, 0
     for group, files in groups.items():
         owners = collections.defaultdict(list)

@@ -115,7 +115,8 @@ ReducedTrain reduce(const GearTrainModel& model, double speed,
   for (auto& [order, amplitude] : sorted) {
     ReducedTrain::Phasor phasor;
     const auto k = static_cast<int>(r.orders.size());
-    const auto same = [&](double x) { return std::abs(x - order) <= 1e-12 * std::abs(order); };
+    const double nu = order;  // a structured binding: clang 14 cannot capture it
+    const auto same = [nu](double x) { return std::abs(x - nu) <= 1e-12 * std::abs(nu); };
     for (int a = 0; a < k && phasor.a < 0; ++a) {
       if (same(-r.orders[a])) phasor.a = a;
       for (int b = a; b < k && phasor.a < 0; ++b) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -203,18 +204,43 @@ Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) con
   // Re[2 X_h e^{iθ}] = 2 Re X_h cos θ − 2 Im X_h sin θ: one real product of the sampled
   // (cos, sin) basis with the coefficients.
   const Eigen::Index p = static_cast<Eigen::Index>(present.size());
-  Eigen::MatrixXd basis(times.size(), 2 * p), coefficients(2 * p, harmonic.rows());
+  Eigen::MatrixXd coefficients(2 * p, harmonic.rows());
+  // e^{i h_j θ} = e^{i h_{j−1} θ} e^{i (h_j − h_{j−1}) θ}: one sincos per distinct gap between
+  // present harmonics (one when they are evenly spaced) instead of one per harmonic; the
+  // products' round-off grows as h ε (1e-14 at h = 100).
+  std::vector<int> gaps, gap_of(present.size());
+  for (std::size_t j = 0; j < present.size(); ++j) {
+    const int gap = present[j] - (j == 0 ? 0 : present[j - 1]);
+    auto found = std::find(gaps.begin(), gaps.end(), gap);
+    if (found == gaps.end()) found = gaps.insert(gaps.end(), gap);
+    gap_of[j] = static_cast<int>(found - gaps.begin());
+  }
   for (Eigen::Index j = 0; j < p; ++j) {
     const int h = present[static_cast<std::size_t>(j)];
-    for (Eigen::Index k = 0; k < times.size(); ++k) {
-      basis(k, 2 * j) = std::cos(h * w0 * times(k));
-      basis(k, 2 * j + 1) = std::sin(h * w0 * times(k));
-    }
     coefficients.row(2 * j) = 2.0 * harmonic.col(h).real().transpose();
     coefficients.row(2 * j + 1) = -2.0 * harmonic.col(h).imag().transpose();
   }
   Eigen::MatrixXd q = Eigen::VectorXd::Ones(times.size()) * harmonic.col(0).real().transpose();
-  if (p > 0) q.noalias() += basis * coefficients;
+  if (p == 0) return q;
+  // The basis in blocks of times: a whole time record's basis (10⁶ steps × 2p columns) would
+  // be gigabytes.
+  constexpr Eigen::Index kBlock = 1024;
+  Eigen::MatrixXd basis(std::min<Eigen::Index>(kBlock, times.size()), 2 * p);
+  std::vector<std::complex<double>> factor(gaps.size());
+  for (Eigen::Index first = 0; first < times.size(); first += kBlock) {
+    const Eigen::Index rows = std::min<Eigen::Index>(kBlock, times.size() - first);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+      const double theta = w0 * times(first + k);
+      for (std::size_t g = 0; g < gaps.size(); ++g) factor[g] = std::polar(1.0, gaps[g] * theta);
+      std::complex<double> power = 1.0;
+      for (Eigen::Index j = 0; j < p; ++j) {
+        power *= factor[static_cast<std::size_t>(gap_of[static_cast<std::size_t>(j)])];
+        basis(k, 2 * j) = power.real();
+        basis(k, 2 * j + 1) = power.imag();
+      }
+    }
+    q.middleRows(first, rows).noalias() += basis.topRows(rows) * coefficients;
+  }
   return q;
 }
 

@@ -5,12 +5,17 @@ line that says what it wants. Each test fails on the main branch before the issu
 import csv
 import json
 import os
+import pathlib
 import re
 import subprocess
+import sys
 
 import pytest
 
 from cli_support import CLI, EXAMPLES, run
+
+sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "examples"))
+from result_names import badly_cased, stdout_lines_without_units, summary_keys_badly_named  # noqa: E402
 
 SIMULATE = EXAMPLES / "simulate_gear_pair_backlash.toml"
 STATS_MC = EXAMPLES / "stats_monte_carlo_pitch_errors.toml"
@@ -396,167 +401,35 @@ def test_old_spellings_work_with_a_warning_naming_the_new_key(tmp_path):
 
 # --- item 5: units on everything printed -------------------------------------------------------
 
-# One convention for CSV columns and summary keys: the unit ends the name, lower case
-# (docs/development.md, "Result names"); db is a level in decibels, its reference named where
-# the column is documented (housing_response.csv: re 1e-6 m/s²).
-UNIT_SUFFIX = re.compile(
-    r"(^|_)(m|mm|um|n|n_m|n_per_m|n_s_per_m|hz|hz_per_rpm|rpm|s|rad|deg|kg|kg_m2|m_per_s|"
-    r"m_per_s2|rad_per_s|rad_per_s2|periods|nondim|pa|j|us|db)$")
-# Dimensionless by their meaning: ratios, fractions, counts, flags, Gelman's (2005) normalised
-# statistics (k = K/K̄, e_f = E/x₀: a, m1_k, d_k, r_ke, ...), indices.
-DIMENSIONLESS = re.compile(
-    r"^(.*ratio.*|.*fraction.*|.*relative.*|.*factor.*|share_pair_\d+|order|mode|case|count|"
-    r"teeth|teeth_[ab]|undercut|steady|stable|divergent|branch|newton_iterations|contact_loss|multiplicity|strain_.*|"
-    r"point|solution|step_cuts|critical_multiplier_abs|contact_loss_.*|back_flank_.*|"
-    r"sample|seed|harmonic|harmonic_g\d+|identifiable|a|m1_k|m1_ef|d_k|d_e|r_ke|delta_m1_ef|variable_term_v|"
-    r"dynamic_mean_excitation)$")
-MODE_SHAPES = {"re", "im", "amplitude", "real", "imag"}  # normalised shapes
-# A unit written in capitals, at the end or between underscores: "_Hz", "_N_m", "p2p_N_stage1".
-CAPITAL_UNIT = re.compile(r"(^|_)(Hz|N|N_m|N_per_m|N_s_per_m|Pa|MPa|J|Kg|KG|RPM|Rpm|Rad|Deg)"
-                          r"(_|$)")
-# One spelling per quantity: t_s for time, frequency_hz for frequency.
-OTHER_SPELLINGS = re.compile(r"^(time|time_s|t|freq|freq_hz|f_hz|time_hz|frequency_s)$")
-
-
-def _badly_cased(name):
-    """A name whose unit is not lower case (docs/development.md, "Result names")."""
-    return bool(CAPITAL_UNIT.search(name)) or (
-        bool(UNIT_SUFFIX.search(name.lower())) and not UNIT_SUFFIX.search(name)
-        and not DIMENSIONLESS.match(name.lower()))
-
-
-def _summary_keys_badly_named(value, path=""):
-    """Keys of summary.json's results whose unit is not a lower-case suffix."""
-    bad = []
-    if isinstance(value, dict):
-        for key, item in value.items():
-            if _badly_cased(key) or OTHER_SPELLINGS.match(key) and not isinstance(item, dict):
-                bad.append(f"{path}{key}")
-            bad += _summary_keys_badly_named(item, f"{path}{key}.")
-    elif isinstance(value, list):
-        for item in value:
-            bad += _summary_keys_badly_named(item, path)
-    return bad
-
-# Every example, with what keeps the default suite short (the flexible train's Newmark run
-# takes minutes; its tables are the other trains').
-QUICK = {"train_two_stage_flexible": ["--set", 'analysis.run=["static", "modal"]']}
-
-
-def _numeric(values):
-    values = [v for v in values if v != ""]
-    try:
-        return bool(values) and all(float(v) == float(v) or v.lower() == "nan" for v in values)
-    except ValueError:
-        return False
-
-
-def _columns_without_units(path):
-    with open(path, newline="") as handle:
-        rows = list(csv.reader(handle))
-    header, body = rows[0], rows[1:]
-    if "unit" in header:  # one unit per row, named in its own column
-        return [name for name in header if _badly_cased(name)]
-    bad = [name for name in header if _badly_cased(name)]
-    for i, name in enumerate(header):
-        if not _numeric([r[i] for r in body if i < len(r)]):
-            continue  # text
-        if OTHER_SPELLINGS.match(name):
-            bad.append(name)
-            continue
-        if UNIT_SUFFIX.search(name) or DIMENSIONLESS.match(name):
-            continue
-        if path.name == "mode_shapes.csv" and name in MODE_SHAPES:
-            continue
-        bad.append(name)
-    return bad
-
-
-NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d+(?:[eE][-+]?\d+)?|\d+[eE][-+]?\d+)(?![\w.])")
-# A number is followed by its unit, or by "/", "..", "to" or "->" and another number (a pair or
-# a range in one unit).
-AFTER = re.compile(r"\s*(\[-\]|%|µm|um|mm|m/s\^2|N/m|N s/m|N m|N|Hz|rpm|ms|s|rad|deg|kg|m|dB|"
-                   r"periods|GB|MB)(?![\w/])")
-JOIN = re.compile(r"\s*(/|\.\.|to|->)\s*")
-
-
-def _numbers_without_units(line, table_unit):
-    if table_unit:
-        return []
-    bad = []
-    for match in NUMBER.finditer(line):
-        rest = line[match.end():]
-        while True:
-            join = JOIN.match(rest)
-            if not join or not NUMBER.match(rest[join.end():]):
-                break
-            rest = rest[join.end() + NUMBER.match(rest[join.end():]).end():]
-        declared = re.search(r"\[[^\]]+\]", line[:match.start()])
-        if not AFTER.match(rest) and not declared:
-            bad.append(match.group())
-    return bad
-
-
-def _stdout_lines_without_units(text):
-    bad, table_unit = [], False
-    for line in text.splitlines():
-        if line.startswith("results:"):
-            continue
-        if re.search(r"\[[^\]]+\]", line) and not NUMBER.search(line):
-            table_unit = True  # a table header: "model [N/m]   mean   min ..."
-            continue
-        if table_unit and not line.startswith("  ") or not line.strip():
-            table_unit = False
-        # A table row: the name then numbers only.
-        row = table_unit and re.fullmatch(r"\s+\S+(\s+[-+\d.eE]+)+", line)
-        if _numbers_without_units(line, row):
-            bad.append(line)
-    return bad
-
-
-def test_every_example_prints_units_and_names_them_in_every_csv_header(tmp_path):
-    """Every example's stdout gives units; every CSV column and summary.json result key is
-    snake_case with a lower-case unit suffix (or dimensionless), one spelling per quantity."""
-    missing_columns, missing_units, bad_keys = {}, {}, {}
-    for example in sorted(EXAMPLES.glob("*.toml")):
-        command = example.stem.split("_")[0]
-        out = tmp_path / example.stem
-        result = run(command, example, "--out", out, "--set", "output.plots=false",
-                     *QUICK.get(example.stem, []))
-        assert result.returncode == 0, (example.stem, result.stderr)
-        lines = _stdout_lines_without_units(result.stdout)
-        if lines:
-            missing_units[example.stem] = lines
-        for table in out.rglob("*.csv"):
-            # The sweep's own table: the swept keys and the outputs the study names (the
-            # example's names follow the convention too).
-            if command == "sweep" and table.parent == out:
-                with open(table, newline="") as handle:
-                    bad = [n for n in next(csv.reader(handle)) if _badly_cased(n)]
-            else:
-                bad = _columns_without_units(table)
-            if bad:
-                missing_columns[f"{example.stem}/{table.relative_to(out)}"] = bad
-        results = json.loads((out / "summary.json").read_text()).get("results", {})
-        bad = sorted(set(_summary_keys_badly_named(results)))
-        if bad:
-            bad_keys[example.stem] = bad
-    assert not missing_columns, missing_columns
-    assert not bad_keys, bad_keys
-    assert not missing_units, missing_units
-
-
+# The checks live in tests/examples/result_names.py: run_example.py applies them to every
+# example's own run (each example runs once in the suite, issue 34); here they must be able to
+# fail.
 def test_result_name_checks_reject_capital_units_and_other_spellings():
-    # The checks above must be able to fail.
-    assert _badly_cased("mesh_frequency_Hz") and _badly_cased("output_torque_N_m")
-    assert _badly_cased("p2p_N_stage1") and _badly_cased("stiffness_N_per_m")
-    assert not _badly_cased("mesh_frequency_hz") and not _badly_cased("output_torque_n_m")
-    assert not _badly_cased("stage1.sun_planet1") and not _badly_cased("dynamic_factor")
-    assert _summary_keys_badly_named({"static": {"mesh_force_N": {"s1": 1.0}}}) == [
+    # The checks run_example.py applies to every example must be able to fail.
+    assert badly_cased("mesh_frequency_Hz") and badly_cased("output_torque_N_m")
+    assert badly_cased("p2p_N_stage1") and badly_cased("stiffness_N_per_m")
+    assert not badly_cased("mesh_frequency_hz") and not badly_cased("output_torque_n_m")
+    assert not badly_cased("stage1.sun_planet1") and not badly_cased("dynamic_factor")
+    assert summary_keys_badly_named({"static": {"mesh_force_N": {"s1": 1.0}}}) == [
         "static.mesh_force_N"]
-    assert _summary_keys_badly_named({"peak": {"freq_hz": 1.0, "time": 2.0}}) == [
+    assert summary_keys_badly_named({"peak": {"freq_hz": 1.0, "time": 2.0}}) == [
         "peak.freq_hz", "peak.time"]
-    assert _summary_keys_badly_named({"time": {"steps": 3}}) == []  # an analysis, not a time
+    assert summary_keys_badly_named({"time": {"steps": 3}}) == []  # an analysis, not a time
+    assert stdout_lines_without_units("  peak p2p 2.8477e-05 at 1632.47 Hz\n") == [
+        "  peak p2p 2.8477e-05 at 1632.47 Hz"]
+    assert stdout_lines_without_units("  peak p2p 2.8477e-05 m at 1632.47 Hz\n"
+                                      "model [N/m]   mean\n  iso 1.2e9\n") == []
+
+
+def test_run_example_fails_an_example_whose_results_break_the_names(tmp_path):
+    """run_example.py's naming check on a result folder, as it sees an example's run."""
+    from result_names import naming_failures
+
+    (tmp_path / "summary.json").write_text('{"results": {"peak_Hz": 1.0}}')
+    (tmp_path / "table.csv").write_text("speed_rpm,force_N\n1,2\n")
+    failures = naming_failures("train", tmp_path, "speed 1500.0\n")
+    assert len(failures) == 3, failures
+    assert "force_N" in failures[1] and "peak_Hz" in failures[2] and "1500" in failures[0]
 
 
 def test_implausible_lengths_and_speeds_warn_in_pair_commands_and_gearboxes(tmp_path):

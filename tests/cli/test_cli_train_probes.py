@@ -36,6 +36,21 @@ def simulate(out, steps, quantity="displacement", file_format="wav", speed_rpm=1
             json.loads((out / "spectrum" / "summary.json").read_text())["results"])
 
 
+@pytest.fixture(scope="module")
+def simulated(tmp_path_factory):
+    """simulate(steps, quantity, file_format, speed_rpm), each run once per module: the 512-step
+    displacement record at 1500 rpm serves two tests (11 s a run, issue 34)."""
+    runs = {}
+
+    def get(steps, *args):
+        key = (steps, *args)
+        if key not in runs:
+            runs[key] = simulate(tmp_path_factory.mktemp("probes"), steps, *args)
+        return runs[key]
+
+    return get
+
+
 def whirl_differences(train, spectrum):
     """Per station: max |spectrum − steady state| over the mesh orders' forward and backward
     circles, relative to the station's largest steady-state circle; and the count compared."""
@@ -58,10 +73,10 @@ def whirl_differences(train, spectrum):
                          [("displacement", "wav", 1500.0), ("velocity", "csv", 1500.0),
                           ("acceleration", "hdf5", 1500.0), ("displacement", "wav", -1500.0)])
 def test_full_spectrum_of_the_records_is_the_frequency_domain_steady_state(
-        tmp_path, quantity, file_format, speed_rpm):
+        simulated, quantity, file_format, speed_rpm):
     # At −1500 rpm every shaft turns the other way: the channels' y sign flips with it, so that
     # forward stays each shaft's own rotation sense.
-    train, spectrum = simulate(tmp_path, 512, quantity, file_format, speed_rpm)
+    train, spectrum = simulated(512, quantity, file_format, speed_rpm)
     sign = "" if speed_rpm > 0 else "-"
     assert train["probes"]["channels"][0]["y"] == f"y1 = {'-' if not sign else ''}intermediate.z"
     assert train["probes"]["channels"][1]["y"] == f"y2 = {sign}output.z"
@@ -81,8 +96,9 @@ def test_full_spectrum_of_the_records_is_the_frequency_domain_steady_state(
         assert difference < 2e-3, (station, quantity, difference)
 
 
-def test_difference_is_newmarks_second_order_error(tmp_path):
-    coarse, fine = (whirl_differences(*simulate(tmp_path / str(n), n))[0] for n in (128, 512))
+def test_difference_is_newmarks_second_order_error(simulated):
+    coarse, fine = (whirl_differences(*simulated(n, "displacement", "wav", 1500.0))[0]
+                    for n in (128, 512))
     # 4x fewer steps: (ωΔt)²/12 grows 16x; measured 1.22e-2 vs 5.4e-4 (22x) at the intermediate
     # shaft.
     # At least 8x (not 16x: what is left at 512 steps includes the least-squares fit's leakage

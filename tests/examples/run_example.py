@@ -2,8 +2,10 @@
 
 Usage: run_example.py --cli GEARDYN --example examples/NAME.toml --out DIR
 
-The example runs as a user runs it (`geardyn <command> NAME.toml --quiet --out DIR`, the command
-being the file name's first word) and must exit 0. Then every line of its header comment of the
+The example runs as a user runs it (`geardyn <command> NAME.toml --out DIR`, the command
+being the file name's first word) and must exit 0; what it prints and writes must follow the
+result-name conventions (result_names.py: units on every printed number, lower-case unit
+suffixes in CSV headers and summary.json). Then every line of its header comment of the
 form
 
     #   expect <path> = <value> ± <tolerance>[%]   (why this value, why this tolerance)
@@ -27,6 +29,8 @@ import pathlib
 import re
 import subprocess
 import sys
+
+from result_names import naming_failures
 
 EXPECT = re.compile(
     r"^#\s*expect\s+(?P<path>\S+)\s*=\s*(?P<value>[-+0-9.eE]+)\s*(?:±|\+-)\s*"
@@ -84,7 +88,8 @@ def main():
         print(f"FAIL {example.name}: its header states no '# expect' numbers to check")
         return 1
 
-    run = subprocess.run([options.cli, command, str(example), "--quiet", "--out", str(options.out)],
+    # Not --quiet: its stdout is checked for units (progress lines go to stderr).
+    run = subprocess.run([options.cli, command, str(example), "--out", str(options.out)],
                          capture_output=True, text=True)
     sys.stdout.write(run.stdout)
     sys.stderr.write(run.stderr)
@@ -97,6 +102,7 @@ def main():
                 if l.lower().startswith("warning") and not any(k in l for k in known)]
     if warnings:
         failures.append(f"warns about its own input: {warnings[0]!r}")
+    failures += naming_failures(command, options.out, run.stdout)
 
     summary = json.loads((options.out / "summary.json").read_text())
     for match in checks:

@@ -5,6 +5,7 @@ silent; screenshots are kept under the build tree (BUILD/test-results/report/)."
 import base64
 import gzip
 import json
+import os
 import pathlib
 import re
 import subprocess
@@ -39,6 +40,12 @@ CASES = {
 
 
 def _run_example(stem):
+    """The example's result folder: the example test's own (GEARDYN_EXAMPLE_RESULTS, set by
+    ctest, which runs that test first: each example runs once in the suite), else a run here."""
+    if os.environ.get("GEARDYN_EXAMPLE_RESULTS"):
+        folder = pathlib.Path(os.environ["GEARDYN_EXAMPLE_RESULTS"]) / stem
+        if (folder / "summary.json").is_file():
+            return folder
     command = stem.split("_", 1)[0]
     folder = OUT / "runs" / stem
     done = subprocess.run([CLI, command, str(SOURCE / "examples" / f"{stem}.toml"), "--out", str(folder),

@@ -447,5 +447,36 @@ TEST(TrainSteadyState, BearingForceHarmonicsEqualTheDftOfTheSampledForce) {
   for (const auto& [ours, dft] : pairs) EXPECT_NEAR(ours, dft, 1e-9 * largest);
 }
 
+// q(t) of a steady state over a record longer than its evaluation block (1024 times), with
+// harmonics present at uneven gaps (1, 2, 5, 9, 10: three distinct gaps), against the direct sum
+// X₀ + Σ 2 Re(X_h e^{i h ω₀ t}) with one sincos per term. Tolerance: the products
+// e^{i h θ} = Π e^{i g θ} lose about h ε each, 1e-13 of the largest coefficient sum.
+TEST(TrainSteadyState, DisplacementRecordEqualsTheDirectSum) {
+  TrainSteadyState s;
+  s.base_frequency = 37.5;
+  s.harmonics = 12;
+  s.harmonic = Eigen::MatrixXcd::Zero(3, 13);
+  s.harmonic.col(0).real() << 1e-6, -2e-6, 3e-7;
+  double scale = s.harmonic.col(0).cwiseAbs().sum();
+  for (int h : {1, 2, 5, 9, 10}) {
+    for (int d = 0; d < 3; ++d) s.harmonic(d, h) = std::polar(1e-6 / (h + d), 0.3 * h - d);
+    scale += 2.0 * s.harmonic.col(h).cwiseAbs().sum();
+  }
+  const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(2500, -0.01, 3.7);
+  const Eigen::MatrixXd q = s.displacement(t);
+  ASSERT_EQ(q.rows(), t.size());
+  ASSERT_EQ(q.cols(), 3);
+  for (Eigen::Index k = 0; k < t.size(); ++k) {
+    for (int d = 0; d < 3; ++d) {
+      double direct = s.harmonic(d, 0).real();
+      for (int h = 1; h <= s.harmonics; ++h)
+        direct += 2.0 * (s.harmonic(d, h) *
+                         std::polar(1.0, h * 2.0 * std::numbers::pi * s.base_frequency * t(k)))
+                            .real();
+      ASSERT_NEAR(q(k, d), direct, 1e-13 * scale) << "t = " << t(k) << ", DOF " << d;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace geardyn
