@@ -72,7 +72,7 @@ int printGearbox(const geardyn::cli::Command& command, const CommandOptions& opt
   const auto refuse = [&] {
     std::cerr << "geardyn " << command.name << ": error: --print-gearbox: `" << command.name
               << "` has no translation into a gearbox description for this file (the gear-pair "
-                 "commands simulate, hbm and stats and rotor files have one)\n";
+                 "commands simulate, hbm and stats, rotor and identify files have one)\n";
     return geardyn::cli::kExitBadInput;
   };
   if (command.run_file) return refuse();

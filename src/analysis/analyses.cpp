@@ -119,10 +119,10 @@ const std::vector<AnalysisCommand>& analysisCommands() {
       {"identify",
        "gear-mesh DTE parameters (k_m, e_m, c_m, TE harmonics, runouts) from full-spectrum whirl "
        "peaks: the thesis's three-step algorithm or a joint estimator with 95 % intervals",
-       "identify examples/identify_rao2023_table41.toml",
+       "identify examples/identify_rao2023_table41.toml   (--print-gearbox: the rig's gearbox)",
        config::identifySchema,
        {},
-       false,
+       true,
        identifyAnalysis},
       {"ltca",
        "loaded tooth contact analysis with flank modifications, of a pair or of a gearbox's mesh: "

@@ -12,7 +12,9 @@
 #include "geardyn/analysis/rotor_results.h"
 #include "geardyn/config/identify_config.h"
 #include "geardyn/config/rotor_config.h"
+#include "geardyn/config/rotor_gearbox.h"
 #include "geardyn/error.h"
+#include "geardyn/system/lateral_rotor_reduction.h"
 
 namespace geardyn::analysis {
 
@@ -188,7 +190,11 @@ std::string identifyReport(const DteIdentification& r, double seconds) {
 AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisContext& context) {
   AnalysisResult result("identify", config, context);
   const std::filesystem::path base = std::filesystem::path(config.source()).parent_path();
-  const LateralRotorSpec known = config::knownRotorFromConfig(config);
+  // The rig is a gearbox (config/rotor_gearbox.h); the identification inverts the 4-DOF rotor
+  // that gearbox reduces to (system/lateral_rotor_reduction.h: its closed form is the fast path).
+  std::vector<std::string> translation_warnings;  // the translation's gearbox has none to give
+  const LateralRotorSpec known = lateralRotorReduction(config::lateralRotorGearTrain(
+      config::knownRotorFromConfig(config), config.source(), translation_warnings));
   const std::vector<analysis::WhirlSpectrumInput> inputs = readInputs(config, base);
   std::vector<MeasuredWhirlPeaks> data;
   for (const auto& in : inputs) data.push_back(in.peaks);

@@ -82,6 +82,11 @@ std::string lateralRotorGearboxToml(const LateralRotorSpec& s, const std::string
     ax.push_back(s.te_x[i].amplitude), px.push_back(s.te_x[i].phase - half);
     ay.push_back(s.te_y[i].amplitude), py.push_back(s.te_y[i].phase - half);
   }
+  if (orders.empty()) {
+    // No TE harmonics: the order t_p at zero amplitude still states the pinion's teeth, which
+    // the ratio alone does not (20/40 is 1/2; system/lateral_rotor_reduction.h).
+    orders = {static_cast<double>(s.pinion_teeth)}, ax = ay = {0.0}, px = py = {-half};
+  }
   addExcitation(out, "transmission_error", "mesh", "pinion", orders, ax, px, ay, py,
                 "e_m + sum a sin(i t_p w_p t + phi) = cos(... - 90 deg), eqs. 2.8-2.9", s.mean_te);
   const double ep = s.pinion_runout, eg = s.gear_runout;

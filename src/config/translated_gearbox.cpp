@@ -4,6 +4,7 @@
 
 #include "geardyn/config/fe_rotor_gearbox.h"
 #include "geardyn/config/gear_pair_gearbox.h"
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/config/rotor_gearbox.h"
 
 namespace geardyn::config {
@@ -17,6 +18,10 @@ std::optional<std::string> translatedGearbox(const std::string& command, const C
   if (command == "rotor") {
     if (auto fe = feRotorGearbox(config)) return fe;
     return lateralRotorGearbox(config);
+  }
+  // The identification's known rig (its TE unknown: stated as t_p at zero amplitude).
+  if (command == "identify") {
+    return lateralRotorGearboxToml(knownRotorFromConfig(config), config.source());
   }
   return std::nullopt;
 }

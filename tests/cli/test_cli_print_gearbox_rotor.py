@@ -51,3 +51,25 @@ def test_the_lateral_rotor_is_a_gearbox_whose_modes_are_the_four_dof_modes(tmp_p
     for f in four_dof_frequencies():
         matches = [g for g in train if abs(g - f) <= RTOL * f]
         assert len(matches) == 2, (f, train)  # y and z
+
+
+def test_the_identifications_rig_is_a_gearbox_too(tmp_path):
+    """`geardyn identify FILE --print-gearbox`: the known rig (masses, shaft springs, teeth,
+    speed) as the gearbox the identification reduces to its 4-DOF rotor
+    (system/lateral_rotor_reduction.h). Its TE is unknown, so the TE table states only the
+    pinion's teeth: order t_p at zero amplitude (a 20/40 rig would otherwise read as 1/2)."""
+    identify = EXAMPLES / "identify_rao2023_table41.toml"
+    printed = run("identify", identify, "--print-gearbox", "--set", "rotor.pinion_teeth=20",
+                  "--set", "rotor.gear_teeth=40")
+    assert printed.returncode == 0, printed.stderr
+    text = printed.stdout
+    assert "[bearings.mesh]" in text and "[couplings.gear_ratio]" in text
+    te = text[text.index("[bearing_excitations.transmission_error]"):]
+    te = te[:te.index("\n\n")]
+    assert "orders = [20" in te and "amplitude_y = [0" in te, te
+    # `train` reads it: the rig's lateral modes (static + modal run, no TE needed).
+    (tmp_path / "gearbox.toml").write_text(text)
+    (tmp_path / "modal.toml").write_text(
+        '[gearbox]\nfile = "gearbox.toml"\n\n[analysis]\nrun = ["static", "modal"]\n')
+    result = run("train", tmp_path / "modal.toml", "--out", tmp_path / "out")
+    assert result.returncode == 0, result.stderr

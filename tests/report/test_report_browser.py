@@ -145,7 +145,7 @@ def test_cli_report_errors(tmp_path):
 
 
 def test_default_output_is_report_html_in_the_folder(reports):
-    folder = OUT / "runs" / "geometry_rao2023_rig"
+    folder = _run_example("geometry_rao2023_rig")  # the example test's folder, or a run here
     done = subprocess.run([CLI, "report", str(folder), "--quiet"], capture_output=True, text=True)
     assert done.returncode == 0 and done.stdout == "", done.stderr
     assert (folder / "report.html").stat().st_size > 400_000  # plotly.js (cartesian) embedded

@@ -11,10 +11,16 @@
 /// Tolerances: the same sums in another order, 1e-12 of the largest entry; eigenvalues of equal
 /// 4 × 4 problems, 1e-9.
 
+#include "geardyn/system/lateral_rotor_reduction.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <complex>
 
+#include "geardyn/config/rotor_gearbox.h"
+#include "geardyn/error.h"
 #include "geardyn/system/gear_train_model.h"
 #include "geardyn/system/lateral_rotor.h"
 
@@ -82,6 +88,108 @@ TEST(LateralRotorReduction, MatricesAndModesAreTheFourDofModel) {
   // Weights: m g on each centre.
   EXPECT_NEAR(train.staticLoad()(p + 1), -rotor.pinion_mass * rotor.gravity, 1e-12);
   EXPECT_NEAR(train.staticLoad()(g + 1), -rotor.gear_mass * rotor.gravity, 1e-12);
+}
+
+// The lateral rotor of the gearbox `geardyn rotor --print-gearbox` writes
+// (lateral_rotor_reduction.h): the inverse of config::lateralRotorGearTrain. Tolerance: the
+// phases go through ±90°/180° shifts and atan2, so 1e-12 of each quantity (phasors compared as
+// complex numbers: a phase is defined modulo 2π).
+void expectSameRotor(const LateralRotorSpec& a, const LateralRotorSpec& b) {
+  const auto near = [](double x, double y) { return std::abs(x - y) <= 1e-12 * std::abs(y); };
+  EXPECT_TRUE(near(a.pinion_mass, b.pinion_mass) && near(a.gear_mass, b.gear_mass));
+  EXPECT_TRUE(near(a.pinion_shaft_stiffness, b.pinion_shaft_stiffness));
+  EXPECT_TRUE(near(a.gear_shaft_stiffness, b.gear_shaft_stiffness));
+  EXPECT_TRUE(near(a.pinion_shaft_damping, b.pinion_shaft_damping));
+  EXPECT_TRUE(near(a.gear_shaft_damping, b.gear_shaft_damping));
+  EXPECT_TRUE(near(a.mesh_stiffness, b.mesh_stiffness) && near(a.mesh_damping, b.mesh_damping));
+  EXPECT_TRUE(near(a.mean_te, b.mean_te) && near(a.gravity, b.gravity));
+  EXPECT_TRUE(near(a.pinion_speed, b.pinion_speed));
+  EXPECT_EQ(a.pinion_teeth, b.pinion_teeth);
+  EXPECT_EQ(a.gear_teeth, b.gear_teeth);
+  const auto phasor = [](double amplitude, double phase) { return std::polar(amplitude, phase); };
+  const auto same = [&](double a1, double p1, double a2, double p2) {
+    return std::abs(phasor(a1, p1) - phasor(a2, p2)) <= 1e-12 * a2;
+  };
+  EXPECT_TRUE(same(a.pinion_runout, a.pinion_runout_phase, b.pinion_runout, b.pinion_runout_phase));
+  EXPECT_TRUE(same(a.gear_runout, a.gear_runout_phase, b.gear_runout, b.gear_runout_phase));
+  ASSERT_EQ(a.te_x.size(), b.te_x.size());
+  ASSERT_EQ(a.te_y.size(), b.te_y.size());
+  for (std::size_t i = 0; i < b.te_x.size(); ++i) {
+    EXPECT_TRUE(same(a.te_x[i].amplitude, a.te_x[i].phase, b.te_x[i].amplitude, b.te_x[i].phase))
+        << "harmonic " << i + 1;
+    EXPECT_TRUE(same(a.te_y[i].amplitude, a.te_y[i].phase, b.te_y[i].amplitude, b.te_y[i].phase))
+        << "harmonic " << i + 1;
+  }
+}
+
+GearTrainSpec raoGearbox(const LateralRotorSpec& rotor) {
+  std::vector<std::string> warnings;
+  return config::lateralRotorGearTrain(rotor, "test", warnings);
+}
+
+TEST(LateralRotorReduction, TheGearboxOfARotorReducesToIt) {
+  const LateralRotorSpec rotor = raoTable41Spec();
+  const GearTrainSpec gearbox = raoGearbox(rotor);
+  EXPECT_EQ(lateralRotorReductionObstacle(gearbox), "");
+  expectSameRotor(lateralRotorReduction(gearbox), rotor);
+  // Another rig: shared tooth factor (20/45), phases beyond ±π, no gravity, 1500 rpm.
+  LateralRotorSpec other = rotor;
+  other.pinion_teeth = 20, other.gear_teeth = 45, other.gravity = 0.0;
+  other.pinion_speed = 25.0;
+  other.pinion_runout_phase = 4.0, other.gear_runout_phase = -3.5;
+  other.te_x.resize(2), other.te_y.resize(2);
+  other.te_y[1].phase = 5.5;
+  expectSameRotor(lateralRotorReduction(raoGearbox(other)), other);
+}
+
+TEST(LateralRotorReduction, ExcitationTablesAreSummedWhateverTheirNames) {
+  const LateralRotorSpec rotor = raoTable41Spec();
+  GearTrainSpec gearbox = raoGearbox(rotor);
+  // The TE's harmonics split over two tables, the first's named otherwise.
+  auto& excitations = gearbox.bearing_excitations;
+  auto te = std::find_if(excitations.begin(), excitations.end(),
+                         [](const auto& e) { return e.orders.size() > 1; });
+  ASSERT_NE(te, excitations.end());
+  TrainBearingExcitationSpec rest = *te;
+  rest.name = "te_upper";
+  rest.mean_y = rest.mean_z = 0.0;
+  for (auto* v : {&rest.orders, &rest.amplitude_y, &rest.phase_y, &rest.amplitude_z, &rest.phase_z})
+    v->erase(v->begin(), v->begin() + 2);
+  for (auto* v : {&te->orders, &te->amplitude_y, &te->phase_y, &te->amplitude_z, &te->phase_z})
+    v->resize(2);
+  te->name = "lower";
+  excitations.push_back(rest);
+  expectSameRotor(lateralRotorReduction(gearbox), rotor);
+}
+
+TEST(LateralRotorReduction, OtherGearboxesNameWhatIsNotOfItsForm) {
+  const LateralRotorSpec rotor = raoTable41Spec();
+  const auto obstacle = [](const GearTrainSpec& t) { return lateralRotorReductionObstacle(t); };
+  GearTrainSpec torsional = raoGearbox(rotor);
+  torsional.dofs = TrainDofs::kTorsional;
+  EXPECT_NE(obstacle(torsional).find("gearbox.dofs"), std::string::npos);
+  GearTrainSpec anisotropic = raoGearbox(rotor);
+  anisotropic.bearings[0].kzz *= 1.1;
+  EXPECT_NE(obstacle(anisotropic).find("bearings." + anisotropic.bearings[0].name),
+            std::string::npos);
+  // A runout's unbalance that does not match its offset (m e 1 % off).
+  GearTrainSpec unbalance = raoGearbox(rotor);
+  unbalance.unbalances[0].mass_eccentricity *= 1.01;
+  EXPECT_NE(obstacle(unbalance).find("runouts are stated once"), std::string::npos)
+      << obstacle(unbalance);
+  // A TE order that is not a multiple of t_p = 16.
+  GearTrainSpec orders = raoGearbox(rotor);
+  for (auto& e : orders.bearing_excitations)
+    if (e.orders.size() > 1) e.orders[1] = 33.0;
+  EXPECT_NE(obstacle(orders).find("not a multiple of t_p = 16"), std::string::npos)
+      << obstacle(orders);
+  GearTrainSpec turning = raoGearbox(rotor);
+  turning.operating.input_speed *= -1.0;
+  EXPECT_NE(obstacle(turning).find("operating_point.speed_rpm"), std::string::npos);
+  // The hand-built train above (no excitations, the ratio 1 coupling) is not of the form
+  // either: an external pair's ratio is negative.
+  EXPECT_NE(obstacle(lateralRotorAsTrain(rotor)).find("ratio"), std::string::npos);
+  EXPECT_THROW(lateralRotorReduction(torsional), InputError);
 }
 
 }  // namespace
