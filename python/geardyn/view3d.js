@@ -58,11 +58,16 @@ window.geardynView3d = (function () {
       view.drawTriad(ui.triad);
     }
     // At most FPS frames a second: the view stays light on a machine drawing WebGL in software.
-    var FPS = 24, last = 0;
+    // Paused, it draws only when something changed (a mode, the amplitude, the camera, the size).
+    var FPS = 24, last = 0, dirty = true;
+    function invalidate() { dirty = true; }
     function frame(now) {
-      if (now - last >= 1000 / FPS) { last = now; render(); root.gdFrame = (root.gdFrame || 0) + 1; }
+      if (now - last >= 1000 / FPS && (state.playing || dirty)) {
+        last = now; dirty = false; render(); root.gdFrame = (root.gdFrame || 0) + 1;
+      }
       requestAnimationFrame(frame);
     }
+    view.onCameraChange(invalidate);
 
     var panel = window.geardynViewPanel.build(root, ui.side, data, select, selectOds);
     function scaleNote(what) {
@@ -83,6 +88,7 @@ window.geardynView3d = (function () {
             m.frequency_hz);
       panel.highlight(i, -1);
       scaleNote('largest displacement');
+      invalidate();
     }
     // An operating deflection shape of the forced response (forced_ods.csv): its amplitudes
     // are physical, the largest is named in the title.
@@ -93,14 +99,15 @@ window.geardynView3d = (function () {
             ' · largest amplitude ' + fmt(1e6 * o.largest_m, 3) + ' µm', o.frequency_hz);
       panel.highlight(-1, j);
       scaleNote('largest amplitude (' + fmt(1e6 * o.largest_m, 3) + ' µm)');
+      invalidate();
     }
     ui.play.onclick = function () {
       state.playing = !state.playing; ui.play.textContent = state.playing ? 'pause' : 'play';
       state.start = performance.now() - state.phase / (2 * Math.PI) * PERIOD_S * 1000;
     };
     ui.amp.oninput = function () { if (state.ods >= 0) selectOds(state.ods); else select(state.mode); };
-    ui.ghost.onchange = function () { view.ghost.visible = ui.ghost.checked; };
-    window.addEventListener('resize', view.resize);
+    ui.ghost.onchange = function () { view.ghost.visible = ui.ghost.checked; invalidate(); };
+    window.addEventListener('resize', function () { view.resize(); invalidate(); });
     view.resize(); times.placed = performance.now() - t0;
     select(0);
     root.gdView = {

@@ -158,8 +158,11 @@ window.geardynScene = (function () {
         }
       });
     }
+    // fn() whenever the camera moves (a paused view draws only then and on other changes).
+    function onCameraChange(fn) { orbit.addEventListener('change', fn); }
     return {extent: extent, kinds: built.kinds, ghost: ghost, place: place, resize: resize,
             snapshotGhost: snapshotGhost, drawTriad: drawTriad, hover: hover,
+            onCameraChange: onCameraChange,
             render: function () { renderer.render(scene, camera); }};
   }
   return {create: create};

@@ -153,6 +153,12 @@ def _differing(a, b, tolerance=24):
     return sum(largest.histogram()[tolerance + 1:])
 
 
+def _pause(chromium):
+    """Stops the animation: a paused view draws only on a change (python/geardyn/view3d.js), so
+    the browser is not busy drawing software WebGL at 24 frames a second while the test clicks."""
+    chromium.driver.execute_script("document.getElementById('gd-view3d-0').gdView.setPlaying(false);")
+
+
 def _title(chromium):
     return chromium.driver.execute_script(
         "var t = document.querySelector('#gd-view3d-0 .gd-v3-title');"
@@ -182,6 +188,11 @@ def test_flexible_reducer_view_draws_moves_and_follows_the_mode_list(runs, chrom
     time.sleep(0.3)
     second = _canvas_image(chromium)
     assert _differing(first, second) > 200
+    # Paused, it stands still (no frame drawn without a change) and still follows the lists.
+    _pause(chromium)
+    frames = chromium.driver.execute_script("return document.getElementById('gd-view3d-0').gdFrame;")
+    time.sleep(0.3)
+    assert chromium.driver.execute_script("return document.getElementById('gd-view3d-0').gdFrame;") == frames
     # A click on another mode's row animates it: the title shows its frequency.
     modes = _modes(chromium)
     before = _title(chromium)
@@ -233,6 +244,7 @@ def test_hunting_reducer_view_shows_the_torus_operating_deflection_shapes(runs, 
     speeds = {float(r["speed_rpm"]) for r in rows}
     assert len(rows) == len(speeds) * 2 * 3 * 12  # 2 meshes × orders 1-3 × 12 DOFs
     seen = chromium.open(page)
+    _pause(chromium)
     assert seen["views"] == 1 and seen["views_rendered"] == 1, seen
     assert seen["console"] == [], seen["console"]
     ods = chromium.driver.execute_script(
@@ -249,6 +261,7 @@ def test_hunting_reducer_view_shows_the_torus_operating_deflection_shapes(runs, 
 def test_lin_parker_view_shows_the_first_planet_mode(runs, chromium):
     _, page = runs["view3d_lin_parker_4_planets"]
     seen = chromium.open(page)
+    _pause(chromium)
     assert seen["views_rendered"] == 1 and seen["console"] == [], seen
     modes = _modes(chromium)
     planet = next(i for i, m in enumerate(modes) if m[2] == "planet")
@@ -296,6 +309,7 @@ def test_housed_reducer_view_draws_the_housing(runs, chromium):
     _, page = runs["view3d_two_stage_housing"]
     assert page.stat().st_size <= 5_000_000, page.stat().st_size
     seen = chromium.open(page)
+    _pause(chromium)
     assert seen["views_rendered"] == 1 and seen["console"] == [], seen
     triangles = chromium.driver.execute_script(
         "return JSON.parse(document.getElementById('gd-view3d-0-data').textContent)"
