@@ -341,6 +341,10 @@ TEST(RexsImport, BadInputNamesTheComponent) {
   EXPECT_NE(errorOf("truncated.rexsj", R"({"model": {"version": "1.4", "relations": [)")
                 .find("JSON at byte"),
             std::string::npos);
+  // A number beyond double's range (the REXS fuzzer's find): bad input, not an internal error.
+  const std::string overflow =
+      errorOf("overflow.rexsj", R"({"model": {"version": "1.4", "x": 9E37066399828104}})");
+  EXPECT_NE(overflow.find("number overflow"), std::string::npos) << overflow;
   const std::string missing = errorOf("missing.rexs", smallModel("99", teeth, "mm"));
   EXPECT_NE(missing.find("relation 1"), std::string::npos) << missing;
   EXPECT_NE(missing.find("component 99"), std::string::npos) << missing;

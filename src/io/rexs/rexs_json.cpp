@@ -145,6 +145,10 @@ Document parseRexsJson(std::string_view text, const std::string& source) {
   } catch (const Json::parse_error& e) {
     throw InputError(fmt::format("{}: JSON at byte {}", source, e.byte), e.what(),
                      "a well-formed REXS JSON file (truncated or not JSON?)");
+  } catch (const Json::exception& e) {
+    // The parser's other refusals, e.g. a number beyond double's range (out_of_range.406,
+    // "9E37066399828104": found by fuzz/rexs_fuzzer.cpp, it escaped as an internal error).
+    throw InputError(source + ": JSON", e.what(), "a REXS JSON file whose numbers are doubles");
   }
   if (!json.is_object() || !json.contains("model") || !json.at("model").is_object())
     throw InputError(source, "no \"model\" object", "a REXS JSON file has {\"model\": {…}}");
