@@ -155,9 +155,9 @@ void bindAnalysis(py::module_& m) {
       .def_property_readonly(
           "errors", [](const AnalysisResult& r) { return r.errors; }, "non-convergence messages")
       .def_property_readonly("numerical_failure",
-                             [](const AnalysisResult& r) { return r.numerical_failure; })
+                             [](const AnalysisResult& r) { return r.summary.numerical_failure; })
       .def_property_readonly(
-          "wall_time_s", [](const AnalysisResult& r) { return r.wall_time_s; },
+          "wall_time_s", [](const AnalysisResult& r) { return r.summary.wall_time_s; },
           "wall time of the analysis [s]")
       .def_property_readonly("table_names", [](const AnalysisResult& r) { return r.table_names; })
       .def(

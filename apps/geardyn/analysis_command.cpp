@@ -63,7 +63,7 @@ int runLibraryResult(const std::string& name, const std::string& plot_kind, bool
   for (const auto& error : result.errors) std::cerr << "geardyn " << name << ": " << error << "\n";
   report(options, result.report.substr(std::min(result.printed, result.report.size())) +
                       fmt::format("results: {}\n", path.string()));
-  return result.numerical_failure ? kExitNumericalFailure : kExitOk;
+  return result.summary.numerical_failure ? kExitNumericalFailure : kExitOk;
 }
 
 int runLibraryAnalysis(const std::string& name, const config::Config& config,

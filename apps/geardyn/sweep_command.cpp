@@ -335,6 +335,8 @@ int writeSweepResults(const CommandOptions& options, const config::SweepDefiniti
   summary.config = {{"study", study.resolved}, {"base_config", base.resolved()}};
   summary.seed = study.seed;
   summary.status = failed == 0 ? "ok" : "cases_failed";
+  summary.wall_time_s = elapsed;
+  summary.numerical_failure = failed > 0;  // exit code 1
   for (const auto& r : records) {
     if (r.status != "ok" && summary.warnings.size() < 20)
       summary.warnings.push_back(fmt::format("case {}: {}: {}", r.index, r.status, r.message));

@@ -46,7 +46,7 @@ from ._geardyn import (  # noqa: F401  (re-exported API)
 )
 
 from . import _errors, _geardyn  # noqa: E402
-from ._cli import FolderResult, to_toml  # noqa: F401,E402
+from ._cli import FolderResult, load, to_toml  # noqa: F401,E402
 from .analysis import COMMANDS, run, sweep  # noqa: F401,E402
 from .results import Result  # noqa: F401,E402
 from .train import GearTrain  # noqa: F401,E402
@@ -113,7 +113,7 @@ def _no_options(model, options):
 
 
 __all__ = [
-    "COMMANDS", "ConfigError", "FolderResult", "Result", "run", "sweep", "to_toml",
+    "COMMANDS", "ConfigError", "FolderResult", "Result", "load", "run", "sweep", "to_toml",
     "ConstantMeshStiffness", "FourierMeshStiffness", "Gear", "GearGeometry", "GearPair",
     "MeshStiffness", "PotentialEnergyMeshStiffness", "StepMeshStiffness", "__version__",
     "api_directional_stiffness", "api_mesh_stiffness", "config_reference", "iso6336_stiffness",

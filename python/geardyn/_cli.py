@@ -14,7 +14,7 @@ import tempfile
 
 import numpy as np
 
-__all__ = ["FolderResult", "run_cli", "cli_path", "to_toml"]
+__all__ = ["FolderResult", "load", "run_cli", "cli_path", "to_toml"]
 
 
 def cli_path():
@@ -111,6 +111,28 @@ class FolderResult:
             self.folder = None
 
     @property
+    def ok(self):
+        """False when the numerical method failed (``status`` says how; the CLI's exit code 1)."""
+        if "numerical_failure" in self.summary:
+            return not self.summary["numerical_failure"]
+        return self.returncode != 1  # a summary written before geardyn recorded it
+
+    @property
+    def warnings(self):
+        return list(self.summary.get("warnings", []))
+
+    @property
+    def wall_time_s(self):
+        return self.summary.get("wall_time_s")
+
+    @property
+    def headline(self):
+        """{label [unit]: value} of the numbers geardyn.Result shows first."""
+        from .results import headline_of
+
+        return headline_of(self.command, self.results)
+
+    @property
     def files(self):
         return self.summary.get("files", [])
 
@@ -138,18 +160,16 @@ class FolderResult:
         """A table as a DataFrame, ``.attrs["units"]`` as for geardyn.Result."""
         import pandas as pd
 
-        from ._units import sweep_units, unit_of
+        from ._units import column_units, sweep_units
 
         name = (name or self.tables[0]).removesuffix(".csv")
         columns = self.table(name)
         frame = pd.DataFrame(columns)
         if self.command == "sweep" and name == "sweep":
             units = sweep_units(self.summary.get("config"), columns)
-        else:
-            units = {c: (None if v.dtype.kind in "USO" else unit_of(name, c))
-                     for c, v in columns.items()}
-            units = {c: ("?" if u is None and columns[c].dtype.kind not in "USO" else u)
-                     for c, u in units.items()}
+        else:  # as geardyn.Result's: text columns None, numbers their unit
+            units = column_units(self, name, {c: (list(v) if v.dtype.kind in "USO" else v)
+                                              for c, v in columns.items()})
         frame.attrs["units"] = units
         frame.attrs["table"] = name
         return frame
@@ -157,6 +177,26 @@ class FolderResult:
     def __repr__(self):
         where = str(self.folder) if self.folder else "(in memory)"
         return f"<geardyn {self.command} result: status {self.status}, folder {where}>"
+
+
+def load(folder):
+    """The result folder of an earlier run (`geardyn <command> --out FOLDER`, ``make demo``'s
+    results/<example>, or ``Result.save``) as a FolderResult: ``summary``, ``results``,
+    ``headline``, ``table``/``to_pandas`` (tables read on first use). Raises FileNotFoundError
+    when ``folder`` holds no summary.json, ValueError when its summary.json is not a geardyn
+    result."""
+    folder = pathlib.Path(folder)
+    summary = folder / "summary.json"
+    if not summary.is_file():
+        raise FileNotFoundError(f"{folder}: no summary.json here; a geardyn result folder is "
+                                f"what `geardyn <command> --out FOLDER` writes")
+    try:
+        document = json.loads(summary.read_text())
+    except json.JSONDecodeError as error:
+        raise ValueError(f"{summary}: not JSON ({error})") from error
+    if not isinstance(document, dict) or "command" not in document:
+        raise ValueError(f"{summary}: not a geardyn summary (no \"command\" key)")
+    return FolderResult(folder, 1 if document.get("numerical_failure") else 0, "", "")
 
 
 def run_cli(command, config, out=None, overrides=None, threads=None, check=True, plots=None,

@@ -58,6 +58,16 @@ def _pointer(document, pointer):
     return node
 
 
+def headline_of(command, results):
+    """{label [unit]: value} of the numbers a ``command``'s result shows first."""
+    out = {}
+    for label, pointer, unit in _HEADLINES.get(command, []):
+        value = _pointer(results, pointer)
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            out[f"{label} [{unit}]" if unit else label] = value
+    return out
+
+
 class Result:
     """One analysis's result, in memory.
 
@@ -121,12 +131,7 @@ class Result:
     @property
     def headline(self):
         """{label [unit]: value} of the numbers the repr shows."""
-        out = {}
-        for label, pointer, unit in _HEADLINES.get(self.command, []):
-            value = _pointer(self.results, pointer)
-            if isinstance(value, (int, float)) and not isinstance(value, bool):
-                out[f"{label} [{unit}]" if unit else label] = value
-        return out
+        return headline_of(self.command, self.results)
 
     # --- tables --------------------------------------------------------------------------
     @property

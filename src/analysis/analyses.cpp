@@ -196,7 +196,7 @@ AnalysisResult runAnalysis(const std::string& name, const config::Config& config
   const AnalysisCommand& command = entry(name);  // InputError with the names when unknown
   const auto start = std::chrono::steady_clock::now();
   AnalysisResult result = command.run(config, context);
-  result.wall_time_s =
+  result.summary.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -593,7 +593,7 @@ AnalysisResult feRotorAnalysis(const config::Config& config, const AnalysisConte
     }
   }
   result.report = text;
-  result.numerical_failure = code != kOk;
+  result.summary.numerical_failure = code != kOk;
   return result;
 }
 

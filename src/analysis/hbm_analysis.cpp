@@ -288,7 +288,7 @@ AnalysisResult hbmAnalysis(const config::Config& config, const AnalysisContext& 
   summary.warnings = warnings;
   context.warnings(warnings);
   result.report = hbmReport(hbm_options, record, peak, build.nondimensional);
-  result.numerical_failure = !record.completed;
+  result.summary.numerical_failure = !record.completed;
   return result;
 }
 

@@ -246,7 +246,7 @@ AnalysisResult identifyAnalysis(const config::Config& config, const AnalysisCont
   if (!r.converged) result.errors.push_back(r.message);
   context.warnings(summary.warnings);
   result.report = identifyReport(r, seconds);
-  result.numerical_failure = !r.converged;
+  result.summary.numerical_failure = !r.converged;
   return result;
 }
 

@@ -180,12 +180,13 @@ bool addTimeDomain(const config::Config& config, const AnalysisContext& context,
   const double noise = config.real("spectrum.noise_level");
   bool ok = true;
   context.checkBudget("rotor_time");
-  TrainRecordOptions time_options = config::rotorTimeOptionsFromConfig(config);
+  TrainRecordOptions time_options = config::rotorTimeOptionsFromConfig(config, model.spec());
   time_options.integrator.progress = context.progressFor("rotor: time response", "s simulated");
   // Checked before integrating: the grid's rate (snapped to the common period) is within a
   // sample per period of duration/(samples − 1).
   const std::string samples_shown =
-      fmt::format("{} (over time.duration = {:g} s)", time_options.samples, time_options.duration);
+      fmt::format("{} (over time.duration = {:g} s{})", time_options.samples, time_options.duration,
+                  config.has("time.samples") ? "" : "; derived from the highest mesh harmonic");
   requireNyquist(model, (time_options.samples - 1) / time_options.duration * (1.0 - 1e-3),
                  "time.samples", samples_shown);
   const auto start = std::chrono::steady_clock::now();
@@ -380,9 +381,11 @@ bool addParametricStudy(const config::Config& config, const LateralRotorModel& m
     const RotorGearbox gearbox(c.spec, config.source() + " " + c.name);
     std::array<std::vector<WhirlComponent>, 2> peaks;
     if (in_time) {
-      TrainRecordOptions o = config::rotorTimeOptionsFromConfig(config);
-      o.samples =
-          static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
+      // Derived samples follow the case's speed; given ones are scaled up with it.
+      TrainRecordOptions o = config::rotorTimeOptionsFromConfig(config, c.spec);
+      if (config.has("time.samples"))
+        o.samples =
+            static_cast<long long>(o.samples * std::max(1.0, c.spec.pinion_speed / s.pinion_speed));
       const TrainRecord r = recordRotor(m, gearbox, o);
       if (!r.converged()) {
         warnings.push_back(fmt::format("study case {}: {}", c.name, r.message));
@@ -524,7 +527,7 @@ AnalysisResult lateralRotorAnalysis(const config::Config& config, const Analysis
                         analysis::kShaftNames[sh], std::abs(exact[sh].front().value), mesh1);
   }
   result.report = text;
-  result.numerical_failure = !ok;
+  result.summary.numerical_failure = !ok;
   return result;
 }
 

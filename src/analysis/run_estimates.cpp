@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geardyn/config/rotor_config.h"
 #include "geardyn/solvers/train_time.h"
 
 namespace geardyn::analysis {
@@ -135,9 +136,12 @@ RunEstimate estimateHarmonicBalance(const config::Config& config) {
 RunEstimate estimateRotorTime(const config::Config& config) {
   RunEstimate e;
   if (!config.boolean("time.enabled")) return e;
-  const double samples = static_cast<double>(config.integer("time.samples"));
+  const double samples = static_cast<double>(
+      config::rotorTimeSamples(config, config::lateralRotorSpecFromConfig(config)));
   e.key = "time.samples";
-  e.value = shown(config, e.key);
+  e.value = config.has(e.key)
+                ? shown(config, e.key)
+                : fmt::format("{:g} (derived from the highest mesh harmonic)", samples);
   e.bytes = samples * kRotorSampleBytes;
   e.seconds = samples * kRotorSampleSeconds +
               config.real("time.duration") * kRotorSecondsPerSimulatedSecond;

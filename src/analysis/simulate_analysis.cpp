@@ -46,7 +46,7 @@ AnalysisResult simulateAnalysis(const config::Config& config, const AnalysisCont
         100.0 * summary.results["contact_loss_fraction"].get<double>());
   }
   if (!response.converged()) {
-    result.numerical_failure = true;
+    result.summary.numerical_failure = true;
     result.errors.push_back(fmt::format("{}: {}", toString(response.status), response.message));
   }
   return result;

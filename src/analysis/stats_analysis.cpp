@@ -101,7 +101,7 @@ AnalysisResult statsAnalysis(const config::Config& config, const AnalysisContext
         r["q95"].get<double>());
   }
   result.report = text;
-  result.numerical_failure = exit_code != 0;
+  result.summary.numerical_failure = exit_code != 0;
   return result;
 }
 

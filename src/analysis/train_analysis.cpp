@@ -87,10 +87,11 @@ void writeKinematics(const GearTrainModel& model, AnalysisResult& result, io::Ru
   Json mj = Json::array();
   for (const TrainMesh& m : model.meshes()) {
     const double f = m.frequency_ratio * std::abs(speed);
-    meshes.addRow(
-        {m.name, toString(m.kind), model.bodies()[m.body_a].name, model.bodies()[m.body_b].name,
-         std::to_string(m.teeth_a), std::to_string(m.teeth_b), f, m.phase, m.centre_distance,
-         m.pressure_angle / std::numbers::pi * 180, m.contact_ratio, m.mean_stiffness, m.damping});
+    meshes.addRow({m.name, toString(m.kind), model.bodies()[m.body_a].name,
+                   model.bodies()[m.body_b].name, static_cast<long long>(m.teeth_a),
+                   static_cast<long long>(m.teeth_b), f, m.phase, m.centre_distance,
+                   m.pressure_angle / std::numbers::pi * 180, m.contact_ratio, m.mean_stiffness,
+                   m.damping});
     mj.push_back({{"mesh", m.name},
                   {"kind", toString(m.kind)},
                   {"mesh_frequency_hz", f},
@@ -297,7 +298,7 @@ void runCampbell(const GearTrainModel& model, const config::Config& analysis,
   io::CsvTable ct({"mode", "line", "speed_rpm", "frequency_hz"});
   Json crit = Json::array();
   for (const auto& c : d.critical_speeds) {
-    ct.addRow({std::to_string(c.mode + 1), c.line, c.speed / kRpm, c.frequency});
+    ct.addRow({static_cast<long long>(c.mode + 1), c.line, c.speed / kRpm, c.frequency});
     crit.push_back({{"mode", c.mode + 1},
                     {"line", c.line},
                     {"speed_rpm", c.speed / kRpm},
@@ -422,7 +423,7 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const AnalysisContext& c
   const GearTrainModel model(std::move(spec), memoryLimitBytes());
   AnalysisResult result = trainAnalysis(loaded, model, analyses, context, warnings);
   result.summary.results["wall_time_s"] = secondsSince(start);
-  result.wall_time_s = secondsSince(start);
+  result.summary.wall_time_s = secondsSince(start);
   return result;
 }
 
@@ -535,8 +536,8 @@ AnalysisResult trainAnalysis(const TrainInputs& loaded, const GearTrainModel& gi
   }
   summary.warnings = once;
   result.report = text;
-  result.numerical_failure = code != 0;
-  result.wall_time_s = secondsSince(start);
+  result.summary.numerical_failure = code != 0;
+  result.summary.wall_time_s = secondsSince(start);
   return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -261,8 +262,10 @@ static void addRotorRunoutAndTimeSections(ConfigSchema& schema) {
   schema.integer("time.samples")
       .min(16)
       .max(200000000)
-      .defaultValue(32768)
-      .doc("samples over the duration (thesis: 2^15)");
+      .optional()
+      .doc(
+          "samples over the duration; default: the smallest power of two with 2.2 samples per "
+          "period of the highest mesh harmonic (2^15 for the thesis's rig)");
   schema.boolean("time.align_to_common_period")
       .defaultValue(true)
       .doc("snap the sample interval to a whole number of samples per common period");
@@ -473,10 +476,21 @@ LateralRotorSpec lateralRotorSpecFromConfig(const Config& config) {
   return s;
 }
 
-TrainRecordOptions rotorTimeOptionsFromConfig(const Config& config) {
+long long rotorTimeSamples(const Config& config, const LateralRotorSpec& spec) {
+  if (config.has("time.samples")) return config.integer("time.samples");
+  // The highest frequency of the response: the highest mesh harmonic h f_m, f_m = t_p N_p.
+  const double highest_hz =
+      spec.pinion_speed * spec.pinion_teeth * std::max<double>(1.0, spec.te_x.size());
+  const double needed = kRotorSamplesPerHighestPeriod * highest_hz * config.real("time.duration");
+  long long samples = 16;
+  while (static_cast<double>(samples) < needed && samples < 200000000) samples *= 2;
+  return samples;
+}
+
+TrainRecordOptions rotorTimeOptionsFromConfig(const Config& config, const LateralRotorSpec& spec) {
   TrainRecordOptions o;
   o.duration = config.real("time.duration");
-  o.samples = config.integer("time.samples");
+  o.samples = rotorTimeSamples(config, spec);
   o.align_to_common_period = config.boolean("time.align_to_common_period");
   o.integrator.relative_tolerance = config.real("time.relative_tolerance");
   o.integrator.absolute_tolerance = config.real("time.absolute_tolerance");

@@ -151,6 +151,8 @@ nlohmann::ordered_json summaryJson(const RunSummary& summary,
   json["created_utc"] = utcNow();
   json["config_file"] = summary.config_source;
   json["seed"] = summary.seed ? nlohmann::ordered_json(*summary.seed) : nullptr;
+  json["wall_time_s"] = summary.wall_time_s;
+  json["numerical_failure"] = summary.numerical_failure;
   json["warnings"] = summary.warnings;
   // The meshes whose fillet-foundation fit is extrapolated (issue #34): the command line
   // prints one line for all of them.

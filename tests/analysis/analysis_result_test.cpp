@@ -60,8 +60,8 @@ face_width = 0.02
   EXPECT_EQ(result.summary.command, "geometry");
   EXPECT_EQ(result.summary.config_source, "test.toml");
   EXPECT_EQ(result.summary.config, config.resolved());
-  EXPECT_FALSE(result.numerical_failure);
-  EXPECT_GT(result.wall_time_s, 0.0);
+  EXPECT_FALSE(result.summary.numerical_failure);
+  EXPECT_GT(result.summary.wall_time_s, 0.0);
   EXPECT_NEAR(result.summary.results["contact_ratio_transverse"].get<double>(), 1.6325826, 1e-7);
   const auto& radius = std::get<std::vector<double>>(result.table("gears").column("base_radius_m"));
   ASSERT_EQ(radius.size(), 2u);

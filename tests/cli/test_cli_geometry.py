@@ -62,6 +62,7 @@ def test_rao_rig_end_to_end(tmp_path):
     assert summary["command"] == "geometry"
     assert summary["status"] == "ok"
     assert summary["seed"] is None
+    assert 0 < summary["wall_time_s"] < 60 and summary["numerical_failure"] is False
     assert summary["files"] == ["gears.csv", "tooth_profiles.csv"] + (["mesh.png"] if PLOTS else [])
     if PLOTS:
         assert (out / "mesh.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -232,3 +232,29 @@ def test_rotor_bad_input_names_the_key(tmp_path):
     result = run("rotor", TABLE41, "--out", tmp_path, "--set", "time.duration=2.0", "--set", "output.plots=false",
                  "--set", "measurement.formats=[]")
     assert result.returncode == 1 and "common period" in result.stderr
+    assert json.loads((tmp_path / "summary.json").read_text())["numerical_failure"] is True
+
+
+def test_default_samples_follow_the_highest_mesh_harmonic(tmp_path):
+    """A rig of one's own at default [time] settings (follow-up of issue 31): 23/61 teeth at
+    1450 rpm with two TE harmonics puts the 2nd mesh harmonic at 1111.7 Hz, which the thesis's
+    fixed 2^15 samples over 15 s (2184 Hz) would alias. time.samples, not given, is the smallest
+    power of two with 2.2 samples per period of that harmonic: 2.2 x 1111.7 Hz x 15 s = 36 685
+    -> 2^16 (the run is snapped to the common period, so the rate is within 1e-3 of 65535/15 s)."""
+    config = tmp_path / "rig.toml"
+    config.write_text(
+        "[rotor]\npinion_teeth = 23\ngear_teeth = 61\nspeed_rpm = 1450.0\n"
+        "[mesh]\nte_x = [20e-6, 8e-6]\nte_y = [15e-6, 6e-6]\n"
+        "[measurement]\nformats = []\n[output]\nplots = false\n")
+    result = run("rotor", config, "--out", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "out" / "summary.json").read_text())
+    assert summary["config"]["time"]["samples"] is None  # not given: derived
+    time = summary["results"]["time_domain"]
+    assert time["sample_rate_hz"] == pytest.approx(65535 / 15.0, rel=1e-3)
+    assert time["sample_rate_hz"] > 2 * 2 * 23 * 1450 / 60
+    # The same rig with the samples given is read as given, and refused when they alias.
+    result = run("rotor", config, "--out", tmp_path / "given", "--set", "time.samples=32768")
+    assert result.returncode == 2, result.stderr
+    assert "time.samples = 32768 (over time.duration = 15 s)" in result.stderr
+    assert "1111.67 Hz" in result.stderr

@@ -134,5 +134,27 @@ TEST(InputConventions, FeRotorBearingAxialStiffnessAndCampbellRange) {
   EXPECT_EQ(*schema.aliasTarget("campbell.end_rpm"), "campbell.speed_max_rpm");
 }
 
+// time.samples of `geardyn rotor`: as given, else the smallest power of two with 2.2 samples
+// per period of the highest mesh harmonic over time.duration (rotorTimeSamples).
+TEST(InputConventions, RaoRotorSamplesFollowTheHighestMeshHarmonic) {
+  // Table 4.1: 5 TE harmonics of 16 × 11 Hz = 176 Hz, 880 Hz over 15 s: 29 040 -> 2^15, the
+  // thesis's own choice.
+  const Config thesis = parseConfig("", "rotor", rotorSchema());
+  EXPECT_EQ(rotorTimeSamples(thesis, lateralRotorSpecFromConfig(thesis)), 32768);
+  // 23 teeth at 1450 rpm, 2 harmonics: 1111.67 Hz, 2.2 × 1111.67 × 15 = 36 685 -> 2^16; over
+  // 1 s: 2446 -> 2^12.
+  const std::string rig =
+      "[rotor]\npinion_teeth = 23\ngear_teeth = 61\nspeed_rpm = 1450.0\n"
+      "[mesh]\nte_x = [20e-6, 8e-6]\nte_y = [15e-6, 6e-6]\n";
+  const Config fast = parseConfig(rig, "rotor", rotorSchema());
+  EXPECT_EQ(rotorTimeSamples(fast, lateralRotorSpecFromConfig(fast)), 65536);
+  const Config short_run = parseConfig(rig, "rotor", rotorSchema(), {"time.duration=1.0"});
+  EXPECT_EQ(rotorTimeSamples(short_run, lateralRotorSpecFromConfig(short_run)), 4096);
+  // Given: as given, even when it aliases (the analysis refuses it, naming the key).
+  const Config given = parseConfig(rig, "rotor", rotorSchema(), {"time.samples=1000"});
+  EXPECT_EQ(rotorTimeSamples(given, lateralRotorSpecFromConfig(given)), 1000);
+  EXPECT_EQ(rotorTimeOptionsFromConfig(given, lateralRotorSpecFromConfig(given)).samples, 1000);
+}
+
 }  // namespace
 }  // namespace geardyn::config

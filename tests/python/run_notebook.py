@@ -1,9 +1,12 @@
 """Executes an example notebook with nbconvert (Debian's python3-nbconvert) from its own folder
-and checks that the repository copy has its outputs stripped.
+and checks that the repository copy has its outputs stripped. With GEARDYN_EXAMPLE_RESULTS set
+(the suite's example result folders), a notebook that runs an example again instead of loading
+its result fails.
 
 Usage: run_notebook.py NOTEBOOK.ipynb OUTPUT_DIR
 """
 
+import os
 import pathlib
 import subprocess
 import sys
@@ -29,6 +32,14 @@ def main():
     errors = [o for c in executed.cells if c.cell_type == "code" for o in c.outputs
               if o.output_type == "error"]
     print(f"{notebook.name}: {len(executed.cells)} cells executed, {len(errors)} errors")
+    # With the suite's example results at hand, no example may run a second time (issue 34).
+    rerun = [line for c in executed.cells if c.cell_type == "code" for o in c.outputs
+             if o.output_type == "stream" for line in o.text.splitlines()
+             if line.endswith(": running the example here")]
+    if os.environ.get("GEARDYN_EXAMPLE_RESULTS") and rerun:
+        print(f"{notebook.name}: ran again instead of loading "
+              f"{os.environ['GEARDYN_EXAMPLE_RESULTS']}: {'; '.join(rerun)}", file=sys.stderr)
+        return 1
     return 1 if errors else 0
 
 

@@ -124,20 +124,38 @@ def test_numerical_failure_raises_with_the_result_attached():
     assert result.status == error.value.result.status
 
 
-def _tmp_entries():
-    return set(os.listdir(tempfile.gettempdir()))
+class _PrivateTmp:
+    """A temporary folder of the test's own (TMPDIR, which Python, the C++ library and the
+    sweep's executable all honour), since other tests of the suite (the notebooks' Jupyter
+    kernels) create tmp* entries in /tmp meanwhile; geardyn's own prefix is watched in /tmp
+    too. ``check()``: nothing was left in either."""
+
+    def __init__(self, monkeypatch, tmp_path):
+        self.private = tmp_path / "tmp"
+        self.private.mkdir()
+        monkeypatch.setenv("TMPDIR", str(self.private))
+        monkeypatch.setattr(tempfile, "tempdir", None)  # gettempdir() reads TMPDIR again
+        assert tempfile.gettempdir() == str(self.private)
+        self.before = self._geardyn_in_system_tmp()
+
+    @staticmethod
+    def _geardyn_in_system_tmp():
+        return {e.name for e in pathlib.Path("/tmp").iterdir() if e.name.startswith("geardyn")}
+
+    def check(self):
+        assert not list(self.private.iterdir())
+        assert not self._geardyn_in_system_tmp() - self.before
 
 
-def test_in_process_runs_leave_nothing_in_tmp():
-    before = _tmp_entries()
+def test_in_process_runs_leave_nothing_in_tmp(monkeypatch, tmp_path):
+    tmp = _PrivateTmp(monkeypatch, tmp_path)
     geardyn.run("geometry", PAIR)
     geardyn.run("simulate", EXAMPLES / "simulate_gear_pair_backlash.toml")
     geardyn.sweep({"study": {"command": "simulate",
                              "base": str(EXAMPLES / "simulate_gear_pair_backlash.toml"),
                              "outputs": ["df=/dynamic_factor"],
                              "parameters": {"model.damping_ratio": [0.05, 0.1]}}})
-    new = {e for e in _tmp_entries() - before if e.startswith(("geardyn", "tmp"))}
-    assert not new
+    tmp.check()
 
 
 LONG = {"solver.max_periods": 200000, "solver.steady_tolerance": 1e-16}
@@ -227,16 +245,17 @@ def test_train_and_sweep_results_are_dataframes_with_units_too():
     assert sweep.to_pandas("sweep")["seed"].dtype.kind in "iu"
 
 
-def test_train_on_a_dict_runs_in_process_like_its_file(monkeypatch):
+def test_train_on_a_dict_runs_in_process_like_its_file(monkeypatch, tmp_path):
     import tomllib
 
     run = {"analysis.run": ["static", "modal"]}
     from_file = geardyn.run("train", EXAMPLES / "train_two_stage_reducer.toml", overrides=run)
     gearbox = tomllib.loads((EXAMPLES / "gearboxes" / "two_stage_reducer.toml").read_text())
-    before = _tmp_entries()
-    inline = geardyn.run("train", {**gearbox, "analysis": {"run": ["static", "modal"]}})
-    assert isinstance(inline, geardyn.Result)  # in-process: no executable, no folder
-    assert not {e for e in _tmp_entries() - before if e.startswith(("geardyn", "tmp"))}
+    with monkeypatch.context() as patch:
+        tmp = _PrivateTmp(patch, tmp_path)
+        inline = geardyn.run("train", {**gearbox, "analysis": {"run": ["static", "modal"]}})
+        assert isinstance(inline, geardyn.Result)  # in-process: no executable, no folder
+        tmp.check()
     monkeypatch.chdir(EXAMPLES)  # a dict's relative gearbox.file: from the working directory
     named = geardyn.run("train", {"gearbox": {"file": "gearboxes/two_stage_reducer.toml"}},
                         analysis={"run": ["static", "modal"]})
@@ -315,3 +334,40 @@ def warnings_recorded():
         def __exit__(self, *exc):
             return recorder.__exit__(*exc)
     return _Context()
+
+
+@pytest.mark.parametrize("name", ["hbm", "rotor", "train_stats"])
+def test_a_saved_result_loads_back_with_the_same_tables_units_and_headline(results, name,
+                                                                          tmp_path):
+    """geardyn.load (issue 34: the notebooks read `make demo`'s folders): every table, column
+    unit and headline number of the in-process result comes back from its saved folder. The
+    CSV files hold 17 significant digits, so numbers agree to the last bit of a double's
+    decimal round trip (rtol 1e-15)."""
+    result = results[name]
+    folder = result.save(tmp_path / name)
+    loaded = geardyn.load(folder)
+    assert loaded.ok and loaded.command == result.command and loaded.tables == result.tables
+    assert loaded.headline == pytest.approx(result.headline, rel=1e-15)
+    assert loaded.summary["geardyn_version"] == geardyn.__version__
+    assert loaded.summary["wall_time_s"] == pytest.approx(result.wall_time_s, rel=1e-12)
+    for table in result.tables:
+        frame, back = result.to_pandas(table), loaded.to_pandas(table)
+        assert list(back.columns) == list(frame.columns), table
+        assert back.attrs["units"] == frame.attrs["units"], table
+        for column in frame.columns:
+            if frame[column].dtype.kind in "fiu":
+                np.testing.assert_allclose(back[column], frame[column], rtol=1e-15, atol=0,
+                                           err_msg=f"{table}.{column}")
+            else:
+                assert list(back[column]) == list(frame[column]), f"{table}.{column}"
+
+
+def test_load_names_the_folder_that_is_not_a_result(tmp_path):
+    with pytest.raises(FileNotFoundError, match="no summary.json"):
+        geardyn.load(tmp_path)
+    (tmp_path / "summary.json").write_text("{not json")
+    with pytest.raises(ValueError, match="not JSON"):
+        geardyn.load(tmp_path)
+    (tmp_path / "summary.json").write_text('{"results": {}}')
+    with pytest.raises(ValueError, match="not a geardyn summary"):
+        geardyn.load(tmp_path)

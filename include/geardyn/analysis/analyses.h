@@ -3,7 +3,7 @@
 /// Every analysis of geardyn as a library call: a validated configuration in, an
 /// AnalysisResult out (summary, tables, report, status). The CLI commands (apps/geardyn) and
 /// Python (`geardyn.run`) are thin layers over these functions. Each function throws InputError
-/// for bad input and returns numerical failure as a status (AnalysisResult::numerical_failure).
+/// for bad input and returns numerical failure as a status (RunSummary::numerical_failure).
 
 #include <filesystem>
 #include <string>

@@ -74,7 +74,8 @@ struct AnalysisResult {
   /// and configuration source filled in.
   AnalysisResult(std::string command, const config::Config& config, const AnalysisContext& context);
 
-  io::RunSummary summary;  ///< command, resolved configuration, seed, status, warnings, results
+  /// Command, resolved configuration, seed, status, warnings, wall time, results.
+  io::RunSummary summary;
   std::vector<std::string> table_names;  ///< "time_response.csv", ... in the order written
   std::vector<ResultTable> tables;       ///< one per name
   std::vector<ResultFile> files;         ///< written after the tables
@@ -84,10 +85,6 @@ struct AnalysisResult {
   std::size_t printed = 0;
   /// Non-convergence and similar messages (the CLI prints them on stderr).
   std::vector<std::string> errors;
-  /// The numerical method failed (summary.status says how): the CLI exits with code 1.
-  bool numerical_failure = false;
-  /// Wall time of the analysis [s].
-  double wall_time_s = 0.0;
 
   void addTable(std::string name, const io::CsvTable& table);
   /// The table called `name` (with or without ".csv"); throws std::out_of_range when absent.

@@ -31,7 +31,16 @@ ConfigSchema rotorSchema();
 ConfigSchema spectrumSchema();
 
 LateralRotorSpec lateralRotorSpecFromConfig(const Config& config);
-TrainRecordOptions rotorTimeOptionsFromConfig(const Config& config);
+/// Samples per period of the highest mesh harmonic that the default time.samples gives at least:
+/// above Nyquist's 2 with a 10 % margin, so a 1.25 × wide spectrum view still fits below it.
+inline constexpr double kRotorSamplesPerHighestPeriod = 2.2;
+/// time.samples as given, or derived from the rotor `spec` (issue 31 follow-up: a fixed 2^15
+/// aliased any rig faster than the thesis's): the smallest power of two (at most 2e8) with
+/// kRotorSamplesPerHighestPeriod samples per period of the highest mesh harmonic h t_p N_p over
+/// time.duration. 2^15 for the thesis's rig (Table 4.1: 880 Hz over 15 s needs 29 040).
+long long rotorTimeSamples(const Config& config, const LateralRotorSpec& spec);
+/// [time] of `geardyn rotor`, time.samples by rotorTimeSamples for `spec`.
+TrainRecordOptions rotorTimeOptionsFromConfig(const Config& config, const LateralRotorSpec& spec);
 GearPairSpectrumOptions gearPairSpectrumOptionsFromConfig(const Config& config);
 
 }  // namespace geardyn::config

@@ -25,6 +25,9 @@ struct RunSummary {
   std::optional<std::uint64_t> seed;  ///< random seed, absent for deterministic commands
   std::string status = "ok";          ///< "ok" or a solver status ("max_iterations", ...)
   std::vector<std::string> warnings;  ///< design or numerical warnings, full sentences
+  double wall_time_s = 0.0;           ///< wall time of the run [s]
+  /// The numerical method failed (status says how): the CLI exits with code 1.
+  bool numerical_failure = false;
   nlohmann::ordered_json results = nlohmann::ordered_json::object();  ///< headline numbers
 };
 
