@@ -326,7 +326,9 @@ void runTrainForcedAt(const GearTrainModel& model, const config::Config& analysi
     if (torus) {
       s = std::move(torus_points[i]);
     } else {
-      const TrainSteadyState state = common->solve(speed);
+      // The housing's response points and seat rows only (issue 37); the ODS below solve again
+      // with every row.
+      const TrainSteadyState state = common->solve(speed, /*housing_rows=*/false);
       addBearingOrderRows(model, state, speed, steady.mesh_harmonics, bearing_orders);
       housing.add(state);
       s = pointOf(state);

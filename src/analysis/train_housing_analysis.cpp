@@ -78,8 +78,6 @@ HousingResponseTable::HousingResponseTable(const GearTrainModel& model)
 void HousingResponseTable::add(const TrainSteadyState& s) {
   if (!active_) return;
   const ReducedHousing& h = model_.spec().housing->reduced;
-  const int h0 = model_.housingFirstDof();
-  const Eigen::Index nh = model_.dofCount() - h0;
   const double speed_rpm = s.input_speed / kRpm;
   for (std::size_t m = 0; m < model_.meshes().size(); ++m) {
     const double f_m = model_.meshes()[m].frequency_ratio * std::abs(s.input_speed);
@@ -88,7 +86,7 @@ void HousingResponseTable::add(const TrainSteadyState& s) {
       if (k > s.harmonics) break;
       const double w = kTwoPi * l * f_m;
       // q(t) = Re[X_0 + 2 Σ X_k e^{ikω₀t}]: the amplitude of harmonic k is 2 X_k; a = −ω² u.
-      const Eigen::VectorXcd u = h.recovery * (2.0 * s.harmonic.col(k).segment(h0, nh)).eval();
+      const Eigen::VectorXcd u = 2.0 * s.housing_points.col(k);
       for (std::size_t p = 0; p < h.points.size(); ++p) {
         const Eigen::Vector3d a = w * w * u.segment(3 * static_cast<Eigen::Index>(p), 3).cwiseAbs();
         const double total = a.norm();

@@ -33,17 +33,16 @@ bool HarmonicBlocks::condenses(const HousingCondensation& housing, const Eigen::
 }
 
 HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& Ktt, const Eigen::MatrixXd& M,
-                               const Eigen::MatrixXd& Ctt, const Eigen::MatrixXd& R, double penalty,
+                               const Eigen::MatrixXd& Ctt, Eigen::MatrixXd MR, double penalty,
                                std::shared_ptr<const HousingCondensation> housing)
     : K_(Ktt),
       M_(M),
       C_(Ctt),
+      MR_(std::move(MR)),
       penalty_(penalty),
       sparse_(false),
       n_(static_cast<int>(M.rows())),
-      housing_(std::move(housing)) {
-  if (R.cols() > 0) MR_ = M * R;
-}
+      housing_(std::move(housing)) {}
 
 HarmonicBlocks::HarmonicBlocks(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                const Eigen::MatrixXd& C, const Eigen::MatrixXd& R, int sparse_dofs,
@@ -171,9 +170,9 @@ Eigen::MatrixXcd HarmonicBlocks::housingRows(int h, const Eigen::MatrixXcd& q_t)
   return housed_.at(k).housingRows(*housing_, q_t.conjugate()).conjugate();
 }
 
-Eigen::MatrixXcd HarmonicBlocks::housingRowsOfBlocks(const Eigen::MatrixXcd& q_t) const {
+Eigen::MatrixXcd HarmonicBlocks::housingModesOfBlocks(const Eigen::MatrixXcd& q_t) const {
   if (!housing_)
-    throw std::logic_error("HarmonicBlocks::housingRowsOfBlocks: no condensed housing");
+    throw std::logic_error("HarmonicBlocks::housingModesOfBlocks: no condensed housing");
   Eigen::MatrixXcd F(housing_->W.rows(), q_t.cols());  // the bearing forces of every block
   for (Eigen::Index h = 0; h < q_t.cols(); ++h) {
     F.col(h) = housed_.at(static_cast<std::size_t>(h)).bearingForces(*housing_, q_t.col(h));
@@ -182,7 +181,7 @@ Eigen::MatrixXcd HarmonicBlocks::housingRowsOfBlocks(const Eigen::MatrixXcd& q_t
   for (Eigen::Index h = 0; h < q_t.cols(); ++h) {
     y.col(h).array() *= housed_[static_cast<std::size_t>(h)].receptances().array();
   }
-  return housing_->physical(y);
+  return y;
 }
 
 void HarmonicBlocks::prepare(const std::vector<double>& w) {

@@ -37,6 +37,17 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
     return (a - Eigen::MatrixXd(a.diagonal().asDiagonal())).cwiseAbs().maxCoeff() == 0.0;
   };
   out->Z_diagonal = r == 0 || (diagonal(out->k) && diagonal(out->c));
+  std::vector<char> read(static_cast<std::size_t>(n_h), 0);
+  for (const TrainElement& e : model.elements()) {
+    for (int d : e.dofs) {
+      if (d >= n_t) read[static_cast<std::size_t>(d - n_t)] = 1;
+    }
+  }
+  for (Eigen::Index i = 0; i < n_h; ++i) {
+    if (read[static_cast<std::size_t>(i)]) out->read_rows.push_back(i);
+  }
+  out->Phi_read = out->Phi(out->read_rows, Eigen::all);
+  if (!spec.reduced.points.empty()) out->points_Phi = spec.reduced.recovery * out->Phi;
   // G is symmetric: P holds the upper triangle's entries only, column by column.
   out->P.resize(r * (r + 1) / 2, n_h);
   for (Eigen::Index k = 0; k < n_h; ++k) {
@@ -45,6 +56,8 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
       for (Eigen::Index i = 0; i <= j; ++i) out->P(row++, k) = out->W(i, k) * out->W(j, k);
     }
   }
+  out->dinv_static = out->lambda.cwiseInverse().cast<std::complex<double>>();
+  out->g_static = (out->P * out->lambda.cwiseInverse()).cast<std::complex<double>>();
   return out;
 }
 
@@ -170,6 +183,14 @@ Eigen::MatrixXcd HousingCondensation::physical(const Eigen::MatrixXcd& y) const 
   return realTimes(Phi, y);
 }
 
+Eigen::MatrixXcd HousingCondensation::readRows(const Eigen::MatrixXcd& y) const {
+  return realTimes(Phi_read, y);
+}
+
+Eigen::MatrixXcd HousingCondensation::points(const Eigen::MatrixXcd& y) const {
+  return realTimes(points_Phi, y);
+}
+
 Eigen::MatrixXcd HousingCondensation::modal(const Eigen::MatrixXcd& F) const {
   return realTransposeTimes(W, F);
 }
@@ -178,11 +199,21 @@ HousingReceptances HousingReceptances::at(const HousingCondensation& h,
                                           const std::vector<double>& w) {
   HousingReceptances out;
   out.w = w;
-  out.dinv.resize(h.lambda.size(), static_cast<Eigen::Index>(w.size()));
-  for (std::size_t j = 0; j < w.size(); ++j) {
-    out.dinv.col(static_cast<Eigen::Index>(j)) = modalReceptances(h, w[j]);
+  const Eigen::Index count = static_cast<Eigen::Index>(w.size());
+  out.dinv.resize(h.lambda.size(), count);
+  out.g.resize(h.P.rows(), count);
+  // The static block (w = 0, the harmonic h = 0) from the condensation; the others in one
+  // product, every G(w_j) = W diag(1/d) Wᵀ (w_j ≠ 0 follow the static one: h = 1, 2, ...).
+  const Eigen::Index first = count > 0 && w[0] == 0.0 ? 1 : 0;
+  if (first == 1) {
+    out.dinv.col(0) = h.dinv_static;
+    out.g.col(0) = h.g_static;
   }
-  out.g = realTimes(h.P, out.dinv);  // every G(w_j) = W diag(1/d) Wᵀ in one product
+  for (Eigen::Index j = first; j < count; ++j) {
+    out.dinv.col(j) = modalReceptances(h, w[static_cast<std::size_t>(j)]);
+  }
+  if (count > first)
+    out.g.rightCols(count - first) = realTimes(h.P, out.dinv.rightCols(count - first));
   return out;
 }
 

@@ -18,6 +18,7 @@
 #include "geardyn/solvers/detail/train_static_bearings.h"
 #include "geardyn/solvers/detail/train_steady_parts.h"
 #include "geardyn/stiffness/mesh_stiffness_summary.h"
+#include "geardyn/system/train_housing.h"
 
 namespace geardyn {
 namespace {
@@ -246,30 +247,40 @@ Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) con
 
 namespace {
 
-/// q(t) at s.t on the DOFs the meshes and elements read (the bodies' and the elements'; the
-/// housing's modal coordinates only feed its response points, from s.harmonic): a housed
-/// train's other columns are left zero instead of sampled.
-Eigen::MatrixXd sampledDisplacement(const TrainSteadyState& s, const GearTrainModel& model) {
+/// q(t) at s.t on the DOFs the meshes and elements read: `q` (rows: samples) holds DOF d in
+/// column `column[d]` (−1: not sampled). Without a housing every DOF, in order; a housed train's
+/// bodies' DOFs (first, in order: the meshes read them) and the housing's the elements read;
+/// its modal coordinates only feed its response points, from s.harmonic.
+struct SampledDofs {
+  Eigen::MatrixXd q;
+  std::vector<int> column;
+};
+SampledDofs sampledDisplacement(const TrainSteadyState& s, const GearTrainModel& model) {
   const int n = model.dofCount(), n_t = model.housingFirstDof();
-  if (n_t < 0) return s.displacement(s.t);
-  std::vector<char> used(static_cast<std::size_t>(n), 0);
-  std::fill(used.begin(), used.begin() + n_t, 1);
-  for (const TrainElement& e : model.elements()) {
-    for (int d : e.dofs) used[static_cast<std::size_t>(d)] = 1;
+  SampledDofs out;
+  out.column.resize(static_cast<std::size_t>(n));
+  if (n_t < 0) {
+    std::iota(out.column.begin(), out.column.end(), 0);
+    out.q = s.displacement(s.t);
+    return out;
   }
-  std::vector<Eigen::Index> rows;
-  for (int i = 0; i < n; ++i)
-    if (used[static_cast<std::size_t>(i)]) rows.push_back(i);
+  std::fill(out.column.begin(), out.column.end(), -1);
+  std::iota(out.column.begin(), out.column.begin() + n_t, 0);
+  std::vector<Eigen::Index> rows(static_cast<std::size_t>(n_t));
+  std::iota(rows.begin(), rows.end(), Eigen::Index{0});
+  for (const TrainElement& e : model.elements()) {
+    for (int d : e.dofs) {
+      if (out.column[static_cast<std::size_t>(d)] >= 0) continue;
+      out.column[static_cast<std::size_t>(d)] = static_cast<int>(rows.size());
+      rows.push_back(d);
+    }
+  }
   TrainSteadyState part;
   part.base_frequency = s.base_frequency;
   part.harmonics = s.harmonics;
   part.harmonic = s.harmonic(rows, Eigen::all);
-  const Eigen::MatrixXd sampled = part.displacement(s.t);
-  Eigen::MatrixXd q = Eigen::MatrixXd::Zero(s.t.size(), n);
-  for (std::size_t j = 0; j < rows.size(); ++j) {
-    q.col(rows[j]) = sampled.col(static_cast<Eigen::Index>(j));
-  }
-  return q;
+  out.q = part.displacement(s.t);
+  return out;
 }
 
 /// F_h, h = −H … H (column h + H): the static load at h = 0, every mesh's k·e and c ė at its
@@ -284,14 +295,19 @@ Eigen::MatrixXcd forcingHarmonics(const GearTrainModel& model, const TrainBaseFr
   const auto& meshes = model.meshes();
   Eigen::MatrixXcd F = Eigen::MatrixXcd::Zero(n, 2 * H + 1);
   F.col(H) = model.staticLoad().cast<Complex>();
+  // v_m is zero past the last DOF any mesh reads (the bodies' come before a housing's).
+  int span = 0;
+  for (const TrainMesh& mesh : meshes) {
+    for (int d : mesh.dofs) span = std::max(span, d + 1);
+  }
   for (int m = 0; m < r; ++m) {
     for (int l = -L; l <= L; ++l) {
       const int j = l * base.mesh_multiple[m];
       // k e, and the mesh dashpot on the tooth deformation rate: c_m ė (ė at i j ω₀).
       if (std::abs(j) <= H) {
-        F.col(j + H) +=
+        F.col(j + H).head(span) +=
             (ke_hat[m][L + l] + Complex(0.0, j * w0) * meshes[m].damping * e_hat[m][L + l]) *
-            V.col(m);
+            V.col(m).head(span);
       }
     }
   }
@@ -310,10 +326,11 @@ void sampleSteadyForces(TrainSteadyState& s, const GearTrainModel& model, double
     while (samples < 8 * H) samples *= 2;
   }
   s.t = Eigen::VectorXd::LinSpaced(samples, 0.0, (samples - 1.0) / samples / s.base_frequency);
-  const Eigen::MatrixXd q = sampledDisplacement(s, model);
+  const SampledDofs sampled = sampledDisplacement(s, model);
+  const Eigen::MatrixXd& q = sampled.q;
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
-  // q(t_k) on the DOFs up to the last one a mesh reads (the bodies' before any housing's),
-  // contiguous for the mesh forces.
+  // q(t_k) on the DOFs up to the last one a mesh reads (the bodies', q's first columns in
+  // order), contiguous for the mesh forces.
   int mesh_span = 0;
   for (const TrainMesh& mesh : meshes) {
     for (int d : mesh.dofs) mesh_span = std::max(mesh_span, d + 1);
@@ -345,7 +362,10 @@ void sampleSteadyForces(TrainSteadyState& s, const GearTrainModel& model, double
   Eigen::MatrixXd local;
   for (const TrainElement& e : model.elements()) {
     local.resize(samples, static_cast<Eigen::Index>(e.dofs.size()));
-    for (std::size_t i = 0; i < e.dofs.size(); ++i) local.col(i) = q.col(e.dofs[i]);
+    for (std::size_t i = 0; i < e.dofs.size(); ++i) {
+      local.col(static_cast<Eigen::Index>(i)) =
+          q.col(sampled.column[static_cast<std::size_t>(e.dofs[i])]);
+    }
     Eigen::MatrixXd forces = local * (e.local_stiffness * e.jacobian).transpose();
     forces.rowwise() -= forces.colwise().mean();
     s.element_dynamic_force.push_back(forces.rowwise().norm().maxCoeff());
@@ -366,6 +386,10 @@ TrainSteadySolver::TrainSteadySolver(const GearTrainModel& model, const TrainSte
   rigid_at_every_speed_ = rigid_.cols() == 0 || Komega.size() == 0 ||
                           (Komega * rigid_).norm() <= 1e-12 * Komega.norm() * rigid_.norm();
   if (options.condense_housing) housing_ = detail::HousingCondensation::of(model);
+  if (housing_) {
+    for (Eigen::Index i : housing_->read_rows) housing_read_dofs_.push_back(housing_->first + i);
+  }
+  if (rigid_.cols() > 0) rigid_mass_ = model.mass() * rigid_;
   const int L = options.mesh_harmonics;
   for (int p : base_.mesh_multiple) harmonics_ = std::max(harmonics_, p * L);
   for (int p : base_.excitation_multiple) harmonics_ = std::max(harmonics_, p);
@@ -383,7 +407,7 @@ TrainSteadyState solveTrainSteadyState(const GearTrainModel& model, double input
   return TrainSteadySolver(model, options).solve(input_speed);
 }
 
-TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
+TrainSteadyState TrainSteadySolver::solve(double input_speed, bool housing_rows) const {
   const GearTrainModel& model = model_;
   const TrainBaseFrequency& base = base_;
   const auto& k_hat = k_hat_;
@@ -431,7 +455,7 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
                      .cwiseAbs()
                      .maxCoeff(),
                  1e-300);
-    harmonic_blocks.emplace(Kbar, M, C, rigid_, penalty, housing_);
+    harmonic_blocks.emplace(Kbar, M, C, rigid_mass_, penalty, housing_);
   } else {
     Kbar = model.meanStiffnessAt(input_speed);
     C = model.dampingAt(input_speed);
@@ -515,9 +539,20 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed) const {
     s.harmonic.col(h).head(n_s) = DinvF.col(h);
     if (r > 0) s.harmonic.col(h).head(n_s).noalias() -= DinvV[h] * g_sum;
   }
-  // The housing's rows of every harmonic from the train's, one product with its modes for all.
+  // The housing's rows of every harmonic from the train's modal amplitudes y, one product for
+  // all: every row (Φ y), or those the elements read, and the response points (R Φ y).
   if (train_only) {
-    s.harmonic.bottomRows(n - n_t) = blocks_of.housingRowsOfBlocks(s.harmonic.topRows(n_t).eval());
+    const Eigen::MatrixXcd y = blocks_of.housingModesOfBlocks(s.harmonic.topRows(n_t).eval());
+    if (housing_rows) {
+      s.harmonic.bottomRows(n - n_t) = housing_->physical(y);
+    } else {
+      s.harmonic.bottomRows(n - n_t).setZero();
+      s.harmonic(housing_read_dofs_, Eigen::all) = housing_->readRows(y);
+    }
+    if (housing_->points_Phi.rows() > 0) s.housing_points = housing_->points(y);
+  } else if (model.housingFirstDof() >= 0 && !model.spec().housing->reduced.points.empty()) {
+    s.housing_points =
+        model.spec().housing->reduced.recovery * s.harmonic.bottomRows(n - model.housingFirstDof());
   }
 
   sampleSteadyForces(s, model, input_speed, options_.samples, L, base.mesh_multiple);

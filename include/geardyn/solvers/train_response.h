@@ -114,8 +114,14 @@ struct TrainSteadyState {
   double base_frequency = 0.0;  ///< f₀ [Hz]
   int harmonics = 0;            ///< H
   std::vector<int> mesh_multiple;
-  /// X_h for h = 0..H (column h); q(t) = Re[X_0 + 2 Σ_{h≥1} X_h e^{i h ω₀ t}].
+  /// X_h for h = 0..H (column h); q(t) = Re[X_0 + 2 Σ_{h≥1} X_h e^{i h ω₀ t}]. A flexible
+  /// housing's rows are all there unless solve() was asked for the rows its elements read only
+  /// (then the others are zero).
   Eigen::MatrixXcd harmonic;
+  /// The flexible housing's response points (GearTrainModel::spec().housing->reduced.points):
+  /// displacement harmonics like `harmonic`'s, x, y, z of each point (3 P × (H + 1)) [m];
+  /// empty without points.
+  Eigen::MatrixXcd housing_points;
   /// One base period sampled: t [s], mesh forces k(φ)(vᵀq − e) [N] per mesh (rows: samples).
   Eigen::VectorXd t;
   Eigen::MatrixXd mesh_force;
@@ -137,7 +143,11 @@ struct TrainSteadyState {
 class TrainSteadySolver {
  public:
   TrainSteadySolver(const GearTrainModel& model, const TrainSteadyOptions& options = {});
-  TrainSteadyState solve(double input_speed) const;
+  /// The steady state at `input_speed` [rad/s]. `housing_rows` false: of a condensed flexible
+  /// housing only the rows the train's elements read (the bearing seats) and the response points
+  /// are recovered, not every reduced coordinate of every harmonic (a forced sweep's saving,
+  /// issue 37: one n_h × n_h product per speed).
+  TrainSteadyState solve(double input_speed, bool housing_rows = true) const;
   const TrainBaseFrequency& base() const noexcept { return base_; }
 
  private:
@@ -149,9 +159,12 @@ class TrainSteadySolver {
   std::vector<std::vector<std::complex<double>>> k_hat_, ke_hat_, e_hat_;
   // Rigid-body modes of (K̄(0), M), valid at every speed when K_Ω does not act on them.
   Eigen::MatrixXd rigid_;
+  Eigen::MatrixXd rigid_mass_;  // M R (n × k), empty without rigid-body modes
   bool rigid_at_every_speed_ = false;
   // A flexible housing's exact condensation (detail/housing_condensation.h); null: none.
   std::shared_ptr<const detail::HousingCondensation> housing_;
+  // Its rows the train's elements read, as DOFs of the train (n_t + HousingCondensation's).
+  std::vector<Eigen::Index> housing_read_dofs_;
 };
 
 /// One speed: TrainSteadySolver(model, options).solve(input_speed).

@@ -39,11 +39,12 @@ class HarmonicBlocks {
                  std::shared_ptr<const HousingCondensation> housing = nullptr);
   /// The housing condensed, given the train's blocks only: `Ktt` and `Ctt` the train's n_t × n_t
   /// blocks of K̄ and C (the housing's block is never read: the condensation has it in its
-  /// modes, so a caller need not form the n_h-wide sums per speed), M the whole mass, R the
-  /// rigid-body modes (n × k), `penalty` the largest |K̄_ii| over all n DOFs (as the constructor
+  /// modes, so a caller need not form the n_h-wide sums per speed), M the whole mass, `MR` the
+  /// mass times the rigid-body modes (n × k, M R: a caller whose modes are the same at every
+  /// speed forms it once), `penalty` the largest |K̄_ii| over all n DOFs (as the constructor
   /// above takes it). Only where `condenses(*housing, M, R, sparse_dofs)`.
   HarmonicBlocks(const Eigen::MatrixXd& Ktt, const Eigen::MatrixXd& M, const Eigen::MatrixXd& Ctt,
-                 const Eigen::MatrixXd& R, double penalty,
+                 Eigen::MatrixXd MR, double penalty,
                  std::shared_ptr<const HousingCondensation> housing);
   /// Whether the constructor above condenses `housing` (then the second one may be used): the
   /// train without it has fewer than `sparse_dofs` DOFs and the rigid-body modes R leave the
@@ -71,9 +72,9 @@ class HarmonicBlocks {
   Eigen::MatrixXcd solveTrain(int h, const Eigen::MatrixXcd& rhs_t) const;
   /// The housing's rows (n_h) of the solution of block h whose train rows are `q_t`.
   Eigen::MatrixXcd housingRows(int h, const Eigen::MatrixXcd& q_t) const;
-  /// The same for the blocks h = 0, 1, ..., q_t.cols() − 1 at once, column h of q_t the train
-  /// rows of block h's solution: one product with Φ for all of them.
-  Eigen::MatrixXcd housingRowsOfBlocks(const Eigen::MatrixXcd& q_t) const;
+  /// The housing's modal amplitudes y (n_h, housing rows Φ y) of the blocks h = 0, 1, ...,
+  /// q_t.cols() − 1 at once, column h of q_t the train rows of block h's solution.
+  Eigen::MatrixXcd housingModesOfBlocks(const Eigen::MatrixXcd& q_t) const;
   /// With the housing condensed: the frequencies w[h] [rad/s] the blocks h = 0, 1, ... will be
   /// factorised at, so that the housing's receptances at all of them are formed in one product
   /// (HousingReceptances) and factorize(h, w[h]) reads them. Without the condensation: nothing.

@@ -36,11 +36,21 @@ struct HousingCondensation {
   /// r(r + 1)/2 × n_h: column k holds the upper triangle of w_k w_kᵀ column by column, w_k =
   /// W's column k (G = W diag(1/d) Wᵀ, symmetric, as P (1/d)).
   Eigen::MatrixXd P;
+  /// The static receptances (w = 0, the same at every speed): 1/λ_k and G(0)'s upper triangle.
+  Eigen::VectorXcd dinv_static, g_static;
   /// The train's DOFs J reads (its nonzero columns; a bearing row reads a few of them) and J
   /// on them (r × c): Z_eff J is formed on these c columns only.
   std::vector<Eigen::Index> J_columns;
   Eigen::MatrixXd Jc;
   bool Z_diagonal = false;  ///< k and c diagonal: Z G is a scaling of G's rows
+  /// The housing's DOFs (counted from `first`) that the train's elements read (the bearing
+  /// seats) and Φ on them: the rows a forced sweep needs of every harmonic (the elements' forces
+  /// are sampled from them), TrainSteadySolver::solve without all housing rows.
+  std::vector<Eigen::Index> read_rows;
+  Eigen::MatrixXd Phi_read;
+  /// R Φ (3 P × n_h), R the reduced housing's recovery at its P response points: their
+  /// displacements [m] from modal amplitudes; no rows without points.
+  Eigen::MatrixXd points_Phi;
   /// The condensation of `model`'s housing; null without a housing or when the housing is not
   /// held (a zero eigenvalue: the exact path then factorises the whole block).
   static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
@@ -48,6 +58,10 @@ struct HousingCondensation {
   Eigen::MatrixXcd physical(const Eigen::MatrixXcd& y) const;
   /// Wᵀ F: the bearing forces F (r × any) on the housing's modes.
   Eigen::MatrixXcd modal(const Eigen::MatrixXcd& F) const;
+  /// Φ_read y: the rows `read_rows` of Φ y.
+  Eigen::MatrixXcd readRows(const Eigen::MatrixXcd& y) const;
+  /// R Φ y: the response points' displacements (3 P × any) [m].
+  Eigen::MatrixXcd points(const Eigen::MatrixXcd& y) const;
 };
 
 /// The housing's frequency-dependent terms at several frequencies w_j [rad/s] at once (the
