@@ -176,7 +176,10 @@ class FolderResult:
 
     def __repr__(self):
         where = str(self.folder) if self.folder else "(in memory)"
-        return f"<geardyn {self.command} result: status {self.status}, folder {where}>"
+        lines = [f"<geardyn {self.command} result: status {self.status}, folder {where}, "
+                 f"tables {', '.join(self.tables) or '(none)'}>"]
+        lines += [f"  {label}: {value:.6g}" for label, value in self.headline.items()]
+        return "\n".join(lines)
 
 
 def load(folder):

@@ -350,6 +350,8 @@ def test_a_saved_result_loads_back_with_the_same_tables_units_and_headline(resul
     assert loaded.headline == pytest.approx(result.headline, rel=1e-15)
     assert loaded.summary["geardyn_version"] == geardyn.__version__
     assert loaded.summary["wall_time_s"] == pytest.approx(result.wall_time_s, rel=1e-12)
+    assert repr(loaded).startswith(f"<geardyn {result.command} result: status {result.status}")
+    assert all(label in repr(loaded) for label in result.headline)
     for table in result.tables:
         frame, back = result.to_pandas(table), loaded.to_pandas(table)
         assert list(back.columns) == list(frame.columns), table
