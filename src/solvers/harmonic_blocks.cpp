@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace geardyn::detail {
 namespace {
@@ -80,9 +81,10 @@ void HarmonicBlocks::factorize(int h, double w) {
     housed_.resize(std::max<std::size_t>(housed_.size(), h + 1));
     const std::size_t k = static_cast<std::size_t>(h);
     if (k < receptances_.w.size() && receptances_.w[k] == w) {
-      housed_[k].factorize(*housing_, D, w, receptances_.dinv.col(h), receptances_.g.col(h));
+      housed_[k].factorize(*housing_, std::move(D), w, receptances_.dinv.col(h),
+                           receptances_.g.col(h));
     } else {
-      housed_[k].factorize(*housing_, D, w);
+      housed_[k].factorize(*housing_, std::move(D), w);
     }
     return;
   }
@@ -175,7 +177,7 @@ Eigen::MatrixXcd HarmonicBlocks::housingModesOfBlocks(const Eigen::MatrixXcd& q_
     throw std::logic_error("HarmonicBlocks::housingModesOfBlocks: no condensed housing");
   Eigen::MatrixXcd F(housing_->W.rows(), q_t.cols());  // the bearing forces of every block
   for (Eigen::Index h = 0; h < q_t.cols(); ++h) {
-    F.col(h) = housed_.at(static_cast<std::size_t>(h)).bearingForces(*housing_, q_t.col(h));
+    housed_.at(static_cast<std::size_t>(h)).bearingForces(*housing_, q_t.col(h), F.col(h));
   }
   Eigen::MatrixXcd y = housing_->modal(F);  // Wᵀ F of all blocks in one product
   for (Eigen::Index h = 0; h < q_t.cols(); ++h) {

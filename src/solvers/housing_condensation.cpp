@@ -3,6 +3,7 @@
 #include "geardyn/solvers/detail/housing_condensation.h"
 
 #include <Eigen/Eigenvalues>
+#include <utility>
 
 #include "geardyn/system/train_housing.h"
 
@@ -33,6 +34,7 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
     if (out->J.col(j).cwiseAbs().maxCoeff() > 0.0) out->J_columns.push_back(j);
   }
   out->Jc = out->J(Eigen::all, out->J_columns);
+  out->JcT = out->Jc.transpose().cast<std::complex<double>>();
   auto diagonal = [](const Eigen::MatrixXd& a) {
     return (a - Eigen::MatrixXd(a.diagonal().asDiagonal())).cwiseAbs().maxCoeff() == 0.0;
   };
@@ -46,8 +48,11 @@ std::shared_ptr<const HousingCondensation> HousingCondensation::of(const GearTra
   for (Eigen::Index i = 0; i < n_h; ++i) {
     if (read[static_cast<std::size_t>(i)]) out->read_rows.push_back(i);
   }
-  out->Phi_read = out->Phi(out->read_rows, Eigen::all);
   if (!spec.reduced.points.empty()) out->points_Phi = spec.reduced.recovery * out->Phi;
+  const Eigen::Index kept = static_cast<Eigen::Index>(out->read_rows.size());
+  out->Phi_kept.resize(kept + out->points_Phi.rows(), n_h);
+  out->Phi_kept.topRows(kept) = out->Phi(out->read_rows, Eigen::all);
+  out->Phi_kept.bottomRows(out->points_Phi.rows()) = out->points_Phi;
   // G is symmetric: P holds the upper triangle's entries only, column by column.
   out->P.resize(r * (r + 1) / 2, n_h);
   for (Eigen::Index k = 0; k < n_h; ++k) {
@@ -183,8 +188,8 @@ Eigen::MatrixXcd HousingCondensation::physical(const Eigen::MatrixXcd& y) const 
   return realTimes(Phi, y);
 }
 
-Eigen::MatrixXcd HousingCondensation::readRows(const Eigen::MatrixXcd& y) const {
-  return realTimes(Phi_read, y);
+Eigen::MatrixXcd HousingCondensation::keptRows(const Eigen::MatrixXcd& y) const {
+  return realTimes(Phi_kept, y);
 }
 
 Eigen::MatrixXcd HousingCondensation::points(const Eigen::MatrixXcd& y) const {
@@ -217,30 +222,38 @@ HousingReceptances HousingReceptances::at(const HousingCondensation& h,
   return out;
 }
 
-void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt,
+void CondensedHousingBlock::factorize(const HousingCondensation& h, Eigen::MatrixXcd Dtt,
                                       double w) {
   const Eigen::VectorXcd dinv = modalReceptances(h, w);
-  factorize(h, Dtt, w, dinv, realTimes(h.P, dinv));
+  factorize(h, std::move(Dtt), w, dinv, realTimes(h.P, dinv));
 }
 
-void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt,
-                                      double w, const Eigen::Ref<const Eigen::VectorXcd>& dinv,
+void CondensedHousingBlock::factorize(const HousingCondensation& h, Eigen::MatrixXcd Dtt, double w,
+                                      const Eigen::Ref<const Eigen::VectorXcd>& dinv,
                                       const Eigen::Ref<const Eigen::VectorXcd>& g) {
   const Complex iw(0.0, w);
   dinv_ = dinv;
   const auto r = h.k.rows();
-  Eigen::MatrixXcd G(r, r);  // G = W diag(1/d) Wᵀ from its upper triangle g
-  Eigen::Index row = 0;
-  for (Eigen::Index j = 0; j < r; ++j) {
-    for (Eigen::Index i = 0; i <= j; ++i) G(i, j) = G(j, i) = g(row++);
-  }
-  Z_ = h.k.cast<Complex>() + iw * h.c.cast<Complex>();
-  Eigen::MatrixXcd A(r, r);  // I + Z G
+  Eigen::MatrixXcd A(r, r);  // I + Z G, G = W diag(1/d) Wᵀ from its upper triangle g
   Eigen::MatrixXcd ZJ(r, h.Jc.cols());
-  if (h.Z_diagonal) {
-    A = Z_.diagonal().asDiagonal() * G;
-    ZJ = Z_.diagonal().asDiagonal() * h.Jc.cast<Complex>();
+  if (h.Z_diagonal) {  // Z G is G's rows scaled: formed from g directly, Z kept as its diagonal
+    z_ = h.k.diagonal().cast<Complex>() + iw * h.c.diagonal().cast<Complex>();
+    Z_.resize(0, 0);
+    Eigen::Index row = 0;
+    for (Eigen::Index j = 0; j < r; ++j) {
+      for (Eigen::Index i = 0; i <= j; ++i, ++row) {
+        A(i, j) = z_(i) * g(row);
+        A(j, i) = z_(j) * g(row);
+      }
+    }
+    ZJ = z_.asDiagonal() * h.Jc.cast<Complex>();
   } else {
+    Eigen::MatrixXcd G(r, r);
+    Eigen::Index row = 0;
+    for (Eigen::Index j = 0; j < r; ++j) {
+      for (Eigen::Index i = 0; i <= j; ++i) G(i, j) = G(j, i) = g(row++);
+    }
+    Z_ = h.k.cast<Complex>() + iw * h.c.cast<Complex>();
     A.noalias() = Z_ * G;
     ZJ.noalias() = Z_ * h.Jc.cast<Complex>();
   }
@@ -251,18 +264,18 @@ void CondensedHousingBlock::factorize(const HousingCondensation& h, const Eigen:
     ZeffJ_ = ZJ;
     seat_lu_.solveInPlace(ZeffJ_);
   } else {
-    Eigen::MatrixXcd Zeff = Z_;
+    Eigen::MatrixXcd Zeff = Z_.size() > 0 ? Z_ : Eigen::MatrixXcd(z_.asDiagonal());
     seat_lu_.solveInPlace(Zeff);
     ZeffJ_.noalias() = Zeff * h.Jc.cast<Complex>();
   }
   // D_tt + Jᵀ (Z_eff − Z) J, on J's columns.
-  Eigen::MatrixXcd D = Dtt;
-  D(h.J_columns, h.J_columns) += h.Jc.transpose().cast<Complex>() * (ZeffJ_ - ZJ);
-  lu_.compute(D);
+  Dtt(h.J_columns, h.J_columns) += h.JcT * (ZeffJ_ - ZJ);
+  lu_.compute(Dtt);
 }
 
 Eigen::MatrixXcd CondensedHousingBlock::zeff(const Eigen::MatrixXcd& x) const {
-  Eigen::MatrixXcd out = Z_ * x;
+  Eigen::MatrixXcd out =
+      Z_.size() > 0 ? Eigen::MatrixXcd(Z_ * x) : Eigen::MatrixXcd(z_.asDiagonal() * x);
   seat_lu_.solveInPlace(out);
   return out;
 }
@@ -289,6 +302,15 @@ Eigen::MatrixXcd CondensedHousingBlock::solve(const HousingCondensation& h,
 Eigen::MatrixXcd CondensedHousingBlock::modalAmplitudes(const HousingCondensation& h,
                                                         const Eigen::MatrixXcd& q_t) const {
   return dinv_.asDiagonal() * h.modal(bearingForces(h, q_t));
+}
+
+void CondensedHousingBlock::bearingForces(const HousingCondensation& h,
+                                          const Eigen::Ref<const Eigen::VectorXcd>& q_t,
+                                          Eigen::Ref<Eigen::VectorXcd> F) const {
+  F.setZero();
+  for (std::size_t c = 0; c < h.J_columns.size(); ++c) {
+    F += ZeffJ_.col(static_cast<Eigen::Index>(c)) * q_t(h.J_columns[c]);
+  }
 }
 
 Eigen::MatrixXcd CondensedHousingBlock::bearingForces(const HousingCondensation& h,

@@ -545,11 +545,14 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed, bool housing_rows)
     const Eigen::MatrixXcd y = blocks_of.housingModesOfBlocks(s.harmonic.topRows(n_t).eval());
     if (housing_rows) {
       s.harmonic.bottomRows(n - n_t) = housing_->physical(y);
+      if (housing_->points_Phi.rows() > 0) s.housing_points = housing_->points(y);
     } else {
+      const Eigen::MatrixXcd kept = housing_->keptRows(y);
+      const Eigen::Index read = static_cast<Eigen::Index>(housing_read_dofs_.size());
       s.harmonic.bottomRows(n - n_t).setZero();
-      s.harmonic(housing_read_dofs_, Eigen::all) = housing_->readRows(y);
+      s.harmonic(housing_read_dofs_, Eigen::all) = kept.topRows(read);
+      if (housing_->points_Phi.rows() > 0) s.housing_points = kept.bottomRows(kept.rows() - read);
     }
-    if (housing_->points_Phi.rows() > 0) s.housing_points = housing_->points(y);
   } else if (model.housingFirstDof() >= 0 && !model.spec().housing->reduced.points.empty()) {
     s.housing_points =
         model.spec().housing->reduced.recovery * s.harmonic.bottomRows(n - model.housingFirstDof());

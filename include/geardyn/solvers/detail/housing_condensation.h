@@ -42,15 +42,17 @@ struct HousingCondensation {
   /// on them (r × c): Z_eff J is formed on these c columns only.
   std::vector<Eigen::Index> J_columns;
   Eigen::MatrixXd Jc;
+  Eigen::MatrixXcd JcT;     ///< Jcᵀ as complex (c × r), for Jᵀ (Z_eff − Z) J per frequency
   bool Z_diagonal = false;  ///< k and c diagonal: Z G is a scaling of G's rows
   /// The housing's DOFs (counted from `first`) that the train's elements read (the bearing
   /// seats) and Φ on them: the rows a forced sweep needs of every harmonic (the elements' forces
   /// are sampled from them), TrainSteadySolver::solve without all housing rows.
   std::vector<Eigen::Index> read_rows;
-  Eigen::MatrixXd Phi_read;
   /// R Φ (3 P × n_h), R the reduced housing's recovery at its P response points: their
   /// displacements [m] from modal amplitudes; no rows without points.
   Eigen::MatrixXd points_Phi;
+  /// [Φ on read_rows; R Φ]: both in one product.
+  Eigen::MatrixXd Phi_kept;
   /// The condensation of `model`'s housing; null without a housing or when the housing is not
   /// held (a zero eigenvalue: the exact path then factorises the whole block).
   static std::shared_ptr<const HousingCondensation> of(const GearTrainModel& model);
@@ -58,8 +60,8 @@ struct HousingCondensation {
   Eigen::MatrixXcd physical(const Eigen::MatrixXcd& y) const;
   /// Wᵀ F: the bearing forces F (r × any) on the housing's modes.
   Eigen::MatrixXcd modal(const Eigen::MatrixXcd& F) const;
-  /// Φ_read y: the rows `read_rows` of Φ y.
-  Eigen::MatrixXcd readRows(const Eigen::MatrixXcd& y) const;
+  /// [Φ_read y; R Φ y]: the rows `read_rows` of Φ y over the response points' displacements.
+  Eigen::MatrixXcd keptRows(const Eigen::MatrixXcd& y) const;
   /// R Φ y: the response points' displacements (3 P × any) [m].
   Eigen::MatrixXcd points(const Eigen::MatrixXcd& y) const;
 };
@@ -95,9 +97,9 @@ class CondensedHousingBlock {
   using Complex = std::complex<double>;
   /// Factorises the train's block D_tt of K̄ − ω²M + iωC (with any rigid-body penalty) with the
   /// housing condensed out at ω [rad/s].
-  void factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt, double w);
+  void factorize(const HousingCondensation& h, Eigen::MatrixXcd Dtt, double w);
   /// The same with 1/d and G's upper triangle at w given (HousingReceptances' columns).
-  void factorize(const HousingCondensation& h, const Eigen::MatrixXcd& Dtt, double w,
+  void factorize(const HousingCondensation& h, Eigen::MatrixXcd Dtt, double w,
                  const Eigen::Ref<const Eigen::VectorXcd>& dinv,
                  const Eigen::Ref<const Eigen::VectorXcd>& g);
   /// D⁻¹ rhs over all n_t + n_h DOFs.
@@ -113,6 +115,9 @@ class CondensedHousingBlock {
   Eigen::MatrixXcd modalAmplitudes(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
   /// The bearing forces F = Z_eff J q_t on the housing (r × q_t's columns).
   Eigen::MatrixXcd bearingForces(const HousingCondensation& h, const Eigen::MatrixXcd& q_t) const;
+  /// The same for one column q_t, written to `F` (r) without temporaries.
+  void bearingForces(const HousingCondensation& h, const Eigen::Ref<const Eigen::VectorXcd>& q_t,
+                     Eigen::Ref<Eigen::VectorXcd> F) const;
   /// 1/d_k at this block's frequency.
   const Eigen::VectorXcd& receptances() const noexcept { return dinv_; }
 
@@ -122,7 +127,8 @@ class CondensedHousingBlock {
 
   Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
   SmallComplexLU seat_lu_;  // I + Z G
-  Eigen::MatrixXcd Z_;      // k + iωc (r × r)
+  Eigen::MatrixXcd Z_;      // k + iωc (r × r); empty when diagonal (then z_)
+  Eigen::VectorXcd z_;      // its diagonal when k and c are diagonal
   Eigen::MatrixXcd ZeffJ_;  // Z_eff J on J's columns (r × c)
   Eigen::VectorXcd dinv_;
 };
