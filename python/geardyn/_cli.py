@@ -174,6 +174,20 @@ class FolderResult:
         frame.attrs["table"] = name
         return frame
 
+    def view3d(self):
+        """A `train` result folder's 3-D view (geardyn.view3d) as a standalone HTML page, or None
+        (not a train, no geometry, or read into memory without its folder)."""
+        if self.command != "train" or "geometry" not in self.results or self.folder is None:
+            return None
+        from . import view3d
+
+        return view3d.view_page(str(self.folder), self.summary)
+
+    def _repr_html_(self):
+        from .results import html_card
+
+        return html_card(self)
+
     def __repr__(self):
         where = str(self.folder) if self.folder else "(in memory)"
         lines = [f"<geardyn {self.command} result: status {self.status}, folder {where}, "

@@ -20,7 +20,7 @@ import tempfile
 
 from ._units import column_units
 
-__all__ = ["Result"]
+__all__ = ["Result", "html_card"]
 
 # The numbers each command's repr shows first: (label, JSON pointer into results, unit).
 _HEADLINES = {
@@ -241,18 +241,27 @@ class Result:
             return view3d.view_page(work, self.summary)
 
     def _repr_html_(self):
-        rows = "".join(f"<tr><td>{html.escape(k)}</td><td>{v:.6g}</td></tr>"
-                       for k, v in self.headline.items())
-        status = html.escape(self.status)
-        colour = "#2a7" if self.ok else "#c33"
-        try:  # a train's 3-D view, in an iframe: its scripts and styles stay its own
-            page = self.view3d()
-        except OSError:  # three.js not installed: the view is left out, the rest is shown
-            page = None
-        view = ("" if page is None else
-                f"<iframe srcdoc=\"{html.escape(page, quote=True)}\" style=\"width:100%;height:640px;"
-                f"border:0\" title=\"geardyn 3-D view\"></iframe>")
-        return (f"<div><b>geardyn {html.escape(self.command)}</b> — status "
-                f"<span style='color:{colour}'>{status}</span>, {self.wall_time_s:.3g} s"
-                f"<table>{rows}</table>{view}<pre>{html.escape(self.report_text)}</pre>"
-                f"<small>tables: {html.escape(', '.join(self.tables))}</small></div>")
+        return html_card(self, self.report_text)
+
+
+def html_card(result, report_text=""):
+    """Jupyter's view of a result (Result or FolderResult): command, status, wall time, the
+    headline numbers with units, a train's 3-D view in an iframe, the CLI's lines, the tables."""
+    rows = "".join(f"<tr><td>{html.escape(k)}</td><td>{v:.6g}</td></tr>"
+                   for k, v in result.headline.items())
+    status = html.escape(str(result.status))
+    colour = "#2a7" if result.ok else "#c33"
+    try:  # a train's 3-D view, in an iframe: its scripts and styles stay its own
+        page = result.view3d()
+    except OSError:  # three.js not installed: the view is left out, the rest is shown
+        page = None
+    view = ("" if page is None else
+            f"<iframe srcdoc=\"{html.escape(page, quote=True)}\" style=\"width:100%;height:640px;"
+            f"border:0\" title=\"geardyn 3-D view\"></iframe>")
+    wall = result.wall_time_s
+    took = f", {wall:.3g} s" if isinstance(wall, (int, float)) else ""
+    text = f"<pre>{html.escape(report_text)}</pre>" if report_text else ""
+    return (f"<div><b>geardyn {html.escape(str(result.command))}</b> — status "
+            f"<span style='color:{colour}'>{status}</span>{took}"
+            f"<table>{rows}</table>{view}{text}"
+            f"<small>tables: {html.escape(', '.join(result.tables))}</small></div>")

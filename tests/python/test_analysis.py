@@ -373,3 +373,19 @@ def test_load_names_the_folder_that_is_not_a_result(tmp_path):
     (tmp_path / "summary.json").write_text('{"results": {}}')
     with pytest.raises(ValueError, match="not a geardyn summary"):
         geardyn.load(tmp_path)
+
+
+def test_a_loaded_train_folder_draws_the_same_3d_view_and_card(tmp_path):
+    """geardyn.load of a train's folder: its 3-D view is the in-process result's page, byte for
+    byte, and Jupyter's card shows it with the headline numbers."""
+    result = geardyn.run("train", EXAMPLES / "train_two_stage_reducer.toml",
+                         overrides={"analysis.run": ["static", "modal"]}, progress=False)
+    loaded = geardyn.load(result.save(tmp_path / "train"))
+    page = result.view3d()
+    assert page is not None and loaded.view3d() == page
+    card = loaded._repr_html_()
+    assert "<iframe" in card and all(label in card for label in result.headline)
+    assert geardyn.load(result.save(tmp_path / "other")).view3d() == page
+    stiffness = geardyn.load(geardyn.run("stiffness", EXAMPLES / "stiffness_visnadi2021_spur.toml",
+                                         progress=False).save(tmp_path / "k"))
+    assert stiffness.view3d() is None and "<iframe" not in stiffness._repr_html_()
