@@ -206,7 +206,9 @@ def render_html(summary, figures, plotly_js, title=None, view=None):
         f"command <code>{esc(str(summary.get('command', '?')))}</code> · "
         f"status {esc(str(summary.get('status', '?')))} · run {esc(str(summary.get('created_utc', '?')))} · "
         f"configuration {esc(str(summary.get('config_file', '?')))}"
-        + (f" · seed {esc(str(summary['seed']))}" if summary.get("seed") is not None else "") + "</p>",
+        + (f" · seed {esc(str(summary['seed']))}" if summary.get("seed") is not None else "")
+        + (f" · wall time {summary['wall_time_s']:.3g} s"
+           if isinstance(summary.get("wall_time_s"), (int, float)) else "") + "</p>",
     ]
     for warning in summary.get("warnings", []) or []:
         parts.append(f"<p class=\"warning\">warning: {esc(str(warning))}</p>")

@@ -2,6 +2,7 @@
 log-axis floors, headline rows, JSON for a <script> element, finding plotly.js."""
 
 import json
+import pathlib
 
 import pytest
 
@@ -92,3 +93,13 @@ def test_python_m_geardyn_report_imports_the_module_once(tmp_path):
                            str(tmp_path)], capture_output=True, text=True)
     assert "RuntimeWarning" not in done.stderr, done.stderr
     assert "no summary.json" in done.stderr and done.returncode != 0
+
+
+def test_the_report_header_states_the_run_s_wall_time(tmp_path):
+    import geardyn
+
+    result = geardyn.run("geometry", {"pinion": {"teeth": 25, "module": 3e-3, "face_width": 0.02},
+                                      "gear": {"teeth": 30, "module": 3e-3, "face_width": 0.02}})
+    folder = result.save(tmp_path / "run")
+    page = pathlib.Path(report.write_report(str(folder), str(tmp_path / "r.html"))).read_text()
+    assert f"wall time {result.wall_time_s:.3g} s" in page
