@@ -446,6 +446,13 @@ void addTimeAndStatsSections(config::ConfigSchema& schema) {
       .max(1000)
       .defaultValue(2)
       .doc("common periods recorded at the end");
+  schema.integer("time.history_stride")
+      .min(1)
+      .max(1000000)
+      .defaultValue(1)
+      .doc(
+          "time_history.csv keeps every n-th recorded step (the comparisons, statistics and "
+          "probes use every step)");
   schema.boolean("time.start_from_static")
       .defaultValue(true)
       .doc("start from the static deflection (else from rest)");

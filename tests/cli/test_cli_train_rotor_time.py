@@ -88,6 +88,25 @@ def test_unbalanced_rotor_time_run_agrees_with_its_steady_state(tmp_path):
     assert 0.0 < peak < 1e-4 * (100.0 * 3.141592653589793) ** 2
 
 
+def test_history_stride_keeps_every_nth_row_and_the_comparisons(tmp_path):
+    path = tmp_path / "jeffcott.toml"
+    path.write_text(JEFFCOTT + UNBALANCE)
+    full = run("train", path, "--out", tmp_path / "full", "--quiet")
+    strided = run("train", path, "--out", tmp_path / "strided", "--quiet",
+                  "--set", "time.history_stride=5")
+    assert full.returncode == 0 and strided.returncode == 0, strided.stderr
+    rows = (tmp_path / "full" / "time_history.csv").read_text().splitlines()
+    kept = (tmp_path / "strided" / "time_history.csv").read_text().splitlines()
+    assert kept[0] == rows[0] and kept[1:] == rows[1::5]
+    # The comparison with the steady state still reads every step.
+    results = [json.loads((tmp_path / d / "summary.json").read_text())["results"]["time"]
+               for d in ("full", "strided")]
+    key = "bearing_force_difference_to_steady_state_relative_to_p2p"
+    assert results[0][key] == results[1][key]
+    bad = run("train", path, "--out", tmp_path / "bad", "--quiet", "--set", "time.history_stride=0")
+    assert bad.returncode == 2 and "time.history_stride" in bad.stderr
+
+
 def test_train_that_nothing_drives_is_refused_naming_the_key(tmp_path):
     path = tmp_path / "still.toml"
     path.write_text(JEFFCOTT)
