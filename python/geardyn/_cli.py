@@ -93,13 +93,15 @@ class FolderResult:
     as {column: numpy array}). When the run went to a temporary folder, everything is read
     into memory and the folder is removed (``folder`` is then None)."""
 
-    def __init__(self, folder, returncode, stdout, stderr, keep=True):
+    def __init__(self, folder, returncode, stdout, stderr, keep=True, summary=None):
         self.folder = pathlib.Path(folder)
         self.returncode = returncode
         self.stdout = stdout
         self.stderr = stderr
         summary_path = self.folder / "summary.json"
-        self.summary = json.loads(summary_path.read_text()) if summary_path.exists() else {}
+        if summary is None and summary_path.exists():
+            summary = json.loads(summary_path.read_text())
+        self.summary = summary or {}
         self.results = self.summary.get("results", {})
         self.status = self.summary.get("status")
         self.command = self.summary.get("command")
@@ -213,7 +215,8 @@ def load(folder):
         raise ValueError(f"{summary}: not JSON ({error})") from error
     if not isinstance(document, dict) or "command" not in document:
         raise ValueError(f"{summary}: not a geardyn summary (no \"command\" key)")
-    return FolderResult(folder, 1 if document.get("numerical_failure") else 0, "", "")
+    return FolderResult(folder, 1 if document.get("numerical_failure") else 0, "", "",
+                        summary=document)
 
 
 def run_cli(command, config, out=None, overrides=None, threads=None, check=True, plots=None,

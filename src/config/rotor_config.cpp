@@ -482,8 +482,10 @@ long long rotorTimeSamples(const Config& config, const LateralRotorSpec& spec) {
   const double highest_hz =
       spec.pinion_speed * spec.pinion_teeth * std::max<double>(1.0, spec.te_x.size());
   const double needed = kRotorSamplesPerHighestPeriod * highest_hz * config.real("time.duration");
+  // At most the largest power of two the key allows (2e8): beyond it the analysis's Nyquist
+  // check says the rate is too low for time.duration.
   long long samples = 16;
-  while (static_cast<double>(samples) < needed && samples < 200000000) samples *= 2;
+  while (static_cast<double>(samples) < needed && 2 * samples <= 200000000) samples *= 2;
   return samples;
 }
 

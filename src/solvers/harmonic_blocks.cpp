@@ -165,13 +165,6 @@ Eigen::MatrixXcd HarmonicBlocks::solveTrain(int h, const Eigen::MatrixXcd& rhs_t
   return housed_.at(k).solveTrain(rhs_t.conjugate()).conjugate();
 }
 
-Eigen::MatrixXcd HarmonicBlocks::housingRows(int h, const Eigen::MatrixXcd& q_t) const {
-  if (!housing_) throw std::logic_error("HarmonicBlocks::housingRows: no condensed housing");
-  const std::size_t k = static_cast<std::size_t>(std::abs(h));
-  if (h >= 0) return housed_.at(k).housingRows(*housing_, q_t);
-  return housed_.at(k).housingRows(*housing_, q_t.conjugate()).conjugate();
-}
-
 Eigen::MatrixXcd HarmonicBlocks::housingModesOfBlocks(const Eigen::MatrixXcd& q_t) const {
   if (!housing_)
     throw std::logic_error("HarmonicBlocks::housingModesOfBlocks: no condensed housing");

@@ -247,6 +247,15 @@ Eigen::MatrixXd TrainSteadyState::displacement(const Eigen::VectorXd& times) con
 
 namespace {
 
+/// One past the last DOF any mesh reads: the bodies' DOFs, which come before a housing's.
+int meshSpan(const GearTrainModel& model) {
+  int span = 0;
+  for (const TrainMesh& mesh : model.meshes()) {
+    for (int d : mesh.dofs) span = std::max(span, d + 1);
+  }
+  return span;
+}
+
 /// q(t) at s.t on the DOFs the meshes and elements read: `q` (rows: samples) holds DOF d in
 /// column `column[d]` (−1: not sampled). Without a housing every DOF, in order; a housed train's
 /// bodies' DOFs (first, in order: the meshes read them) and the housing's the elements read;
@@ -296,10 +305,7 @@ Eigen::MatrixXcd forcingHarmonics(const GearTrainModel& model, const TrainBaseFr
   Eigen::MatrixXcd F = Eigen::MatrixXcd::Zero(n, 2 * H + 1);
   F.col(H) = model.staticLoad().cast<Complex>();
   // v_m is zero past the last DOF any mesh reads (the bodies' come before a housing's).
-  int span = 0;
-  for (const TrainMesh& mesh : meshes) {
-    for (int d : mesh.dofs) span = std::max(span, d + 1);
-  }
+  const int span = meshSpan(model);
   for (int m = 0; m < r; ++m) {
     for (int l = -L; l <= L; ++l) {
       const int j = l * base.mesh_multiple[m];
@@ -331,10 +337,7 @@ void sampleSteadyForces(TrainSteadyState& s, const GearTrainModel& model, double
   s.mesh_force.resize(samples, static_cast<Eigen::Index>(meshes.size()));
   // q(t_k) on the DOFs up to the last one a mesh reads (the bodies', q's first columns in
   // order), contiguous for the mesh forces.
-  int mesh_span = 0;
-  for (const TrainMesh& mesh : meshes) {
-    for (int d : mesh.dofs) mesh_span = std::max(mesh_span, d + 1);
-  }
+  const int mesh_span = meshSpan(model);
   Eigen::VectorXd q_k(mesh_span);
   for (int k = 0; k < samples; ++k) {
     q_k = q.row(k).head(mesh_span).transpose();
@@ -472,8 +475,8 @@ TrainSteadyState TrainSteadySolver::solve(double input_speed, bool housing_rows)
   // for the recovery X_h = D(h)⁻¹F_h − D(h)⁻¹V g_h (g_h the mesh terms below), so the sparse
   // path analyses D's pattern once per speed and refactorises it per harmonic.
   // With the housing condensed and no load on it (the meshes' vectors never reach it), the
-  // solves stay on the train's n_t DOFs and the housing's rows are recovered once per harmonic
-  // from the final train rows (HarmonicBlocks::housingRows), not for each of the r + 2 columns.
+  // solves stay on the train's n_t DOFs and the housing's rows are recovered from the final
+  // train rows of all harmonics at once (below), not for each of the r + 2 columns.
   const int n_t = blocks_of.trainDofs();
   const bool train_only = n_t < n && F.bottomRows(n - n_t).isZero(0.0);
   const int n_s = train_only ? n_t : n;  // the rows solved for

@@ -150,6 +150,10 @@ TEST(InputConventions, RaoRotorSamplesFollowTheHighestMeshHarmonic) {
   EXPECT_EQ(rotorTimeSamples(fast, lateralRotorSpecFromConfig(fast)), 65536);
   const Config short_run = parseConfig(rig, "rotor", rotorSchema(), {"time.duration=1.0"});
   EXPECT_EQ(rotorTimeSamples(short_run, lateralRotorSpecFromConfig(short_run)), 4096);
+  // Capped at the largest power of two the key allows (2^27 <= 2e8); the analysis then names
+  // time.samples as too few for the duration.
+  const Config long_run = parseConfig(rig, "rotor", rotorSchema(), {"time.duration=1e6"});
+  EXPECT_EQ(rotorTimeSamples(long_run, lateralRotorSpecFromConfig(long_run)), 134217728);
   // Given: as given, even when it aliases (the analysis refuses it, naming the key).
   const Config given = parseConfig(rig, "rotor", rotorSchema(), {"time.samples=1000"});
   EXPECT_EQ(rotorTimeSamples(given, lateralRotorSpecFromConfig(given)), 1000);

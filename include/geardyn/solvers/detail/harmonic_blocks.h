@@ -65,13 +65,11 @@ class HarmonicBlocks {
   /// The DOFs `solveTrain` solves for: the train's n_t when the housing is condensed, else all.
   int trainDofs() const noexcept { return housing_ ? housing_->first : n_; }
   /// With the housing condensed: the train's rows of D(h)⁻¹ rhs for a load on the train's DOFs
-  /// only (`rhs_t`, trainDofs() rows; h as in solve); the housing's rows of the same solution
-  /// follow from `housingRows` (per block h; every factorised block is kept). This skips the
-  /// housing's n_h rows of every right-hand side when only a combination of them is wanted.
-  /// Without the condensation it is `solve`.
+  /// only (`rhs_t`, trainDofs() rows; h as in solve); the housing's modal amplitudes of the
+  /// same solution follow from `housingModesOfBlocks` (every factorised block is kept). This
+  /// skips the housing's n_h rows of every right-hand side when only a combination of them is
+  /// wanted. Without the condensation it is `solve`.
   Eigen::MatrixXcd solveTrain(int h, const Eigen::MatrixXcd& rhs_t) const;
-  /// The housing's rows (n_h) of the solution of block h whose train rows are `q_t`.
-  Eigen::MatrixXcd housingRows(int h, const Eigen::MatrixXcd& q_t) const;
   /// The housing's modal amplitudes y (n_h, housing rows Φ y) of the blocks h = 0, 1, ...,
   /// q_t.cols() − 1 at once, column h of q_t the train rows of block h's solution.
   Eigen::MatrixXcd housingModesOfBlocks(const Eigen::MatrixXcd& q_t) const;
