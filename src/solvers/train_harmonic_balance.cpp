@@ -14,6 +14,7 @@
 #include "geardyn/error.h"
 #include "geardyn/signal/detail/fftw_planner.h"
 #include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/detail/train_hill.h"
 #include "geardyn/solvers/newmark.h"
 #include "geardyn/solvers/train_response.h"
 

@@ -15,6 +15,7 @@
 
 #include "geardyn/numerics/strip_arnoldi.h"
 #include "geardyn/solvers/detail/aft_jacobian.h"
+#include "geardyn/solvers/detail/train_hill_operator.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
 
 namespace geardyn::detail {
@@ -41,146 +42,22 @@ constexpr double kFirstCheckRatio = 2.2;
 constexpr int kCheckStep = 8;
 constexpr double kMaxDimensionRatio = 3.2;
 
-/// y = (𝓗 − σI)⁻¹ x in Spectra's operator interface (train_hill.h): per harmonic h the block
-/// A₀ − s_h (s_h = σ + ihω) through D(s_h) = s²M + sC + K̄, the periodic part by Woodbury:
-/// (𝓓 + 𝓑𝓢𝓒ᵀ)⁻¹ = 𝓓⁻¹ − 𝓓⁻¹𝓑𝓢 (I + 𝓒ᵀ𝓓⁻¹𝓑𝓢)⁻¹ 𝓒ᵀ𝓓⁻¹, 𝓒ᵀ𝓓⁻¹𝓑 = blockdiag(Vᵀ D(s_h)⁻¹ V).
-/// Real vectors: coefficient-major (0, cos 1, sin 1, …), the state (x, x′) within; a
-/// coefficient pair (a_h, b_h) is the complex a_h − i b_h of Re[(a − ib) e^{ihωt}].
-class HillShiftSolve {
- public:
-  using Scalar = double;
-
-  explicit HillShiftSolve(const TrainHillProblem& p)
-      : p_(p),
-        n_(static_cast<int>(p.M.rows())),
-        r_(static_cast<int>(p.V.cols())),
-        h_(p.harmonics),
-        nc_(2 * p.harmonics + 1),
-        R_(p.harmonics + 1),
-        Z_(p.harmonics + 1),
-        s_(p.harmonics + 1),
-        ad_(p.harmonics + 1),
-        u_(p.harmonics + 1) {
-    e_.resize(r_ * nc_);
-    w_.resize(r_ * nc_);
-    z_.resize(r_ * nc_);
-    zc_.resize(r_);
-    for (int h = 0; h <= h_; ++h) {
-      ad_[h].resize(n_ + r_);
-      u_[h].resize(2 * n_);
-    }
-  }
-
-  Eigen::Index rows() const { return 2 * n_ * nc_; }
-  Eigen::Index cols() const { return rows(); }
-
-  /// Per harmonic the factors the operator applies (set once, so that perform_op only
-  /// multiplies): R = [D(s)⁻¹[C + sM, M]; Vᵀ D(s)⁻¹[C + sM, M]] ((n + r) × 2n: a and Vᵀa in one
-  /// product), Z = D(s)⁻¹V; and the capacitance's LU.
-  void set_shift(double sigma) {
-    if (shifted_ && sigma == sigma_) return;
-    shifted_ = true, sigma_ = sigma;
-    const Eigen::MatrixXcd Mc = p_.M.cast<Complex>(), Cc = p_.C.cast<Complex>();
-    const Eigen::MatrixXcd Vc = p_.V.cast<Complex>();
-    std::vector<Eigen::MatrixXcd> G(h_ + 1);
-    Eigen::PartialPivLU<Eigen::MatrixXcd> lu;
-    for (int h = 0; h <= h_; ++h) {
-      const Complex s(sigma, h * p_.omega);
-      s_[h] = s;
-      lu.compute(s * s * Mc + s * Cc + p_.K.cast<Complex>());
-      Eigen::MatrixXcd rhs(n_, 2 * n_);
-      rhs << Cc + s * Mc, Mc;
-      R_[h].resize(n_ + r_, 2 * n_);
-      R_[h].topRows(n_) = lu.solve(rhs);
-      R_[h].bottomRows(r_).noalias() = Vc.transpose() * R_[h].topRows(n_);
-      Z_[h] = lu.solve(Vc);
-      G[h] = Vc.transpose() * Z_[h];
-    }
-    // Capacitance I + 𝓖𝓢 (coordinate-major, 2H + 1 coefficients each): G(h) acts per harmonic
-    // as the 2 × 2 real form of a complex number on the rows of 𝓢's blocks.
-    const int rho = r_ * nc_;
-    Eigen::MatrixXd K = Eigen::MatrixXd::Identity(rho, rho);
-    for (const TrainHillProblem::Block& b : p_.slopes) {
-      const Eigen::MatrixXd& JF = b.galerkin;
-      for (int mr = 0; mr < r_; ++mr) {
-        auto block = K.block(mr * nc_, b.j * nc_, nc_, nc_);
-        block.row(0) += G[0](mr, b.i).real() * JF.row(0);
-        for (int h = 1; h <= h_; ++h) {
-          const double gr = G[h](mr, b.i).real(), gi = G[h](mr, b.i).imag();
-          block.row(2 * h - 1) += gr * JF.row(2 * h - 1) + gi * JF.row(2 * h);
-          block.row(2 * h) += -gi * JF.row(2 * h - 1) + gr * JF.row(2 * h);
-        }
-      }
-    }
-    capacitance_.compute(K);
-  }
-
-  /// Allocation-free: every buffer is sized in the constructor.
-  void perform_op(const double* x_in, double* y_out) const {
-    const int n = n_, n2 = 2 * n_;
-    // g = 𝓓⁻¹ f: (A₀ − s)(a, b) = (f_x, f_v) ⇔ a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa.
-    for (int h = 0; h <= h_; ++h) {
-      Eigen::VectorXcd& u = u_[h];  // (f_x, f_v)
-      if (h == 0) {
-        for (int i = 0; i < n2; ++i) u(i) = x_in[i];
-      } else {
-        const double *c = x_in + (2 * h - 1) * n2, *s = x_in + 2 * h * n2;
-        for (int i = 0; i < n2; ++i) u(i) = Complex(c[i], -s[i]);
-      }
-      // (a, Vᵀa) in one product; e = 𝓒ᵀ g = Vᵀ a per harmonic, coordinate-major real.
-      ad_[h].noalias() = -R_[h] * u;
-      const auto d = ad_[h].tail(r_);
-      for (int m = 0; m < r_; ++m) {
-        if (h == 0) {
-          e_(m * nc_) = d(m).real();
-        } else {
-          e_(m * nc_ + 2 * h - 1) = d(m).real();
-          e_(m * nc_ + 2 * h) = -d(m).imag();
-        }
-      }
-    }
-    // w = (I + 𝓖𝓢)⁻¹ 𝓒ᵀ g, z = 𝓢 w.
-    w_ = capacitance_.solve(e_);
-    z_.setZero();
-    for (const TrainHillProblem::Block& b : p_.slopes) {
-      z_.segment(b.i * nc_, nc_).noalias() += b.galerkin * w_.segment(b.j * nc_, nc_);
-    }
-    // y = g − 𝓓⁻¹𝓑 z: 𝓑 z = (0, −M⁻¹V z) gives a = D(s)⁻¹ V z, b = s a.
-    for (int h = 0; h <= h_; ++h) {
-      for (int m = 0; m < r_; ++m) {
-        zc_(m) =
-            h == 0 ? Complex(z_(m * nc_)) : Complex(z_(m * nc_ + 2 * h - 1), -z_(m * nc_ + 2 * h));
-      }
-      auto a = ad_[h].head(n);
-      a.noalias() -= Z_[h] * zc_;
-      const Complex s = s_[h];
-      double *yc = y_out + (h == 0 ? 0 : (2 * h - 1) * n2), *ys = y_out + 2 * h * n2;
-      for (int i = 0; i < n; ++i) {
-        const Complex b = u_[h](i) + s * a(i);
-        yc[i] = a(i).real();
-        yc[n + i] = b.real();
-        if (h > 0) ys[i] = -a(i).imag(), ys[n + i] = -b.imag();
-      }
-    }
-  }
-
- private:
-  const TrainHillProblem& p_;
-  int n_, r_, h_, nc_;
-  bool shifted_ = false;
-  double sigma_ = 0.0;
-  std::vector<Eigen::MatrixXcd> R_, Z_;  // (D(s_h)⁻¹ and Vᵀ D(s_h)⁻¹)[C + s_h M, M], D(s_h)⁻¹V
-  std::vector<Complex> s_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  mutable std::vector<Eigen::VectorXcd> ad_, u_;  // (a, Vᵀa) and (f_x, f_v) per harmonic
-  mutable Eigen::VectorXcd zc_;
-  mutable Eigen::VectorXd e_, w_, z_;
-};
-
 }  // namespace
 
+TrainHillSolver::TrainHillSolver() : op_(std::make_unique<TrainHillShiftSolve>()) {}
+TrainHillSolver::~TrainHillSolver() = default;
+
 TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
-  HillShiftSolve op(problem);
+  return TrainHillSolver().arnoldi(problem);
+}
+
+std::optional<TrainHillResult> trainHillProjection(const TrainHillProblem& problem) {
+  return TrainHillSolver().projection(problem);
+}
+
+TrainHillResult TrainHillSolver::arnoldi(const TrainHillProblem& problem) {
+  TrainHillShiftSolve& op = *op_;
+  op.reset(problem);
   op.set_shift(0.0);  // once for both passes (the solvers' own set_shift(0) is then a no-op)
   const Eigen::Index n = problem.M.rows(), N = op.rows();
   TrainHillResult out;
@@ -211,7 +88,7 @@ TrainHillResult trainHillExponents(const TrainHillProblem& problem) {
     const Eigen::Index nev = std::min<Eigen::Index>(wanted, N - 3);
     const Eigen::Index ncv = std::min<Eigen::Index>(
         N, std::max<Eigen::Index>(static_cast<Eigen::Index>(kHillBasisRatio * nev) + 1, 20));
-    Spectra::GenEigsRealShiftSolver<HillShiftSolve> solver(op, nev, ncv, 0.0);
+    Spectra::GenEigsRealShiftSolver<TrainHillShiftSolve> solver(op, nev, ncv, 0.0);
     solver.init();
     solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
     out.operations += static_cast<int>(solver.num_operations());
@@ -300,8 +177,11 @@ detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalance
 }
 
 void TrainHarmonicBalance::classifyHill(HarmonicBalancePoint& point, bool samples_current) {
-  const detail::TrainHillResult hill =
-      detail::trainHillExponents(hillProblem(point, samples_current));
+  // The resolvent projection; the Arnoldi run on the strip when it declines.
+  const detail::TrainHillProblem problem = hillProblem(point, samples_current);
+  if (!hill_) hill_ = std::make_unique<detail::TrainHillSolver>();
+  std::optional<detail::TrainHillResult> projected = hill_->projection(problem);
+  const detail::TrainHillResult hill = projected ? std::move(*projected) : hill_->arnoldi(problem);
   if (hill.exponents.empty()) {  // cannot be (the strip's central copies are nearest 0)
     throw std::runtime_error(
         fmt::format("Hill's method: no Floquet exponent in the strip |Im| <= ω/2 at ω = {:g} rad/s",

@@ -30,6 +30,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -41,7 +42,8 @@
 namespace geardyn {
 namespace detail {
 struct TrainHillProblem;
-}
+class TrainHillSolver;
+}  // namespace detail
 
 struct TrainHarmonicBalanceOptions {
   int harmonics = 15;        ///< H: harmonics of the base (common) frequency
@@ -147,6 +149,7 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   double* real_buffer_;
   fftw_complex* complex_buffer_;
   fftw_plan forward_plan_, inverse_plan_;
+  std::unique_ptr<detail::TrainHillSolver> hill_;  // Hill's method's buffers, on first use
 };
 
 }  // namespace geardyn

@@ -23,6 +23,8 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "geardyn/numerics/floquet_strip.h"
@@ -53,7 +55,8 @@ struct TrainHillResult {
   /// |λ| of the farthest computed: every eigenvalue nearer was found (the farthest converged
   /// strip value when `restart_free`: no such guarantee, none needed)
   double radius = 0.0;
-  int operations = 0;  ///< applications of (𝓗 − σ)⁻¹ by the Arnoldi iteration
+  int operations = 0;      ///< applications of (𝓗 − σ)⁻¹ (columns, for the projection)
+  bool projected = false;  ///< by trainHillProjection (all 2n exponents; no selection)
 };
 
 /// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0: the
@@ -63,6 +66,48 @@ struct TrainHillResult {
 /// Re λ >= −ω/2, is among them: a disc of radius < ω holds at most two copies of each of the 2n
 /// exponents). std::runtime_error when Arnoldi does not converge.
 TrainHillResult trainHillExponents(const TrainHillProblem& problem);
+
+/// The Floquet exponents from Hill's matrix by its resolvent projection (issue #39;
+/// docs/theory/nonlinear_gear_trains.md "Hill's method: the resolvent projection"): no
+/// eigenvalues of 𝓗 are computed and none are sorted. With the Floquet form of the fundamental
+/// matrix Φ(t) = P(t) e^{Bt}, P T-periodic, P(0) = I, the Hill matrix of A(t) is 𝓟 𝓗_B 𝓟⁻¹,
+/// 𝓗_B = blockdiag(B − ikω) and 𝓟 the multiplication by P(t) (the similarity behind Bayer &
+/// Leine's Koopman–Hill projection C(t) e^{𝓗t} W, 2023, Nonlinear Dyn. 111, 8439), so
+///   C 𝓗⁻ᵖ 𝛅 = Σₖ (B − ikω)⁻ᵖ = g_p(B),   g₂(z) = (T/2)² csch²(Tz/2),  g₃(z) = (T/2)³ csch² coth,
+/// where 𝛅 holds the Fourier coefficients of the Dirac comb T Σⱼ δ(t − jT) I (2n columns: 1 on
+/// the constant, 2 on every cosine), which 𝓟⁻¹ leaves as it is (P⁻¹(0) = I), and C evaluates a
+/// Fourier series at t = 0.
+/// Hence M₂⁻¹M₃ = (T/2) coth(TB/2), 2n × 2n, whose eigenvalues give the multipliers
+/// μ = (c + 1)/(c − 1), c = coth(λT/2): three block applications of (𝓗 − 0)⁻¹ to 2n columns and
+/// one small eigenproblem. The truncation to H harmonics is corrected exactly for a
+/// time-invariant A (then M_p = Σ_{|k|<=H}(A − ikω)⁻ᵖ): each λ is polished by Newton on
+/// f₃(λ)/f₂(λ) = ν, f_p(λ) = Σ_{|k|<=H}(λ − ikω)⁻ᵖ, ν the small eigenvalue. Exponents in the
+/// strip |Im| <= ω/2, largest real part first. std::nullopt when the projection cannot resolve
+/// them: M₂ = g₂(B) near singular (reciprocal condition below 1e-9: an exponent with
+/// |Re λ| T beyond about 20, whose csch² underflows against the others'), a multiplier at 0 or
+/// ∞, or a polish that does not converge; trainHillExponents is then the method.
+std::optional<TrainHillResult> trainHillProjection(const TrainHillProblem& problem);
+
+class TrainHillShiftSolve;
+
+/// Hill's method's working state, kept from point to point of a sweep (TrainHarmonicBalance
+/// holds one): the operator's factors and the block applications' buffers stay allocated.
+class TrainHillSolver {
+ public:
+  TrainHillSolver();
+  ~TrainHillSolver();
+  TrainHillSolver(const TrainHillSolver&) = delete;
+  TrainHillSolver& operator=(const TrainHillSolver&) = delete;
+
+  /// trainHillProjection with this state's buffers.
+  std::optional<TrainHillResult> projection(const TrainHillProblem& problem);
+  /// trainHillExponents with this state's operator.
+  TrainHillResult arnoldi(const TrainHillProblem& problem);
+
+ private:
+  std::unique_ptr<TrainHillShiftSolve> op_;
+  Eigen::MatrixXd first_, second_, third_;  // 𝓗⁻ᵖ𝛅, p = 1, 2, 3
+};
 
 /// The dense real Hill matrix (2n(2H + 1) square; coefficient-major) for tests, similar to 𝓗
 /// (the same eigenvalues) in the balanced state (W z, z′) of the mass-normalised undamped modes
