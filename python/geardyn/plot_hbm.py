@@ -42,8 +42,10 @@ def forced_response_figure(result_dir, ax=None):
             styles.add(stable)
         handles.append(Line2D([], [], ls="-", label=f"HBM, sweep {sweep}", **style))
     if False in styles:  # the line styles need explaining only when both occur
-        handles += [Line2D([], [], color="0.3", ls="-", label="stable (Hill)"),
-                    Line2D([], [], color="0.3", ls="--", label="unstable (Hill)")]
+        method = {"hill": "Hill's method"}.get(
+            summary["config"].get("sweep", {}).get("stability_method"), "monodromy")
+        handles += [Line2D([], [], color="0.3", ls="-", label=f"stable ({method})"),
+                    Line2D([], [], color="0.3", ls="--", label=f"unstable ({method})")]
     folds = results.get("folds", [])
     if folds:
         handles += ax.plot([f["frequency"] for f in folds], [f["p2p"] * unit for f in folds], "kx", ms=6,

@@ -15,6 +15,10 @@ from ._tables import stability_runs
 _SWEEP_COLOURS = {"up": "tab:blue", "down": "tab:orange"}
 
 
+# The legend's name of the stability method the run used (summary results.nonlinear).
+_STABILITY_METHODS = {"monodromy": "monodromy", "hill": "Hill's method"}
+
+
 def _stable_flags(table):
     """The stable column as booleans (all True when the run skipped stability)."""
     values = table["stable"]
@@ -91,8 +95,9 @@ def train_nonlinear_figure(result_dir, axes=None, max_meshes=8, title=None):
                       alpha=0.45 if both and name == "up" else 1.0, label=f"harmonic balance, sweep {name}")
                for name in sweeps]
     if False in styles:
-        handles += [Line2D([], [], color="0.3", ls="-", label="stable (monodromy)"),
-                    Line2D([], [], color="0.3", ls="--", label="unstable (monodromy)")]
+        method = _STABILITY_METHODS.get(results.get("stability_method"), "monodromy")
+        handles += [Line2D([], [], color="0.3", ls="-", label=f"stable ({method})"),
+                    Line2D([], [], color="0.3", ls="--", label=f"unstable ({method})")]
     if results.get("folds"):
         handles.append(Line2D([], [], color="k", marker="x", ls="none", label="folds"))
     if any("p2p_deflection_newmark_m" in c for c in checks):

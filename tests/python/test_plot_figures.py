@@ -100,9 +100,35 @@ def test_forced_response_legend_handles_are_solid_and_styles_explained(figures):
     handles = {h.get_label(): h for h in getattr(legend, "legend_handles", None) or legend.legendHandles}
     for sweep in ("up", "down"):
         assert handles[f"HBM, sweep {sweep}"].get_linestyle() == "-"
-    assert handles["stable (Hill)"].get_linestyle() == "-"
-    assert handles["unstable (Hill)"].get_linestyle() == "--"
+    assert handles["stable (monodromy)"].get_linestyle() == "-"  # the example's (the default)
+    assert handles["unstable (monodromy)"].get_linestyle() == "--"
     assert any(line.get_linestyle() == "--" for line in ax.lines)  # unstable runs are drawn dashed
+
+
+def _legend_labels(axes):
+    return {t.get_text() for ax in axes for legend in [ax.get_legend()] if legend for t in legend.get_texts()}
+
+
+def test_stability_legends_name_the_method_the_run_used(tmp_path):
+    # Both nonlinear response plots once named a fixed method; with Hill's method they say so.
+    runs = {"hbm": ("hbm_backlash_kahraman_singh", ["sweep.stability_method=\"hill\""]),
+            "train": ("train_planetary_nonlinear",
+                      ["nonlinear.stability_method=\"hill\"", "nonlinear.speed_min_rpm=15000.0",
+                       "nonlinear.speed_max_rpm=15700.0", "nonlinear.direction=\"up\"",
+                       "nonlinear.newmark_speeds_rpm=[]"])}
+    for command, (stem, settings) in runs.items():
+        folder = tmp_path / command
+        arguments = [CLI, command, str(SOURCE / "examples" / f"{stem}.toml"), "--out", str(folder),
+                     "--quiet", "--set", "output.plots=false"]
+        for setting in settings:
+            arguments += ["--set", setting]
+        done = subprocess.run(arguments, capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        figure = (gplot.forced_response_figure(folder) if command == "hbm"
+                  else gplot.train_nonlinear_figure(folder))
+        labels = _legend_labels(figure.axes) | {t.get_text() for legend in figure.legends for t in legend.get_texts()}
+        assert {"stable (Hill's method)", "unstable (Hill's method)"} <= labels, (command, labels)
+        plt.close(figure)
 
 
 def test_forced_response_has_an_rpm_axis_when_the_teeth_are_known(figures):
