@@ -12,8 +12,11 @@ void TrainHillShiftSolve::reset(const TrainHillProblem& problem) {
   r_ = static_cast<int>(problem.V.cols());
   h_ = problem.harmonics;
   nc_ = 2 * problem.harmonics + 1;
-  R_.resize(h_ + 1);
+  Ar_.resize(h_ + 1);
+  Ai_.resize(h_ + 1);
+  As_.resize(h_ + 1);
   Z_.resize(h_ + 1);
+  d_.resize(h_ + 1);
   complex_R_.resize(h_ + 1);
   complex_Z_.resize(h_ + 1);
   vector_ad_.assign(h_ + 1, Eigen::VectorXcd(n_ + r_));
@@ -30,6 +33,7 @@ void TrainHillShiftSolve::reset(const TrainHillProblem& problem) {
 void TrainHillShiftSolve::set_shift(double sigma) {
   if (shifted_ && sigma == sigma_) return;
   shifted_ = true, sigma_ = sigma;
+  complex_ready_ = false;
   const Eigen::MatrixXd &M = p_->M, &C = p_->C, &K = p_->K, &V = p_->V;
   const int n = n_, r = r_, n2 = 2 * n_, width = 2 * n_ + r_;
   G_.resize(h_ + 1);
@@ -42,7 +46,7 @@ void TrainHillShiftSolve::set_shift(double sigma) {
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n2, width);
   rhs.topLeftCorner(n, n2) << C + sigma * M, M;
   rhs.topRightCorner(n, r) = V;
-  Eigen::MatrixXd X(n2, width), VX(r, 2 * width);
+  Eigen::MatrixXd X(n2, width);
   for (int h = 0; h <= h_; ++h) {
     const double hw = h * p_->omega;
     s_[h] = Complex(sigma, hw);
@@ -53,32 +57,19 @@ void TrainHillShiftSolve::set_shift(double sigma) {
     harmonic_lu_.compute(F);
     rhs.bottomLeftCorner(n, n) = hw * M;
     X.noalias() = harmonic_lu_.solve(rhs);  // (Re; Im) of D⁻¹[C + sM, M, V]
-    VX.leftCols(width).noalias() = V.transpose() * X.topRows(n);
-    VX.rightCols(width).noalias() = V.transpose() * X.bottomRows(n);
     const auto Xr = X.topRows(n), Xi = X.bottomRows(n);
-    const auto VXr = VX.leftCols(width), VXi = VX.rightCols(width);
     G_[h].resize(r, r);
-    G_[h].real() = VXr.rightCols(r);
-    G_[h].imag() = VXi.rightCols(r);
-    complex_R_[h].resize(n + r, n2);
-    complex_R_[h].real() << -Xr.leftCols(n2), -VXr.leftCols(n2);
-    complex_R_[h].imag() << -Xi.leftCols(n2), -VXi.leftCols(n2);
-    complex_Z_[h].resize(n, r);
-    complex_Z_[h].real() = Xr.rightCols(r);
-    complex_Z_[h].imag() = Xi.rightCols(r);
+    G_[h].real().noalias() = V.transpose() * Xr.rightCols(r);
+    G_[h].imag().noalias() = V.transpose() * Xi.rightCols(r);
+    // a = R u with R = −D⁻¹[C + sM, M] = Ar + iAi (and As = Ar + Ai for Gauss's three real
+    // products); Z = D⁻¹V in real block form.
+    Ar_[h] = -Xr.leftCols(n2);
     if (h == 0) {  // s = σ real: every factor real
-      R_[h].resize(n + r, n2);
-      R_[h] << -Xr.leftCols(n2), -VXr.leftCols(n2);
       Z_[h] = Xr.rightCols(r);
       continue;
     }
-    // Real block forms [Re, −Im; Im, Re] of the complex R = −[D⁻¹; VᵀD⁻¹][C + sM, M] and of
-    // Z; the input's (cos, sin) rows are (Re u, −Im u), so R's sine columns change sign.
-    R_[h].resize(2 * (n + r), 2 * n2);
-    R_[h] << -Xr.leftCols(n2), -Xi.leftCols(n2),  //
-        -VXr.leftCols(n2), -VXi.leftCols(n2),     //
-        -Xi.leftCols(n2), Xr.leftCols(n2),        //
-        -VXi.leftCols(n2), VXr.leftCols(n2);
+    Ai_[h] = -Xi.leftCols(n2);
+    As_[h] = Ar_[h] + Ai_[h];
     Z_[h].resize(n2, 2 * r);
     Z_[h] << Xr.rightCols(r), -Xi.rightCols(r), Xi.rightCols(r), Xr.rightCols(r);
   }
@@ -104,35 +95,51 @@ void TrainHillShiftSolve::set_shift(double sigma) {
 }
 
 void TrainHillShiftSolve::multiply(const double* X, Eigen::Index k) const {
-  // ad = −R u per harmonic, u = (f_x, f_v): (a, Vᵀa) of g = 𝓓⁻¹f, where (A₀ − s)(a, b) = f ⇔
-  // a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa.
-  const Eigen::Index N = rows(), n2 = 2 * n_;
+  // a = R u per harmonic, u = (f_x, f_v) = x_cos − i x_sin: a of g = 𝓓⁻¹f, where
+  // (A₀ − s)(a, b) = f ⇔ a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa; and d = Vᵀa. The
+  // complex product by Gauss's three real ones: with P₁ = Ar x_cos, Q = Ai x_sin,
+  // P₃ = (Ar + Ai)(x_cos − x_sin): Re a = P₁ + Q, Im a = P₃ − P₁ + Q.
+  const Eigen::Index N = rows(), n = n_, n2 = 2 * n_;
   const Eigen::Map<const Eigen::MatrixXd> x(X, N, k);
+  const Eigen::MatrixXd& V = p_->V;
   for (int h = 0; h <= h_; ++h) {
     if (h == 0) {
-      ad_[h].noalias() = R_[h] * x.topRows(n2);
-    } else {
-      ad_[h].noalias() = R_[h] * x.middleRows((2 * h - 1) * n2, 2 * n2);
+      ad_[0].noalias() = Ar_[0] * x.topRows(n2);
+      d_[0].noalias() = V.transpose() * ad_[0];
+      continue;
     }
+    const auto xc = x.middleRows((2 * h - 1) * n2, n2), xs = x.middleRows(2 * h * n2, n2);
+    ad_[h].resize(n2, k);
+    auto re = ad_[h].topRows(n), im = ad_[h].bottomRows(n);
+    product_.noalias() = Ar_[h] * xc;  // P₁
+    re.noalias() = Ai_[h] * xs;        // Q
+    difference_ = xc - xs;
+    im.noalias() = As_[h] * difference_;  // P₃
+    im += re - product_;
+    re += product_;
+    d_[h].resize(2 * r_, k);
+    d_[h].topRows(r_).noalias() = V.transpose() * re;
+    d_[h].bottomRows(r_).noalias() = V.transpose() * im;
   }
 }
 
-void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k) const {
-  const Eigen::Index N = rows(), n = n_, n2 = 2 * n_, nr = n_ + r_;
+void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k,
+                                 double* at_zero) const {
+  const Eigen::Index N = rows(), n = n_, n2 = 2 * n_;
   // X null: the comb 𝛅 (k = 2n), whose x rows are I on the constant, 2I on every cosine, 0 on
-  // every sine.
+  // every sine. at_zero: only C y (2n × k, the Fourier series at t = 0), Y unused.
   const bool comb = X == nullptr;
-  const Eigen::Map<const Eigen::MatrixXd> x(comb ? Y : X, N, k);
-  Eigen::Map<Eigen::MatrixXd> y(Y, N, k);
+  const Eigen::Map<const Eigen::MatrixXd> x(comb ? (at_zero ? at_zero : Y) : X, comb ? n2 : N, k);
+  Eigen::Map<Eigen::MatrixXd> y(at_zero ? at_zero : Y, at_zero ? n2 : N, k);
   // e = 𝓒ᵀ g = Vᵀa per harmonic, coordinate-major real (cos: Re, sin: −Im).
   e_.resize(r_ * nc_, k);
   for (int h = 0; h <= h_; ++h) {
     for (int m = 0; m < r_; ++m) {
       if (h == 0) {
-        e_.row(m * nc_) = ad_[0].row(n + m);
+        e_.row(m * nc_) = d_[0].row(m);
       } else {
-        e_.row(m * nc_ + 2 * h - 1) = ad_[h].row(n + m);
-        e_.row(m * nc_ + 2 * h) = -ad_[h].row(nr + n + m);
+        e_.row(m * nc_ + 2 * h - 1) = d_[h].row(m);
+        e_.row(m * nc_ + 2 * h) = -d_[h].row(r_ + m);
       }
     }
   }
@@ -164,13 +171,17 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k) con
       zc_.row(m) = z_.row(m * nc_ + 2 * h - 1);
       zc_.row(r_ + m) = -z_.row(m * nc_ + 2 * h);
     }
-    a_.topRows(n) = ad_[h].topRows(n);
-    a_.bottomRows(n) = ad_[h].middleRows(nr, n);
+    a_ = ad_[h];
     a_.noalias() -= Z_[h] * zc_;
     const double hw = h * p_->omega;
     const auto ar = a_.topRows(n), ai = a_.bottomRows(n);
     const Eigen::Index c = (2 * h - 1) * n2, s = 2 * h * n2;
     // f_x = x_cos − i x_sin; b = f_x + (σ + ihω) a; outputs (Re, −Im) of (a, b).
+    if (at_zero) {  // the cosine rows summed (the sines vanish at t = 0)
+      y.topRows(n) += ar;
+      y.bottomRows(n) += sigma_ * ar - hw * ai + x.middleRows(c, n);
+      continue;
+    }
     y.middleRows(c, n) = ar;
     y.middleRows(c + n, n) = sigma_ * ar - hw * ai;
     y.middleRows(s, n) = -ai;
@@ -186,8 +197,27 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k) con
 
 void TrainHillShiftSolve::perform_op(const double* x_in, double* y_out) const {
   // The steps of apply on one vector, with complex products (faster than the real block forms
-  // on a single column).
+  // on a single column), read off the block forms on first use after set_shift.
   const int n = n_, n2 = 2 * n_;
+  if (!complex_ready_) {
+    const Eigen::MatrixXd& V = p_->V;
+    for (int h = 0; h <= h_; ++h) {
+      complex_R_[h].resize(n + r_, n2);
+      complex_Z_[h].resize(n, r_);
+      complex_R_[h].topRows(n).real() = Ar_[h];
+      complex_Z_[h].real() = Z_[h].topLeftCorner(n, r_);
+      if (h == 0) {
+        complex_R_[h].topRows(n).imag().setZero();
+        complex_Z_[h].imag().setZero();
+      } else {
+        complex_R_[h].topRows(n).imag() = Ai_[h];
+        complex_Z_[h].imag() = Z_[h].bottomLeftCorner(n, r_);
+      }
+      complex_R_[h].bottomRows(r_).noalias() =
+          V.cast<Complex>().transpose() * complex_R_[h].topRows(n);
+    }
+    complex_ready_ = true;
+  }
   for (int h = 0; h <= h_; ++h) {
     Eigen::VectorXcd& u = vector_u_[h];  // (f_x, f_v)
     if (h == 0) {
@@ -236,11 +266,26 @@ void TrainHillShiftSolve::apply(const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) co
   finish(X.data(), Y.data(), X.cols());
 }
 
+void TrainHillShiftSolve::applyAtZero(const Eigen::MatrixXd& X, Eigen::MatrixXd& S) const {
+  S.resize(2 * n_, X.cols());
+  multiply(X.data(), X.cols());
+  finish(X.data(), nullptr, X.cols(), S.data());
+}
+
 void TrainHillShiftSolve::applyToComb(Eigen::MatrixXd& Y) const {
   const Eigen::Index n2 = 2 * n_;
-  // −R 𝛅 per harmonic: R's first 2n columns (constant), twice its cosine columns.
-  ad_[0] = R_[0];
-  for (int h = 1; h <= h_; ++h) ad_[h] = 2.0 * R_[h].leftCols(n2);
+  // R 𝛅 per harmonic: R's constant columns, twice its cosine columns (the sines are 0).
+  const Eigen::MatrixXd& V = p_->V;
+  ad_[0] = Ar_[0];
+  d_[0].noalias() = V.transpose() * ad_[0];
+  for (int h = 1; h <= h_; ++h) {
+    ad_[h].resize(n2, n2);
+    ad_[h].topRows(n_) = 2.0 * Ar_[h];
+    ad_[h].bottomRows(n_) = 2.0 * Ai_[h];
+    d_[h].resize(2 * r_, n2);
+    d_[h].topRows(r_).noalias() = V.transpose() * ad_[h].topRows(n_);
+    d_[h].bottomRows(r_).noalias() = V.transpose() * ad_[h].bottomRows(n_);
+  }
   Y.resize(rows(), n2);
   finish(nullptr, Y.data(), n2);
 }

@@ -143,11 +143,12 @@ std::optional<TrainHillResult> TrainHillSolver::projection(const TrainHillProble
   TrainHillShiftSolve& op = *op_;
   op.reset(problem);
   op.set_shift(0.0);
-  // 𝓗⁻ᵖ𝛅, p = 1, 2, 3: the Dirac comb T Σ δ(t − jT) = 1 + 2 Σ cos hωt on each state coordinate.
+  // 𝓗⁻ᵖ𝛅, p = 1, 2 (C 𝓗⁻³𝛅 directly): the Dirac comb T Σ δ(t − jT) = 1 + 2 Σ cos hωt on each state
+  // coordinate.
   Eigen::MatrixXd &first = first_, &second = second_, &third = third_;
   op.applyToComb(first);
   op.apply(first, second);
-  op.apply(second, third);
+  op.applyAtZero(second, third);  // M₃ unbalanced: C 𝓗⁻³𝛅
   // C: the Fourier series at t = 0 (the constant and every cosine coefficient).
   const auto atZero = [&](const Eigen::MatrixXd& Y) {
     Eigen::MatrixXd sum = Y.topRows(n2);
@@ -165,7 +166,7 @@ std::optional<TrainHillResult> TrainHillSolver::projection(const TrainHillProble
   };
   const Eigen::PartialPivLU<Eigen::MatrixXd> m2(balanced(atZero(second)));
   if (!(m2.rcond() >= kMinimumReciprocalCondition)) return std::nullopt;
-  const Eigen::MatrixXd ratio = m2.solve(balanced(atZero(third)));  // (T/2) coth(TB/2)
+  const Eigen::MatrixXd ratio = m2.solve(balanced(third));  // (T/2) coth(TB/2)
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(ratio, false);
   if (eig.info() != Eigen::Success) return std::nullopt;
   TrainHillResult out;

@@ -106,7 +106,7 @@ class TrainHillSolver {
 
  private:
   std::unique_ptr<TrainHillShiftSolve> op_;
-  Eigen::MatrixXd first_, second_, third_;  // 𝓗⁻ᵖ𝛅, p = 1, 2, 3
+  Eigen::MatrixXd first_, second_, third_;  // 𝓗⁻¹𝛅, 𝓗⁻²𝛅 and C 𝓗⁻³𝛅
 };
 
 /// The dense real Hill matrix (2n(2H + 1) square; coefficient-major) for tests, similar to 𝓗

@@ -6,9 +6,9 @@
 /// D(s_h) = s²M + sC + K̄, the periodic part by Woodbury:
 ///   (𝓓 + 𝓑𝓢𝓒ᵀ)⁻¹ = 𝓓⁻¹ − 𝓓⁻¹𝓑𝓢 (I + 𝓒ᵀ𝓓⁻¹𝓑𝓢)⁻¹ 𝓒ᵀ𝓓⁻¹,  𝓒ᵀ𝓓⁻¹𝓑 = blockdiag(Vᵀ D(s_h)⁻¹ V).
 /// Real vectors: coefficient-major (0, cos 1, sin 1, …), the state (x, x′) within; a
-/// coefficient pair (a_h, b_h) is the complex a_h − i b_h of Re[(a − ib) e^{ihωt}]. Every complex
-/// product is held as its real 2 × 2 block form, so that a harmonic's cosine and sine rows of a
-/// block of columns go through one real matrix product.
+/// coefficient pair (a_h, b_h) is the complex a_h − i b_h of Re[(a − ib) e^{ihωt}]. A block of
+/// columns goes through real matrix products (a harmonic's complex product as Gauss's three
+/// real ones), one vector through complex ones.
 
 #include <Eigen/Dense>
 #include <complex>
@@ -34,8 +34,8 @@ class TrainHillShiftSolve {
   Eigen::Index cols() const { return rows(); }
 
   /// The factors the operator applies (set once, so that applying only multiplies): per
-  /// harmonic R = −[D(s)⁻¹[C + sM, M]; Vᵀ D(s)⁻¹[C + sM, M]] ((n + r) × 2n: a and Vᵀa in one
-  /// product) and Z = D(s)⁻¹V, in real block form; the capacitance's LU. σ [1/s] real.
+  /// harmonic R = −D(s)⁻¹[C + sM, M] (n × 2n, complex: its real and imaginary parts) and
+  /// Z = D(s)⁻¹V, and the capacitance's LU. σ [1/s] real.
   void set_shift(double sigma);
 
   /// y = (𝓗 − σ)⁻¹x, x and y rows() long (Spectra's interface). Allocation-free after the
@@ -45,6 +45,10 @@ class TrainHillShiftSolve {
   /// Y = (𝓗 − σ)⁻¹X for the k columns of X (rows() × k; Y is resized).
   void apply(const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) const;
 
+  /// S = C (𝓗 − σ)⁻¹X (2n × k): the result's Fourier series at t = 0, the constant and every
+  /// cosine coefficient summed, without forming it (S is resized).
+  void applyAtZero(const Eigen::MatrixXd& X, Eigen::MatrixXd& S) const;
+
   /// Y = (𝓗 − σ)⁻¹𝛅 for the 2n columns of the Dirac comb 𝛅 (1 on the constant, 2 on every
   /// cosine coefficient of each state coordinate): the first step needs no product.
   void applyToComb(Eigen::MatrixXd& Y) const;
@@ -52,26 +56,29 @@ class TrainHillShiftSolve {
  private:
   /// The common steps from ad_ (−R X per harmonic) on: Y (rows() × k) from X's state rows (X
   /// null: the comb 𝛅, k = 2n).
-  void finish(const double* X, double* Y, Eigen::Index k) const;
+  void finish(const double* X, double* Y, Eigen::Index k, double* at_zero = nullptr) const;
   void multiply(const double* X, Eigen::Index k) const;  // ad_ = −R X
 
   const TrainHillProblem* p_ = nullptr;
   int n_ = 0, r_ = 0, h_ = 0, nc_ = 1;
   bool shifted_ = false;
   double sigma_ = 0.0;
-  std::vector<Eigen::MatrixXd> R_, Z_;  // real block forms, h = 0 real (blocks of columns)
+  // a = R u, R = −D⁻¹[C + sM, M] = Ar + iAi per harmonic, As = Ar + Ai (h = 0: Ar, real); Z
+  // = D⁻¹V in real block form (h = 0 real).
+  std::vector<Eigen::MatrixXd> Ar_, Ai_, As_, Z_;
   // The complex R and Z per harmonic (one vector: a complex product beats the block form's).
-  std::vector<Eigen::MatrixXcd> complex_R_, complex_Z_;
+  mutable std::vector<Eigen::MatrixXcd> complex_R_, complex_Z_;
+  mutable bool complex_ready_ = false;
   std::vector<std::complex<double>> s_;
   std::vector<Eigen::MatrixXcd> G_;  // Vᵀ D(s_h)⁻¹ V per harmonic
   Eigen::MatrixXd harmonic_matrix_;  // [A −B; B A] of D(s_h) = A + iB
   Eigen::PartialPivLU<Eigen::MatrixXd> harmonic_lu_;
   Eigen::MatrixXd capacitance_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  // Workspace, sized to the block's width on first use: per harmonic (Re, Im) of (a, Vᵀa),
-  // the capacitance's right-hand sides, solution and 𝓢w, a harmonic's (Re, Im) of 𝓢w, and a.
-  mutable std::vector<Eigen::MatrixXd> ad_;
-  mutable Eigen::MatrixXd e_, w_, z_, zc_, a_;
+  // Workspace, sized to the block's width on first use: the capacitance's right-hand sides,
+  // solution and 𝓢w, a harmonic's (Re, Im) of 𝓢w, a, and Gauss's P₁ and x_cos − x_sin.
+  mutable std::vector<Eigen::MatrixXd> ad_, d_;  // per harmonic (Re a; Im a) and (Re; Im) Vᵀa
+  mutable Eigen::MatrixXd e_, w_, z_, zc_, a_, product_, difference_;
   mutable std::vector<Eigen::VectorXcd> vector_ad_, vector_u_;  // perform_op's workspace
   mutable Eigen::VectorXcd vector_zc_;
   mutable Eigen::VectorXd vector_e_, vector_w_, vector_z_;
