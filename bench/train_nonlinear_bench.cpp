@@ -157,7 +157,9 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       hbm.classify(p, StabilityMethod::kMonodromy, true);
       const double c2 = cpu();
       const auto t2 = Clock::now();
-      hbm.classify(h, StabilityMethod::kHill, false);
+      // The samples are the converged point's (Newton's last residual; the monodromy used them
+      // too), as a continuation classifies its corrected points.
+      hbm.classify(h, StabilityMethod::kHill, true);
       const auto t3 = Clock::now();
       const double c3 = cpu();
       const detail::TrainHillProblem problem = hbm.hillProblem(h, false);

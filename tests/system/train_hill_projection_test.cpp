@@ -238,5 +238,29 @@ TEST(TrainHillProjection, DeclinesAModeBeyondItsHarmonics) {
   EXPECT_NEAR(one->exponents.front().real(), both, 1e-6 * omega);
 }
 
+/// The same through the gear train's classification: the planetary stage with its carrier's
+/// torsional damper raised to 1e7 N m s/rad (a mode damped at |λ| far beyond 15 ω₀/2) is
+/// declined by the projection, and classify(kHill) gives the Arnoldi run's exponent exactly and
+/// the monodromy's verdict.
+TEST(TrainHillProjection, TheClassificationFallsBackToTheArnoldiRun) {
+  GearTrainSpec spec = planetary(4e-6);
+  spec.bearings[1].c_torsion = 1e7;
+  const GearTrainModel model(spec);
+  TrainHarmonicBalance hbm(model, planetaryHbmOptions());
+  HarmonicBalancePoint point;
+  point.omega = 2.0 * std::numbers::pi * 4000.0;
+  point.q = hbm.startingGuess(point.omega);
+  hbm.solve(point);
+  ASSERT_TRUE(point.converged);
+  const detail::TrainHillProblem problem = hbm.hillProblem(point, false);
+  EXPECT_FALSE(detail::trainHillProjection(problem).has_value());
+  const double arnoldi = detail::trainHillExponents(problem).exponents.front().real();
+  HarmonicBalancePoint hill = point, monodromy = point;
+  hbm.classify(hill, StabilityMethod::kHill, false);
+  hbm.classify(monodromy, StabilityMethod::kMonodromy, false);
+  EXPECT_EQ(hill.max_floquet_real, arnoldi);
+  EXPECT_EQ(hill.stable, monodromy.stable);
+}
+
 }  // namespace
 }  // namespace geardyn
