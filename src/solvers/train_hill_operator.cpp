@@ -151,12 +151,10 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k,
   }
   // y = g − 𝓓⁻¹𝓑 z: 𝓑 z = (0, −M⁻¹V z) gives a −= D(s)⁻¹ V z, then b = f_x + s a.
   zc_.resize(2 * r_, k);  // (Re, Im) of a harmonic's z
-  a_.resize(n2, k);       // (Re, Im) of a
   for (int h = 0; h <= h_; ++h) {
     if (h == 0) {
       for (int m = 0; m < r_; ++m) zc_.row(m) = z_.row(m * nc_);
-      auto a = a_.topRows(n);
-      a = ad_[0].topRows(n);
+      auto a = ad_[0].topRows(n);
       a.noalias() -= Z_[0] * zc_.topRows(r_);
       y.topRows(n) = a;
       y.middleRows(n, n) = sigma_ * a;
@@ -171,10 +169,9 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k,
       zc_.row(m) = z_.row(m * nc_ + 2 * h - 1);
       zc_.row(r_ + m) = -z_.row(m * nc_ + 2 * h);
     }
-    a_ = ad_[h];
-    a_.noalias() -= Z_[h] * zc_;
+    ad_[h].noalias() -= Z_[h] * zc_;  // in place: ad_ is not read again
     const double hw = h * p_->omega;
-    const auto ar = a_.topRows(n), ai = a_.bottomRows(n);
+    const auto ar = ad_[h].topRows(n), ai = ad_[h].bottomRows(n);
     const Eigen::Index c = (2 * h - 1) * n2, s = 2 * h * n2;
     // f_x = x_cos − i x_sin; b = f_x + (σ + ihω) a; outputs (Re, −Im) of (a, b).
     if (at_zero) {  // the cosine rows summed (the sines vanish at t = 0)

@@ -173,8 +173,11 @@ std::optional<TrainHillResult> TrainHillSolver::projection(const TrainHillProble
   out.projected = true;
   out.computed = n2;
   out.operations = 3 * n2;
-  for (const Complex& nu : eig.eigenvalues()) {
-    const Complex c = 2.0 * nu / T, mu = (c + 1.0) / (c - 1.0);
+  // A real matrix's eigenvalues: a complex one's conjugate (next in Eigen's order) maps to the
+  // conjugate exponent, polished once for both.
+  const Eigen::VectorXcd& values = eig.eigenvalues();
+  for (Eigen::Index j = 0; j < values.size(); ++j) {
+    const Complex nu = values(j), c = 2.0 * nu / T, mu = (c + 1.0) / (c - 1.0);
     if (!std::isfinite(mu.real()) || !std::isfinite(mu.imag()) || std::abs(mu) == 0.0) {
       return std::nullopt;
     }
@@ -183,6 +186,12 @@ std::optional<TrainHillResult> TrainHillSolver::projection(const TrainHillProble
     if (!polish(nu, start, omega, harmonics, lambda)) return std::nullopt;
     out.exponents.push_back(lambda);
     out.radius = std::max(out.radius, std::abs(lambda));
+    if (nu.imag() != 0.0 && j + 1 < values.size() && values(j + 1) == std::conj(nu)) {
+      const Complex mirror(lambda.real(), -lambda.imag());
+      out.exponents.emplace_back(mirror.real(),
+                                 mirror.imag() - omega * std::round(mirror.imag() / omega));
+      ++j;
+    }
   }
   std::sort(out.exponents.begin(), out.exponents.end(),
             [](const Complex& a, const Complex& b) { return a.real() > b.real(); });
