@@ -16,11 +16,11 @@ namespace {
 using Complex = std::complex<double>;
 
 /// The fraction of Hω within which every exponent of the mean system must lie (by the bound of
-/// meanModes). The comb's
-/// harmonics |k| <= H see a mode of |λ| well inside Hω as the periodic g_p does; a faster one (a
-/// stiff or heavily damped mode) sees f_p(λ) ≈ (2H + 1)/λᵖ instead, and the closed form would
-/// alias it into the strip as a slow exponent: measured on a DOF overdamped to λ = −60 = 5Hω
-/// (ω = 1.5, H = 8), a spurious −0.0036 + iω/2. The projection declines such trains.
+/// meanModes). The comb's harmonics |k| <= H see a mode of |λ| well inside Hω as the periodic
+/// g_p does; a faster one (a stiff or heavily damped mode) sees f_p(λ) ≈ (2H + 1)/λᵖ instead,
+/// and the closed form would alias it into the strip as a slow exponent: measured on a DOF
+/// overdamped to λ = −60 = 5Hω (ω = 1.5, H = 8), a spurious −0.0036 + iω/2. The projection
+/// declines such trains.
 constexpr double kResolvedFraction = 0.5;
 /// Reciprocal condition of M₂ (in energy-balanced coordinates) below which the projection
 /// declines: f₂ can vanish at isolated λ, and M₂⁻¹M₃ would then return round-off.
@@ -71,6 +71,11 @@ MeanModes meanModes(const TrainHillProblem& p) {
     stiffness.noalias() += b.galerkin(0, 0) * p.V.col(b.i) * p.V.col(b.j).transpose();
   }
   const Eigen::LLT<Eigen::MatrixXd> mass(p.M);
+  MeanModes out;
+  if (mass.info() != Eigen::Success) {  // not positive definite: no bound, the caller declines
+    out.bound = HUGE_VAL;
+    return out;
+  }
   const auto congruent = [&mass](Eigen::MatrixXd A) {  // L⁻¹ A L⁻ᵀ
     mass.matrixL().solveInPlace(A);
     A.transposeInPlace();
@@ -81,7 +86,6 @@ MeanModes meanModes(const TrainHillProblem& p) {
       congruent(0.5 * (stiffness + stiffness.transpose())));
   const Eigen::MatrixXd damping = congruent(p.C);
   const Eigen::MatrixXd& Phi = eig.eigenvectors();
-  MeanModes out;
   double largest = 0.0;
   for (Eigen::Index j = 0; j < Phi.cols(); ++j) {
     const double w2 = std::max(eig.eigenvalues()(j), 0.0);

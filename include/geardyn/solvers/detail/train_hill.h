@@ -18,8 +18,10 @@
 /// periodic part has rank r(2H + 1): (𝓗 − σ)⁻¹ is applied by Woodbury with one n × n complex LU
 /// of D(s) = s²M + sC + K̄ per harmonic (s = σ + ihω) and one r(2H + 1) real LU of the
 /// capacitance I + 𝓖 𝓢, 𝓖 = blockdiag(Vᵀ D(s_h)⁻¹ V) (at σ = 0: the harmonic balance Jacobian
-/// I + B ∂F̃/∂δ itself), inside shift-invert Arnoldi: one run without restarts first
-/// (strip_arnoldi.h), Spectra's restarted Arnoldi when it gives up.
+/// I + B ∂F̃/∂δ itself; train_hill_operator.h). The exponents come from (𝓗 − 0)⁻¹ applied to a
+/// Dirac comb (trainHillProjection, what the classification uses), or, where that declines, from
+/// the eigenvalues of 𝓗 by shift-invert Arnoldi (trainHillExponents): one run without restarts
+/// first (strip_arnoldi.h), Spectra's restarted Arnoldi when it gives up.
 
 #include <Eigen/Dense>
 #include <complex>
