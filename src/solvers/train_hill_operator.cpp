@@ -16,7 +16,6 @@ void TrainHillShiftSolve::reset(const TrainHillProblem& problem) {
   Ai_.resize(h_ + 1);
   As_.resize(h_ + 1);
   Z_.resize(h_ + 1);
-  d_.resize(h_ + 1);
   complex_R_.resize(h_ + 1);
   complex_Z_.resize(h_ + 1);
   vector_ad_.assign(h_ + 1, Eigen::VectorXcd(n_ + r_));
@@ -96,16 +95,14 @@ void TrainHillShiftSolve::set_shift(double sigma) {
 
 void TrainHillShiftSolve::multiply(const double* X, Eigen::Index k) const {
   // a = R u per harmonic, u = (f_x, f_v) = x_cos − i x_sin: a of g = 𝓓⁻¹f, where
-  // (A₀ − s)(a, b) = f ⇔ a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa; and d = Vᵀa. The
+  // (A₀ − s)(a, b) = f ⇔ a = −D(s)⁻¹(M f_v + (C + sM) f_x), b = f_x + sa. The
   // complex product by Gauss's three real ones: with P₁ = Ar x_cos, Q = Ai x_sin,
   // P₃ = (Ar + Ai)(x_cos − x_sin): Re a = P₁ + Q, Im a = P₃ − P₁ + Q.
   const Eigen::Index N = rows(), n = n_, n2 = 2 * n_;
   const Eigen::Map<const Eigen::MatrixXd> x(X, N, k);
-  const Eigen::MatrixXd& V = p_->V;
   for (int h = 0; h <= h_; ++h) {
     if (h == 0) {
       ad_[0].noalias() = Ar_[0] * x.topRows(n2);
-      d_[0].noalias() = V.transpose() * ad_[0];
       continue;
     }
     const auto xc = x.middleRows((2 * h - 1) * n2, n2), xs = x.middleRows(2 * h * n2, n2);
@@ -117,9 +114,6 @@ void TrainHillShiftSolve::multiply(const double* X, Eigen::Index k) const {
     im.noalias() = As_[h] * difference_;  // P₃
     im += re - product_;
     re += product_;
-    d_[h].resize(2 * r_, k);
-    d_[h].topRows(r_).noalias() = V.transpose() * re;
-    d_[h].bottomRows(r_).noalias() = V.transpose() * im;
   }
 }
 
@@ -132,16 +126,14 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k,
   const Eigen::Map<const Eigen::MatrixXd> x(comb ? (at_zero ? at_zero : Y) : X, comb ? n2 : N, k);
   Eigen::Map<Eigen::MatrixXd> y(at_zero ? at_zero : Y, at_zero ? n2 : N, k);
   // e = 𝓒ᵀ g = Vᵀa per harmonic, coordinate-major real (cos: Re, sin: −Im).
+  const Eigen::MatrixXd& V = p_->V;
   e_.resize(r_ * nc_, k);
   for (int h = 0; h <= h_; ++h) {
-    for (int m = 0; m < r_; ++m) {
-      if (h == 0) {
-        e_.row(m * nc_) = d_[0].row(m);
-      } else {
-        e_.row(m * nc_ + 2 * h - 1) = d_[h].row(m);
-        e_.row(m * nc_ + 2 * h) = -d_[h].row(r_ + m);
-      }
-    }
+    d_.noalias() = V.transpose() * ad_[h].topRows(n);
+    for (int m = 0; m < r_; ++m) e_.row(m * nc_ + (h == 0 ? 0 : 2 * h - 1)) = d_.row(m);
+    if (h == 0) continue;
+    d_.noalias() = V.transpose() * ad_[h].bottomRows(n);
+    for (int m = 0; m < r_; ++m) e_.row(m * nc_ + 2 * h) = -d_.row(m);
   }
   // w = (I + 𝓖𝓢)⁻¹ 𝓒ᵀ g, z = 𝓢 w.
   w_.noalias() = capacitance_.solve(e_);
@@ -176,7 +168,12 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k,
     // f_x = x_cos − i x_sin; b = f_x + (σ + ihω) a; outputs (Re, −Im) of (a, b).
     if (at_zero) {  // the cosine rows summed (the sines vanish at t = 0)
       y.topRows(n) += ar;
-      y.bottomRows(n) += sigma_ * ar - hw * ai + x.middleRows(c, n);
+      y.bottomRows(n) += sigma_ * ar - hw * ai;
+      if (comb) {
+        y.bottomRows(n).leftCols(n).diagonal().array() += 2.0;
+      } else {
+        y.bottomRows(n) += x.middleRows(c, n);
+      }
       continue;
     }
     y.middleRows(c, n) = ar;
@@ -272,16 +269,11 @@ void TrainHillShiftSolve::applyAtZero(const Eigen::MatrixXd& X, Eigen::MatrixXd&
 void TrainHillShiftSolve::applyToComb(Eigen::MatrixXd& Y) const {
   const Eigen::Index n2 = 2 * n_;
   // R 𝛅 per harmonic: R's constant columns, twice its cosine columns (the sines are 0).
-  const Eigen::MatrixXd& V = p_->V;
   ad_[0] = Ar_[0];
-  d_[0].noalias() = V.transpose() * ad_[0];
   for (int h = 1; h <= h_; ++h) {
     ad_[h].resize(n2, n2);
     ad_[h].topRows(n_) = 2.0 * Ar_[h];
     ad_[h].bottomRows(n_) = 2.0 * Ai_[h];
-    d_[h].resize(2 * r_, n2);
-    d_[h].topRows(r_).noalias() = V.transpose() * ad_[h].topRows(n_);
-    d_[h].bottomRows(r_).noalias() = V.transpose() * ad_[h].bottomRows(n_);
   }
   Y.resize(rows(), n2);
   finish(nullptr, Y.data(), n2);

@@ -75,10 +75,11 @@ class TrainHillShiftSolve {
   Eigen::PartialPivLU<Eigen::MatrixXd> harmonic_lu_;
   Eigen::MatrixXd capacitance_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
-  // Workspace, sized to the block's width on first use: the capacitance's right-hand sides,
-  // solution and 𝓢w, a harmonic's (Re, Im) of 𝓢w, and Gauss's P₁ and x_cos − x_sin.
-  mutable std::vector<Eigen::MatrixXd> ad_, d_;  // per harmonic (Re a; Im a) and (Re; Im) Vᵀa
-  mutable Eigen::MatrixXd e_, w_, z_, zc_, product_, difference_;
+  // Workspace, sized to the block's width on first use: a harmonic's Vᵀ(Re a) or Vᵀ(Im a), the
+  // capacitance's right-hand sides, solution and 𝓢w, a harmonic's (Re, Im) of 𝓢w, and Gauss's
+  // P₁ and x_cos − x_sin.
+  mutable std::vector<Eigen::MatrixXd> ad_;  // per harmonic (Re a; Im a)
+  mutable Eigen::MatrixXd d_, e_, w_, z_, zc_, product_, difference_;
   mutable std::vector<Eigen::VectorXcd> vector_ad_, vector_u_;  // perform_op's workspace
   mutable Eigen::VectorXcd vector_zc_;
   mutable Eigen::VectorXd vector_e_, vector_w_, vector_z_;
