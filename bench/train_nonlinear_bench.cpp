@@ -122,7 +122,9 @@ BENCHMARK(BM_TrainSweepHbmAgainstNewmark)
 // solution (as a corrector starts from a predictor; includes the condensation at the new ω),
 // then the monodromy and Hill's method (the classification: the resolvent projection, the
 // Arnoldi run where it declines) on the converged point, and the Arnoldi run on the strip alone
-// (the Hill eigenvalues: the fallback's cost). Counters: mean times per point [ms] and the
+// (the Hill eigenvalues: the fallback's cost). Hill takes Newton's last factors of ∂R/∂q as
+// its capacitance where that step left every contact state as it was (a continuation's
+// corrector factors at the same ω too). Counters: mean times per point [ms] and the
 // ratios, thread CPU time beside the wall clock.
 void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   const GearTrainModel model(testing::nonlinear::planetary(4e-6));
@@ -140,9 +142,10 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   double newton = 0.0, monodromy = 0.0, hill = 0.0;
   double newton_cpu = 0.0, monodromy_cpu = 0.0, hill_cpu = 0.0, arnoldi_cpu = 0.0;
   int points = 0, iterations = 0, operations = 0, dimension = 0, restart_free = 0, projected = 0;
+  int reused = 0;
   for (auto _ : state) {
     newton = monodromy = hill = newton_cpu = monodromy_cpu = hill_cpu = arnoldi_cpu = 0.0;
-    points = iterations = operations = dimension = restart_free = projected = 0;
+    points = iterations = operations = dimension = restart_free = projected = reused = 0;
     for (std::size_t i = 8; i < sweep.points.size(); i += 8) {
       HarmonicBalancePoint p;
       p.omega = sweep.points[i].solution.omega;
@@ -176,7 +179,11 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       iterations += p.iterations;
       ++points;
       // Untimed: whether the projection took the point, the Arnoldi run's applications and basis.
-      projected += detail::trainHillProjection(problem).has_value();
+      const detail::TrainHillProblem current = hbm.hillProblem(h, true);
+      const std::optional<detail::TrainHillResult> projection =
+          detail::trainHillProjection(current);
+      projected += projection.has_value();
+      reused += projection && projection->reused_jacobian;
       operations += r.operations;
       dimension += r.restart_free ? r.computed : 0;
       restart_free += r.restart_free;
@@ -195,6 +202,7 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   state.counters["hill_over_newton_cpu"] = hill_cpu / newton_cpu;
   state.counters["monodromy_over_newton_cpu"] = monodromy_cpu / newton_cpu;
   state.counters["hill_projected_fraction"] = static_cast<double>(projected) / points;
+  state.counters["hill_reused_jacobian_fraction"] = static_cast<double>(reused) / points;
   state.counters["arnoldi_cpu_ms"] = 1e3 * arnoldi_cpu / points;
   state.counters["arnoldi_over_newton_cpu"] = arnoldi_cpu / newton_cpu;
   state.counters["arnoldi_operations"] = static_cast<double>(operations) / points;

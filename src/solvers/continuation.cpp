@@ -56,7 +56,7 @@ void solveAtFixedFrequency(ContinuationProblem& problem, HarmonicBalancePoint& p
   double norm = problem.residualNorm(point.q, r, point.omega);
   for (point.iterations = 0; point.iterations < max_iterations; ++point.iterations) {
     if (norm <= tolerance) break;
-    const Eigen::VectorXd step = J.partialPivLu().solve(-r);
+    const Eigen::VectorXd step = problem.factorJacobian(J).solve(-r);
     if (!step.allFinite()) break;
     double alpha = 1.0;
     for (int back = 0; back < 6; ++back) {
@@ -191,7 +191,6 @@ class ArclengthContinuation {
         // The corrector at the predicted ω (problem.frequencyChangeIsCostly(): see
         // correctAtPredictedFrequency).
         hold_frequency_(problem.frequencyChangeIsCostly()),
-        lu_q_(hold_frequency_ ? n_ : 0),
         q_(n_),
         rhs_(n_ + 1),
         dy_(n_ + 1),
@@ -246,7 +245,7 @@ class ArclengthContinuation {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::VectorXd unit_;
   const bool hold_frequency_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_q_;
+  const Eigen::PartialPivLU<Eigen::MatrixXd>* lu_q_ = nullptr;  // the problem's (factorJacobian)
   Eigen::VectorXd r_, Jw_;
   Eigen::MatrixXd Jq_;
   Eigen::VectorXd q_, rhs_, dy_, predicted_, y_, z_, t_;
@@ -297,16 +296,16 @@ bool ArclengthContinuation::correctAtPredictedFrequency(int& iterations, double&
   q_ = predicted_.head(n_) * q_scale_;
   problem_.residual(q_, omega, r_, &Jq_, &Jw_);
   norm = problem_.residualNorm(q_, r_, omega);
-  lu_q_.compute(Jq_);
+  lu_q_ = &problem_.factorJacobian(Jq_);
   for (iterations = 0; iterations < 10 && norm > 1e-10; ++iterations) {
-    q_ -= lu_q_.solve(r_);
+    q_ -= lu_q_->solve(r_);
     const double previous = norm;
     problem_.residual(q_, omega, r_, nullptr, nullptr);
     norm = problem_.residualNorm(q_, r_, omega);
     if (!std::isfinite(norm)) return false;
     if (norm > 1e-10 && norm > 0.5 * previous) {
       problem_.residual(q_, omega, r_, &Jq_, &Jw_);
-      lu_q_.compute(Jq_);
+      lu_q_ = &problem_.factorJacobian(Jq_);
     }
   }
   if (norm > 1e-10) return false;
@@ -317,7 +316,7 @@ bool ArclengthContinuation::correctAtPredictedFrequency(int& iterations, double&
 // Its tangent: [∂R/∂q q_scale, ∂R/∂ω ω_ref] t = 0 with t_ω = 1, from the held factors.
 Eigen::VectorXd ArclengthContinuation::tangentAtHeldFrequency() {
   Eigen::VectorXd tangent(n_ + 1);
-  tangent << lu_q_.solve(Jw_) * (-omega_ref_ / q_scale_), 1.0;
+  tangent << lu_q_->solve(Jw_) * (-omega_ref_ / q_scale_), 1.0;
   tangent.normalize();
   return Eigen::VectorXd(tangent.dot(t_) < 0.0 ? -tangent : tangent);
 }

@@ -61,6 +61,7 @@ TrainHillResult TrainHillSolver::arnoldi(const TrainHillProblem& problem) {
   op.set_shift(0.0);  // once for both passes (the solvers' own set_shift(0) is then a no-op)
   const Eigen::Index n = problem.M.rows(), N = op.rows();
   TrainHillResult out;
+  out.reused_jacobian = op.reusesJacobian();
   // One Arnoldi run without restarts, stopped when its converged Ritz values hold the 2n strip
   // values (strip_arnoldi.h); Spectra's restarted passes below only when it gives up.
   StripArnoldiOptions fast;
@@ -173,7 +174,25 @@ detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalance
   };
   for (int m = 0; m < meshes_; ++m) add(m, m, slope_.col(m).data());
   for (const auto& [i, j, column] : bearing_blocks_) add(i, j, bearing_slope_.col(column).data());
+  // The balance's last factors, if they are of this Jacobian: factorised at this ω, with every
+  // sample's slope as now (a piecewise-linear contact law's Jacobian changes only where a
+  // sample changes contact state, so Newton's last step usually leaves it as it is).
+  if (factored_omega_ == point.omega && cached_omega_ == point.omega && factored_slope_ == slope_ &&
+      factored_bearing_slope_ == bearing_slope_) {
+    p.jacobian = &jacobian_lu_;
+    p.jacobian_blocks = &B_;
+  }
   return p;
+}
+
+const Eigen::PartialPivLU<Eigen::MatrixXd>& TrainHarmonicBalance::factorJacobian(
+    const Eigen::MatrixXd& dr_du) {
+  factored_omega_ = -1.0;  // until the factors are there
+  ContinuationProblem::factorJacobian(dr_du);
+  factored_omega_ = cached_omega_;
+  factored_slope_ = slope_;
+  factored_bearing_slope_ = bearing_slope_;
+  return jacobian_lu_;
 }
 
 void TrainHarmonicBalance::classifyHill(HarmonicBalancePoint& point, bool samples_current) {

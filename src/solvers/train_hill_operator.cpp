@@ -6,6 +6,19 @@ namespace geardyn::detail {
 
 using Complex = std::complex<double>;
 
+namespace {
+/// Largest entry of 𝓖(h) − 𝓑(h) over the largest of 𝓑(h), per harmonic, below which the
+/// balance's Jacobian is taken as Hill's capacitance: round-off only. The two are the same matrix
+/// in exact arithmetic when the rigid-body modes decouple from the elastic ones
+/// (docs/theory/nonlinear_gear_trains.md, "Reusing the balance's factors"), computed by
+/// different LUs: measured 1.6e-15 apart on the 3-planet sweep's 201 bench points. Lin &
+/// Parker's carrier-frame terms couple the rolling mode (its Coriolis terms), which Hill's
+/// elastic subspace leaves out and the balance keeps: 6e-6 apart at h = 1, falling as h⁻².
+/// Taken anyway (at 1e-4), they moved max Re λ by 1.1e-6 ω along that sweep, above the
+/// neutral band kNeutralMultiplier/T = 1.6e-7 ω, so such trains factorise their own.
+constexpr double kJacobianAgreement = 1e-8;
+}  // namespace
+
 void TrainHillShiftSolve::reset(const TrainHillProblem& problem) {
   p_ = &problem;
   n_ = static_cast<int>(problem.M.rows());
@@ -72,6 +85,11 @@ void TrainHillShiftSolve::set_shift(double sigma) {
     Z_[h].resize(n2, 2 * r);
     Z_[h] << Xr.rightCols(r), -Xi.rightCols(r), Xi.rightCols(r), Xr.rightCols(r);
   }
+  jacobian_ = nullptr;
+  if (sigma == 0.0 && p_->jacobian && jacobianAgrees()) {
+    jacobian_ = p_->jacobian;
+    return;
+  }
   const std::vector<Eigen::MatrixXcd>& G = G_;
   // Capacitance I + 𝓖𝓢 (coordinate-major, 2H + 1 coefficients each): G(h) acts per harmonic
   // as the 2 × 2 real form of a complex number on the rows of 𝓢's blocks.
@@ -91,6 +109,18 @@ void TrainHillShiftSolve::set_shift(double sigma) {
     }
   }
   capacitance_.compute(Kc);
+}
+
+bool TrainHillShiftSolve::jacobianAgrees() const {
+  const std::vector<Eigen::MatrixXcd>* B = p_->jacobian_blocks;
+  if (!B || static_cast<int>(B->size()) != h_ + 1) return false;
+  for (int h = 0; h <= h_; ++h) {
+    const Eigen::MatrixXcd& b = (*B)[h];
+    if (b.rows() != r_ || b.cols() != r_) return false;
+    const double scale = b.cwiseAbs().maxCoeff();
+    if (!((G_[h] - b).cwiseAbs().maxCoeff() <= kJacobianAgreement * scale)) return false;
+  }
+  return true;
 }
 
 void TrainHillShiftSolve::multiply(const double* X, Eigen::Index k) const {
@@ -136,7 +166,7 @@ void TrainHillShiftSolve::finish(const double* X, double* Y, Eigen::Index k,
     for (int m = 0; m < r_; ++m) e_.row(m * nc_ + 2 * h) = -d_.row(m);
   }
   // w = (I + 𝓖𝓢)⁻¹ 𝓒ᵀ g, z = 𝓢 w.
-  w_.noalias() = capacitance_.solve(e_);
+  w_.noalias() = capacitance().solve(e_);
   z_.setZero(r_ * nc_, k);
   for (const TrainHillProblem::Block& b : p_->slopes) {
     z_.middleRows(b.i * nc_, nc_).noalias() += b.galerkin * w_.middleRows(b.j * nc_, nc_);
@@ -231,7 +261,7 @@ void TrainHillShiftSolve::perform_op(const double* x_in, double* y_out) const {
       }
     }
   }
-  vector_w_.noalias() = capacitance_.solve(vector_e_);
+  vector_w_.noalias() = capacitance().solve(vector_e_);
   vector_z_.setZero();
   for (const TrainHillProblem::Block& b : p_->slopes) {
     vector_z_.segment(b.i * nc_, nc_).noalias() += b.galerkin * vector_w_.segment(b.j * nc_, nc_);

@@ -177,6 +177,7 @@ std::optional<TrainHillResult> TrainHillSolver::projection(const TrainHillProble
   if (eig.info() != Eigen::Success) return std::nullopt;
   TrainHillResult out;
   out.projected = true;
+  out.reused_jacobian = op.reusesJacobian();
   out.computed = n2;
   out.operations = 3 * n2;
   // A real matrix's eigenvalues: a complex one's conjugate (next in Eigen's order) maps to the

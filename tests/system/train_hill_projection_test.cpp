@@ -15,6 +15,7 @@
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/detail/train_hill.h"
 #include "geardyn/solvers/train_harmonic_balance.h"
+#include "system/floquet_distance.h"
 #include "system/nonlinear_trains.h"
 
 namespace geardyn {
@@ -22,6 +23,7 @@ namespace {
 
 using Complex = std::complex<double>;
 using namespace testing::nonlinear;
+using testing::farthestExponent;
 
 /// The eigenvalues of the first-order state matrix [0 I; −M⁻¹K −M⁻¹C] [1/s].
 std::vector<Complex> stateExponents(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C,
@@ -37,22 +39,6 @@ std::vector<Complex> stateExponents(const Eigen::MatrixXd& M, const Eigen::Matri
     out.push_back(l);
   }
   return out;
-}
-
-/// The largest distance from an exponent of `a` to the nearest of `b` [1/s], modulo iω (an
-/// exponent on the strip's edge may come as a + iω/2 or as a − iω/2).
-double farthest(const std::vector<Complex>& a, const std::vector<Complex>& b, double omega) {
-  double worst = 0.0;
-  for (const Complex& x : a) {
-    double nearest = HUGE_VAL;
-    for (const Complex& y : b) {
-      const double im = x.imag() - y.imag();
-      nearest =
-          std::min(nearest, std::hypot(x.real() - y.real(), im - omega * std::round(im / omega)));
-    }
-    worst = std::max(worst, nearest);
-  }
-  return worst;
 }
 
 /// A time-invariant S(t) makes 𝓗 block diagonal: the projection's M₂⁻¹M₃ is then exactly
@@ -83,8 +69,8 @@ TEST(TrainHillProjection, IsExactForATimeInvariantTrain) {
     const std::vector<Complex> exact = stateExponents(problem.M, problem.C, K);
     for (const Complex& l : exact) above += std::abs(l.imag()) > 0.5 * point.omega;
     ASSERT_EQ(projected->exponents.size(), exact.size());
-    const double worst = std::max(farthest(projected->exponents, exact, point.omega),
-                                  farthest(exact, projected->exponents, point.omega));
+    const double worst = std::max(farthestExponent(projected->exponents, exact, point.omega),
+                                  farthestExponent(exact, projected->exponents, point.omega));
     EXPECT_LT(worst, 1e-8 * point.omega) << "c = " << c;
     std::printf("time-invariant train (c = %g N/m): %zu exponents, worst %.3g ω\n", c, exact.size(),
                 worst / point.omega);
@@ -195,7 +181,7 @@ TEST(TrainHillProjection, MatchesTheHillEigenvaluesAlongThePlanetarySweep) {
     const double a = projected->exponents.front().real(), b = arnoldi.exponents.front().real();
     worst_max = std::max(worst_max, std::abs(a - b) / omega);
     for (const Complex& e : projected->exponents) {
-      const double d = farthest({e}, arnoldi.exponents, omega) / omega;
+      const double d = farthestExponent({e}, arnoldi.exponents, omega) / omega;
       worst_any = std::max(worst_any, d);
       if (std::abs(e.imag()) < 0.4 * omega) worst_inside = std::max(worst_inside, d);
     }

@@ -69,6 +69,16 @@ class ContinuationProblem {
   /// predicted ω wherever the branch runs mostly in ω (locally parametrised continuation),
   /// with the Jacobian of the first iteration held (chord Newton) while it contracts.
   virtual bool frequencyChangeIsCostly() const { return false; }
+  /// Factorises ∂R/∂q for Newton's steps at fixed ω; `dr_dq` must be the last residual() call's
+  /// (at its q and ω). The problem keeps the factors until the next call, so that it may reuse
+  /// them: the gear train's Hill's method takes them as its capacitance (train_hill.h).
+  virtual const Eigen::PartialPivLU<Eigen::MatrixXd>& factorJacobian(const Eigen::MatrixXd& dr_dq) {
+    jacobian_lu_.compute(dr_dq);
+    return jacobian_lu_;
+  }
+
+ protected:
+  Eigen::PartialPivLU<Eigen::MatrixXd> jacobian_lu_;  ///< factorJacobian's last factors
 };
 
 /// Newton–Raphson at the fixed ω of `point` from the guess in point.q, with backtracking (the

@@ -96,8 +96,12 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   void classify(HarmonicBalancePoint& point, StabilityMethod method, bool samples_current) override;
   /// A new ω refactorises D(h) at every harmonic (prepare): continuation holds ω where it can.
   bool frequencyChangeIsCostly() const override { return true; }
+  /// Also records the ω and the slopes the factors are of: Hill's method reuses them as its
+  /// capacitance where a point's slopes are the same (hillProblem).
+  const Eigen::PartialPivLU<Eigen::MatrixXd>& factorJacobian(const Eigen::MatrixXd& dr_du) override;
   /// The variational equation at a solution on the elastic subspace, for Hill's method
-  /// (detail/train_hill.h): M, C, K̄, V and the Galerkin matrices of the slopes at the samples.
+  /// (detail/train_hill.h): M, C, K̄, V and the Galerkin matrices of the slopes at the samples,
+  /// and the last factorJacobian's factors when they are of the same ω and slopes.
   detail::TrainHillProblem hillProblem(const HarmonicBalancePoint& point, bool samples_current);
 
   /// Every DOF: real Fourier coefficients over the base period, column 0 the mean, 2h − 1 and 2h
@@ -150,6 +154,9 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   fftw_complex* complex_buffer_;
   fftw_plan forward_plan_, inverse_plan_;
   std::unique_ptr<detail::TrainHillSolver> hill_;  // Hill's method's buffers, on first use
+  // What the last factorJacobian's factors are of: ω (−1: none) and the slopes' samples.
+  double factored_omega_ = -1.0;
+  Eigen::MatrixXd factored_slope_, factored_bearing_slope_;
 };
 
 }  // namespace geardyn

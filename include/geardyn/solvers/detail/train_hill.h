@@ -45,6 +45,15 @@ struct TrainHillProblem {
   std::vector<Block> slopes;
   double omega = 0.0;  ///< ω [rad/s]: the base angular frequency
   int harmonics = 0;   ///< H
+  /// The harmonic balance's factors of its Jacobian ∂R/∂q = I + 𝓑 𝓢 at these very slopes and
+  /// ω (factorJacobian, continuation.h), when it has them, and its condensation blocks B(h) =
+  /// Vᵀ D(ihω)⁻¹ V (full coordinates, the rigid-body modes held at h = 0). At σ = 0 Hill's
+  /// capacitance I + 𝓖 𝓢 is that matrix, entry by entry, when the rigid-body modes decouple
+  /// from V (then 𝓖 = 𝓑): the operator reuses the factors where its own 𝓖 agrees with
+  /// `jacobian_blocks`, instead of assembling and factorising the capacitance again. Both null:
+  /// it does.
+  const Eigen::PartialPivLU<Eigen::MatrixXd>* jacobian = nullptr;
+  const std::vector<Eigen::MatrixXcd>* jacobian_blocks = nullptr;
 };
 
 struct TrainHillResult {
@@ -59,6 +68,7 @@ struct TrainHillResult {
   double radius = 0.0;
   int operations = 0;      ///< applications of (𝓗 − σ)⁻¹ (columns, for the projection)
   bool projected = false;  ///< by trainHillProjection (all 2n exponents; no selection)
+  bool reused_jacobian = false;  ///< the capacitance was the balance's (TrainHillProblem::jacobian)
 };
 
 /// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0: the

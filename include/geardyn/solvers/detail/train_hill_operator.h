@@ -35,8 +35,11 @@ class TrainHillShiftSolve {
 
   /// The factors the operator applies (set once, so that applying only multiplies): per
   /// harmonic R = −D(s)⁻¹[C + sM, M] (n × 2n, complex: its real and imaginary parts) and
-  /// Z = D(s)⁻¹V, and the capacitance's LU. σ [1/s] real.
+  /// Z = D(s)⁻¹V, and the capacitance's LU (at σ = 0 the harmonic balance's, when the problem
+  /// carries it and its blocks agree: reusesJacobian()). σ [1/s] real.
   void set_shift(double sigma);
+  /// The capacitance is the problem's TrainHillProblem::jacobian (set_shift(0) took it).
+  bool reusesJacobian() const { return jacobian_ != nullptr; }
 
   /// y = (𝓗 − σ)⁻¹x, x and y rows() long (Spectra's interface). Allocation-free after the
   /// first call.
@@ -58,6 +61,11 @@ class TrainHillShiftSolve {
   /// null: the comb 𝛅, k = 2n).
   void finish(const double* X, double* Y, Eigen::Index k, double* at_zero = nullptr) const;
   void multiply(const double* X, Eigen::Index k) const;  // ad_ = −R X
+  /// 𝓖 = 𝓑 within kJacobianAgreement: the balance's factors are the capacitance's.
+  bool jacobianAgrees() const;
+  const Eigen::PartialPivLU<Eigen::MatrixXd>& capacitance() const {
+    return jacobian_ ? *jacobian_ : capacitance_;
+  }
 
   const TrainHillProblem* p_ = nullptr;
   int n_ = 0, r_ = 0, h_ = 0, nc_ = 1;
@@ -75,6 +83,7 @@ class TrainHillShiftSolve {
   Eigen::PartialPivLU<Eigen::MatrixXd> harmonic_lu_;
   Eigen::MatrixXd capacitance_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;
+  const Eigen::PartialPivLU<Eigen::MatrixXd>* jacobian_ = nullptr;  // the balance's, reused
   // Workspace, sized to the block's width on first use: a harmonic's Vᵀ(Re a) or Vᵀ(Im a), the
   // capacitance's right-hand sides, solution and 𝓢w, a harmonic's (Re, Im) of 𝓢w, and Gauss's
   // P₁ and x_cos − x_sin.
