@@ -6,6 +6,7 @@
 #include "train_nonlinear_analysis.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -97,6 +98,32 @@ Json perMesh(const GearTrainModel& model, const std::vector<double>& values) {
   return out;
 }
 
+/// A mode the meshes excite (mesh strain energy >= kExcitedMeshEnergy) with a resonance
+/// j ω₀ = ω_n inside the sweep's range (j <= H, the highest such j).
+struct ExcitedResonance {
+  const TrainMode* mode;
+  int order;      ///< j
+  double energy;  ///< the mode's share of strain energy in the meshes [-]
+};
+
+std::vector<ExcitedResonance> excitedResonances(const std::vector<TrainMode>& modes,
+                                                const ContinuationOptions& sweep, int H) {
+  const double lo = std::min(sweep.start, sweep.stop), hi = std::max(sweep.start, sweep.stop);
+  std::vector<ExcitedResonance> out;
+  for (const TrainMode& mode : modes) {
+    double energy = 0.0;
+    for (double e : mode.mesh_strain_energy) energy += e;
+    if (!(mode.frequency > 0.0) || energy < kExcitedMeshEnergy) continue;
+    const double w = kTwoPi * mode.frequency;
+    int order = 0;
+    for (int j = 1; j <= H; ++j) {
+      if (w / j >= lo && w / j <= hi) order = j;
+    }
+    if (order > 0) out.push_back({&mode, order, energy});
+  }
+  return out;
+}
+
 /// Continuation steps from the train (deriveContinuationSteps): of the modes the meshes excite,
 /// those with a resonance j ω₀ = ω_n (j <= H, the highest such j) inside the range; the narrowest,
 /// ζ ω_n / j (ζ floored at 1e-3 as there), bounds the largest step, itself at most 1/50 of the
@@ -107,16 +134,9 @@ Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& 
   const double lo = std::min(sweep.start, sweep.stop), hi = std::max(sweep.start, sweep.stop);
   double narrowest = HUGE_VAL, wn = 0.0, zeta = 0.0;
   Json resonance = nullptr;
-  for (const TrainMode& mode : modes) {
-    double energy = 0.0;
-    for (double e : mode.mesh_strain_energy) energy += e;
-    if (!(mode.frequency > 0.0) || energy < kExcitedMeshEnergy) continue;
+  for (const auto& [resonant, order, energy] : excitedResonances(modes, sweep, H)) {
+    const TrainMode& mode = *resonant;
     const double w = kTwoPi * mode.frequency;
-    int order = 0;
-    for (int j = 1; j <= H; ++j) {
-      if (w / j >= lo && w / j <= hi) order = j;
-    }
-    if (order == 0) continue;
     const double width = std::clamp(mode.damping_ratio, 1e-3, 0.5) * w / order;
     if (width < narrowest) {
       narrowest = width, wn = w, zeta = mode.damping_ratio;
@@ -131,6 +151,44 @@ Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& 
   deriveContinuationSteps(sweep, wn, zeta, H);
   return {{"narrowest_resonance", resonance},
           {"limited_by", narrowest < (hi - lo) / 50.0 ? "narrowest_resonance" : "range / 50"}};
+}
+
+/// The warning for the modes the meshes excite at a resonance j ω₀ = ω_n in the range whose
+/// damping ratio is below the 1e-3 the derived steps assume (deriveContinuationSteps): the peak
+/// stands about 1/(2ζ) above the response beside it, and with contact loss the continuation
+/// climbs such a branch in steps of the resolution in ω (seen: a 29/47 stage on undamped
+/// bearings, ζ = 1.8e-4, used its 20 000 points there). Empty when there is none.
+std::string lightDampingWarning(const GearTrainModel& model, const std::vector<TrainMode>& modes,
+                                const ContinuationOptions& sweep, int H, double scale) {
+  constexpr double kLightDamping = 1e-3;
+  constexpr double kShare = 0.1;  // elements and meshes named for a mode (as for undamped ones)
+  std::vector<std::string> listed, keys;
+  for (const auto& [resonant, order, energy] : excitedResonances(modes, sweep, H)) {
+    const TrainMode& mode = *resonant;
+    if (!(mode.damping_ratio > 0.0) || mode.damping_ratio >= kLightDamping) continue;
+    const double w = kTwoPi * mode.frequency;
+    listed.push_back(fmt::format("{:.1f} Hz (ζ = {:.2g}, harmonic {} at {:.1f} rpm)",
+                                 mode.frequency, mode.damping_ratio, order, w / order / scale));
+    TrainUndampedMode shares{mode.frequency, true, {}, {}};
+    for (std::size_t e = 0; e < model.elements().size(); ++e) {
+      if (mode.element_strain_energy[e] >= kShare)
+        shares.elements.push_back(model.elements()[e].name);
+    }
+    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+      if (mode.mesh_strain_energy[m] >= kShare) shares.meshes.push_back(model.meshes()[m].name);
+    }
+    for (const std::string& key : dampingKeysOf(model, shares)) {
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+  }
+  if (listed.empty()) return "";
+  keys.push_back("gearbox.mass_proportional_damping");
+  return fmt::format(
+      "nonlinear: the meshes excite {} mode(s) with damping ratio below {:g} at a resonance in "
+      "the sweep: {}; a resonance peaks at about 1/(2ζ) times the response beside it, and with "
+      "contact loss the continuation climbs it in steps that resolve the sweep in speed (it may "
+      "spend nonlinear.max_points there); damp them with {}",
+      listed.size(), kLightDamping, fmt::join(listed, ", "), fmt::join(keys, ", "));
 }
 
 /// The steps the user gave must be ordered (the derived ones are by construction).
@@ -421,6 +479,8 @@ std::string runTrainNonlinear(const GearTrainModel& model, const config::Config&
         "as stable, not as a bifurcation)",
         undamped, kNeutralMultiplier));
   }
+  const std::string light = lightDampingWarning(model, modes, sweep, options.harmonics, scale);
+  if (!light.empty()) summary.warnings.push_back(light);
   const Json step_source = deriveTrainSteps(sweep, modes, options.harmonics, scale);
   checkSteps(sweep, scale);
   if (step_source["narrowest_resonance"].is_null()) {

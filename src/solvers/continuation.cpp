@@ -405,7 +405,16 @@ ContinuationResult ArclengthContinuation::run() {
                                 out_.folds.size(), out_.failures));
     }
   }
-  return finish(fmt::format("stopped after the maximum of {} points", options_.max_points));
+  // Where it stopped, so that a sweep stuck on a tall branch (a lightly damped resonance with
+  // contact loss) says so.
+  const double reached = z_[n_] * omega_ref_;
+  return finish(fmt::format(
+      "stopped after the maximum of {} points at {:.6g} {}, {:.0f} % of the way from {:.6g} to "
+      "{:.6g} {}",
+      options_.max_points, reached / options_.display_scale, options_.display_unit,
+      100.0 * std::clamp(std::abs(reached - options_.start), 0.0, range_) / range_,
+      options_.start / options_.display_scale, options_.stop / options_.display_scale,
+      options_.display_unit));
 }
 
 }  // namespace

@@ -182,3 +182,56 @@ def test_non_convergence_is_reported_per_point_and_on_stderr(tmp_path):
     checks = rows(tmp_path / "b" / "newmark_checks.csv")
     assert checks and all(c["newmark_status"] == "max_periods" for c in checks)
     assert "Newmark check at 14000 rpm" in result.stderr and "max_periods" in result.stderr
+
+
+def pump_drive(folder, bearing_damping=None):
+    """A 29/47 spur pump drive (planar, 3 µm backlash, two TE orders) on stiff bearings, written
+    from the guide; without bearing damping its mesh-driven modes keep ζ ~ 1e-4 (mesh damping on
+    a small mesh strain)."""
+    text = ('[analysis]\nrun = ["nonlinear"]\n[output]\nplots = false\n'
+            '[gearbox]\nname = "pump drive 29/47"\ndofs = "planar"\n'
+            '[operating_point]\ninput = "motor"\noutput = "pump"\nspeed_rpm = 2900.0\n'
+            'torque = 60.0\n'
+            '[shafts.motor]\nsection_lengths = [0.2]\nouter_diameters = [0.035]\n'
+            '[shafts.pump]\nsection_lengths = [0.25]\nouter_diameters = [0.045]\n'
+            '[gears.pinion]\nshaft = "motor"\nteeth = 29\nmodule = 2.5e-3\nface_width = 0.025\n'
+            '[gears.wheel]\nshaft = "pump"\nteeth = 47\nmodule = 2.5e-3\nface_width = 0.025\n'
+            '[meshes.stage]\ngears = ["pinion", "wheel"]\ndamping_ratio = 0.04\n'
+            'backlash = 3e-6\nte_amplitudes = [4e-6, 1e-6]\n')
+    for name, shaft, k in [("motor_bearing", "motor", 3e8), ("pump_bearing", "pump", 5e8)]:
+        text += f'[bearings.{name}]\nshaft = "{shaft}"\nkyy = {k}\nkzz = {k}\n'
+        if bearing_damping:
+            text += f"cyy = {bearing_damping}\nczz = {bearing_damping}\n"
+    path = folder / "pump_drive.toml"
+    path.write_text(text)
+    return path
+
+
+def test_a_lightly_damped_resonance_is_named_before_the_sweep_and_where_it_stopped(tmp_path):
+    """Undamped bearings: the modes the mesh drives at 1490.5 and 1762.2 Hz keep ζ = 1.8e-4 and
+    1.2e-4, and the up sweep climbs the first one's resonance (harmonic 2 at 1541.9 rpm, p2p ~ 30
+    times the backlash) in steps of the speed resolution. The warning names them and the keys
+    that damp them before the run; the stop names where the sweep was. With bearing damping
+    (2e3 N s/m) neither: both sweeps complete."""
+    result = subprocess.run([CLI, "train", str(pump_drive(tmp_path)), "--out", str(tmp_path / "a"),
+                             "--set", "nonlinear.max_points=400", "--set",
+                             "nonlinear.direction=\"up\""], capture_output=True, text=True)
+    assert result.returncode == 1, result.stderr  # an incomplete sweep is a numerical failure
+    light = [l for l in result.stderr.splitlines()
+             if l.startswith("warning: nonlinear: the meshes excite")]
+    assert len(light) == 1, result.stderr
+    assert "1490.5 Hz (ζ = 0.00018, harmonic 2 at 1541.9 rpm)" in light[0]
+    assert "bearings.motor_bearing.cyy/czz" in light[0]
+    assert "bearings.pump_bearing.cyy/czz" in light[0]
+    info = json.loads((tmp_path / "a" / "summary.json").read_text())
+    message = info["results"]["nonlinear"]["sweeps"]["up"]["message"]
+    assert message.startswith("stopped after the maximum of 400 points at 15"), message
+    assert "% of the way from 1450 to 4350 rpm" in message
+    assert light[0][len("warning: "):] in info["warnings"]
+
+    damped = subprocess.run([CLI, "train", str(pump_drive(tmp_path, 2e3)), "--out",
+                             str(tmp_path / "b")], capture_output=True, text=True)
+    assert damped.returncode == 0, damped.stderr
+    assert "the meshes excite" not in damped.stderr
+    sweeps = json.loads((tmp_path / "b" / "summary.json").read_text())["results"]["nonlinear"]
+    assert sweeps["sweeps"]["up"]["completed"] and sweeps["sweeps"]["down"]["completed"]
