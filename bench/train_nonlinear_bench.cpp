@@ -212,5 +212,63 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
 }
 BENCHMARK(BM_TrainStabilityCostPerPoint)->Iterations(1)->Unit(benchmark::kSecond);
 
+// Hill's method below what the balance's harmonics resolve (issue 39): the 3-planet stage at
+// 1.0, 1.3 and 1.7 kHz base, where a mode lies beyond 15 ω₀/2, so the classification projects
+// with 29, 22, 17 harmonics (TrainHarmonicBalance::classifyHill), against the Arnoldi run at
+// H = 15 it took before, the monodromy and the point's Newton solve from the linear guess.
+// Counters: mean thread CPU time per point [ms] over the three frequencies and ratios.
+void BM_TrainHillBelowTheResolvedFrequency(benchmark::State& state) {
+  const GearTrainModel model(testing::nonlinear::planetary(4e-6));
+  TrainHarmonicBalance hbm(model, testing::nonlinear::planetaryHbmOptions());
+  const auto cpu = [] {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  };
+  constexpr int kRepeat = 20;
+  double newton = 0.0, monodromy = 0.0, hill = 0.0, arnoldi = 0.0;
+  int points = 0;
+  for (auto _ : state) {
+    for (const double hz : {1000.0, 1300.0, 1700.0}) {
+      HarmonicBalancePoint p;
+      p.omega = 2.0 * std::numbers::pi * hz;
+      p.q = hbm.startingGuess(p.omega);
+      const double c0 = cpu();
+      hbm.solve(p);
+      newton += cpu() - c0;
+      if (!p.converged) continue;
+      ++points;
+      const double c1 = cpu();
+      for (int k = 0; k < kRepeat; ++k) {
+        HarmonicBalancePoint h = p;
+        hbm.classify(h, StabilityMethod::kMonodromy, false);
+      }
+      const double c2 = cpu();
+      for (int k = 0; k < kRepeat; ++k) {
+        HarmonicBalancePoint h = p;
+        hbm.classify(h, StabilityMethod::kHill, false);
+      }
+      const double c3 = cpu();
+      const detail::TrainHillProblem problem = hbm.hillProblem(p, false);
+      const double c4 = cpu();
+      for (int k = 0; k < kRepeat; ++k) {
+        benchmark::DoNotOptimize(detail::trainHillExponents(problem).exponents.front());
+      }
+      arnoldi += cpu() - c4;
+      monodromy += c2 - c1;
+      hill += c3 - c2;
+    }
+  }
+  const double per = 1e3 / (static_cast<double>(points) * kRepeat);
+  state.counters["points"] = points;
+  state.counters["newton_cpu_ms"] = 1e3 * newton / points;
+  state.counters["monodromy_cpu_ms"] = per * monodromy;
+  state.counters["hill_cpu_ms"] = per * hill;
+  state.counters["arnoldi_cpu_ms"] = per * arnoldi;
+  state.counters["hill_over_arnoldi"] = hill / arnoldi;
+  state.counters["hill_over_monodromy"] = hill / monodromy;
+}
+BENCHMARK(BM_TrainHillBelowTheResolvedFrequency)->Iterations(1)->Unit(benchmark::kSecond);
+
 }  // namespace
 }  // namespace geardyn

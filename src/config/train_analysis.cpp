@@ -99,8 +99,9 @@ void addNonlinearSection(config::ConfigSchema& schema) {
           "the monodromy matrix of the variational equation by Newmark over the N samples (the "
           "default), or Hill's method (Floquet exponents from the Hill matrix on the elastic "
           "subspace, its low-rank periodic part by Woodbury: its resolvent applied to a Dirac "
-          "comb, or its eigenvalues by shift-invert Arnoldi for a train with a mode faster than "
-          "half the harmonics resolve; docs/theory/nonlinear_gear_trains.md)");
+          "comb, with more harmonics than the balance where its fastest mode needs them, or its "
+          "eigenvalues by shift-invert Arnoldi where that costs less; "
+          "docs/theory/nonlinear_gear_trains.md)");
   schema.real("nonlinear.max_step_rpm")
       .unit("rpm")
       .positive()

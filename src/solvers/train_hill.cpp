@@ -62,6 +62,7 @@ TrainHillResult TrainHillSolver::arnoldi(const TrainHillProblem& problem) {
   const Eigen::Index n = problem.M.rows(), N = op.rows();
   TrainHillResult out;
   out.reused_jacobian = op.reusesJacobian();
+  out.harmonics = problem.harmonics;
   // One Arnoldi run without restarts, stopped when its converged Ritz values hold the 2n strip
   // values (strip_arnoldi.h); Spectra's restarted passes below only when it gives up.
   StripArnoldiOptions fast;
@@ -153,7 +154,13 @@ Eigen::MatrixXd trainHillMatrix(const TrainHillProblem& p) {
 namespace geardyn {
 
 detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalancePoint& point,
-                                                           bool samples_current) {
+                                                           bool samples_current, int harmonics) {
+  const int H = harmonics > 0 ? harmonics : h_;
+  if (H > samples_ / 4) {
+    throw std::invalid_argument(fmt::format(
+        "Hill's method: {} harmonics from {} samples (at most N/4: the slopes' 2H alias)", H,
+        samples_));
+  }
   if (!samples_current) meshForceSamples(point.q);
   detail::TrainHillProblem p;
   const double speed = inputSpeed(point.omega);
@@ -162,14 +169,14 @@ detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalance
   p.C = elastic_.transpose() * model_.dampingAt(speed) * elastic_;
   p.V = elastic_.transpose() * V_;
   p.omega = point.omega;
-  p.harmonics = h_;
+  p.harmonics = H;
   std::vector<double> Dt, Et;
   const auto add = [&](int i, int j, const double* slope) {
     std::copy(slope, slope + samples_, real_buffer_);
     fftw_execute(forward_plan_);
-    detail::aftSlopeTables(complex_buffer_, samples_, h_, Dt, Et);
-    detail::TrainHillProblem::Block block{i, j, Eigen::MatrixXd(n_, n_)};
-    detail::aftJacobian(Dt, Et, h_, block.galerkin);
+    detail::aftSlopeTables(complex_buffer_, samples_, H, Dt, Et);
+    detail::TrainHillProblem::Block block{i, j, Eigen::MatrixXd(2 * H + 1, 2 * H + 1)};
+    detail::aftJacobian(Dt, Et, H, block.galerkin);
     p.slopes.push_back(std::move(block));
   };
   for (int m = 0; m < meshes_; ++m) add(m, m, slope_.col(m).data());
@@ -177,8 +184,8 @@ detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalance
   // The balance's last factors, if they are of this Jacobian: factorised at this ω, with every
   // sample's slope as now (a piecewise-linear contact law's Jacobian changes only where a
   // sample changes contact state, so Newton's last step usually leaves it as it is).
-  if (factored_omega_ == point.omega && cached_omega_ == point.omega && factored_slope_ == slope_ &&
-      factored_bearing_slope_ == bearing_slope_) {
+  if (H == h_ && factored_omega_ == point.omega && cached_omega_ == point.omega &&
+      factored_slope_ == slope_ && factored_bearing_slope_ == bearing_slope_) {
     p.jacobian = &jacobian_lu_;
     p.jacobian_blocks = &B_;
   }
@@ -196,10 +203,20 @@ const Eigen::PartialPivLU<Eigen::MatrixXd>& TrainHarmonicBalance::factorJacobian
 }
 
 void TrainHarmonicBalance::classifyHill(HarmonicBalancePoint& point, bool samples_current) {
-  // The resolvent projection; the Arnoldi run on the strip when it declines.
+  // The resolvent projection; where the balance's H does not resolve the train's fastest mode,
+  // the projection with as many harmonics as do (from the same samples, at most N/4) when that
+  // costs less than the Arnoldi run; the Arnoldi run on the strip otherwise, or when the
+  // projection declines for another reason.
   const detail::TrainHillProblem problem = hillProblem(point, samples_current);
   if (!hill_) hill_ = std::make_unique<detail::TrainHillSolver>();
   std::optional<detail::TrainHillResult> projected = hill_->projection(problem);
+  const int resolving = hill_->resolvingHarmonics();
+  if (!projected && resolving > h_ && resolving <= samples_ / 4 &&
+      detail::TrainHillSolver::extensionPays(static_cast<int>(problem.M.rows()), r_, h_,
+                                             resolving)) {
+    const detail::TrainHillProblem extended = hillProblem(point, true, resolving);
+    projected = hill_->projection(extended);
+  }
   const detail::TrainHillResult hill = projected ? std::move(*projected) : hill_->arnoldi(problem);
   if (hill.exponents.empty()) {  // cannot be (the strip's central copies are nearest 0)
     throw std::runtime_error(

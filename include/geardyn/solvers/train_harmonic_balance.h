@@ -101,8 +101,11 @@ class TrainHarmonicBalance final : public ContinuationProblem {
   const Eigen::PartialPivLU<Eigen::MatrixXd>& factorJacobian(const Eigen::MatrixXd& dr_du) override;
   /// The variational equation at a solution on the elastic subspace, for Hill's method
   /// (detail/train_hill.h): M, C, K̄, V and the Galerkin matrices of the slopes at the samples,
-  /// and the last factorJacobian's factors when they are of the same ω and slopes.
-  detail::TrainHillProblem hillProblem(const HarmonicBalancePoint& point, bool samples_current);
+  /// and the last factorJacobian's factors when they are of the same ω and slopes. `harmonics`:
+  /// Hill's truncation H (0: the balance's; more resolves faster modes, from the same samples:
+  /// at most N/4, so that the slopes' 2H harmonics do not alias).
+  detail::TrainHillProblem hillProblem(const HarmonicBalancePoint& point, bool samples_current,
+                                       int harmonics = 0);
 
   /// Every DOF: real Fourier coefficients over the base period, column 0 the mean, 2h − 1 and 2h
   /// the cosine and sine of harmonic h (rows: DOFs), q(τ) = Σ columns · (1, cos hτ, sin hτ).

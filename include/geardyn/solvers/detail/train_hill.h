@@ -69,6 +69,10 @@ struct TrainHillResult {
   int operations = 0;      ///< applications of (𝓗 − σ)⁻¹ (columns, for the projection)
   bool projected = false;  ///< by trainHillProjection (all 2n exponents; no selection)
   bool reused_jacobian = false;  ///< the capacitance was the balance's (TrainHillProblem::jacobian)
+  /// Exponents the projection kept unpolished: damped by more than the polish's reach (0.1 ω),
+  /// where its Newton did not converge; stable whatever their truncation error.
+  int unpolished = 0;
+  int harmonics = 0;  ///< Hill's truncation H the exponents come from
 };
 
 /// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0: the
@@ -113,12 +117,21 @@ class TrainHillSolver {
 
   /// trainHillProjection with this state's buffers.
   std::optional<TrainHillResult> projection(const TrainHillProblem& problem);
+  /// The truncation H the last projection needed to resolve the mean system's fastest mode:
+  /// more than the problem's when that is why it declined (then a problem with these many
+  /// harmonics may be projected instead), the problem's otherwise.
+  int resolvingHarmonics() const { return resolving_harmonics_; }
+  /// Whether projecting with `extended` harmonics costs fewer floating-point operations than
+  /// the Arnoldi run at `harmonics` (n DOFs, r nonlinear coordinates), by the dominant terms of
+  /// each (train_hill_projection.cpp): a small r (a capacitance r(2H + 1) wide) extends far.
+  static bool extensionPays(int n, int r, int harmonics, int extended);
   /// trainHillExponents with this state's operator.
   TrainHillResult arnoldi(const TrainHillProblem& problem);
 
  private:
   std::unique_ptr<TrainHillShiftSolve> op_;
   Eigen::MatrixXd first_, second_, third_;  // 𝓗⁻¹𝛅, 𝓗⁻²𝛅 and C 𝓗⁻³𝛅
+  int resolving_harmonics_ = 0;
 };
 
 /// The dense real Hill matrix (2n(2H + 1) square; coefficient-major) for tests, similar to 𝓗
