@@ -156,7 +156,7 @@ namespace geardyn {
 detail::TrainHillProblem TrainHarmonicBalance::hillProblem(const HarmonicBalancePoint& point,
                                                            bool samples_current, int harmonics) {
   const int H = harmonics > 0 ? harmonics : h_;
-  if (H > samples_ / 4) {
+  if (H > h_ && H > samples_ / 4) {  // (the balance's own H is as its Jacobian has it)
     throw std::invalid_argument(fmt::format(
         "Hill's method: {} harmonics from {} samples (at most N/4: the slopes' 2H alias)", H,
         samples_));

@@ -114,6 +114,7 @@ void TrainHillShiftSolve::set_shift(double sigma) {
 bool TrainHillShiftSolve::jacobianAgrees() const {
   const std::vector<Eigen::MatrixXcd>* B = p_->jacobian_blocks;
   if (!B || static_cast<int>(B->size()) != h_ + 1) return false;
+  if (p_->jacobian->rows() != static_cast<Eigen::Index>(r_) * nc_) return false;
   for (int h = 0; h <= h_; ++h) {
     const Eigen::MatrixXcd& b = (*B)[h];
     if (b.rows() != r_ || b.cols() != r_) return false;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
 
 #include "geardyn/solvers/continuation.h"
 #include "geardyn/solvers/detail/train_hill.h"
@@ -77,6 +78,26 @@ TEST(TrainHillExtended, ExtendsWhereItCostsLessThanTheArnoldiRun) {
   EXPECT_TRUE(detail::TrainHillSolver::extensionPays(17, 6, 15, 29));
   EXPECT_FALSE(detail::TrainHillSolver::extensionPays(17, 6, 15, 60));
   EXPECT_FALSE(detail::TrainHillSolver::extensionPays(40, 20, 15, 30));
+}
+
+/// Fewer than 4H samples (allowed: N > 2H): the balance's own H is classified as its Jacobian
+/// has it, and only an extension beyond N/4 is refused (the slopes' 2H harmonics would alias).
+TEST(TrainHillExtended, FewSamplesClassifyAtTheBalancesHarmonics) {
+  const GearTrainModel model(planetary(4e-6));
+  TrainHarmonicBalanceOptions options = planetaryHbmOptions();
+  options.samples = 40;  // N/4 = 10 < H = 15
+  TrainHarmonicBalance hbm(model, options);
+  HarmonicBalancePoint p;
+  p.omega = 2.0 * std::numbers::pi * 7000.0;
+  p.q = hbm.startingGuess(p.omega);
+  hbm.solve(p);
+  ASSERT_TRUE(p.converged);
+  HarmonicBalancePoint hill = p, monodromy = p;
+  EXPECT_NO_THROW(hbm.classify(hill, StabilityMethod::kHill, false));
+  hbm.classify(monodromy, StabilityMethod::kMonodromy, false);
+  EXPECT_EQ(hill.stable, monodromy.stable);
+  EXPECT_EQ(hbm.hillProblem(p, false).harmonics, options.harmonics);
+  EXPECT_THROW(hbm.hillProblem(p, false, 16), std::invalid_argument);
 }
 
 }  // namespace
