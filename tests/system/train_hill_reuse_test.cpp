@@ -83,8 +83,8 @@ TEST(TrainHillReuse, RefusesFactorsOfAnotherJacobian) {
   HarmonicBalancePoint p = solved(hbm, 7000.0);
   ASSERT_TRUE(p.converged);
   ASSERT_NE(hbm.hillProblem(p, true).jacobian, nullptr);
-  // Other slopes at the same ω: the response without its fluctuation (y = −e: the 3 and 2 µm
-  // errors against 4 µm backlash open contact where the solution keeps it, and the mean load).
+  // Other slopes at the same ω: q = 0, no deflection at all (y = −e: the 3 and 2 µm errors
+  // open contact where the loaded solution keeps it).
   HarmonicBalancePoint other = p;
   other.q.setZero();
   EXPECT_EQ(hbm.hillProblem(other, false).jacobian, nullptr);
