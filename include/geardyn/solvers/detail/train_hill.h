@@ -69,9 +69,6 @@ struct TrainHillResult {
   int operations = 0;      ///< applications of (𝓗 − σ)⁻¹ (columns, for the projection)
   bool projected = false;  ///< by trainHillProjection (all 2n exponents; no selection)
   bool reused_jacobian = false;  ///< the capacitance was the balance's (TrainHillProblem::jacobian)
-  /// Exponents the projection kept unpolished: damped by more than the polish's reach (0.1 ω),
-  /// where its Newton did not converge; stable whatever their truncation error.
-  int unpolished = 0;
   int harmonics = 0;  ///< Hill's truncation H the exponents come from
 };
 
