@@ -378,10 +378,13 @@ std::vector<SweepRun> runSweeps(const GearTrainModel& model, TrainHarmonicBalanc
   std::vector<double> progress_done(done.size(), 0.0);
   const ProgressCallback both =
       parallel ? context.progressFor("train: nonlinear sweep up and down", "rpm") : nullptr;
-  const auto run = [&](std::size_t k, TrainHarmonicBalance& balance) {
+  const auto run = [&](std::size_t k, TrainHarmonicBalance& balance,
+                       const Eigen::VectorXd& guess = Eigen::VectorXd()) {
     const auto start = Clock::now();
     ContinuationOptions o = sweep;
     if (done[k].which == "down") std::swap(o.start, o.stop);
+    o.initial_guess = guess;
+    done[k].rows.clear();
     const ProgressCallback progress =
         parallel ? both : context.progressFor("train: nonlinear sweep " + done[k].which, "rpm");
     if (progress && parallel) {
@@ -400,8 +403,23 @@ std::vector<SweepRun> runSweeps(const GearTrainModel& model, TrainHarmonicBalanc
     }
     done[k].seconds = secondsSince(start);
   };
+  // A sweep without a solution at its start (Newton from the closed-contact guess lost among
+  // contact-loss branches) starts again from the other sweep's last solution, when that one
+  // reached the far end of the range: a solution at (just past) this start.
+  const auto restartFromTheOther = [&]() {
+    if (done.size() != 2) return;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const ContinuationResult &mine = done[k].run, &other = done[1 - k].run;
+      if (!mine.points.empty() || !other.completed || other.points.empty()) continue;
+      const std::string first_message = mine.message;
+      run(k, hbm, other.points.back().solution.q);
+      done[k].run.message = fmt::format("{} (from the {} sweep's last solution: {})",
+                                        done[k].run.message, done[1 - k].which, first_message);
+    }
+  };
   if (!parallel) {
     for (std::size_t k = 0; k < done.size(); ++k) run(k, hbm);
+    restartFromTheOther();
     return done;
   }
   std::exception_ptr failure;
@@ -420,6 +438,7 @@ std::vector<SweepRun> runSweeps(const GearTrainModel& model, TrainHarmonicBalanc
   }
   down.join();
   if (failure) std::rethrow_exception(failure);
+  restartFromTheOther();
   return done;
 }
 

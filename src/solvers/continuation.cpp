@@ -260,7 +260,8 @@ class ArclengthContinuation {
 bool ArclengthContinuation::start() {
   HarmonicBalancePoint first;
   first.omega = options_.start;
-  first.q = problem_.startingGuess(first.omega);
+  first.q = options_.initial_guess.size() == n_ ? options_.initial_guess
+                                                : problem_.startingGuess(first.omega);
   problem_.solve(first);
   if (!first.converged) {
     out_.message =

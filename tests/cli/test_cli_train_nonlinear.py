@@ -235,3 +235,31 @@ def test_a_lightly_damped_resonance_is_named_before_the_sweep_and_where_it_stopp
     assert "the meshes excite" not in damped.stderr
     sweeps = json.loads((tmp_path / "b" / "summary.json").read_text())["results"]["nonlinear"]
     assert sweeps["sweeps"]["up"]["completed"] and sweeps["sweeps"]["down"]["completed"]
+
+
+def test_a_sweep_without_a_solution_at_its_start_starts_from_the_other_sweeps_end(tmp_path):
+    """The planetary example with 4 planets and the carrier-frame terms over 3000-12000 rpm: at
+    12000 rpm, beside two contact-loss loops, Newton from the closed-contact guess does not
+    converge (residual 0.047), so the down sweep had no first point (exit 1). It now starts
+    from the up sweep's last solution and finds the up sweep's four folds (within 15 rpm)."""
+    text = PLANETARY.read_text()
+    for old, new in [("planets = 3", "planets = 4"),
+                     ("carrier_frame_terms = false", "carrier_frame_terms = true"),
+                     ("speed_min_rpm = 13000.0", "speed_min_rpm = 3000.0"),
+                     ("speed_max_rpm = 17500.0", "speed_max_rpm = 12000.0")]:
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path / "four_planets.toml"
+    path.write_text(text)
+    result = subprocess.run([CLI, "train", str(path), "--out", str(tmp_path / "out"),
+                             *quick("--set", "nonlinear.newmark_speeds_rpm=[]")],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    info = json.loads((tmp_path / "out" / "summary.json").read_text())["results"]["nonlinear"]
+    down = info["sweeps"]["down"]
+    assert down["completed"] and down["points"] > 0
+    assert "from the up sweep's last solution: no solution at the start frequency" in down["message"]
+    folds = {s: sorted(b["speed_rpm"] for b in info["folds"] if b["sweep"] == s)
+             for s in ("up", "down")}
+    assert len(folds["up"]) == 4 and len(folds["down"]) == 4, folds
+    assert all(abs(u - d) < 15.0 for u, d in zip(folds["up"], folds["down"])), folds

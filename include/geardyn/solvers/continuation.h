@@ -117,6 +117,9 @@ struct ContinuationOptions {
   /// ω reversal that confirms a fold [rad/s]; 0: 1e-3 of the sweep range.
   double fold_tolerance = 0.0;
   int max_points = 20000;
+  /// The Fourier coefficients Newton starts from at `start` (problem.size() long); empty: the
+  /// problem's startingGuess (every contact closed).
+  Eigen::VectorXd initial_guess;
   bool stability = true;
   StabilityMethod stability_method = StabilityMethod::kMonodromy;
   ProgressCallback progress;  ///< (|ω − start|, |stop − start|) after every point [rad/s]
