@@ -69,7 +69,7 @@ struct TrainHillResult {
   int operations = 0;      ///< applications of (𝓗 − σ)⁻¹ (columns, for the projection)
   bool projected = false;  ///< by trainHillProjection (all 2n exponents; no selection)
   bool reused_jacobian = false;  ///< the capacitance was the balance's (TrainHillProblem::jacobian)
-  int harmonics = 0;  ///< Hill's truncation H the exponents come from
+  int harmonics = 0;             ///< Hill's truncation H the exponents come from
 };
 
 /// The Floquet exponents of the Hill eigenproblem by shift-invert Arnoldi at σ = 0: the
@@ -96,9 +96,11 @@ TrainHillResult trainHillExponents(const TrainHillProblem& problem);
 /// time-invariant A (then M_p = Σ_{|k|<=H}(A − ikω)⁻ᵖ): each λ is polished by Newton on
 /// f₃(λ)/f₂(λ) = ν, f_p(λ) = Σ_{|k|<=H}(λ − ikω)⁻ᵖ, ν the small eigenvalue. Exponents in the
 /// strip |Im| <= ω/2, largest real part first. std::nullopt when the projection cannot resolve
-/// them: M₂ = g₂(B) near singular (reciprocal condition below 1e-9: an exponent with
-/// |Re λ| T beyond about 20, whose csch² underflows against the others'), a multiplier at 0 or
-/// ∞, or a polish that does not converge; trainHillExponents is then the method.
+/// them: a mean-system mode beyond Hω/2 (TrainHillSolver::resolvingHarmonics says how many
+/// harmonics would), M₂ = g₂(B) near singular (reciprocal condition below 1e-9: an exponent
+/// with |Re λ| T beyond about 20, whose csch² underflows against the others'), a multiplier at
+/// 0 or ∞, a polish that does not converge, or exponents whose sum is more than 0.02 ω from
+/// −tr(M⁻¹C) (Liouville's formula); trainHillExponents is then the method.
 std::optional<TrainHillResult> trainHillProjection(const TrainHillProblem& problem);
 
 class TrainHillShiftSolve;
