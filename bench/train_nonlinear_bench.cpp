@@ -117,6 +117,14 @@ BENCHMARK(BM_TrainSweepHbmAgainstNewmark)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
+/// This thread's CPU time [s]: on the shared machine the wall clock of a millisecond section
+/// counts other processes' time slices, its CPU time does not.
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // Stability cost per point against the point's Newton solve (issue 17: stability at most 2x the
 // Newton solve; issue 39: Hill's method too), on the 3-planet stage at H = 15, N = 256: at every
 // 8th point of the 4–13 kHz sweep, Newton at the point's frequency from the previous point's
@@ -133,13 +141,6 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
   const ContinuationResult sweep =
       continueInFrequency(hbm, testing::nonlinear::planetarySweep(false));
   using Clock = std::chrono::steady_clock;
-  // This thread's CPU time [s] beside the wall clock: on the shared machine the wall clock of a
-  // millisecond section counts other processes' time slices, its CPU time does not.
-  const auto cpu = [] {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-  };
   double newton = 0.0, monodromy = 0.0, hill = 0.0;
   double newton_cpu = 0.0, monodromy_cpu = 0.0, hill_cpu = 0.0, arnoldi_cpu = 0.0;
   int points = 0, iterations = 0, operations = 0, dimension = 0, restart_free = 0, projected = 0;
@@ -151,25 +152,25 @@ void BM_TrainStabilityCostPerPoint(benchmark::State& state) {
       HarmonicBalancePoint p;
       p.omega = sweep.points[i].solution.omega;
       p.q = sweep.points[i - 1].solution.q;
-      const double c0 = cpu();
+      const double c0 = threadCpuSeconds();
       const auto t0 = Clock::now();
       hbm.solve(p);
       const auto t1 = Clock::now();
-      const double c1 = cpu();
+      const double c1 = threadCpuSeconds();
       if (!p.converged) continue;
       HarmonicBalancePoint h = p;
       hbm.classify(p, StabilityMethod::kMonodromy, true);
-      const double c2 = cpu();
+      const double c2 = threadCpuSeconds();
       const auto t2 = Clock::now();
       // The samples are the converged point's (Newton's last residual; the monodromy used them
       // too), as a continuation classifies its corrected points.
       hbm.classify(h, StabilityMethod::kHill, true);
       const auto t3 = Clock::now();
-      const double c3 = cpu();
+      const double c3 = threadCpuSeconds();
       const detail::TrainHillProblem problem = hbm.hillProblem(h, false);
-      const double c4 = cpu();
+      const double c4 = threadCpuSeconds();
       const detail::TrainHillResult r = detail::trainHillExponents(problem);
-      arnoldi_cpu += cpu() - c4;
+      arnoldi_cpu += threadCpuSeconds() - c4;
       newton_cpu += c1 - c0;
       monodromy_cpu += c2 - c1;
       hill_cpu += c3 - c2;
@@ -225,11 +226,6 @@ void BM_TrainHillBelowTheResolvedFrequency(benchmark::State& state) {
   options.harmonics = 15;
   options.samples = 256;
   TrainHarmonicBalance hbm(model, options);
-  const auto cpu = [] {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-  };
   constexpr int kRepeat = 50;
   double newton = 0.0, monodromy = 0.0, hill = 0.0, arnoldi = 0.0;
   int points = 0;
@@ -238,28 +234,28 @@ void BM_TrainHillBelowTheResolvedFrequency(benchmark::State& state) {
       HarmonicBalancePoint p;
       p.omega = hbm.baseFrequency(rpm * std::numbers::pi / 30.0);
       p.q = hbm.startingGuess(p.omega);
-      const double c0 = cpu();
+      const double c0 = threadCpuSeconds();
       hbm.solve(p);
-      newton += cpu() - c0;
+      newton += threadCpuSeconds() - c0;
       if (!p.converged) continue;
       ++points;
-      const double c1 = cpu();
+      const double c1 = threadCpuSeconds();
       for (int k = 0; k < kRepeat; ++k) {
         HarmonicBalancePoint h = p;
         hbm.classify(h, StabilityMethod::kMonodromy, false);
       }
-      const double c2 = cpu();
+      const double c2 = threadCpuSeconds();
       for (int k = 0; k < kRepeat; ++k) {
         HarmonicBalancePoint h = p;
         hbm.classify(h, StabilityMethod::kHill, false);
       }
-      const double c3 = cpu();
+      const double c3 = threadCpuSeconds();
       const detail::TrainHillProblem problem = hbm.hillProblem(p, false);
-      const double c4 = cpu();
+      const double c4 = threadCpuSeconds();
       for (int k = 0; k < kRepeat; ++k) {
         benchmark::DoNotOptimize(detail::trainHillExponents(problem).exponents.front());
       }
-      arnoldi += cpu() - c4;
+      arnoldi += threadCpuSeconds() - c4;
       monodromy += c2 - c1;
       hill += c3 - c2;
     }

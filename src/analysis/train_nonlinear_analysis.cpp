@@ -161,7 +161,6 @@ Json deriveTrainSteps(ContinuationOptions& sweep, const std::vector<TrainMode>& 
 std::string lightDampingWarning(const GearTrainModel& model, const std::vector<TrainMode>& modes,
                                 const ContinuationOptions& sweep, int H, double scale) {
   constexpr double kLightDamping = 1e-3;
-  constexpr double kShare = 0.1;  // elements and meshes named for a mode (as for undamped ones)
   std::vector<std::string> listed, keys;
   for (const auto& [resonant, order, energy] : excitedResonances(modes, sweep, H)) {
     const TrainMode& mode = *resonant;
@@ -169,15 +168,7 @@ std::string lightDampingWarning(const GearTrainModel& model, const std::vector<T
     const double w = kTwoPi * mode.frequency;
     listed.push_back(fmt::format("{:.1f} Hz (ζ = {:.2g}, harmonic {} at {:.1f} rpm)",
                                  mode.frequency, mode.damping_ratio, order, w / order / scale));
-    TrainUndampedMode shares{mode.frequency, true, {}, {}};
-    for (std::size_t e = 0; e < model.elements().size(); ++e) {
-      if (mode.element_strain_energy[e] >= kShare)
-        shares.elements.push_back(model.elements()[e].name);
-    }
-    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-      if (mode.mesh_strain_energy[m] >= kShare) shares.meshes.push_back(model.meshes()[m].name);
-    }
-    for (const std::string& key : dampingKeysOf(model, shares)) {
+    for (const std::string& key : dampingKeysOf(model, dampingPlacesOf(model, mode, true))) {
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
     }
   }

@@ -73,6 +73,7 @@ TruncatedSums truncatedSums(Complex z, double omega, int harmonics) {
 struct MeanModes {
   std::vector<Complex> exponents;
   double bound = 0.0;
+  double damping_trace = 0.0;  ///< tr(M⁻¹C) = tr(L⁻¹CL⁻ᵀ) [1/s] (Liouville's formula)
 };
 
 MeanModes meanModes(const TrainHillProblem& p) {
@@ -105,6 +106,7 @@ MeanModes meanModes(const TrainHillProblem& p) {
     out.exponents.push_back(-half - Complex(-root.imag(), root.real()));
     largest = std::max(largest, w2);
   }
+  out.damping_trace = damping.trace();
   const double c = damping.norm();
   out.bound = 0.5 * (c + std::sqrt(c * c + 4.0 * largest));
   return out;
@@ -240,8 +242,7 @@ std::optional<TrainHillResult> TrainHillSolver::projection(const TrainHillProble
   }
   double sum = 0.0;
   for (const Complex& l : out.exponents) sum += l.real();
-  const double trace = problem.M.llt().solve(problem.C).trace();
-  if (!(std::abs(sum + trace) <= kLiouvilleTolerance * omega)) return std::nullopt;
+  if (!(std::abs(sum + mean.damping_trace) <= kLiouvilleTolerance * omega)) return std::nullopt;
   std::sort(out.exponents.begin(), out.exponents.end(),
             [](const Complex& a, const Complex& b) { return a.real() > b.real(); });
   return out;

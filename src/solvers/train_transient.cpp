@@ -41,23 +41,28 @@ double modalExcitation(const GearTrainModel& model, const TrainMode& mode) {
 }
 }  // namespace
 
+TrainUndampedMode dampingPlacesOf(const GearTrainModel& model, const TrainMode& mode,
+                                  bool excited) {
+  constexpr double kShare = 0.1;  // elements and meshes named for a mode
+  TrainUndampedMode u{mode.frequency, excited, {}, {}};
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    if (mode.element_strain_energy[e] >= kShare) u.elements.push_back(model.elements()[e].name);
+  }
+  for (std::size_t m = 0; m < model.meshes().size(); ++m) {
+    if (mode.mesh_strain_energy[m] >= kShare) u.meshes.push_back(model.meshes()[m].name);
+  }
+  return u;
+}
+
 std::vector<TrainUndampedMode> trainUndampedModes(const GearTrainModel& model,
                                                   const std::vector<TrainMode>& modes) {
-  constexpr double kShare = 0.1;  // elements named for an undamped mode
   double highest = 0.0;
   for (const TrainMode& m : modes) highest = std::max(highest, m.frequency);
   std::vector<TrainUndampedMode> out;
   for (const TrainMode& mode : modes) {
     if (mode.divergent || mode.frequency <= 1e-6 * highest) continue;  // rigid or divergent
     if (std::abs(mode.damping_ratio) > kUndamped) continue;
-    TrainUndampedMode u{mode.frequency, modalExcitation(model, mode) > kDecay, {}, {}};
-    for (std::size_t e = 0; e < model.elements().size(); ++e) {
-      if (mode.element_strain_energy[e] >= kShare) u.elements.push_back(model.elements()[e].name);
-    }
-    for (std::size_t m = 0; m < model.meshes().size(); ++m) {
-      if (mode.mesh_strain_energy[m] >= kShare) u.meshes.push_back(model.meshes()[m].name);
-    }
-    out.push_back(std::move(u));
+    out.push_back(dampingPlacesOf(model, mode, modalExcitation(model, mode) > kDecay));
   }
   return out;
 }

@@ -50,6 +50,16 @@ inline void expectJacobianMatchesCentralDifferences(TrainHarmonicBalance& hbm,
   EXPECT_LT((dw - (rp - rm) / (2 * h)).norm(), 1e-5 * dw.norm()) << label;
 }
 
+/// The periodic solution at base frequency ω [rad/s] by Newton from the closed-contact guess
+/// (point.converged says whether it was found).
+inline HarmonicBalancePoint solvedFromTheLinearGuess(TrainHarmonicBalance& hbm, double omega) {
+  HarmonicBalancePoint p;
+  p.omega = omega;
+  p.q = hbm.startingGuess(omega);
+  hbm.solve(p);
+  return p;
+}
+
 /// Continuation in the base (mesh) frequency from `from` to `to` [Hz], without stability, the
 /// steps derived for ζ = 0.05 (deriveContinuationSteps).
 inline ContinuationResult sweepUp(TrainHarmonicBalance& hbm, double from, double to) {

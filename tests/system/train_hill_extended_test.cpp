@@ -43,10 +43,8 @@ TEST(TrainHillExtended, ResolvesTheFastestModeWithMoreHarmonics) {
   TrainHarmonicBalance hbm(model, options);
   detail::TrainHillSolver solver;
   for (const double rpm : {1450.0, 1535.0, 1600.0, 1700.0}) {
-    HarmonicBalancePoint p;
-    p.omega = hbm.baseFrequency(rpm * std::numbers::pi / 30.0);
-    p.q = hbm.startingGuess(p.omega);
-    hbm.solve(p);
+    const HarmonicBalancePoint p =
+        solvedFromTheLinearGuess(hbm, hbm.baseFrequency(rpm * std::numbers::pi / 30.0));
     ASSERT_TRUE(p.converged) << rpm;
     HarmonicBalancePoint monodromy = p, hill = p;
     hbm.classify(monodromy, StabilityMethod::kMonodromy, false);
@@ -97,10 +95,8 @@ TEST(TrainHillExtended, LiouvillesFormulaDeclinesAProjectionThatIsOff) {
   replace("carrier_frame_terms = false", "carrier_frame_terms = true");
   const GearTrainModel model(specOf(text, "geardyn_hill_four_planets.toml"));
   TrainHarmonicBalance hbm(model, planetaryHbmOptions());
-  HarmonicBalancePoint p;
-  p.omega = hbm.baseFrequency(1450.0 * std::numbers::pi / 30.0);
-  p.q = hbm.startingGuess(p.omega);
-  hbm.solve(p);
+  const HarmonicBalancePoint p =
+      solvedFromTheLinearGuess(hbm, hbm.baseFrequency(1450.0 * std::numbers::pi / 30.0));
   ASSERT_TRUE(p.converged);
   detail::TrainHillSolver solver;
   const detail::TrainHillProblem problem = hbm.hillProblem(p, false);
@@ -131,10 +127,7 @@ TEST(TrainHillExtended, FewSamplesClassifyAtTheBalancesHarmonics) {
   TrainHarmonicBalanceOptions options = planetaryHbmOptions();
   options.samples = 40;  // N/4 = 10 < H = 15
   TrainHarmonicBalance hbm(model, options);
-  HarmonicBalancePoint p;
-  p.omega = 2.0 * std::numbers::pi * 7000.0;
-  p.q = hbm.startingGuess(p.omega);
-  hbm.solve(p);
+  const HarmonicBalancePoint p = solvedFromTheLinearGuess(hbm, 2.0 * std::numbers::pi * 7000.0);
   ASSERT_TRUE(p.converged);
   HarmonicBalancePoint hill = p, monodromy = p;
   EXPECT_NO_THROW(hbm.classify(hill, StabilityMethod::kHill, false));

@@ -26,11 +26,7 @@ using testing::farthestExponent;
 
 /// A converged point of the planetary stage (backlash 4 µm) at `hz` [Hz] base frequency.
 HarmonicBalancePoint solved(TrainHarmonicBalance& hbm, double hz) {
-  HarmonicBalancePoint p;
-  p.omega = 2.0 * std::numbers::pi * hz;
-  p.q = hbm.startingGuess(p.omega);
-  hbm.solve(p);
-  return p;
+  return solvedFromTheLinearGuess(hbm, 2.0 * std::numbers::pi * hz);
 }
 
 detail::TrainHillProblem withoutFactors(detail::TrainHillProblem p) {

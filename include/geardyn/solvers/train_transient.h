@@ -45,6 +45,10 @@ struct TrainTransient {
   std::vector<TrainUndampedMode> undamped;
 };
 
+/// `mode` with the elements and meshes holding 10 % or more of its strain energy (where damping
+/// would act on it) and whether the forcing `excited` it.
+TrainUndampedMode dampingPlacesOf(const GearTrainModel& model, const TrainMode& mode, bool excited);
+
 /// The undamped elastic modes among `modes` (rigid-body and divergent modes left out).
 std::vector<TrainUndampedMode> trainUndampedModes(const GearTrainModel& model,
                                                   const std::vector<TrainMode>& modes);
